@@ -6,14 +6,16 @@ import java.util.Set;
 
 import physics.Circle;
 import physics.Geometry;
+import physics.GeometryImpl;
+import physics.GeometryInterface;
 import physics.LineSegment;
 import physics.Vect;
 
 /**
  * Stage 3 of the loop: the earliest collision within a time window, over every free ball against the outer walls,
  * the gizmo shapes it can reach and every other free ball. All times come from physics.Geometry. A moving flipper
- * is asked through the rotating methods, its answers clipped to the time it still swings (the library assumes the
- * rotation goes on for ever); after that it is a fixed shape at its limit.
+ * is asked through the rotating methods of a GeometryImpl whose foresight ends with its swing (the library assumes
+ * the rotation goes on for ever, pitfall 3); after that it is a fixed shape at its limit.
  */
 final class CollisionDetector {
     /** Collisions this close in time count as simultaneous; then a circle wins over a segment (ends, corners). */
@@ -122,14 +124,16 @@ final class CollisionDetector {
         double omega = flipper.angularVelocity();
         Vect pivot = flipper.pivot();
         Shape now = flipper.shape();
+        // The rotating search looks only as far as it must: to the end of the swing or of the window.
+        GeometryInterface rotating = new GeometryImpl(Math.min(swingLeft, window), GeometryImpl.DEFAULT_SEARCH_SLICES);
         for (int i = 0; i < now.segments().size(); i++) {
-            double time = Geometry.timeUntilRotatingWallCollision(now.segments().get(i), pivot, omega, circle, velocity);
+            double time = rotating.timeUntilRotatingWallCollision(now.segments().get(i), pivot, omega, circle, velocity);
             if (time <= swingLeft) {
                 earliest.offer(time, ball, new Contact.FlipperPart(flipper, false, i), false);
             }
         }
         for (int i = 0; i < now.circles().size(); i++) {
-            double time = Geometry.timeUntilRotatingCircleCollision(now.circles().get(i), pivot, omega, circle,
+            double time = rotating.timeUntilRotatingCircleCollision(now.circles().get(i), pivot, omega, circle,
                     velocity);
             if (time <= swingLeft) {
                 earliest.offer(time, ball, new Contact.FlipperPart(flipper, true, i), true);

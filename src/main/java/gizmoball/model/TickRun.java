@@ -3,6 +3,8 @@ package gizmoball.model;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -58,7 +60,8 @@ final class TickRun {
     /** SEED: balls that have had their collision this tick and move no more. */
     private final Set<Ball> finished = new HashSet<>();
     private final Map<Ball, Double> shadowAtStart = new HashMap<>();
-    private final Set<Ball> bouncedElastically = new HashSet<>();
+    /** In order of first bounce (insertion order keeps every run bit-for-bit the same). */
+    private final Set<Ball> bouncedElastically = new LinkedHashSet<>();
     private final Set<Ball> lostEnergy = new HashSet<>();
     private final List<List<Ball>> ballPairs = new ArrayList<>();
     private double elapsed;
@@ -283,26 +286,31 @@ final class TickRun {
 
     /**
      * Rescales the velocities of the balls whose collisions this tick were all elastic (with fixed shapes of
-     * coefficient 1 or with each other; a ball that met a lossy one in between counts as lossy too) by one common
-     * factor s so that their total shadow energy is what it was at the start. Ball-ball collisions conserve the
-     * total, not each ball's, hence one group. With h = g dt/2 and n balls, s solves
+     * coefficient 1 or with each other; a ball that met a lossy one counts as lossy too) so that their shadow
+     * energy is what it was at the start. Ball-ball collisions conserve a group's total, not each ball's, so the
+     * balls that met each other share one factor s: with h = g dt/2 and n balls in the group, s solves
      * s^2 sum|v|^2 + 2 s h sum(v_y) + n h^2 = 2 (sum S + g sum y).
      */
     private void keepShadowEnergyOfElasticBounces() {
-        boolean spread = true;
-        while (spread) {
-            spread = false;
-            for (List<Ball> pair : ballPairs) {
-                if (lostEnergy.contains(pair.get(0)) != lostEnergy.contains(pair.get(1))) {
-                    lostEnergy.addAll(pair);
-                    spread = true;
-                }
+        Map<Ball, List<Ball>> groups = new LinkedHashMap<>();
+        for (Ball ball : bouncedElastically) {
+            groups.put(ball, new ArrayList<>(List.of(ball)));
+        }
+        for (List<Ball> pair : ballPairs) {
+            List<Ball> first = groups.get(pair.get(0));
+            List<Ball> second = groups.get(pair.get(1));
+            if (first != second) {
+                first.addAll(second);
+                second.forEach(ball -> groups.put(ball, first));
             }
         }
-        List<Ball> group = new ArrayList<>();
-        for (Ball ball : bouncedElastically) {
-            if (!lostEnergy.contains(ball) && !ball.isCaptured() && shadowAtStart.containsKey(ball)) {
-                group.add(ball);
+        new LinkedHashSet<>(groups.values()).forEach(this::keepShadowEnergy);
+    }
+
+    private void keepShadowEnergy(List<Ball> group) {
+        for (Ball ball : group) {
+            if (lostEnergy.contains(ball) || ball.isCaptured() || !shadowAtStart.containsKey(ball)) {
+                return;
             }
         }
         double g = board.gravity();
@@ -316,7 +324,7 @@ final class TickRun {
             target += 2 * (shadowAtStart.get(ball) + g * ball.position().y());
         }
         double discriminant = h * h * verticals * verticals - speedsSquared * (group.size() * h * h - target);
-        if (group.isEmpty() || speedsSquared == 0 || discriminant < 0) {
+        if (speedsSquared == 0 || discriminant < 0) {
             return;
         }
         double scale = (-h * verticals + Math.sqrt(discriminant)) / speedsSquared;
