@@ -136,7 +136,7 @@ class BallMotionTest {
         double g = board.gravity();
         double e0 = board.energy();
         double maxVy = 2;
-        for (int i = 0; i < 20_000; i++) {
+        for (int i = 0; i < 100_000; i++) {
             board.tick(DT);
             for (Ball ball : board.balls()) {
                 maxVy = Math.max(maxVy, Math.abs(ball.velocity().y()));
