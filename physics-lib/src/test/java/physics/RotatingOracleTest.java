@@ -1,0 +1,78 @@
+package physics;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assumptions.assumeThat;
+
+import java.util.stream.LongStream;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+
+/**
+ * The rotating methods against the brute-force oracle ({@link WorldGap}): over random flipper-like scenes the
+ * method's contact is never later than the oracle's and, when reported, is a true contact (gap within 1e-9 L).
+ */
+class RotatingOracleTest {
+    private static final double CONTACT = 1e-9;
+    private static final double FORESIGHT = GeometryImpl.DEFAULT_FORESIGHT;
+
+    static LongStream seeds() {
+        return RandomScene.seeds(150);
+    }
+
+    /** Up to 20 rad/s either way (1080 deg/s is 18.8 rad/s), sometimes not turning at all. */
+    static double angularVelocity(RandomScene r) {
+        double magnitude = r.between(0, 1) < 0.1 ? 0 : r.between(0.5, 20);
+        return r.coin() ? magnitude : -magnitude;
+    }
+
+    /** Sometimes at rest (pitfall 2), otherwise up to 30 L/s. */
+    static Vect ballVelocity(RandomScene r) {
+        return r.between(0, 1) < 0.2 ? Vect.ZERO : r.vector(0, 30);
+    }
+
+    @ParameterizedTest(name = "seed {0}")
+    @MethodSource("seeds")
+    void rotatingWallContactIsNeverLaterThanTheOracleAndIsExact(long seed) {
+        RandomScene r = new RandomScene(seed);
+        Vect pivot = r.point(5);
+        Vect p1 = r.coin() ? pivot : pivot.plus(r.vector(0, 0.5));
+        LineSegment segment = new LineSegment(p1, p1.plus(r.vector(1, 2.5)));
+        double w = angularVelocity(r);
+        Circle ball = new Circle(pivot.plus(r.vector(0.3, 3.5)), r.between(0.1, 0.5));
+        Vect velocity = ballVelocity(r);
+        WorldGap gap = WorldGap.wall(segment, pivot, w, ball, velocity);
+        assumeThat(gap.at(0)).as("seed %d starts clear of the segment", seed).isPositive();
+
+        double t = Geometry.timeUntilRotatingWallCollision(segment, pivot, w, ball, velocity);
+        assertAgreesWithOracle(seed, gap, t);
+    }
+
+    @ParameterizedTest(name = "seed {0}")
+    @MethodSource("seeds")
+    void rotatingCircleContactIsNeverLaterThanTheOracleAndIsExact(long seed) {
+        RandomScene r = new RandomScene(seed);
+        Vect pivot = r.point(5);
+        Circle circle = new Circle(pivot.plus(r.vector(0, 2.5)), r.coin() ? 0 : r.between(0.05, 0.5));
+        double w = angularVelocity(r);
+        Circle ball = new Circle(pivot.plus(r.vector(0.3, 3.5)), r.between(0.1, 0.5));
+        Vect velocity = ballVelocity(r);
+        WorldGap gap = WorldGap.circle(circle, pivot, w, ball, velocity);
+        assumeThat(gap.at(0)).as("seed %d starts clear of the circle", seed).isPositive();
+
+        double t = Geometry.timeUntilRotatingCircleCollision(circle, pivot, w, ball, velocity);
+        assertAgreesWithOracle(seed, gap, t);
+    }
+
+    static void assertAgreesWithOracle(long seed, WorldGap gap, double t) {
+        double oracle = gap.firstContact(FORESIGHT);
+        if (oracle < Double.POSITIVE_INFINITY) {
+            assertThat(t).as("seed %d: oracle contact at %s must not be missed or reported late", seed, oracle)
+                    .isLessThanOrEqualTo(oracle + CONTACT);
+        }
+        if (t < Double.POSITIVE_INFINITY) {
+            assertThat(t).as("seed %d: inside the foresight window", seed).isBetween(0.0, FORESIGHT);
+            assertThat(Math.abs(gap.at(t))).as("seed %d: gap at the reported time %s", seed, t)
+                    .isLessThanOrEqualTo(CONTACT);
+        }
+    }
+}
