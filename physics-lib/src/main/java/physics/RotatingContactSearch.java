@@ -130,24 +130,26 @@ final class RotatingContactSearch {
         return c0MinusPivot.plus(v.times(t));
     }
 
-    /** Sets gap and gapRate to g(t) and g'(t) in the obstacle's frame. */
+    /** Sets gap and gapRate to g(t) and g'(t) in the obstacle's frame (plain arithmetic: this is the hot loop). */
     private void evaluate(double t) {
-        Angle back = new Angle(-w * t);
-        Vect turnedU = u(t).rotateBy(back);
-        Vect q = pivot.plus(turnedU);
-        Vect qRate = v.rotateBy(back).minus(new Vect(-turnedU.y(), turnedU.x()).times(w));
-        Vect offset = q.minus(nearestCorePoint(q));
-        double distance = offset.length();
+        double cos = Math.cos(w * t);
+        double sin = -Math.sin(w * t); // R(-w t)
+        double ux = c0MinusPivot.x() + v.x() * t;
+        double uy = c0MinusPivot.y() + v.y() * t;
+        double turnedX = ux * cos - uy * sin;
+        double turnedY = ux * sin + uy * cos;
+        double qx = pivot.x() + turnedX;
+        double qy = pivot.y() + turnedY;
+        // q' = R(-wt) v - w J R(-wt) u, with J (x, y) = (-y, x)
+        double rateX = v.x() * cos - v.y() * sin + w * turnedY;
+        double rateY = v.x() * sin + v.y() * cos - w * turnedX;
+        double s = abLengthSquared == 0 ? 0
+                : Math.max(0, Math.min(1, ((qx - a.x()) * ab.x() + (qy - a.y()) * ab.y()) / abLengthSquared));
+        double offsetX = qx - a.x() - s * ab.x();
+        double offsetY = qy - a.y() - s * ab.y();
+        double distance = Math.hypot(offsetX, offsetY);
         gap = distance - contactDistance;
         // On the core itself the direction is undefined; treating it as "not closing" lets the search move on.
-        gapRate = distance == 0 ? 0 : offset.dot(qRate) / distance;
-    }
-
-    private Vect nearestCorePoint(Vect q) {
-        if (abLengthSquared == 0) {
-            return a;
-        }
-        double s = q.minus(a).dot(ab) / abLengthSquared;
-        return a.plus(ab.times(Math.max(0, Math.min(1, s))));
+        gapRate = distance == 0 ? 0 : (offsetX * rateX + offsetY * rateY) / distance;
     }
 }
