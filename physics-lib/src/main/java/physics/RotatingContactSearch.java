@@ -99,7 +99,8 @@ final class RotatingContactSearch {
                     if (curvature == 0) {
                         return Double.POSITIVE_INFINITY; // straight motion, not closing: the convex gap only grows
                     }
-                    step = Math.max(2 * gapRate / curvature, Math.sqrt(2 * CONTACT_TOLERANCE / curvature));
+                    // Where gap + gapRate h - curvature h^2 / 2 is CONTACT_TOLERANCE below the current gap.
+                    step = (gapRate + Math.sqrt(gapRate * gapRate + 2 * curvature * CONTACT_TOLERANCE)) / curvature;
                 } else {
                     step = Math.max(gap / lipschitz, quadraticBoundStep(curvature));
                 }

@@ -77,6 +77,16 @@ class RotatingGeometryTest {
         }
 
         @Test
+        void touchingAndSeparatingFindsTheNextContactAfterAFullTurn() {
+            // Turning back at pi rad/s from touching (1, 0.5), the segment comes round to it from above at the
+            // angle a where 0.5 cos a - sin a = -0.5, i.e. a = 2 atan(1/2), after turning 2 pi - a.
+            GeometryImpl twoSeconds = new GeometryImpl(2, GeometryImpl.DEFAULT_SEARCH_SLICES);
+            double t = twoSeconds.timeUntilRotatingWallCollision(flipper, Vect.ZERO, -Math.PI, new Circle(1, 0.5, 0.5),
+                    Vect.ZERO);
+            assertThat(t).isCloseTo((2 * Math.PI - 2 * Math.atan(0.5)) / Math.PI, within(TIME));
+        }
+
+        @Test
         void contactAtTheTipIsFound() {
             // The tip (2 cos a, 2 sin a) reaches distance 0.5 from (2.2, 1) when cos(a - atan2(1, 2.2)) =
             // (5.84 + 4 - 0.25) / (4 sqrt(5.84)); the foot of the perpendicular is then off the segment.
