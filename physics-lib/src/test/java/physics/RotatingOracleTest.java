@@ -1,6 +1,7 @@
 package physics;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
 
 import java.util.stream.LongStream;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -66,6 +67,46 @@ class RotatingOracleTest {
 
         double t = Geometry.timeUntilRotatingCircleCollision(circle, pivot, w, ball, velocity);
         assertAgreesWithOracle(seed, gap, t);
+    }
+
+    @ParameterizedTest(name = "seed {0}")
+    @MethodSource("seeds")
+    void rotatingReflectionsKeepTheRelativeSpeedAndUndoThemselves(long seed) {
+        RandomScene r = new RandomScene(seed);
+        Vect pivot = r.point(5);
+        LineSegment segment = new LineSegment(pivot, pivot.plus(r.vector(1, 2.5)));
+        double w = angularVelocity(r);
+        Vect dir = segment.p2().minus(segment.p1()).unitSize();
+        Vect contact = segment.p1().plus(segment.p2().minus(segment.p1()).times(r.between(0.05, 0.95)));
+        double radius = r.between(0.1, 0.5);
+        Circle ball = new Circle(contact.plus(new Vect(-dir.y(), dir.x()).times(r.coin() ? radius : -radius)),
+                radius);
+        Vect v = r.vector(0, 30);
+        Vect arm = contact.minus(pivot);
+        Vect surface = new Vect(-arm.y(), arm.x()).times(w);
+        Vect once = Geometry.reflectRotatingWall(segment, pivot, w, ball, v);
+        assertThat(once.minus(surface).length()).as("seed %d: relative speed", seed)
+                .isCloseTo(v.minus(surface).length(), within(1e-12 * (1 + v.length() + surface.length())));
+        Vect twice = Geometry.reflectRotatingWall(segment, pivot, w, ball, once);
+        assertThat(twice.minus(v).length()).as("seed %d: reflecting twice", seed).isLessThan(1e-12 * (1 + v.length()
+                + surface.length()));
+        // The tangential part relative to the surface is untouched, whatever the coefficient.
+        double coeff = r.between(0, 1);
+        Vect damped = Geometry.reflectRotatingWall(segment, pivot, w, ball, v, coeff);
+        assertThat(damped.minus(surface).dot(dir)).as("seed %d: tangential part", seed)
+                .isCloseTo(v.minus(surface).dot(dir), within(1e-12 * (1 + v.length() + surface.length())));
+
+        Circle end = new Circle(segment.p2(), r.between(0, 0.3));
+        Vect outward = r.vector(1, 1);
+        Circle touching = new Circle(end.getCenter().plus(outward.times(end.getRadius() + radius)), radius);
+        Vect endArm = end.getCenter().plus(outward.times(end.getRadius())).minus(pivot);
+        Vect endSurface = new Vect(-endArm.y(), endArm.x()).times(w);
+        Vect offCircle = Geometry.reflectRotatingCircle(end, pivot, w, touching, v);
+        assertThat(offCircle.minus(endSurface).length()).as("seed %d: relative speed off the circle", seed)
+                .isCloseTo(v.minus(endSurface).length(), within(1e-12 * (1 + v.length() + endSurface.length())));
+        Vect back = Geometry.reflectRotatingCircle(end, pivot, w, touching, offCircle);
+        assertThat(back.minus(v).length()).as("seed %d: circle twice", seed).isLessThan(1e-12 * (1 + v.length()
+                + endSurface.length()));
     }
 
     static void assertAgreesWithOracle(long seed, WorldGap gap, double t) {
