@@ -1,0 +1,133 @@
+package gizmoball.bench;
+
+import gizmoball.model.Ball;
+import gizmoball.model.Board;
+import gizmoball.model.Invariants;
+import physics.Vect;
+
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+
+/** Runs a scene with a method: timed (nothing but ticks and keys) or instrumented (every measure, every tick). */
+final class Runner {
+
+    private static final ThreadMXBean THREADS = ManagementFactory.getThreadMXBean();
+
+    /** What an instrumented run saw. Energies are relative to the start energy. */
+    record Accuracy(List<Vect> finalPositions, double energyDrift, double maxEnergyRise, Probe.Tally faults,
+                    long invariantTicks, double apexError) {}
+
+    private Runner() {
+    }
+
+    static Board prepare(Scene scene, Method method, boolean spatialIndex) {
+        Board board = scene.board().get();
+        board.setLoopMode(method.mode());
+        board.setSpatialIndexEnabled(spatialIndex);
+        return board;
+    }
+
+    /** CPU time of this thread, in nanoseconds, to run the whole scene once (board building excluded). */
+    static long cpuNanos(Scene scene, Method method, boolean spatialIndex) {
+        Board board = prepare(scene, method, spatialIndex);
+        KeyScript.Player keys = scene.keys().player(method.dt());
+        long ticks = scene.ticks(method);
+        double dt = method.dt();
+        long start = THREADS.getCurrentThreadCpuTime();
+        for (long i = 0; i < ticks; i++) {
+            keys.beforeTick(board, i);
+            board.tick(dt);
+        }
+        return THREADS.getCurrentThreadCpuTime() - start;
+    }
+
+    /** Median CPU time over several runs, after one untimed run to let the JIT settle on this path. */
+    static long medianCpuNanos(Scene scene, Method method, boolean spatialIndex, int runs) {
+        cpuNanos(scene, method, spatialIndex);
+        long[] times = new long[runs];
+        for (int i = 0; i < runs; i++) {
+            times[i] = cpuNanos(scene, method, spatialIndex);
+        }
+        return median(times);
+    }
+
+    static long median(long[] values) {
+        long[] sorted = values.clone();
+        Arrays.sort(sorted);
+        int n = sorted.length;
+        return n % 2 == 1 ? sorted[n / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2;
+    }
+
+    /** Runs the scene checking everything after every tick. */
+    static Accuracy measure(Scene scene, Method method) {
+        Board board = prepare(scene, method, true);
+        KeyScript.Player keys = scene.keys().player(method.dt());
+        long ticks = scene.ticks(method);
+        double dt = method.dt();
+        double e0 = board.energy();
+        double scale = Math.max(Math.abs(e0), 1e-300);
+        double maxRise = 0;
+        Probe.Tally faults = new Probe.Tally();
+        long invariantTicks = 0;
+        ApexTracker apex = new ApexTracker();
+        for (long i = 0; i < ticks; i++) {
+            keys.beforeTick(board, i);
+            board.tick(dt);
+            Probe.check(board, faults);
+            if (!Invariants.violations(board).isEmpty()) {
+                invariantTicks++;
+            }
+            maxRise = Math.max(maxRise, (board.energy() - e0) / scale);
+            apex.observe(board.balls().get(0));
+        }
+        double apexError = scene.exactApexY().map(apex::worstError).orElse(Double.NaN);
+        return new Accuracy(positions(board), (board.energy() - e0) / scale, maxRise, faults, invariantTicks, apexError);
+    }
+
+    static List<Vect> positions(Board board) {
+        List<Vect> positions = new ArrayList<>();
+        for (Ball b : board.balls()) {
+            positions.add(b.position());
+        }
+        return positions;
+    }
+
+    /** Mean distance between corresponding balls. */
+    static double meanDistance(List<Vect> a, List<Vect> b) {
+        double sum = 0;
+        for (int i = 0; i < a.size(); i++) {
+            sum += Math.sqrt(a.get(i).distanceSquared(b.get(i)));
+        }
+        return sum / a.size();
+    }
+
+    /**
+     * Heights of the turning points at the top of a ball's flight (y downward: vertical velocity turns
+     * from negative to non-negative), taken as the lowest y seen during each rise.
+     */
+    private static final class ApexTracker {
+        private final List<Double> apexes = new ArrayList<>();
+        private double risingMin = Double.POSITIVE_INFINITY;
+        private boolean rising;
+
+        void observe(Ball ball) {
+            double y = ball.position().y();
+            if (ball.velocity().y() < 0) {
+                rising = true;
+                risingMin = Math.min(risingMin, y);
+            } else if (rising) {
+                rising = false;
+                apexes.add(Math.min(risingMin, y));
+                risingMin = Double.POSITIVE_INFINITY;
+            }
+        }
+
+        /** Largest distance of an apex from the exact one; NaN when the ball never turned over. */
+        double worstError(double exact) {
+            return apexes.stream().mapToDouble(a -> Math.abs(a - exact)).max().orElse(Double.NaN);
+        }
+    }
+}
