@@ -1,6 +1,5 @@
 package gizmoball.bench;
 
-import gizmoball.model.LoopMode;
 import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
@@ -19,6 +18,9 @@ final class Charts {
     /** Log axes cannot show an exact zero; errors below this are drawn at this floor. */
     static final double ERROR_FLOOR = 1e-15;
 
+    private static final org.knowm.xchart.style.markers.Marker[] MARKERS =
+            {SeriesMarkers.SQUARE, SeriesMarkers.CIRCLE, SeriesMarkers.TRIANGLE_UP};
+
     private Charts() {
     }
 
@@ -31,9 +33,9 @@ final class Charts {
         chart.getStyler().setXAxisLogarithmic(true);
         chart.getStyler().setYAxisLogarithmic(true);
         chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideNE);
-        for (LoopMode mode : LoopMode.values()) {
+        for (Loop loop : Loop.values()) {
             List<SceneResult> line = rows.stream()
-                    .filter(r -> r.scene() == scene && !r.reference() && r.method().mode() == mode)
+                    .filter(r -> r.scene() == scene && !r.reference() && r.method().loop() == loop)
                     .sorted((a, b) -> Integer.compare(a.method().ticksPerSecond(), b.method().ticksPerSecond()))
                     .collect(Collectors.toList());
             if (line.isEmpty()) {
@@ -42,8 +44,8 @@ final class Charts {
             double[] x = line.stream().mapToDouble(SceneResult::msPerSimSecond).toArray();
             double[] y = line.stream().mapToDouble(r -> Math.max(ERROR_FLOOR, r.positionError())).toArray();
             String ticks = line.stream().map(r -> "1/" + r.method().ticksPerSecond()).collect(Collectors.joining(", "));
-            XYSeries series = chart.addSeries(mode + " (" + ticks + " s)", x, y);
-            series.setMarker(mode == LoopMode.SEED ? SeriesMarkers.SQUARE : SeriesMarkers.CIRCLE);
+            XYSeries series = chart.addSeries(loop + " (" + ticks + " s)", x, y);
+            series.setMarker(MARKERS[loop.ordinal()]);
         }
         save(chart, dir.resolve("work-precision-" + scene.name().replace(' ', '-') + ".png"));
     }

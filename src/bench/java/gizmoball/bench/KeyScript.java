@@ -1,7 +1,5 @@
 package gizmoball.bench;
 
-import gizmoball.model.Board;
-
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -61,14 +59,14 @@ public final class KeyScript {
             this.dt = dt;
         }
 
-        public void beforeTick(Board board, long tick) {
+        void beforeTick(Stepper stepper, long tick) {
             // Compare in whole ticks, so that accumulated floating-point time cannot shift an event by one tick.
             while (next < events.size() && Math.round(events.get(next).time() / dt) <= tick) {
                 KeyEvent e = events.get(next++);
                 if (e.down()) {
-                    board.keyDown(e.keyCode());
+                    stepper.keyDown(e.keyCode());
                 } else {
-                    board.keyUp(e.keyCode());
+                    stepper.keyUp(e.keyCode());
                 }
             }
         }

@@ -27,7 +27,7 @@ final class Report {
                     f3(r.msPerSimSecond()), f3(r.usPerTick()), e(r.positionError()),
                     r.scene().exact().isPresent() ? "exac" : "ref", e(a.energyDrift()), e(a.maxEnergyRise()),
                     Double.isNaN(a.apexError()) ? "-" : e(a.apexError()), a.faults().penetrations, a.faults().escapes,
-                    a.faults().nonFinite, a.invariantTicks());
+                    a.faults().nonFinite, a.invariantTicks() < 0 ? "-" : Long.toString(a.invariantTicks()));
         }
     }
 
@@ -57,18 +57,19 @@ final class Report {
 
     static void writeScenes(Path file, List<SceneResult> rows) throws IOException {
         List<String> lines = new ArrayList<>();
-        lines.add("scene,mode,ticks_per_second,reference,duration_s,ticks,cpu_ms_per_sim_s,cpu_us_per_tick,position_error_L,"
+        lines.add("scene,loop,ticks_per_second,reference,duration_s,ticks,cpu_ms_per_sim_s,cpu_us_per_tick,position_error_L,"
                 + "error_against,energy_drift_rel,energy_max_rise_rel,apex_error_L,penetration_ball_ticks,escape_ball_ticks,"
                 + "nonfinite_ball_ticks,deepest_penetration_L,invariant_ticks");
         for (SceneResult r : rows) {
             Runner.Accuracy a = r.accuracy();
-            lines.add(String.join(",", r.scene().name(), r.method().mode().name(),
+            lines.add(String.join(",", r.scene().name(), r.method().loop().name(),
                     Integer.toString(r.method().ticksPerSecond()), Boolean.toString(r.reference()),
                     num(r.scene().duration()), Long.toString(r.scene().ticks(r.method())), num(r.msPerSimSecond()),
                     num(r.usPerTick()), num(r.positionError()), r.scene().exact().isPresent() ? "exact" : "reference",
                     num(a.energyDrift()), num(a.maxEnergyRise()), Double.isNaN(a.apexError()) ? "" : num(a.apexError()),
                     Long.toString(a.faults().penetrations), Long.toString(a.faults().escapes),
-                    Long.toString(a.faults().nonFinite), num(a.faults().deepest), Long.toString(a.invariantTicks())));
+                    Long.toString(a.faults().nonFinite), num(a.faults().deepest),
+                    a.invariantTicks() < 0 ? "" : Long.toString(a.invariantTicks())));
         }
         Files.write(file, lines);
     }

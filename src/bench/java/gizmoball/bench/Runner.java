@@ -1,8 +1,6 @@
 package gizmoball.bench;
 
-import gizmoball.model.Ball;
 import gizmoball.model.Board;
-import gizmoball.model.Invariants;
 import physics.Vect;
 
 import java.lang.management.ManagementFactory;
@@ -16,30 +14,31 @@ final class Runner {
 
     private static final ThreadMXBean THREADS = ManagementFactory.getThreadMXBean();
 
-    /** What an instrumented run saw. Energies are relative to the start energy. */
+    /**
+     * What an instrumented run saw. Energies are relative to the start energy; invariantTicks counts the
+     * ticks the model's own Invariants flagged, -1 for the naive loop (to which they do not apply).
+     */
     record Accuracy(List<Vect> finalPositions, double energyDrift, double maxEnergyRise, Probe.Tally faults,
                     long invariantTicks, double apexError) {}
 
     private Runner() {
     }
 
-    static Board prepare(Scene scene, Method method, boolean spatialIndex) {
+    static Stepper prepare(Scene scene, Method method, boolean spatialIndex) {
         Board board = scene.board().get();
-        board.setLoopMode(method.mode());
-        board.setSpatialIndexEnabled(spatialIndex);
-        return board;
+        return method.loop() == Loop.NAIVE ? new NaiveStepper(board) : new ModelStepper(board, method.loop(), spatialIndex);
     }
 
     /** CPU time of this thread, in nanoseconds, to run the whole scene once (board building excluded). */
     static long cpuNanos(Scene scene, Method method, boolean spatialIndex) {
-        Board board = prepare(scene, method, spatialIndex);
+        Stepper stepper = prepare(scene, method, spatialIndex);
         KeyScript.Player keys = scene.keys().player(method.dt());
         long ticks = scene.ticks(method);
         double dt = method.dt();
         long start = THREADS.getCurrentThreadCpuTime();
         for (long i = 0; i < ticks; i++) {
-            keys.beforeTick(board, i);
-            board.tick(dt);
+            keys.beforeTick(stepper, i);
+            stepper.tick(dt);
         }
         return THREADS.getCurrentThreadCpuTime() - start;
     }
@@ -63,33 +62,35 @@ final class Runner {
 
     /** Runs the scene checking everything after every tick. */
     static Accuracy measure(Scene scene, Method method) {
-        Board board = prepare(scene, method, true);
+        Stepper stepper = prepare(scene, method, true);
         KeyScript.Player keys = scene.keys().player(method.dt());
         long ticks = scene.ticks(method);
         double dt = method.dt();
-        double e0 = board.energy();
+        double e0 = stepper.energy();
         double scale = Math.max(Math.abs(e0), 1e-300);
         double maxRise = 0;
         Probe.Tally faults = new Probe.Tally();
         long invariantTicks = 0;
         ApexTracker apex = new ApexTracker();
         for (long i = 0; i < ticks; i++) {
-            keys.beforeTick(board, i);
-            board.tick(dt);
-            Probe.check(board, faults);
-            if (!Invariants.violations(board).isEmpty()) {
+            keys.beforeTick(stepper, i);
+            stepper.tick(dt);
+            Probe.check(stepper, faults);
+            if (stepper.checksModelInvariants() && !stepper.modelInvariantsHold()) {
                 invariantTicks++;
             }
-            maxRise = Math.max(maxRise, (board.energy() - e0) / scale);
-            apex.observe(board.balls().get(0));
+            double energy = stepper.energy();
+            maxRise = Math.max(maxRise, (energy - e0) / scale);
+            apex.observe(stepper.balls().get(0));
         }
         double apexError = scene.exactApexY().map(apex::worstError).orElse(Double.NaN);
-        return new Accuracy(positions(board), (board.energy() - e0) / scale, maxRise, faults, invariantTicks, apexError);
+        long invariants = stepper.checksModelInvariants() ? invariantTicks : -1;
+        return new Accuracy(positions(stepper), (stepper.energy() - e0) / scale, maxRise, faults, invariants, apexError);
     }
 
-    static List<Vect> positions(Board board) {
+    static List<Vect> positions(Stepper stepper) {
         List<Vect> positions = new ArrayList<>();
-        for (Ball b : board.balls()) {
+        for (BallState b : stepper.balls()) {
             positions.add(b.position());
         }
         return positions;
@@ -113,7 +114,7 @@ final class Runner {
         private double risingMin = Double.POSITIVE_INFINITY;
         private boolean rising;
 
-        void observe(Ball ball) {
+        void observe(BallState ball) {
             double y = ball.position().y();
             if (ball.velocity().y() < 0) {
                 rising = true;

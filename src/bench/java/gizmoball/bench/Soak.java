@@ -21,7 +21,7 @@ final class Soak {
     static Result run(long ticks) {
         Board board = Scenes.denseBoardOnly();
         Method method = Method.GAME_DEFAULT;
-        board.setLoopMode(method.mode());
+        Stepper stepper = new ModelStepper(board, method.loop(), true);
         double e0 = board.energy();
         double maxAbove = 0;
         Probe.Tally faults = new Probe.Tally();
@@ -30,7 +30,7 @@ final class Soak {
         long start = ManagementFactory.getThreadMXBean().getCurrentThreadCpuTime();
         for (long i = 0; i < ticks; i++) {
             board.tick(method.dt());
-            Probe.check(board, faults);
+            Probe.check(stepper, faults);
             var violations = Invariants.violations(board);
             if (!violations.isEmpty()) {
                 if (invariantTicks++ == 0) {
