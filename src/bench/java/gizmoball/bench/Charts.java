@@ -1,5 +1,6 @@
 package gizmoball.bench;
 
+import org.knowm.xchart.AnnotationText;
 import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
@@ -26,7 +27,7 @@ final class Charts {
 
     static void workPrecision(Path dir, Scene scene, List<SceneResult> rows) throws IOException {
         XYChart chart = new XYChartBuilder().width(800).height(560)
-                .title("Work-precision: " + scene.name() + " (T = " + fmt(scene.duration()) + " s)")
+                .title("Work-precision: " + scene.name() + " (T = " + fmt(scene.duration()) + " s; points labelled with the tick, s)")
                 .xAxisTitle("CPU ms per simulated second (log)")
                 .yAxisTitle("position error at T, L (log" + (scene.exact().isPresent() ? ", vs exact" : ", vs reference") + ")")
                 .build();
@@ -43,9 +44,12 @@ final class Charts {
             }
             double[] x = line.stream().mapToDouble(SceneResult::msPerSimSecond).toArray();
             double[] y = line.stream().mapToDouble(r -> Math.max(ERROR_FLOOR, r.positionError())).toArray();
-            String ticks = line.stream().map(r -> "1/" + r.method().ticksPerSecond()).collect(Collectors.joining(", "));
-            XYSeries series = chart.addSeries(loop + " (" + ticks + " s)", x, y);
+            XYSeries series = chart.addSeries(loop.toString(), x, y);
             series.setMarker(MARKERS[loop.ordinal()]);
+            for (int i = 0; i < line.size(); i++) {
+                // Tick length next to each point, a little above it on the log scale.
+                chart.addAnnotation(new AnnotationText("1/" + line.get(i).method().ticksPerSecond(), x[i], y[i] * 1.25, false));
+            }
         }
         save(chart, dir.resolve("work-precision-" + scene.name().replace(' ', '-') + ".png"));
     }
