@@ -14,15 +14,15 @@ import java.util.Locale;
  * The benchmark: every scene with every method (cost and error), the scaling runs and the soak; a table
  * on standard output, CSV and PNG charts in the output directory.
  * <p>
- * Arguments: {@code [--quick] --scripts DIR --out DIR}. {@code --quick} takes fewer timed runs, shorter
- * scaling runs and a shorter soak, for a smoke run under two minutes.
+ * Arguments: {@code [--quick] --scripts DIR --out DIR}. {@code --quick} takes fewer and shorter timing
+ * samples, shorter scaling runs and a shorter soak, for a smoke run under two minutes.
  */
 public final class BenchMain {
 
     /** How much work each part does. */
-    record Effort(int timedRuns, double scalingSeconds, int scalingRuns, long soakTicks) {
-        static final Effort FULL = new Effort(5, 5, 3, 1_000_000);
-        static final Effort QUICK = new Effort(3, 1, 1, 50_000);
+    record Effort(int samples, long minSampleNanos, double scalingSeconds, long soakTicks) {
+        static final Effort FULL = new Effort(5, 20_000_000, 5, 1_000_000);
+        static final Effort QUICK = new Effort(3, 5_000_000, 1, 50_000);
     }
 
     private BenchMain() {
@@ -46,6 +46,12 @@ public final class BenchMain {
         long wallStart = System.nanoTime();
 
         List<Scene> scenes = Scenes.all(scripts);
+        stdout.println("warm-up");
+        for (Scene scene : scenes) {
+            for (Method method : Method.all()) {
+                Runner.cpuNanos(scene, method, true);
+            }
+        }
         List<SceneResult> rows = new ArrayList<>();
         for (Scene scene : scenes) {
             stdout.println("scene: " + scene.name());
@@ -58,7 +64,7 @@ public final class BenchMain {
         }
 
         stdout.println("scaling runs");
-        List<ScalingPoint> scaling = Scaling.run(effort.scalingSeconds(), effort.scalingRuns());
+        List<ScalingPoint> scaling = Scaling.run(effort.scalingSeconds(), effort.samples(), effort.minSampleNanos());
         Report.printScaling(stdout, scaling);
         Report.writeScaling(out.resolve("scaling.csv"), scaling);
         Charts.scaling(out, scaling);
@@ -81,12 +87,12 @@ public final class BenchMain {
         } else {
             Runner.Accuracy reference = Runner.measure(scene, Method.REFERENCE);
             expected = reference.finalPositions();
-            long cost = Runner.medianCpuNanos(scene, Method.REFERENCE, true, 1);
+            long cost = Runner.medianCpuNanos(scene, Method.REFERENCE, true, 1, 0);
             rows.add(new SceneResult(scene, Method.REFERENCE, true, cost, 0, reference));
         }
         for (Method method : Method.all()) {
             Runner.Accuracy accuracy = Runner.measure(scene, method);
-            long cost = Runner.medianCpuNanos(scene, method, true, effort.timedRuns());
+            long cost = Runner.medianCpuNanos(scene, method, true, effort.samples(), effort.minSampleNanos());
             rows.add(new SceneResult(scene, method, false, cost,
                     Runner.meanDistance(accuracy.finalPositions(), expected), accuracy));
         }

@@ -33,7 +33,7 @@ final class Charts {
                 .build();
         chart.getStyler().setXAxisLogarithmic(true);
         chart.getStyler().setYAxisLogarithmic(true);
-        chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideNE);
+        chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideSW);
         for (Loop loop : Loop.values()) {
             List<SceneResult> line = rows.stream()
                     .filter(r -> r.scene() == scene && !r.reference() && r.method().loop() == loop)

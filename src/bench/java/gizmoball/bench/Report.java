@@ -18,14 +18,14 @@ final class Report {
         out.println();
         out.println("Speed against accuracy (cost: median CPU time; error: mean ball position error at T against the "
                 + "exact path, or against " + Method.REFERENCE.label() + " where marked ref)");
-        String format = "%-20s %-17s %10s %10s %11s %4s %11s %11s %9s %6s %5s %5s %5s%n";
+        String format = "%-20s %-23s %10s %10s %11s %5s %11s %11s %9s %6s %5s %5s %5s%n";
         out.printf(Locale.ROOT, format, "scene", "method", "ms/sim s", "us/tick", "pos err L", "vs", "E drift", "E max rise",
                 "apex err", "pen", "esc", "nan", "inv");
         for (SceneResult r : rows) {
             Runner.Accuracy a = r.accuracy();
             out.printf(Locale.ROOT, format, r.scene().name(), r.method().label() + (r.reference() ? " (ref)" : ""),
                     f3(r.msPerSimSecond()), f3(r.usPerTick()), e(r.positionError()),
-                    r.scene().exact().isPresent() ? "exac" : "ref", e(a.energyDrift()), e(a.maxEnergyRise()),
+                    r.scene().exact().isPresent() ? "exact" : "ref", e(a.energyDrift()), e(a.maxEnergyRise()),
                     Double.isNaN(a.apexError()) ? "-" : e(a.apexError()), a.faults().penetrations, a.faults().escapes,
                     a.faults().nonFinite, a.invariantTicks() < 0 ? "-" : Long.toString(a.invariantTicks()));
         }

@@ -43,12 +43,21 @@ final class Runner {
         return THREADS.getCurrentThreadCpuTime() - start;
     }
 
-    /** Median CPU time over several runs, after one untimed run to let the JIT settle on this path. */
-    static long medianCpuNanos(Scene scene, Method method, boolean spatialIndex, int runs) {
-        cpuNanos(scene, method, spatialIndex);
-        long[] times = new long[runs];
-        for (int i = 0; i < runs; i++) {
-            times[i] = cpuNanos(scene, method, spatialIndex);
+    /**
+     * Median over several samples of the CPU time of one run. The first run is untimed (it lets the JIT
+     * settle on this path) and calibrates how many runs make a sample last at least {@code minSampleNanos},
+     * so that short scenes are not measured at the timer's granularity.
+     */
+    static long medianCpuNanos(Scene scene, Method method, boolean spatialIndex, int samples, long minSampleNanos) {
+        long first = Math.max(1, cpuNanos(scene, method, spatialIndex));
+        long repetitions = Math.max(1, (minSampleNanos + first - 1) / first);
+        long[] times = new long[samples];
+        for (int i = 0; i < samples; i++) {
+            long total = 0;
+            for (long r = 0; r < repetitions; r++) {
+                total += cpuNanos(scene, method, spatialIndex);
+            }
+            times[i] = total / repetitions;
         }
         return median(times);
     }

@@ -22,24 +22,25 @@ final class Scaling {
     private Scaling() {
     }
 
-    static List<ScalingPoint> run(double seconds, int runs) {
+    static List<ScalingPoint> run(double seconds, int samples, long minSampleNanos) {
         List<ScalingPoint> points = new ArrayList<>();
         for (int g : GIZMOS) {
             for (boolean index : new boolean[] {true, false}) {
-                points.add(point("gizmos", g, BALLS_WHILE_GIZMOS_GROW, index, seconds, runs));
+                points.add(point("gizmos", g, BALLS_WHILE_GIZMOS_GROW, index, seconds, samples, minSampleNanos));
             }
         }
         for (int b : BALLS) {
             for (boolean index : new boolean[] {true, false}) {
-                points.add(point("balls", GIZMOS_WHILE_BALLS_GROW, b, index, seconds, runs));
+                points.add(point("balls", GIZMOS_WHILE_BALLS_GROW, b, index, seconds, samples, minSampleNanos));
             }
         }
         return points;
     }
 
-    static ScalingPoint point(String axis, int gizmos, int balls, boolean index, double seconds, int runs) {
+    static ScalingPoint point(String axis, int gizmos, int balls, boolean index, double seconds, int samples,
+                              long minSampleNanos) {
         Scene scene = board(gizmos, balls, seconds);
-        long nanos = Runner.medianCpuNanos(scene, Method.GAME_DEFAULT, index, runs);
+        long nanos = Runner.medianCpuNanos(scene, Method.GAME_DEFAULT, index, samples, minSampleNanos);
         return new ScalingPoint(axis, gizmos, balls, index, nanos / 1e3 / scene.ticks(Method.GAME_DEFAULT));
     }
 
