@@ -78,6 +78,25 @@ class FlipperCollisionTest {
         }
     }
 
+    @ParameterizedTest
+    @EnumSource(LoopMode.class)
+    void aBallPinchedBetweenARisingFlipperAndTheOuterWallStaysOutOfBoth(LoopMode mode) {
+        Board board = new Board();
+        board.setLoopMode(mode);
+        board.addGizmo(GizmoKind.LEFT_FLIPPER, "F", 0, 0);   // swings up to lie against the top wall
+        board.addBall("B", 1.2, 0.6, 0, -1);
+        board.trigger("F");
+        Flipper flipper = (Flipper) board.gizmo("F").orElseThrow();
+        for (int i = 0; i < 600; i++) {
+            if (i % 60 == 59) {
+                board.trigger("F");
+            }
+            board.tick(DT);
+            assertThat(Invariants.violations(board)).as("tick %d", i).isEmpty();
+            assertThat(flipper.angleFromRest()).isBetween(0.0, 90.0);
+        }
+    }
+
     /** Random balls thrown at flippers that are toggled at random: nothing ever ends up inside anything. */
     @ParameterizedTest
     @EnumSource(LoopMode.class)
