@@ -12,14 +12,12 @@ import physics.LineSegment;
 import physics.Vect;
 
 /**
- * Stage 3 of the loop: the earliest collision within a time window, over every free ball against the outer walls,
- * the gizmo shapes it can reach and every other free ball. All times come from physics.Geometry. A moving flipper
+ * Stage 3 of the loop, for one ball: the time until it hits the outer walls, each gizmo shape it can reach, or
+ * another ball. All times come from physics.Geometry. A moving flipper
  * is asked through the rotating methods of a GeometryImpl whose foresight ends with its swing (the library assumes
  * the rotation goes on for ever, pitfall 3); after that it is a fixed shape at its limit.
  */
 final class CollisionDetector {
-    /** Collisions this close in time count as simultaneous; then a circle wins over a segment (ends, corners). */
-    private static final double TIE = 1e-12;
     /** Margin around a ball's swept box when asking the spatial index (touching shapes must be found). */
     private static final double REACH_MARGIN = 1e-6;
 
@@ -48,17 +46,22 @@ final class CollisionDetector {
         return stoppedBalls.contains(ball) ? Vect.ZERO : ball.velocity();
     }
 
-    /** The earliest collision at a time in [0, window], or null if there is none. */
-    Collision earliest(List<Ball> freeBalls, double window) {
+    /** The ball's earliest collision with the outer walls or a gizmo within the window. */
+    Earliest againstScene(Ball ball, double window) {
         Earliest earliest = new Earliest(window);
-        for (int i = 0; i < freeBalls.size(); i++) {
-            Ball ball = freeBalls.get(i);
-            againstWallsAndGizmos(ball, window, earliest);
-            for (int j = i + 1; j < freeBalls.size(); j++) {
-                againstBall(ball, freeBalls.get(j), window, earliest);
-            }
+        againstWallsAndGizmos(ball, window, earliest);
+        return earliest;
+    }
+
+    /** The two balls' collision, if it comes within the window, offered to {@code earliest} as {@code ball}'s. */
+    void againstBall(Ball ball, Ball other, double window, Earliest earliest) {
+        Vect relative = motion(ball).minus(motion(other));
+        double gap = Math.sqrt(ball.position().distanceSquared(other.position())) - 2 * Board.BALL_RADIUS;
+        if (gap > relative.length() * window + REACH_MARGIN) {
+            return;   // cannot close the gap within the window
         }
-        return earliest.collision;
+        double time = Geometry.timeUntilBallBallCollision(ball.circle(), motion(ball), other.circle(), motion(other));
+        earliest.offer(time, ball, new Contact.OtherBall(other), true);
     }
 
     boolean isMoving(Flipper flipper) {
@@ -146,37 +149,4 @@ final class CollisionDetector {
         }
     }
 
-    private void againstBall(Ball ball, Ball other, double window, Earliest earliest) {
-        Vect relative = motion(ball).minus(motion(other));
-        double gap = Math.sqrt(ball.position().distanceSquared(other.position())) - 2 * Board.BALL_RADIUS;
-        if (gap > relative.length() * window + REACH_MARGIN) {
-            return;   // cannot close the gap within the window
-        }
-        double time = Geometry.timeUntilBallBallCollision(ball.circle(), motion(ball), other.circle(), motion(other));
-        earliest.offer(time, ball, new Contact.OtherBall(other), true);
-    }
-
-    /** Keeps the earliest offer within the window; near-ties go to circles. */
-    private static final class Earliest {
-        private final double window;
-        private Collision collision;
-        private boolean circle;
-
-        Earliest(double window) {
-            this.window = window;
-        }
-
-        void offer(double time, Ball ball, Contact contact, boolean isCircle) {
-            if (!(time >= 0 && time <= window)) {
-                return;   // also drops NaN and infinity
-            }
-            boolean better = collision == null
-                    || time < collision.time() - TIE
-                    || (time <= collision.time() + TIE && isCircle && !circle);
-            if (better) {
-                collision = new Collision(time, ball, contact);
-                circle = isCircle;
-            }
-        }
-    }
 }

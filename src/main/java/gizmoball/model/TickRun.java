@@ -16,9 +16,10 @@ import physics.LineSegment;
 import physics.Vect;
 
 /**
- * One tick of the six-stage loop of SPEC.md on a board. Stage 1 changes the velocities; then stages 3 (detect),
- * 2 (move everything to the collision), 4 (resolve) and 5 (trigger) repeat until the tick is used up; stage 6
- * notifies the observers. In {@link LoopMode#SEED} a ball that has bounced stays where it is for the rest of the
+ * One tick of the six-stage loop of SPEC.md on a board. Stage 1 changes the velocities; then stages 3 (detect,
+ * through a {@link CollisionSchedule} that asks again only about what the last collision changed), 2 (move
+ * everything to the collision), 4 (resolve) and 5 (trigger) repeat until the tick is used up; stage 6 notifies
+ * the observers. In {@link LoopMode#SEED} a ball that has bounced stays where it is for the rest of the
  * tick (the classic loop: one move, at most one collision per ball and tick; per ball, because one ball lying on
  * the floor would otherwise stop every ball on the board); in {@link LoopMode#CONTINUOUS} it goes on moving, so
  * no time is lost.
@@ -56,6 +57,7 @@ final class TickRun {
     private final double restSpeed;
     private final Set<Flipper> stoppedFlippers = new HashSet<>();
     private final CollisionDetector detector;
+    private final CollisionSchedule schedule;
     private final Map<Ball, Integer> zeroTimeHits = new HashMap<>();
     private final Map<List<Object>, Integer> flipperHits = new HashMap<>();
     /** SEED: balls that have had their collision this tick and move no more. */
@@ -75,6 +77,7 @@ final class TickRun {
         this.startTime = board.time();
         this.restSpeed = Math.max(MIN_REST_SPEED, REST_TICKS_OF_GRAVITY * Math.abs(board.gravity()) * dt);
         this.detector = new CollisionDetector(board, stoppedFlippers, finished);
+        this.schedule = new CollisionSchedule(detector);
     }
 
     void run() {
@@ -91,6 +94,7 @@ final class TickRun {
             stage2BallMotion(collision.time());
             remaining -= collision.time();
             String hit = stage4CollisionResolution(collision);
+            forgetWhatChanged(collision);
             if (hit != null) {
                 stage5Triggering(hit);
             }
@@ -138,7 +142,7 @@ final class TickRun {
 
     /** Stage 3: the earliest collision within the time left, or null. */
     private Collision stage3CollisionDetection(double window) {
-        return detector.earliest(freeBalls(), window);
+        return schedule.next(freeBalls(), elapsed, window);
     }
 
     /**
@@ -176,6 +180,7 @@ final class TickRun {
                 GizmoBase target = board.gizmoBase(connection.target());
                 if (target != null) {
                     board.performAction(target, now);
+                    schedule.forgetAll();   // a flipper turned round or an absorber fired: the scene changed
                 }
             }
         }
@@ -250,6 +255,7 @@ final class TickRun {
         }
         if (countFlipperHit(ball, flipper)) {
             stoppedFlippers.add(flipper);   // the ball is pinched: hold the flipper rather than push it through
+            schedule.forgetAll();
         }
         return flipper.name();
     }
@@ -270,6 +276,14 @@ final class TickRun {
         bouncedElastically.add(other);
         ballPairs.add(List.of(ball, other));
         return null;
+    }
+
+    /** The balls of a resolved collision move differently now: stage 3 asks about them again. */
+    private void forgetWhatChanged(Collision collision) {
+        schedule.forget(collision.ball());
+        if (collision.contact() instanceof Contact.OtherBall other) {
+            schedule.forget(other.other());
+        }
     }
 
     /** SEED: the ball (and a ball it hit) stays put for the rest of the tick. */
