@@ -9,13 +9,17 @@ import gizmoball.model.GizmoKind;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
+import java.awt.FontMetrics;
 import java.awt.Graphics2D;
 import java.awt.Shape;
 import java.awt.geom.Ellipse2D;
 import java.awt.geom.Line2D;
 import java.awt.geom.Path2D;
 import java.awt.geom.Rectangle2D;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
+import java.util.stream.Collectors;
 import physics.Circle;
 import physics.Vect;
 
@@ -29,8 +33,11 @@ public final class BoardPainter {
     static final Color WALLS = new Color(0x9aa3b5);
     static final Color GRID = new Color(0x323a4d);
     static final Color BALL = new Color(0xf2f2f2);
-    /** Height in L of the number of balls an absorber holds. */
-    private static final float HELD_COUNT_FONT = 0.6f;
+    /** Size in L of the number of balls an absorber holds, written on the ball in its corner. */
+    private static final float HELD_COUNT_FONT = 0.36f;
+    private static final Color HELD_COUNT = new Color(0x202020);
+    /** Digits are about this part of a font's ascent tall (to centre them on the ball). */
+    private static final float DIGIT_HEIGHT_OF_ASCENT = 0.75f;
     /** Thickness of the outer walls, drawn just outside the board. */
     static final int WALL_PIXELS = 3;
     /** How long (simulated seconds) a triggered gizmo stays lit, fading out. */
@@ -106,26 +113,21 @@ public final class BoardPainter {
         }
     }
 
-    /** Balls held by an absorber all sit in its corner: a number beside them says how many there are. */
+    /** Balls held by an absorber all sit in its corner, one on another: the top one shows how many there are. */
     private static void paintHeldCounts(Graphics2D g, Board board) {
+        Map<Vect, Long> held = board.balls().stream().filter(Ball::isCaptured)
+                .collect(Collectors.groupingBy(Ball::position, LinkedHashMap::new, Collectors.counting()));
         g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 1).deriveFont(HELD_COUNT_FONT));
-        g.setColor(BALL);
-        for (Gizmo gizmo : board.gizmos()) {
-            if (gizmo.kind() != GizmoKind.ABSORBER) {
-                continue;
+        g.setColor(HELD_COUNT);
+        FontMetrics metrics = g.getFontMetrics();
+        held.forEach((at, count) -> {
+            if (count > 1) {
+                String text = Long.toString(count);
+                Rectangle2D bounds = metrics.getStringBounds(text, g);
+                float digitHeight = metrics.getAscent() * DIGIT_HEIGHT_OF_ASCENT;
+                g.drawString(text, (float) (at.x() - bounds.getWidth() / 2), (float) at.y() + digitHeight / 2);
             }
-            long held = board.balls().stream().filter(b -> b.isCaptured() && inside(b.position(), gizmo)).count();
-            if (held > 1) {
-                String text = held + "x";
-                float width = (float) g.getFontMetrics().getStringBounds(text, g).getWidth();
-                g.drawString(text, gizmo.x() + gizmo.width() - 0.6f - width, gizmo.y() + gizmo.height() - 0.08f);
-            }
-        }
-    }
-
-    private static boolean inside(Vect p, Gizmo gizmo) {
-        return p.x() >= gizmo.x() && p.x() <= gizmo.x() + gizmo.width()
-                && p.y() >= gizmo.y() && p.y() <= gizmo.y() + gizmo.height();
+        });
     }
 
     private static Graphics2D inBoardUnits(Graphics2D screen, BoardTransform t) {

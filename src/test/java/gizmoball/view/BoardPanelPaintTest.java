@@ -91,6 +91,36 @@ class BoardPanelPaintTest {
     }
 
     @Test
+    void severalBallsHeldByAnAbsorberShowHowManyOnTheBallInItsCorner() {
+        Board held = new Board();
+        held.addAbsorber("A", 0, 18, 20, 20);
+        held.addBall("B1", 5, 18.5, 0, 0);
+        panel = new BoardPanel(held);
+        panel.setSize(SIZE, SIZE);
+        assertThat(darkPixelsOnBall(render(), 19.75, 19.75)).as("one ball: no label").isZero();
+
+        held.addBall("B2", 7, 18.5, 0, 0);
+        held.addBall("B3", 9, 18.5, 0, 0);
+
+        assertThat(held.balls()).allSatisfy(b -> assertThat(b.isCaptured()).isTrue());
+        assertThat(darkPixelsOnBall(render(), 19.75, 19.75)).as("three balls: a label").isPositive();
+    }
+
+    /** Pixels well inside the ball (away from its outline) much darker than the ball's colour. */
+    private int darkPixelsOnBall(BufferedImage image, double x, double y) {
+        int dark = 0;
+        double r = 0.8 * Board.BALL_RADIUS;
+        for (double dx = -r; dx <= r; dx += 0.02) {
+            for (double dy = -r; dy <= r; dy += 0.02) {
+                if (dx * dx + dy * dy <= r * r && at(image, x + dx, y + dy).getRed() < 128) {
+                    dark++;
+                }
+            }
+        }
+        return dark;
+    }
+
+    @Test
     void theGridIsDrawnOnlyWhenAskedFor() {
         Point2D line = panel.transform().toScreen(15, 5.5);
         int x = (int) line.getX();
