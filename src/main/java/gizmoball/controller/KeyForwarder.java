@@ -19,7 +19,7 @@ import javax.swing.Timer;
  */
 public final class KeyForwarder {
     /** Long enough for an X11 auto-repeat press to follow its release, short enough not to be felt. */
-    static final long PAIR_WINDOW_MILLIS = 20;
+    private static final long PAIR_WINDOW_MILLIS = 20;
     private static final int SHORTCUT_MODIFIERS =
             KeyEvent.CTRL_DOWN_MASK | KeyEvent.ALT_DOWN_MASK | KeyEvent.META_DOWN_MASK;
 

@@ -57,14 +57,9 @@ public final class BoardPainter {
         };
     }
 
-    /** Paints the whole board into {@code screen}, whose coordinates are the component's pixels. */
-    public static void paint(Graphics2D screen, Board board, BoardTransform t, boolean grid) {
-        paintFixed(screen, board, t, grid);
-        paintMoving(screen, board, t);
-    }
-
     /**
-     * The part of the board that only an edit changes: floor, grid, walls and every gizmo but the flippers,
+     * Paints into {@code screen}, whose coordinates are the component's pixels, the part of the board that
+     * only an edit changes: floor, grid, walls and every gizmo but the flippers,
      * in their resting colours. A view may cache it between edits.
      */
     public static void paintFixed(Graphics2D screen, Board board, BoardTransform t, boolean grid) {
