@@ -42,6 +42,9 @@ public final class Invariants {
                 found.add(ball + ": outside the board");
             }
             for (GizmoBase gizmo : board.gizmoBases()) {
+                if (!nearFootprint(gizmo, p, r)) {
+                    continue;   // every body lies within its footprint: a ball this far cannot be inside it
+                }
                 double depth = r - gizmo.signedDistance(p);
                 if (depth > TOLERANCE) {
                     found.add(ball + ": " + depth + " L inside " + gizmo);
@@ -57,5 +60,10 @@ public final class Invariants {
             }
         }
         return found;
+    }
+
+    private static boolean nearFootprint(GizmoBase gizmo, Vect p, double r) {
+        return p.x() > gizmo.x() - r && p.x() < gizmo.x() + gizmo.width() + r
+                && p.y() > gizmo.y() - r && p.y() < gizmo.y() + gizmo.height() + r;
     }
 }

@@ -18,9 +18,10 @@ import physics.Vect;
 /**
  * One tick of the six-stage loop of SPEC.md on a board. Stage 1 changes the velocities; then stages 3 (detect),
  * 2 (move everything to the collision), 4 (resolve) and 5 (trigger) repeat until the tick is used up; stage 6
- * notifies the observers. In {@link LoopMode#SEED} a ball that has had its collision stays where it is for the
- * rest of the tick (the classic loop: one move, at most one collision per ball and tick); in
- * {@link LoopMode#CONTINUOUS} it goes on moving, so no time is lost.
+ * notifies the observers. In {@link LoopMode#SEED} a ball that has bounced stays where it is for the rest of the
+ * tick (the classic loop: one move, at most one collision per ball and tick; per ball, because one ball lying on
+ * the floor would otherwise stop every ball on the board); in {@link LoopMode#CONTINUOUS} it goes on moving, so
+ * no time is lost.
  *
  * <p>Resting contact (pitfall 11): a ball meeting a fixed surface more slowly than about two ticks of gravity
  * loses its normal velocity instead of bouncing, so a ball lying on a surface sees one zero-time collision per
@@ -65,6 +66,8 @@ final class TickRun {
     private final Set<Ball> lostEnergy = new HashSet<>();
     private final List<List<Ball>> ballPairs = new ArrayList<>();
     private double elapsed;
+    /** Whether the collision stage 4 resolved last was a resting contact rather than a bounce. */
+    private boolean restingContact;
 
     TickRun(Board board, double dt) {
         this.board = board;
@@ -91,8 +94,8 @@ final class TickRun {
             if (hit != null) {
                 stage5Triggering(hit);
             }
-            if (board.loopMode() == LoopMode.SEED) {
-                finish(collision);
+            if (board.loopMode() == LoopMode.SEED && !restingContact) {
+                finish(collision);   // a resting contact only projects the velocity: it is no bounce to stop at
             }
             if (++collisions >= maxCollisions) {
                 break;
@@ -146,6 +149,7 @@ final class TickRun {
         Ball ball = collision.ball();
         boolean zeroTime = collision.time() <= ZERO_TIME;
         Contact contact = collision.contact();
+        restingContact = false;
         String hit;
         if (contact instanceof Contact.Wall wall) {
             hit = hitFixed(ball, wall.gizmo(), coeff -> Geometry.reflectWall(wall.segment(), ball.velocity(), coeff));
@@ -207,6 +211,7 @@ final class TickRun {
         Vect before = ball.velocity();
         boolean resting = reflect.apply(1.0).minus(before).length() / 2 <= restSpeed;
         ball.setVelocity(reflect.apply(resting ? 0.0 : coefficient));
+        restingContact = resting;
         return resting;
     }
 

@@ -90,9 +90,11 @@ class RestingAndStabilityTest {
         assertThat(ball.position().x()).isBetween(9.0, 10 - R + 1e-9);
     }
 
-    @Test
-    void aBallRollingAcrossARowOfSquaresDoesNotSnagOnTheSeams() {
+    @ParameterizedTest
+    @EnumSource(LoopMode.class)
+    void aBallRollingAcrossARowOfSquaresDoesNotSnagOnTheSeams(LoopMode mode) {
         Board board = new Board();
+        board.setLoopMode(mode);
         board.setFriction(0, 0);
         for (int x = 3; x < 13; x++) {
             board.addGizmo(GizmoKind.SQUARE, "S" + x, x, 10);
