@@ -1,5 +1,6 @@
 package gizmoball.boardfile;
 
+import gizmoball.model.GizmoKind;
 import java.util.Arrays;
 import java.util.Locale;
 import java.util.Map;
@@ -33,6 +34,18 @@ enum CommandWord {
     CommandWord(String spelling, String arguments) {
         this.spelling = spelling;
         this.usage = spelling + " " + arguments;
+    }
+
+    /** The command that adds a gizmo of that kind. */
+    static CommandWord of(GizmoKind kind) {
+        return switch (kind) {
+            case SQUARE -> SQUARE;
+            case CIRCLE -> CIRCLE;
+            case TRIANGLE -> TRIANGLE;
+            case LEFT_FLIPPER -> LEFT_FLIPPER;
+            case RIGHT_FLIPPER -> RIGHT_FLIPPER;
+            case ABSORBER -> ABSORBER;
+        };
     }
 
     /** The command word in any letter case (files from other implementations vary). */

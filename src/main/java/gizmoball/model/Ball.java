@@ -50,10 +50,14 @@ public final class Ball {
         position = newPosition;
     }
 
-    /** Sets the velocity, its speed clamped to {@link Board#MAX_SPEED}. */
+    /**
+     * Sets the velocity, its speed clamped to {@link Board#MAX_SPEED}. A clamped velocity can measure a rounding
+     * error over the limit; it is kept as it is (the tolerance of {@link Invariants}), so clamping twice changes
+     * nothing and a saved ball reloads with exactly its velocity.
+     */
     void setVelocity(Vect newVelocity) {
         double speed = newVelocity.length();
-        velocity = speed > Board.MAX_SPEED ? newVelocity.times(Board.MAX_SPEED / speed) : newVelocity;
+        velocity = speed > Board.MAX_SPEED * (1 + 1e-12) ? newVelocity.times(Board.MAX_SPEED / speed) : newVelocity;
     }
 
     void advance(double dt) {
