@@ -7,6 +7,9 @@ import gizmoball.boardfile.LoadResult;
 import gizmoball.model.Board;
 import java.io.IOException;
 import java.io.PrintStream;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.FileSystemException;
+import java.nio.file.NoSuchFileException;
 import java.util.List;
 
 /**
@@ -35,7 +38,7 @@ public final class HeadlessRunner {
         try {
             board = load(options, err);
         } catch (IOException e) {
-            err.println("gizmoball: cannot read " + options.board() + ": " + e);
+            err.println("gizmoball: cannot read " + options.board() + ": " + describe(e));
             return BAD_INPUT;
         } catch (BoardFileException e) {
             err.println("gizmoball: " + options.board() + " not loaded, " + e.getMessage());
@@ -64,7 +67,7 @@ public final class HeadlessRunner {
             try {
                 BoardFiles.save(board, options.out().get());
             } catch (IOException e) {
-                err.println("gizmoball: cannot write " + options.out().get() + ": " + e);
+                err.println("gizmoball: cannot write " + options.out().get() + ": " + describe(e));
                 return WRITE_FAILED;
             }
         } else {
@@ -76,5 +79,19 @@ public final class HeadlessRunner {
             }
         }
         return OK;
+    }
+
+    /** The file-system exceptions carry only the path as their message: say what happened instead. */
+    private static String describe(IOException e) {
+        if (e instanceof NoSuchFileException) {
+            return "no such file or directory";
+        }
+        if (e instanceof AccessDeniedException) {
+            return "permission denied";
+        }
+        if (e instanceof FileSystemException fileSystem && fileSystem.getReason() != null) {
+            return fileSystem.getReason();
+        }
+        return e.toString();
     }
 }

@@ -97,7 +97,7 @@ class HeadlessRunnerTest {
     void aMissingBoardExitsTwo() {
         assertThat(run("--headless", "--ticks", "1", directory.resolve("none.txt").toString()))
                 .isEqualTo(HeadlessRunner.BAD_INPUT);
-        assertThat(stderr()).contains("cannot read");
+        assertThat(stderr()).contains("cannot read " + directory.resolve("none.txt") + ": no such file or directory");
     }
 
     @Test
