@@ -1,6 +1,5 @@
 package gizmoball.boardfile;
 
-import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyEdge;
 import java.util.List;
 import java.util.Locale;
@@ -33,11 +32,8 @@ final class CommandParser {
                     + " (" + word.usage() + "), found " + args.size());
         }
         return switch (word) {
-            case SQUARE -> addGizmo(GizmoKind.SQUARE, args);
-            case CIRCLE -> addGizmo(GizmoKind.CIRCLE, args);
-            case TRIANGLE -> addGizmo(GizmoKind.TRIANGLE, args);
-            case LEFT_FLIPPER -> addGizmo(GizmoKind.LEFT_FLIPPER, args);
-            case RIGHT_FLIPPER -> addGizmo(GizmoKind.RIGHT_FLIPPER, args);
+            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER -> new Command.AddGizmo(word.kind(),
+                    args.get(0), cell("x", args.get(1)), cell("y", args.get(2)));
             case ABSORBER -> new Command.AddAbsorber(args.get(0), cell("x1", args.get(1)), cell("y1", args.get(2)),
                     cell("x2", args.get(3)), cell("y2", args.get(4)));
             case BALL -> new Command.AddBall(args.get(0), number("x", args.get(1)), number("y", args.get(2)),
@@ -50,10 +46,6 @@ final class CommandParser {
             case GRAVITY -> new Command.Gravity(number("gravity", args.get(0)));
             case FRICTION -> new Command.Friction(number("mu", args.get(0)), number("mu2", args.get(1)));
         };
-    }
-
-    private static Command addGizmo(GizmoKind kind, List<String> args) throws Refusal {
-        return new Command.AddGizmo(kind, args.get(0), cell("x", args.get(1)), cell("y", args.get(2)));
     }
 
     private static Command keyConnect(List<String> args) throws Refusal {
