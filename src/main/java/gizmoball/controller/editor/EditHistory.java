@@ -1,0 +1,126 @@
+package gizmoball.controller.editor;
+
+import gizmoball.model.Board;
+import gizmoball.model.BoardChange;
+import gizmoball.model.BoardObserver;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Deque;
+import java.util.List;
+import java.util.function.Consumer;
+
+/**
+ * Undo and redo for build mode, by whole-board snapshots: before each edit the board is copied; undo puts the
+ * copy back with {@link Board#replaceContents}. Snapshots are simple and cannot drift from the model the way
+ * hand-written inverse operations could, and boards are small (a few hundred objects at most).
+ * <p>
+ * An edit made of several board operations is atomic: if a later operation is refused, the earlier ones are
+ * rolled back from the snapshot, so nothing is ever half-applied.
+ */
+public final class EditHistory {
+    /** Enough for any editing session; bounds the memory a long session can hold. */
+    static final int LIMIT = 200;
+
+    private final Board board;
+    private final Deque<Board> undo = new ArrayDeque<>();
+    private final Deque<Board> redo = new ArrayDeque<>();
+    private final List<Runnable> listeners = new ArrayList<>();
+    private final List<Runnable> foreignReplaceListeners = new ArrayList<>();
+    private boolean ownChange;
+    private int editsDuringOperation;
+
+    public EditHistory(Board board) {
+        this.board = board;
+        board.addObserver(new BoardObserver() {
+            @Override
+            public void boardChanged(Board b, BoardChange change) {
+                if (ownChange) {
+                    editsDuringOperation++;
+                } else if (change == BoardChange.REPLACE) {
+                    foreignReplaceListeners.forEach(Runnable::run);
+                }
+            }
+        });
+    }
+
+    /**
+     * Runs the edit on the board. On success the board as it was before becomes an undo step and the redo
+     * stack is dropped; on a refusal the board is left exactly as before and the exception is rethrown.
+     */
+    public void perform(Consumer<Board> edit) {
+        Board before = board.copy();
+        ownChange = true;
+        editsDuringOperation = 0;
+        try {
+            edit.accept(board);
+        } catch (RuntimeException refused) {
+            if (editsDuringOperation > 0) {
+                board.replaceContents(before);
+            }
+            throw refused;
+        } finally {
+            ownChange = false;
+        }
+        undo.push(before);
+        while (undo.size() > LIMIT) {
+            undo.removeLast();
+        }
+        redo.clear();
+        fire();
+    }
+
+    public boolean canUndo() {
+        return !undo.isEmpty();
+    }
+
+    public boolean canRedo() {
+        return !redo.isEmpty();
+    }
+
+    /** Puts back the board as it was before the last edit; false if there is nothing to undo. */
+    public boolean undo() {
+        return swap(undo, redo);
+    }
+
+    /** Re-applies the last undone edit; false if there is nothing to redo. */
+    public boolean redo() {
+        return swap(redo, undo);
+    }
+
+    /** Forgets every step, e.g. when another board is opened. */
+    public void clear() {
+        undo.clear();
+        redo.clear();
+        fire();
+    }
+
+    /** Called after every change of what can be undone or redone (to enable menu items). */
+    public void addListener(Runnable listener) {
+        listeners.add(listener);
+    }
+
+    /** Called when something other than this history replaced the board's contents (Open, New, back from play). */
+    public void addForeignReplaceListener(Runnable listener) {
+        foreignReplaceListeners.add(listener);
+    }
+
+    private boolean swap(Deque<Board> from, Deque<Board> to) {
+        if (from.isEmpty()) {
+            return false;
+        }
+        to.push(board.copy());
+        ownChange = true;
+        try {
+            board.replaceContents(from.pop());
+        } finally {
+            ownChange = false;
+        }
+        fire();
+        return true;
+    }
+
+    private void fire() {
+        listeners.forEach(Runnable::run);
+    }
+}
