@@ -61,6 +61,11 @@ public final class BuildController {
         this.board = board;
         this.history = new EditHistory(board);
         this.names = new NameGenerator(board);
+        // Another board was opened: half-done steps and the selection belonged to the old one.
+        history.addResetListener(() -> {
+            selected = null;
+            cancel();
+        });
     }
 
     public Board board() {
@@ -424,7 +429,7 @@ public final class BuildController {
 
     public static String describe(KeyBinding binding) {
         return "key " + KeyEvent.getKeyText(binding.keyCode()) + " " + binding.edge().name().toLowerCase()
-                + " -> " + binding.gizmo();
+                + " \u2192 " + binding.gizmo();
     }
 
     // ---- the tools' steps ----

@@ -12,11 +12,15 @@ import java.util.function.Consumer;
 
 /**
  * Undo and redo for build mode, by whole-board snapshots: before each edit the board is copied; undo puts the
- * copy back with {@link Board#replaceContents}. Snapshots are simple and cannot drift from the model the way
- * hand-written inverse operations could, and boards are small (a few hundred objects at most).
+ * copy back with {@link Board#replaceContents}. Snapshots cannot drift from the model the way hand-written
+ * inverse operations could, and boards are small (a few hundred objects at most).
  * <p>
  * An edit made of several board operations is atomic: if a later operation is refused, the earlier ones are
  * rolled back from the snapshot, so nothing is ever half-applied.
+ * <p>
+ * Changes made by others are noticed too: an edit from elsewhere becomes an undo step of its own; a replacement
+ * of the whole contents by a different design (Open, New) starts a fresh history, because steps recorded against
+ * the old board would undo into it. Replacements that bring back the same design (returning from play) keep it.
  */
 public final class EditHistory {
     /** Enough for any editing session; bounds the memory a long session can hold. */
@@ -26,19 +30,22 @@ public final class EditHistory {
     private final Deque<Board> undo = new ArrayDeque<>();
     private final Deque<Board> redo = new ArrayDeque<>();
     private final List<Runnable> listeners = new ArrayList<>();
-    private final List<Runnable> foreignReplaceListeners = new ArrayList<>();
+    private final List<Runnable> resetListeners = new ArrayList<>();
+    /** The board as this history last saw it, to recognise what a change from elsewhere did. */
+    private Board current;
     private boolean ownChange;
     private int editsDuringOperation;
 
     public EditHistory(Board board) {
         this.board = board;
+        this.current = board.copy();
         board.addObserver(new BoardObserver() {
             @Override
             public void boardChanged(Board b, BoardChange change) {
                 if (ownChange) {
                     editsDuringOperation++;
-                } else if (change == BoardChange.REPLACE) {
-                    foreignReplaceListeners.forEach(Runnable::run);
+                } else if (change != BoardChange.TICK) {
+                    changedElsewhere(change);
                 }
             }
         });
@@ -62,12 +69,7 @@ public final class EditHistory {
         } finally {
             ownChange = false;
         }
-        undo.push(before);
-        while (undo.size() > LIMIT) {
-            undo.removeLast();
-        }
-        redo.clear();
-        fire();
+        record(before);
     }
 
     public boolean canUndo() {
@@ -88,21 +90,39 @@ public final class EditHistory {
         return swap(redo, undo);
     }
 
-    /** Forgets every step, e.g. when another board is opened. */
-    public void clear() {
-        undo.clear();
-        redo.clear();
-        fire();
-    }
-
     /** Called after every change of what can be undone or redone (to enable menu items). */
     public void addListener(Runnable listener) {
         listeners.add(listener);
     }
 
-    /** Called when something other than this history replaced the board's contents (Open, New, back from play). */
-    public void addForeignReplaceListener(Runnable listener) {
-        foreignReplaceListeners.add(listener);
+    /** Called when another design replaced the board and the history started afresh. */
+    public void addResetListener(Runnable listener) {
+        resetListeners.add(listener);
+    }
+
+    private void changedElsewhere(BoardChange change) {
+        if (Design.of(board).equals(Design.of(current))) {
+            return;
+        }
+        if (change == BoardChange.EDIT) {
+            record(current);
+            return;
+        }
+        undo.clear();
+        redo.clear();
+        current = board.copy();
+        resetListeners.forEach(Runnable::run);
+        fire();
+    }
+
+    private void record(Board before) {
+        undo.push(before);
+        while (undo.size() > LIMIT) {
+            undo.removeLast();
+        }
+        redo.clear();
+        current = board.copy();
+        fire();
     }
 
     private boolean swap(Deque<Board> from, Deque<Board> to) {
@@ -116,6 +136,7 @@ public final class EditHistory {
         } finally {
             ownChange = false;
         }
+        current = board.copy();
         fire();
         return true;
     }

@@ -50,12 +50,6 @@ public final class BuildModeInstaller {
         panel.addOverlay(new BuildOverlay(controller, building));
         BoardInput.attach(controller, panel, building, () -> chooseEdge(controller, panel));
 
-        // Open, New or the return from play replaced the whole board: steps recorded against the old
-        // contents would undo into a different board, so they are dropped.
-        controller.history().addForeignReplaceListener(() -> {
-            controller.history().clear();
-            controller.cancel();
-        });
         session.addModeListener(mode -> {
             controller.cancel();
             panel.setGridVisible(mode == Mode.BUILD);

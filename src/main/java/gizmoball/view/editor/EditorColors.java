@@ -4,11 +4,6 @@ import java.awt.Color;
 
 /** The editor's colours in one place, so palette icons, previews and highlights agree. */
 final class EditorColors {
-    static final Color SQUARE = new Color(0xE0, 0x4B, 0x3A);
-    static final Color CIRCLE = new Color(0x3C, 0xB3, 0x71);
-    static final Color TRIANGLE = new Color(0x3A, 0x7B, 0xD5);
-    static final Color FLIPPER = new Color(0xF2, 0xB1, 0x34);
-    static final Color ABSORBER = new Color(0xC0, 0x4C, 0xC8);
     static final Color BALL = new Color(0xD8, 0xD8, 0xE0);
     static final Color ICON_BACKGROUND = new Color(0x2B, 0x2F, 0x3A);
     static final Color ICON_INK = new Color(0xEE, 0xEE, 0xF2);

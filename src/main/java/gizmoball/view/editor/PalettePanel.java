@@ -9,6 +9,7 @@ import javax.swing.ButtonGroup;
 import javax.swing.JPanel;
 import javax.swing.JToggleButton;
 import javax.swing.SwingConstants;
+import java.awt.BorderLayout;
 import java.awt.GridLayout;
 import java.util.EnumMap;
 import java.util.Map;
@@ -21,8 +22,11 @@ public final class PalettePanel extends JPanel {
     private final Map<Tool, JToggleButton> buttons = new EnumMap<>(Tool.class);
 
     public PalettePanel(BuildController controller) {
-        super(new GridLayout(0, 1, 0, 2));
+        super(new BorderLayout());
         setBorder(BorderFactory.createEmptyBorder(6, 6, 6, 6));
+        // The buttons keep their natural height at the top however tall the window is.
+        JPanel column = new JPanel(new GridLayout(0, 1, 0, 2));
+        add(column, BorderLayout.NORTH);
         ButtonGroup group = new ButtonGroup();
         for (Tool tool : Tool.values()) {
             JToggleButton button = new JToggleButton(tool.label(), new ToolIcon(tool));
@@ -33,7 +37,7 @@ public final class PalettePanel extends JPanel {
             button.setToolTipText("<html><b>" + tool.labelWithShortcut() + "</b><br>" + tool.hint() + "</html>");
             button.addActionListener(e -> controller.setTool(tool));
             group.add(button);
-            add(button);
+            column.add(button);
             buttons.put(tool, button);
         }
         controller.addStateListener(() -> buttons.get(controller.tool()).setSelected(true));

@@ -20,6 +20,7 @@ import javax.swing.JPanel;
 import javax.swing.JScrollPane;
 import javax.swing.JTextField;
 import javax.swing.ListSelectionModel;
+import java.awt.BorderLayout;
 import java.awt.Dimension;
 import java.awt.GridBagConstraints;
 import java.awt.GridBagLayout;
@@ -52,6 +53,7 @@ public final class PropertiesPanel extends JPanel {
     private final JTextField ballVx = field("ball.vx");
     private final JTextField ballVy = field("ball.vy");
     private final JButton applyBall = new JButton("Apply");
+    private final JPanel ballRows = new JPanel(new GridBagLayout());
     private final DefaultListModel<Link> links = new DefaultListModel<>();
     private final JList<Link> linkList = new JList<>(links);
     private final JButton removeLink = new JButton("Remove");
@@ -59,13 +61,17 @@ public final class PropertiesPanel extends JPanel {
 
     public PropertiesPanel(BuildController controller) {
         this.controller = controller;
-        setLayout(new BoxLayout(this, BoxLayout.Y_AXIS));
+        setLayout(new BorderLayout());
         setBorder(BorderFactory.createEmptyBorder(6, 6, 6, 6));
-        setPreferredSize(new Dimension(240, 10));
-        add(section("Board", boardSection()));
-        add(Box.createVerticalStrut(8));
-        add(section("Selection", selectionSection()));
-        add(Box.createVerticalGlue());
+        // A fixed width: the board view must not jump when the selection shows more or fewer rows.
+        setPreferredSize(new Dimension(250, 10));
+        // Stacked at the top at their natural heights, however tall the window is.
+        JPanel stack = new JPanel();
+        stack.setLayout(new BoxLayout(stack, BoxLayout.Y_AXIS));
+        stack.add(section("Board", boardSection()));
+        stack.add(Box.createVerticalStrut(8));
+        stack.add(section("Selection", selectionSection()));
+        add(stack, BorderLayout.NORTH);
 
         controller.board().addObserver((board, change) -> {
             if (change != BoardChange.TICK) {
@@ -92,11 +98,7 @@ public final class PropertiesPanel extends JPanel {
         Optional<Gizmo> gizmo = controller.selectedGizmo();
         Optional<Ball> ball = controller.selectedBall();
         selection.setText(describe(gizmo, ball));
-        for (JTextField f : new JTextField[]{ballX, ballY, ballVx, ballVy}) {
-            f.setEnabled(ball.isPresent());
-            f.setText("");
-        }
-        applyBall.setEnabled(ball.isPresent());
+        ballRows.setVisible(ball.isPresent());
         ball.ifPresent(b -> {
             ballX.setText(format(b.position().x()));
             ballY.setText(format(b.position().y()));
@@ -143,16 +145,19 @@ public final class PropertiesPanel extends JPanel {
         GridBagConstraints c = constraints(0, 0);
         c.gridwidth = 2;
         p.add(selection, c);
-        row(p, 1, "Ball x", ballX);
-        row(p, 2, "Ball y", ballY);
-        row(p, 3, "vx (L/s)", ballVx);
-        row(p, 4, "vy (L/s)", ballVy);
+        row(ballRows, 0, "Ball x", ballX);
+        row(ballRows, 1, "Ball y", ballY);
+        row(ballRows, 2, "vx (L/s)", ballVx);
+        row(ballRows, 3, "vy (L/s)", ballVy);
         applyBall.setName("ball.apply");
         applyBall.addActionListener(e -> applyBall());
         for (JTextField f : new JTextField[]{ballX, ballY, ballVx, ballVy}) {
             f.addActionListener(e -> applyBall());
         }
-        p.add(applyBall, constraints(1, 5));
+        ballRows.add(applyBall, constraints(1, 4));
+        GridBagConstraints b = constraints(0, 1);
+        b.gridwidth = 2;
+        p.add(ballRows, b);
 
         GridBagConstraints l = constraints(0, 6);
         l.gridwidth = 2;
@@ -161,7 +166,7 @@ public final class PropertiesPanel extends JPanel {
         linkList.setSelectionMode(ListSelectionModel.SINGLE_SELECTION);
         linkList.setVisibleRowCount(6);
         JScrollPane scroll = new JScrollPane(linkList);
-        scroll.setPreferredSize(new Dimension(200, 110));
+        scroll.setPreferredSize(new Dimension(200, 150));
         GridBagConstraints s = constraints(0, 7);
         s.gridwidth = 2;
         s.fill = GridBagConstraints.BOTH;

@@ -1,6 +1,8 @@
 package gizmoball.view.editor;
 
 import gizmoball.controller.editor.Tool;
+import gizmoball.model.GizmoKind;
+import gizmoball.view.BoardPainter;
 
 import javax.swing.Icon;
 import java.awt.BasicStroke;
@@ -56,12 +58,12 @@ public final class ToolIcon implements Icon {
         double m = 6;
         double s = SIZE - 2 * m;
         switch (tool) {
-            case SQUARE -> fill(g, EditorColors.SQUARE, new Rectangle2D.Double(m, m, s, s));
-            case CIRCLE -> fill(g, EditorColors.CIRCLE, new Ellipse2D.Double(m, m, s, s));
-            case TRIANGLE -> fill(g, EditorColors.TRIANGLE, triangle(m, m, s));
-            case LEFT_FLIPPER -> flipper(g, m + 3, m + 3, m + 3, SIZE - m - 3);
-            case RIGHT_FLIPPER -> flipper(g, SIZE - m - 3, m + 3, SIZE - m - 3, SIZE - m - 3);
-            case ABSORBER -> fill(g, EditorColors.ABSORBER, new Rectangle2D.Double(4, SIZE / 2.0, SIZE - 8, 8));
+            case SQUARE -> fill(g, colour(GizmoKind.SQUARE), new Rectangle2D.Double(m, m, s, s));
+            case CIRCLE -> fill(g, colour(GizmoKind.CIRCLE), new Ellipse2D.Double(m, m, s, s));
+            case TRIANGLE -> fill(g, colour(GizmoKind.TRIANGLE), triangle(m, m, s));
+            case LEFT_FLIPPER -> flipper(g, m, m, s, true);
+            case RIGHT_FLIPPER -> flipper(g, m, m, s, false);
+            case ABSORBER -> fill(g, colour(GizmoKind.ABSORBER), new Rectangle2D.Double(4, SIZE / 2.0, SIZE - 8, 8));
             case BALL -> {
                 fill(g, EditorColors.BALL, new Ellipse2D.Double(6, 12, 10, 10));
                 arrow(g, EditorColors.ICON_INK, 14, 14, 23, 5);
@@ -79,8 +81,8 @@ public final class ToolIcon implements Icon {
                 g.draw(new Line2D.Double(SIZE - m - 2, m + 2, m + 2, SIZE - m - 2));
             }
             case CONNECT, DISCONNECT -> {
-                fill(g, EditorColors.SQUARE, new Rectangle2D.Double(3, 3, 8, 8));
-                fill(g, EditorColors.CIRCLE, new Ellipse2D.Double(17, 17, 8, 8));
+                fill(g, colour(GizmoKind.SQUARE), new Rectangle2D.Double(3, 3, 8, 8));
+                fill(g, colour(GizmoKind.CIRCLE), new Ellipse2D.Double(17, 17, 8, 8));
                 arrow(g, EditorColors.CONNECTION, 10, 10, 18, 18);
                 if (tool == Tool.DISCONNECT) {
                     slash(g);
@@ -93,6 +95,11 @@ public final class ToolIcon implements Icon {
                 }
             }
         }
+    }
+
+    /** The colour the board painter gives that kind, so the palette shows what will appear on the board. */
+    private static Color colour(GizmoKind kind) {
+        return BoardPainter.colourOf(kind);
     }
 
     private static void fill(Graphics2D g, Color color, java.awt.Shape shape) {
@@ -113,12 +120,17 @@ public final class ToolIcon implements Icon {
         return p;
     }
 
-    private static void flipper(Graphics2D g, double x0, double y0, double x1, double y1) {
-        g.setColor(EditorColors.FLIPPER);
-        g.setStroke(new BasicStroke(7f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
-        g.draw(new Line2D.Double(x0, y0, x1, y1));
-        g.setColor(EditorColors.ICON_INK);
-        g.fill(new Ellipse2D.Double(x0 - 1.5, y0 - 1.5, 3, 3));
+    /** The flipper's 2x2 box, faint, with the bar hanging at rest along its left or right edge. */
+    private static void flipper(Graphics2D g, double x, double y, double size, boolean left) {
+        g.setColor(EditorColors.translucent(EditorColors.ICON_INK, 70));
+        g.setStroke(new BasicStroke(1f));
+        g.draw(new Rectangle2D.Double(x, y, size, size));
+        double barX = left ? x + 3 : x + size - 3;
+        g.setColor(colour(GizmoKind.LEFT_FLIPPER));
+        g.setStroke(new BasicStroke(6f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+        g.draw(new Line2D.Double(barX, y + 3, barX, y + size - 3));
+        g.setColor(EditorColors.ICON_BACKGROUND);
+        g.fill(new Ellipse2D.Double(barX - 1.5, y + 1.5, 3, 3));
         g.setStroke(new BasicStroke(2f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
     }
 
@@ -139,7 +151,7 @@ public final class ToolIcon implements Icon {
         RoundRectangle2D cap = new RoundRectangle2D.Double(5, 5, 18, 18, 5, 5);
         g.setColor(Color.WHITE);
         g.fill(cap);
-        g.setColor(EditorColors.ICON_INK);
+        g.setColor(EditorColors.ICON_BACKGROUND);
         g.draw(cap);
         g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 12));
         g.drawString("K", 10, 19);

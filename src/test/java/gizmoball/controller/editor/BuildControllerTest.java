@@ -121,11 +121,11 @@ class BuildControllerTest {
     void draggingOntoAnotherGizmoIsRefusedAndLeavesBothInPlace() {
         click(Tool.SQUARE, 3, 3);
         click(Tool.CIRCLE, 6, 3);
-        BoardContents before = BoardContents.of(board);
+        Design before = Design.of(board);
         editor.setTool(Tool.SELECT);
         drag(3.5, 3.5, 6.5, 3.5);
 
-        assertThat(BoardContents.of(board)).isEqualTo(before);
+        assertThat(Design.of(board)).isEqualTo(before);
         assertThat(lastMessage()).contains("overlap");
     }
 
@@ -347,10 +347,10 @@ class BuildControllerTest {
     @Test
     void aRefusedOverlapLeavesTheBoardUnchangedAndSaysWhy() {
         click(Tool.SQUARE, 3, 4);
-        BoardContents before = BoardContents.of(board);
+        Design before = Design.of(board);
         click(Tool.LEFT_FLIPPER, 2, 3);
 
-        assertThat(BoardContents.of(board)).isEqualTo(before);
+        assertThat(Design.of(board)).isEqualTo(before);
         assertThat(lastMessage()).contains("overlap").contains("S1");
         assertThat(edits).isEqualTo(1);
         editor.undo();
@@ -390,7 +390,7 @@ class BuildControllerTest {
         click(Tool.CIRCLE, 2, 2);
         click(Tool.TRIANGLE, 3, 3);
         click(Tool.ROTATE, 3, 3);
-        BoardContents all = BoardContents.of(board);
+        Design all = Design.of(board);
 
         assertThat(editor.undo()).isTrue();
         assertThat(gizmo("T1").rotation()).isZero();
@@ -400,7 +400,7 @@ class BuildControllerTest {
         editor.redo();
         editor.redo();
         editor.redo();
-        assertThat(BoardContents.of(board)).isEqualTo(all);
+        assertThat(Design.of(board)).isEqualTo(all);
         assertThat(editor.redo()).isFalse();
         assertThat(lastMessage()).isEqualTo("Nothing to redo");
     }
@@ -454,12 +454,12 @@ class BuildControllerTest {
         assertThat(List.of(b.position().x(), b.position().y(), b.velocity().x(), b.velocity().y()))
                 .containsExactly(4.5, 6.0, -3.0, 7.25);
 
-        BoardContents before = BoardContents.of(board);
+        Design before = Design.of(board);
         assertThat(editor.setBall("B1", "25", "6", "1", "1")).isFalse();
-        assertThat(BoardContents.of(board)).isEqualTo(before);
+        assertThat(Design.of(board)).isEqualTo(before);
         assertThat(editor.setBall("B1", "4.5", "6", "x", "1")).isFalse();
         assertThat(lastMessage()).isEqualTo("vx: \"x\" is not a number");
-        assertThat(BoardContents.of(board)).isEqualTo(before);
+        assertThat(Design.of(board)).isEqualTo(before);
     }
 
     @Test
@@ -468,14 +468,14 @@ class BuildControllerTest {
         click(Tool.LEFT_FLIPPER, 4, 4);
         board.connect("S1", "LF1");
         editor.setConstants("10", "0", "0");
-        BoardContents full = BoardContents.of(board);
+        Design full = Design.of(board);
 
         editor.clearBoard();
         assertThat(board.gizmos()).isEmpty();
         assertThat(board.connections()).isEmpty();
         assertThat(board.gravity()).isEqualTo(Board.DEFAULT_GRAVITY);
         editor.undo();
-        assertThat(BoardContents.of(board)).isEqualTo(full);
+        assertThat(Design.of(board)).isEqualTo(full);
     }
 
     @Test

@@ -32,27 +32,53 @@ class EditHistoryTest {
             b.addBall("B1", 5, 5, 1, 1);
             b.setGravity(3);
         });
-        BoardContents after = BoardContents.of(board);
+        Design after = Design.of(board);
 
         history.undo();
         assertThat(board.balls()).isEmpty();
         assertThat(board.gravity()).isEqualTo(Board.DEFAULT_GRAVITY);
         assertThat(board.gizmos()).hasSize(1);
         history.redo();
-        assertThat(BoardContents.of(board)).isEqualTo(after);
+        assertThat(Design.of(board)).isEqualTo(after);
     }
 
     @Test
-    void onlyReplacementsFromElsewhereAreReportedAsForeign() {
-        AtomicInteger foreign = new AtomicInteger();
-        history.addForeignReplaceListener(foreign::incrementAndGet);
+    void anotherDesignReplacingTheBoardStartsAFreshHistory() {
+        AtomicInteger resets = new AtomicInteger();
+        history.addResetListener(resets::incrementAndGet);
         history.perform(b -> b.addGizmo(GizmoKind.CIRCLE, "C1", 1, 1));
         history.undo();
         history.redo();
-        assertThat(foreign).hasValue(0);
+        assertThat(resets).hasValue(0);
 
         board.replaceContents(new Board());
-        assertThat(foreign).hasValue(1);
+        assertThat(resets).hasValue(1);
+        assertThat(history.canUndo()).isFalse();
+        assertThat(history.canRedo()).isFalse();
+    }
+
+    @Test
+    void theSameDesignComingBackFromPlayKeepsTheHistory() {
+        history.perform(b -> b.addBall("B1", 5, 5, 3, 0));
+        Board design = board.copy();
+        board.tick(0.25);
+        assertThat(board.ball("B1").orElseThrow().position().x()).isGreaterThan(5.5);
+
+        board.replaceContents(design);
+        assertThat(history.canUndo()).isTrue();
+        history.undo();
+        assertThat(board.balls()).isEmpty();
+    }
+
+    @Test
+    void anEditMadeElsewhereBecomesAnUndoStep() {
+        history.perform(b -> b.addGizmo(GizmoKind.SQUARE, "S1", 1, 1));
+        board.addGizmo(GizmoKind.SQUARE, "S2", 3, 3);
+
+        history.undo();
+        assertThat(board.gizmos()).extracting(g -> g.name()).containsExactly("S1");
+        history.undo();
+        assertThat(board.gizmos()).isEmpty();
     }
 
     @Test

@@ -9,17 +9,20 @@ import gizmoball.model.KeyBinding;
 
 import java.util.List;
 
-/** Everything a board file says about a board, as comparable values (the model has no equals on Board). */
-record BoardContents(List<GizmoState> gizmos, List<BallState> balls, List<Connection> connections,
+/**
+ * Everything a board file says about a board, as comparable values (Board itself has no equality): the editor
+ * uses it to tell whether a change made elsewhere (Open, back from play, another menu) altered the design.
+ */
+public record Design(List<GizmoState> gizmos, List<BallState> balls, List<Connection> connections,
                      List<KeyBinding> keys, double gravity, double mu, double mu2) {
-    record GizmoState(String name, GizmoKind kind, int x, int y, int width, int height, int rotation) { }
+    public record GizmoState(String name, GizmoKind kind, int x, int y, int width, int height, int rotation) { }
 
-    record BallState(String name, double x, double y, double vx, double vy) { }
+    public record BallState(String name, double x, double y, double vx, double vy) { }
 
-    static BoardContents of(Board board) {
-        return new BoardContents(
-                board.gizmos().stream().map(BoardContents::state).toList(),
-                board.balls().stream().map(BoardContents::state).toList(),
+    public static Design of(Board board) {
+        return new Design(
+                board.gizmos().stream().map(Design::state).toList(),
+                board.balls().stream().map(Design::state).toList(),
                 List.copyOf(board.connections()), List.copyOf(board.keyBindings()),
                 board.gravity(), board.mu(), board.mu2());
     }
