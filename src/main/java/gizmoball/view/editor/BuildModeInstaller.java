@@ -4,6 +4,7 @@ import gizmoball.controller.GameSession;
 import gizmoball.controller.Mode;
 import gizmoball.controller.editor.BoardInput;
 import gizmoball.controller.editor.BuildController;
+import gizmoball.controller.editor.Tool;
 import gizmoball.model.KeyEdge;
 import gizmoball.view.BoardPanel;
 import gizmoball.view.GameWindow;
@@ -13,6 +14,7 @@ import javax.swing.JMenuItem;
 import javax.swing.JPopupMenu;
 import javax.swing.event.PopupMenuEvent;
 import javax.swing.event.PopupMenuListener;
+import java.awt.Cursor;
 import java.awt.geom.Point2D;
 import java.util.function.BooleanSupplier;
 
@@ -37,6 +39,9 @@ public final class BuildModeInstaller {
         controller.setMessageSink(window.statusLine()::showMessage);
         controller.addEditListener(session::markModified);
         controller.addStateListener(panel::repaint);
+        Runnable cursor = () -> panel.setCursor(building.getAsBoolean() ? cursorFor(controller.tool())
+                : Cursor.getDefaultCursor());
+        controller.addStateListener(cursor);
 
         PalettePanel palette = new PalettePanel(controller);
         PropertiesPanel properties = new PropertiesPanel(controller);
@@ -52,12 +57,19 @@ public final class BuildModeInstaller {
 
         session.addModeListener(mode -> {
             controller.cancel();
-            panel.setGridVisible(mode == Mode.BUILD);
             editMenu.update();
+            cursor.run();
             panel.repaint();
         });
-        panel.setGridVisible(building.getAsBoolean());
         return new BuildMode(controller, palette, properties, editMenu);
+    }
+
+    /** Crosshair where a click places something, a hand where it acts on what is under it. */
+    private static Cursor cursorFor(Tool tool) {
+        if (tool.kind().isPresent() || tool == Tool.BALL) {
+            return Cursor.getPredefinedCursor(Cursor.CROSSHAIR_CURSOR);
+        }
+        return Cursor.getPredefinedCursor(tool == Tool.SELECT ? Cursor.DEFAULT_CURSOR : Cursor.HAND_CURSOR);
     }
 
     /** Key Connect's last step: a popup at the gizmo asks whether the binding acts on key down or key up. */
@@ -67,8 +79,14 @@ public final class BuildModeInstaller {
         JMenuItem up = new JMenuItem("On key up (release)");
         down.setName("edge.down");
         up.setName("edge.up");
-        down.addActionListener(e -> controller.chooseEdge(KeyEdge.DOWN));
-        up.addActionListener(e -> controller.chooseEdge(KeyEdge.UP));
+        down.addActionListener(e -> {
+            popup.setVisible(false);
+            controller.chooseEdge(KeyEdge.DOWN);
+        });
+        up.addActionListener(e -> {
+            popup.setVisible(false);
+            controller.chooseEdge(KeyEdge.UP);
+        });
         popup.add(down);
         popup.add(up);
         popup.addPopupMenuListener(new PopupMenuListener() {

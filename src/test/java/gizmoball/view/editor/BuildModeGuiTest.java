@@ -41,28 +41,21 @@ import static org.assertj.core.api.Assertions.within;
  * One test drives the real pointer with java.awt.Robot. Skipped, with the reason, without a display.
  */
 class BuildModeGuiTest {
-    private GameWindow window;
-    private BuildModeInstaller.BuildMode build;
-    private GameSession session;
+    private BuildWindow w;
     private Board board;
-    private BoardPanel panel;
+    private GameSession session;
 
     @BeforeEach
     void openWindowInBuildMode() {
-        EditorGui.assumeDisplay();
-        window = GameWindow.launch(null);
-        build = onEdt(() -> BuildModeInstaller.install(window));
-        session = window.session();
-        board = session.board();
-        panel = window.boardPanel();
-        onEdt(() -> session.setMode(Mode.BUILD));
-        await("the board view is laid out", () -> panel.isShowing() && panel.getWidth() > 100);
+        w = BuildWindow.open();
+        board = w.board;
+        session = w.session;
     }
 
     @AfterEach
     void close() {
-        if (window != null) {
-            onEdt(window::dispose);
+        if (w != null) {
+            w.close();
         }
     }
 
@@ -70,12 +63,12 @@ class BuildModeGuiTest {
     void robotClicksOnThePaletteAndTheBoardPlaceASquare() throws Exception {
         Robot robot = new Robot();
         robot.setAutoDelay(20);
-        Point button = onEdt(() -> centreOnScreen(build.palette().button(Tool.SQUARE)));
-        Point cell = onEdt(() -> cellOnScreen(6, 9));
+        Point button = BuildWindow.centreOnScreen(w.build.palette().button(Tool.SQUARE));
+        Point cell = w.cellOnScreen(6, 9);
         robot.mouseMove(button.x, button.y);
         robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
         robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
-        await("the Square tool is chosen", () -> build.controller().tool() == Tool.SQUARE);
+        await("the Square tool is chosen", () -> w.build.controller().tool() == Tool.SQUARE);
         robot.mouseMove(cell.x, cell.y);
         robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
         robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
@@ -88,22 +81,20 @@ class BuildModeGuiTest {
 
     @Test
     void everyKindIsPlacedByClickingItsToolAndTheBoard() {
-        clickTool(Tool.SQUARE);
-        clickCell(1, 1);
-        clickTool(Tool.CIRCLE);
-        clickCell(3, 1);
-        clickTool(Tool.TRIANGLE);
-        clickCell(5, 1);
-        clickTool(Tool.LEFT_FLIPPER);
-        clickCell(1, 5);
-        clickTool(Tool.RIGHT_FLIPPER);
-        clickCell(5, 5);
-        clickTool(Tool.ABSORBER);
-        dragCells(0, 19, 19, 19);
-        clickTool(Tool.BALL);
-        onEdt(() -> mouse(MouseEvent.MOUSE_PRESSED, 10.5, 10.5));
-        onEdt(() -> mouse(MouseEvent.MOUSE_DRAGGED, 11.5, 8.5));
-        onEdt(() -> mouse(MouseEvent.MOUSE_RELEASED, 11.5, 8.5));
+        w.clickTool(Tool.SQUARE);
+        w.clickCell(1, 1);
+        w.clickTool(Tool.CIRCLE);
+        w.clickCell(3, 1);
+        w.clickTool(Tool.TRIANGLE);
+        w.clickCell(5, 1);
+        w.clickTool(Tool.LEFT_FLIPPER);
+        w.clickCell(1, 5);
+        w.clickTool(Tool.RIGHT_FLIPPER);
+        w.clickCell(5, 5);
+        w.clickTool(Tool.ABSORBER);
+        w.dragCells(0, 19, 19, 19);
+        w.clickTool(Tool.BALL);
+        w.drag(10.5, 10.5, 11.5, 8.5);
 
         assertThat(onEdt(() -> board.gizmos().stream().map(Gizmo::kind).toList())).containsExactly(
                 GizmoKind.SQUARE, GizmoKind.CIRCLE, GizmoKind.TRIANGLE, GizmoKind.LEFT_FLIPPER,
@@ -121,45 +112,45 @@ class BuildModeGuiTest {
 
     @Test
     void draggingAGizmoMovesItAndRotateAndDeleteActOnTheClickedGizmo() {
-        clickTool(Tool.TRIANGLE);
-        clickCell(2, 2);
-        clickTool(Tool.SELECT);
-        dragCells(2, 2, 12, 7);
+        w.clickTool(Tool.TRIANGLE);
+        w.clickCell(2, 2);
+        w.clickTool(Tool.SELECT);
+        w.dragCells(2, 2, 12, 7);
         assertThat(onEdt(() -> List.of(board.gizmo("T1").orElseThrow().x(), board.gizmo("T1").orElseThrow().y())))
                 .containsExactly(12, 7);
 
-        clickTool(Tool.ROTATE);
-        clickCell(12, 7);
+        w.clickTool(Tool.ROTATE);
+        w.clickCell(12, 7);
         assertThat(board.gizmo("T1").orElseThrow().rotation()).isEqualTo(1);
 
-        clickTool(Tool.DELETE);
-        clickCell(12, 7);
+        w.clickTool(Tool.DELETE);
+        w.clickCell(12, 7);
         assertThat(board.gizmos()).isEmpty();
     }
 
     @Test
     void connectingTwoGizmosShowsTheConnectionInTheProperties() {
-        clickTool(Tool.CIRCLE);
-        clickCell(4, 4);
-        clickTool(Tool.LEFT_FLIPPER);
-        clickCell(8, 8);
-        clickTool(Tool.CONNECT);
-        clickCell(4, 4);
-        clickCell(9, 9);
+        w.clickTool(Tool.CIRCLE);
+        w.clickCell(4, 4);
+        w.clickTool(Tool.LEFT_FLIPPER);
+        w.clickCell(8, 8);
+        w.clickTool(Tool.CONNECT);
+        w.clickCell(4, 4);
+        w.clickCell(9, 9);
 
         assertThat(board.connections()).containsExactly(new Connection("C1", "LF1"));
-        JList<?> links = onEdt(() -> EditorGui.find(build.properties(), JList.class, "links"));
+        JList<?> links = onEdt(() -> EditorGui.find(w.build.properties(), JList.class, "links"));
         assertThat(onEdt(() -> links.getModel().getSize())).isEqualTo(1);
         assertThat(onEdt(() -> links.getModel().getElementAt(0).toString())).isEqualTo("C1 \u2192 LF1");
     }
 
     @Test
     void aKeyBoundInBuildModeSwingsTheFlipperInPlay() {
-        clickTool(Tool.LEFT_FLIPPER);
-        clickCell(3, 15);
-        clickTool(Tool.KEY_CONNECT);
-        clickCell(3, 15);
-        onEdt(() -> key(KeyEvent.VK_SPACE));
+        w.clickTool(Tool.LEFT_FLIPPER);
+        w.clickCell(3, 15);
+        w.clickTool(Tool.KEY_CONNECT);
+        w.clickCell(3, 15);
+        w.key(KeyEvent.VK_SPACE);
         JMenuItem down = onEdt(() -> EditorGui.showingMenuItem("edge.down"));
         onEdt(() -> down.doClick(0));
 
@@ -175,11 +166,11 @@ class BuildModeGuiTest {
 
     @Test
     void undoAndRedoFromTheEditMenu() {
-        clickTool(Tool.SQUARE);
-        clickCell(1, 1);
-        clickCell(2, 1);
-        JMenuItem undo = onEdt(() -> EditorGui.menuItem(window.menus(), "Undo"));
-        JMenuItem redo = onEdt(() -> EditorGui.menuItem(window.menus(), "Redo"));
+        w.clickTool(Tool.SQUARE);
+        w.clickCell(1, 1);
+        w.clickCell(2, 1);
+        JMenuItem undo = onEdt(() -> EditorGui.menuItem(w.window.menus(), "Undo"));
+        JMenuItem redo = onEdt(() -> EditorGui.menuItem(w.window.menus(), "Redo"));
         assertThat(onEdt(redo::isEnabled)).isFalse();
 
         onEdt(() -> undo.doClick(0));
@@ -191,25 +182,25 @@ class BuildModeGuiTest {
 
     @Test
     void aRefusedOverlapLeavesTheBoardAsItWasAndSaysWhyOnTheStatusLine() {
-        clickTool(Tool.SQUARE);
-        clickCell(5, 5);
+        w.clickTool(Tool.SQUARE);
+        w.clickCell(5, 5);
         Design before = onEdt(() -> Design.of(board));
-        clickTool(Tool.RIGHT_FLIPPER);
-        clickCell(4, 4);
+        w.clickTool(Tool.RIGHT_FLIPPER);
+        w.clickCell(4, 4);
 
         assertThat(onEdt(() -> Design.of(board))).isEqualTo(before);
-        assertThat(onEdt(() -> window.statusLine().message())).contains("overlap").contains("S1");
+        assertThat(w.status()).contains("overlap").contains("S1");
     }
 
     @Test
     void gravityTypedIntoThePropertiesIsValidated() {
-        JTextField gravity = onEdt(() -> EditorGui.find(build.properties(), JTextField.class, "gravity"));
+        JTextField gravity = onEdt(() -> EditorGui.find(w.build.properties(), JTextField.class, "gravity"));
         onEdt(() -> {
             gravity.setText("strong");
             gravity.postActionEvent();
         });
         assertThat(board.gravity()).isEqualTo(Board.DEFAULT_GRAVITY);
-        assertThat(onEdt(() -> window.statusLine().message())).contains("not a number");
+        assertThat(w.status()).contains("not a number");
 
         onEdt(() -> {
             gravity.setText("10");
@@ -220,60 +211,11 @@ class BuildModeGuiTest {
 
     @Test
     void inPlayModeTheMouseDoesNotEdit() {
-        clickTool(Tool.SQUARE);
+        w.clickTool(Tool.SQUARE);
         onEdt(() -> session.setMode(Mode.PLAY));
-        clickCell(3, 3);
+        w.clickCell(3, 3);
         assertThat(board.gizmos()).isEmpty();
-        assertThat(onEdt(build.editMenu()::isEnabled)).isFalse();
+        assertThat(onEdt(w.build.editMenu()::isEnabled)).isFalse();
     }
 
-    // ---- helpers: events at the pixels of board points ----
-
-    private void clickTool(Tool tool) {
-        onEdt(() -> build.palette().button(tool).doClick(0));
-    }
-
-    private void clickCell(int cx, int cy) {
-        onEdt(() -> {
-            mouse(MouseEvent.MOUSE_PRESSED, cx + 0.5, cy + 0.5);
-            mouse(MouseEvent.MOUSE_RELEASED, cx + 0.5, cy + 0.5);
-        });
-    }
-
-    private void dragCells(int x0, int y0, int x1, int y1) {
-        onEdt(() -> {
-            mouse(MouseEvent.MOUSE_PRESSED, x0 + 0.5, y0 + 0.5);
-            mouse(MouseEvent.MOUSE_DRAGGED, (x0 + x1) / 2.0 + 0.5, (y0 + y1) / 2.0 + 0.5);
-            mouse(MouseEvent.MOUSE_DRAGGED, x1 + 0.5, y1 + 0.5);
-            mouse(MouseEvent.MOUSE_RELEASED, x1 + 0.5, y1 + 0.5);
-        });
-    }
-
-    /** A left-button mouse event at board point (x, y), delivered to the board view as AWT would. */
-    private void mouse(int id, double x, double y) {
-        Point2D p = panel.transform().toScreen(x, y);
-        int modifiers = id == MouseEvent.MOUSE_RELEASED ? 0 : InputEvent.BUTTON1_DOWN_MASK;
-        int clicks = id == MouseEvent.MOUSE_DRAGGED ? 0 : 1;
-        panel.dispatchEvent(new MouseEvent(panel, id, System.currentTimeMillis(), modifiers,
-                (int) Math.round(p.getX()), (int) Math.round(p.getY()), clicks, false, MouseEvent.BUTTON1));
-    }
-
-    /** A key press handed to the board view's key listeners (no window focus needed on a bare X server). */
-    private void key(int keyCode) {
-        KeyEvent e = new KeyEvent(panel, KeyEvent.KEY_PRESSED, System.currentTimeMillis(), 0, keyCode,
-                KeyEvent.CHAR_UNDEFINED);
-        List<KeyListener> listeners = new ArrayList<>(List.of(panel.getKeyListeners()));
-        listeners.forEach(l -> l.keyPressed(e));
-    }
-
-    private Point cellOnScreen(int cx, int cy) {
-        Point2D p = panel.transform().toScreen(cx + 0.5, cy + 0.5);
-        Point origin = panel.getLocationOnScreen();
-        return new Point(origin.x + (int) Math.round(p.getX()), origin.y + (int) Math.round(p.getY()));
-    }
-
-    private static Point centreOnScreen(java.awt.Component c) {
-        Point origin = c.getLocationOnScreen();
-        return new Point(origin.x + c.getWidth() / 2, origin.y + c.getHeight() / 2);
-    }
 }
