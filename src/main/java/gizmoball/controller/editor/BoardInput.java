@@ -51,6 +51,8 @@ public final class BoardInput extends MouseAdapter implements KeyListener {
             Vect p = toBoard(e);
             controller.press(p.x(), p.y());
             afterKeyOrClick();
+        } else if (SwingUtilities.isRightMouseButton(e)) {
+            controller.cancel();
         }
     }
 

@@ -7,6 +7,7 @@ import gizmoball.model.Gizmo;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
+import physics.Vect;
 
 import java.awt.event.KeyEvent;
 import java.util.ArrayList;
@@ -30,7 +31,7 @@ public final class BuildController {
     /** Clicks this close to the board's edge, on an empty cell, mean the outer walls (Connect tools). */
     static final double WALL_BAND = 0.25;
     /** Dragging 1 L while placing a ball gives it 10 L/s: a board-wide drag is about the launch speed. */
-    static final double VELOCITY_PER_DRAG = 10;
+    public static final double VELOCITY_PER_DRAG = 10;
     /** A Select press that moves less than this is a click, not a move. */
     static final double DRAG_THRESHOLD = 0.1;
 
@@ -48,6 +49,7 @@ public final class BuildController {
     private String connectSource;
     private String keyGizmo;
     private Integer pendingKey;
+    private Vect pointer;
 
     /** A press that is not finished yet: what the following drags and the release act on. */
     private sealed interface Gesture {
@@ -122,6 +124,36 @@ public final class BuildController {
     /** The source chosen by the first click of Connect or Disconnect, waiting for the target. */
     public Optional<String> connectSource() {
         return Optional.ofNullable(connectSource);
+    }
+
+    /** Where the pointer is over the board view, in L; empty when it is outside the view. */
+    public Optional<Vect> pointer() {
+        return Optional.ofNullable(pointer);
+    }
+
+    /**
+     * What a click at the pointer would act on with the current tool (a gizmo, a ball or the outer walls), so
+     * the view can highlight it before the click; empty for the placing tools or over nothing.
+     */
+    public Optional<String> target() {
+        if (pointer == null || gesture != null) {
+            return Optional.empty();
+        }
+        double x = pointer.x();
+        double y = pointer.y();
+        Optional<String> gizmo = gizmoAt(x, y).map(Gizmo::name);
+        return switch (tool) {
+            case SELECT, DELETE -> ballNear(x, y).map(Ball::name).or(() -> gizmo);
+            case ROTATE, KEY_CONNECT, KEY_DISCONNECT -> gizmo;
+            case CONNECT, DISCONNECT -> gizmo.or(() -> isWall(x, y) ? Optional.of(Board.OUTER_WALLS)
+                    : Optional.empty());
+            default -> Optional.empty();
+        };
+    }
+
+    /** The gizmo Key Connect or Key Disconnect has, while it waits for a key to be pressed. */
+    public Optional<String> awaitingKeyFor() {
+        return pendingKey == null ? Optional.ofNullable(keyGizmo) : Optional.empty();
     }
 
     /** True after Key Connect has its gizmo and key and waits for {@link #chooseEdge}. */
@@ -266,6 +298,7 @@ public final class BuildController {
 
     /** The pointer moved with no button down: update the placement preview. */
     public void hover(double x, double y) {
+        pointer = new Vect(x, y);
         if (gesture != null) {
             return;
         }
@@ -280,9 +313,11 @@ public final class BuildController {
 
     /** The pointer left the board view. */
     public void exit() {
+        pointer = null;
         if (gesture == null) {
             setPreview(null, false);
         }
+        stateChanged();
     }
 
     public void press(double x, double y) {
@@ -318,6 +353,7 @@ public final class BuildController {
     }
 
     public void drag(double x, double y) {
+        pointer = new Vect(x, y);
         if (gesture instanceof Gesture.AbsorberDrag a) {
             setPreview(absorberFootprint(a.x0(), a.y0(), cell(x), cell(y)), true);
         } else if (gesture instanceof Gesture.BallDrag b) {

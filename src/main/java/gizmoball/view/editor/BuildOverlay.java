@@ -9,6 +9,7 @@ import gizmoball.model.Gizmo;
 import gizmoball.model.KeyBinding;
 import gizmoball.view.BoardOverlay;
 import gizmoball.view.BoardTransform;
+import physics.Vect;
 
 import java.awt.BasicStroke;
 import java.awt.Color;
@@ -54,8 +55,16 @@ public final class BuildOverlay implements BoardOverlay {
         try {
             g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
             g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
+            controller.target().ifPresent(name -> outline(g, t, name, EditorColors.TARGET, false));
             controller.selected().ifPresent(name -> paintSelection(g, t, name));
-            controller.connectSource().ifPresent(name -> outline(g, t, name, EditorColors.CONNECTION, true));
+            controller.connectSource().ifPresent(name -> {
+                outline(g, t, name, EditorColors.CONNECTION, true);
+                controller.pointer().ifPresent(p -> rubberBand(g, t, name, p));
+            });
+            controller.awaitingKeyFor().flatMap(controller.board()::gizmo).ifPresent(gizmo -> {
+                Point2D above = t.toScreen(gizmo.x(), gizmo.y());
+                label(g, "press a key\u2026", above.getX(), above.getY() - 8, EditorColors.SELECTION);
+            });
             controller.preview().ifPresent(p -> paintPreview(g, t, p));
         } finally {
             g.dispose();
@@ -73,6 +82,8 @@ public final class BuildOverlay implements BoardOverlay {
         }
         outline(g, t, name, EditorColors.SELECTION, false);
         board.gizmo(name).ifPresent(gizmo -> keyLabel(g, t, gizmo, board.keyBindings()));
+        board.ball(name).ifPresent(ball -> velocityArrow(g, t, ball.position().x(), ball.position().y(),
+                ball.velocity().x(), ball.velocity().y(), EditorColors.SELECTION));
     }
 
     /** Outlines a gizmo's footprint, a ball, or the whole board for the outer walls. */
@@ -111,13 +122,38 @@ public final class BuildOverlay implements BoardOverlay {
             g.fill(e);
             g.setColor(color);
             g.draw(e);
-            if (b.vx() != 0 || b.vy() != 0) {
-                Point2D from = t.toScreen(b.x(), b.y());
-                Point2D to = t.toScreen(b.x() + b.vx() / 10, b.y() + b.vy() / 10);
-                arrow(g, from, to, color);
-                label(g, String.format("(%.0f, %.0f) L/s", b.vx(), b.vy()), to.getX() + 6, to.getY(), color);
-            }
+            velocityArrow(g, t, b.x(), b.y(), b.vx(), b.vy(), color);
         }
+    }
+
+    /** The velocity drawn as the drag that gives it (10 L/s per L), labelled with its value. */
+    private static void velocityArrow(Graphics2D g, BoardTransform t, double x, double y, double vx, double vy,
+                                      Color color) {
+        if (vx == 0 && vy == 0) {
+            return;
+        }
+        Point2D from = t.toScreen(x, y);
+        Point2D to = t.toScreen(x + vx / BuildController.VELOCITY_PER_DRAG, y + vy / BuildController.VELOCITY_PER_DRAG);
+        g.setStroke(new BasicStroke(LINE));
+        arrow(g, from, to, color);
+        label(g, String.format("(%.4g, %.4g) L/s", vx, vy), to.getX() + 6, to.getY(), color);
+    }
+
+    /** Connect's first click is made: a dashed line from the source to the pointer, to where the target goes. */
+    private void rubberBand(Graphics2D g, BoardTransform t, String source, Vect pointer) {
+        Rectangle2D at = new Rectangle2D.Double(pointer.x(), pointer.y(), 0, 0);
+        Rectangle2D from = source.equals(Board.OUTER_WALLS)
+                ? wallPoint(at)
+                : controller.board().gizmo(source).map(BuildOverlay::box).orElse(null);
+        if (from == null) {
+            return;
+        }
+        Point2D a = edgeToward(from, pointer.x(), pointer.y());
+        Point2D sa = t.toScreen(a.getX(), a.getY());
+        Point2D sb = t.toScreen(pointer.x(), pointer.y());
+        g.setStroke(new BasicStroke(LINE, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND, 10f,
+                new float[]{6f, 6f}, 0f));
+        arrow(g, sa, sb, EditorColors.CONNECTION);
     }
 
     private void connectionArrow(Graphics2D g, BoardTransform t, Connection c, Color color) {

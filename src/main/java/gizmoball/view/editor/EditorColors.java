@@ -10,6 +10,7 @@ final class EditorColors {
 
     static final Color FITS = new Color(0x35, 0xD0, 0x5A);
     static final Color REFUSED = new Color(0xF0, 0x3E, 0x3E);
+    static final Color TARGET = new Color(255, 255, 255, 150);
     static final Color SELECTION = new Color(0xFF, 0xE0, 0x3A);
     static final Color CONNECTION = new Color(0x44, 0xD6, 0xF2);
     static final Color INCOMING = new Color(0xFF, 0x8C, 0x42);

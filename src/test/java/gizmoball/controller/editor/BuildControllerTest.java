@@ -511,4 +511,41 @@ class BuildControllerTest {
         assertThat(editor.selected()).contains(Board.OUTER_WALLS);
         assertThat(editor.deleteSelected()).isFalse();
     }
+
+    @Test
+    void theTargetUnderThePointerDependsOnTheTool() {
+        click(Tool.SQUARE, 4, 4);
+        board.addBall("B1", 8.5, 8.5, 0, 0);
+        editor.setTool(Tool.ROTATE);
+        editor.hover(4.5, 4.5);
+        assertThat(editor.target()).contains("S1");
+        editor.hover(8.5, 8.6);
+        assertThat(editor.target()).isEmpty();
+
+        editor.setTool(Tool.DELETE);
+        editor.hover(8.5, 8.6);
+        assertThat(editor.target()).contains("B1");
+
+        editor.setTool(Tool.CONNECT);
+        editor.hover(-1, 3);
+        assertThat(editor.target()).contains(Board.OUTER_WALLS);
+
+        editor.setTool(Tool.SQUARE);
+        editor.hover(4.5, 4.5);
+        assertThat(editor.target()).isEmpty();
+        editor.exit();
+        assertThat(editor.pointer()).isEmpty();
+    }
+
+    @Test
+    void keyConnectSaysWhichGizmoWaitsForAKey() {
+        click(Tool.TRIANGLE, 4, 4);
+        editor.setTool(Tool.KEY_CONNECT);
+        assertThat(editor.awaitingKeyFor()).isEmpty();
+        clickCell(4, 4);
+        assertThat(editor.awaitingKeyFor()).contains("T1");
+        editor.keyPressed(KeyEvent.VK_Q, false);
+        assertThat(editor.awaitingKeyFor()).isEmpty();
+        assertThat(editor.awaitingEdge()).isTrue();
+    }
 }

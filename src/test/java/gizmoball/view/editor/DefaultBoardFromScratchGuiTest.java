@@ -48,22 +48,25 @@ class DefaultBoardFromScratchGuiTest {
         w = BuildWindow.open();
         Map<String, String> editorName = new HashMap<>();
 
-        for (Gizmo g : target.gizmos()) {
-            place(g);
-            editorName.put(g.name(), w.build.controller().selected().orElseThrow());
-        }
-        for (Ball b : target.balls()) {
-            w.clickTool(Tool.BALL);
-            w.drag(b.position().x(), b.position().y(), b.position().x() + b.velocity().x() / 10,
-                    b.position().y() + b.velocity().y() / 10);
-            editorName.put(b.name(), w.build.controller().selected().orElseThrow());
-        }
-        editorName.put(Board.OUTER_WALLS, Board.OUTER_WALLS);
-        for (Connection c : target.connections()) {
-            w.clickTool(Tool.CONNECT);
-            clickOn(target, c.source());
-            clickOn(target, c.target());
-        }
+        // One event-thread task for the whole replay: the same events, without a thread hand-over per click.
+        onEdt(() -> {
+            for (Gizmo g : target.gizmos()) {
+                place(g);
+                editorName.put(g.name(), w.build.controller().selected().orElseThrow());
+            }
+            for (Ball b : target.balls()) {
+                w.clickTool(Tool.BALL);
+                w.drag(b.position().x(), b.position().y(), b.position().x() + b.velocity().x() / 10,
+                        b.position().y() + b.velocity().y() / 10);
+                editorName.put(b.name(), w.build.controller().selected().orElseThrow());
+            }
+            editorName.put(Board.OUTER_WALLS, Board.OUTER_WALLS);
+            for (Connection c : target.connections()) {
+                w.clickTool(Tool.CONNECT);
+                clickOn(target, c.source());
+                clickOn(target, c.target());
+            }
+        });
         for (KeyBinding k : target.keyBindings()) {
             w.clickTool(Tool.KEY_CONNECT);
             clickOn(target, k.gizmo());
