@@ -1,0 +1,371 @@
+package physics;
+
+import physics.Geometry.DoublePair;
+import physics.Geometry.VectPair;
+
+/**
+ * The collision geometry, written from the mathematics. Immutable and stateless apart from its two tuning
+ * parameters, so one instance can be shared between threads.
+ * <p>
+ * Conventions: times in seconds, {@code Double.POSITIVE_INFINITY} for "no collision"; angles and angular
+ * velocities (rad/s) are positive when they turn +x toward +y (clockwise on a y-down screen). Segments are closed
+ * and both ends are treated alike. "Closing" is always judged from the current positions: a ball that touches
+ * or overlaps an obstacle and moves toward it collides at time 0, one that moves away never collides with it.
+ * <p>
+ * The static methods are closed forms in numerically stable forms. The rotating methods search the foresight
+ * window {@code [0, maximumForesight]} and report only contacts inside it; see {@link RotatingContactSearch}.
+ */
+public class GeometryImpl implements GeometryInterface {
+    /** Default foresight of the rotating methods, in seconds. */
+    public static final double DEFAULT_FORESIGHT = 1.0;
+    /** Default number of slices over which the rotating search computes its motion bounds. */
+    public static final int DEFAULT_SEARCH_SLICES = 16;
+    /**
+     * A contact point closer than this (in L) to an end of a rotating segment is an end contact, which
+     * {@link #reflectRotatingWall} refuses: end contacts belong to {@link #reflectRotatingCircle} with a
+     * zero-radius circle at the end.
+     */
+    public static final double END_CONTACT_TOLERANCE = 1e-9;
+
+    private final double maximumForesight;
+    private final int searchSlices;
+
+    /** The default geometry: foresight {@link #DEFAULT_FORESIGHT}, {@link #DEFAULT_SEARCH_SLICES} slices. */
+    public GeometryImpl() {
+        this(DEFAULT_FORESIGHT, DEFAULT_SEARCH_SLICES);
+    }
+
+    /**
+     * @param maximumForesight the rotating methods report contacts at times in [0, maximumForesight] only; finite, &gt; 0
+     * @param searchSlices     the number of slices of the foresight window over which the rotating search bounds
+     *                         the motion; &ge; 1. More slices give tighter bounds (fewer steps) for fast balls.
+     *                         Any value finds the same contacts.
+     */
+    public GeometryImpl(double maximumForesight, int searchSlices) {
+        if (!(maximumForesight > 0) || Double.isInfinite(maximumForesight)) {
+            throw new IllegalArgumentException("maximumForesight must be finite and > 0, got " + maximumForesight);
+        }
+        if (searchSlices < 1) {
+            throw new IllegalArgumentException("searchSlices must be >= 1, got " + searchSlices);
+        }
+        this.maximumForesight = maximumForesight;
+        this.searchSlices = searchSlices;
+    }
+
+    /**
+     * The real roots of a x&sup2; + b x + c = 0, smaller first (a double root twice; for a = 0 the single root
+     * of the linear equation twice), computed without cancellation; {@link Geometry#DOUBLE_PAIR_NAN} if there is
+     * no real root.
+     *
+     * @throws IllegalArgumentException if a = b = c = 0 (every x is a root)
+     */
+    @Override
+    public DoublePair quadraticSolution(double a, double b, double c) {
+        if (a == 0) {
+            if (b == 0) {
+                if (c == 0) {
+                    throw new IllegalArgumentException("0 = 0 has every number as solution");
+                }
+                return Geometry.DOUBLE_PAIR_NAN;
+            }
+            return new DoublePair(-c / b);
+        }
+        double discriminant = b * b - 4 * a * c;
+        if (discriminant < 0) {
+            return Geometry.DOUBLE_PAIR_NAN;
+        }
+        // q has the sign of b, so b + sign(b) sqrt(disc) never cancels; the roots are q/a and c/q.
+        double q = -0.5 * (b + Math.copySign(Math.sqrt(discriminant), b));
+        if (q == 0) {
+            return new DoublePair(0);
+        }
+        double r1 = q / a;
+        double r2 = c / q;
+        return new DoublePair(Math.min(r1, r2), Math.max(r1, r2));
+    }
+
+    /** The smaller real root of a x&sup2; + b x + c = 0 (see {@link #quadraticSolution}); NaN if there is none. */
+    @Override
+    public double minQuadraticSolution(double a, double b, double c) {
+        return quadraticSolution(a, b, c).d1;
+    }
+
+    /** The foot of the perpendicular from point to the line's segment, or null if it falls off the closed segment. */
+    @Override
+    public Vect perpendicularPoint(LineSegment line, Vect point) {
+        Vect dir = line.p2().minus(line.p1());
+        // Measured from each end, so that swapping the ends gives exactly the same decision.
+        double fromP1 = point.minus(line.p1()).dot(dir);
+        double fromP2 = line.p2().minus(point).dot(dir);
+        if (fromP1 < 0 || fromP2 < 0) {
+            return null;
+        }
+        return line.p1().plus(dir.times(fromP1 / dir.dot(dir)));
+    }
+
+    /** The foot of the perpendicular from point to the infinite line through the segment. */
+    @Override
+    public Vect perpendicularPointWholeLine(LineSegment line, Vect point) {
+        Vect dir = line.p2().minus(line.p1());
+        return line.p1().plus(dir.times(point.minus(line.p1()).dot(dir) / dir.dot(dir)));
+    }
+
+    /**
+     * Given an incident velocity and its perfect (coefficient 1) reflection, the reflection with the given
+     * coefficient: the tangential part is kept and the reflected normal part is multiplied by the coefficient.
+     */
+    @Override
+    public Vect applyReflectionCoeff(Vect incidentVect, Vect reflectedVect, double reflectionCoeff) {
+        requireFinite(reflectionCoeff, "reflection coefficient");
+        // reflected - incident is -2 times the incident normal part; add back (1 - coeff) of that normal part.
+        return reflectedVect.minus(reflectedVect.minus(incidentVect).times((1 - reflectionCoeff) / 2));
+    }
+
+    /**
+     * Time until the ball touches the flat face of the closed segment (either side), the touching point lying on
+     * the segment, ends included. Contacts beyond the ends are left to zero-radius circles at the ends.
+     * Touching or overlapping and closing gives 0; moving away, parallel or at rest gives infinity.
+     */
+    @Override
+    public double timeUntilWallCollision(LineSegment line, Circle ball, Vect velocity) {
+        Vect dir = line.p2().minus(line.p1());
+        Vect normal = new Vect(-dir.y(), dir.x()).unitSize();
+        Vect center = ball.getCenter();
+        double offset = center.minus(line.p1()).dot(normal);
+        double normalSpeed = velocity.dot(normal);
+        // Rate of change of |offset|; a centre exactly on the line moves away from it whichever way it goes.
+        double closingRate = offset == 0 ? Math.abs(normalSpeed) : Math.signum(offset) * normalSpeed;
+        double gap = Math.abs(offset) - ball.getRadius();
+        if (gap <= 0) {
+            return closingRate < 0 && perpendicularPoint(line, center) != null ? 0 : Double.POSITIVE_INFINITY;
+        }
+        if (closingRate >= 0) {
+            return Double.POSITIVE_INFINITY;
+        }
+        double time = gap / -closingRate;
+        Vect centerAtContact = center.plus(velocity.times(time));
+        return perpendicularPoint(line, centerAtContact) != null ? time : Double.POSITIVE_INFINITY;
+    }
+
+    /** The velocity reflected off the segment's line, its normal part multiplied by the coefficient. */
+    @Override
+    public Vect reflectWall(LineSegment line, Vect velocity, double reflectionCoeff) {
+        requireFinite(reflectionCoeff, "reflection coefficient");
+        Vect dir = line.p2().minus(line.p1());
+        return reflectAlong(new Vect(-dir.y(), dir.x()).unitSize(), velocity, reflectionCoeff);
+    }
+
+    /** {@link #reflectWall(LineSegment, Vect, double)} with coefficient 1. */
+    @Override
+    public Vect reflectWall(LineSegment line, Vect velocity) {
+        return reflectWall(line, velocity, 1);
+    }
+
+    @Override
+    public double distanceSquared(Vect v1, Vect v2) {
+        return v1.distanceSquared(v2);
+    }
+
+    @Override
+    public double distanceSquared(double x1, double y1, double x2, double y2) {
+        double dx = x2 - x1;
+        double dy = y2 - y1;
+        return dx * dx + dy * dy;
+    }
+
+    /**
+     * Time until the moving ball touches the fixed circle (a zero-radius circle is a corner).
+     * Touching or overlapping and closing gives 0; moving away or at rest gives infinity.
+     */
+    @Override
+    public double timeUntilCircleCollision(Circle circle, Circle ball, Vect velocity) {
+        return timeUntilCentresAt(ball.getCenter().minus(circle.getCenter()), velocity,
+                circle.getRadius() + ball.getRadius());
+    }
+
+    /** The velocity reflected off the circle at the ball's position, normal part times the coefficient. */
+    @Override
+    public Vect reflectCircle(Vect circleCenter, Vect ballCenter, Vect ballVelocity, double reflectionCoeff) {
+        requireFinite(reflectionCoeff, "reflection coefficient");
+        return reflectAlong(unitNormal(circleCenter, ballCenter), ballVelocity, reflectionCoeff);
+    }
+
+    /** {@link #reflectCircle(Vect, Vect, Vect, double)} with coefficient 1. */
+    @Override
+    public Vect reflectCircle(Vect circleCenter, Vect ballCenter, Vect ballVelocity) {
+        return reflectCircle(circleCenter, ballCenter, ballVelocity, 1);
+    }
+
+    /** The point turned by the angle about the centre of rotation (+x toward +y). */
+    @Override
+    public Vect rotateAround(Vect point, Vect centerOfRotation, Angle angle) {
+        return centerOfRotation.plus(point.minus(centerOfRotation).rotateBy(angle));
+    }
+
+    @Override
+    public LineSegment rotateAround(LineSegment line, Vect centerOfRotation, Angle angle) {
+        return new LineSegment(rotateAround(line.p1(), centerOfRotation, angle),
+                rotateAround(line.p2(), centerOfRotation, angle));
+    }
+
+    @Override
+    public Circle rotateAround(Circle circle, Vect centerOfRotation, Angle angle) {
+        return new Circle(rotateAround(circle.getCenter(), centerOfRotation, angle), circle.getRadius());
+    }
+
+    /**
+     * The two times (smaller first, possibly negative) at which a point moving from {@code point} with the
+     * velocity lies on the circle; equal when it grazes; {@link Geometry#DOUBLE_PAIR_NAN} if its line of motion
+     * misses the circle or the velocity is zero.
+     */
+    @Override
+    public DoublePair timeUntilCircleCollision(Circle circle, Vect point, Vect velocity) {
+        Vect offset = point.minus(circle.getCenter());
+        double speedSquared = velocity.dot(velocity);
+        double discriminant = quarterDiscriminant(offset, velocity, circle.getRadius());
+        if (speedSquared == 0 || discriminant < 0) {
+            return Geometry.DOUBLE_PAIR_NAN;
+        }
+        double along = offset.dot(velocity);
+        double q = -(along + Math.copySign(Math.sqrt(discriminant), along));
+        if (q == 0) {
+            return new DoublePair(0);
+        }
+        double r1 = q / speedSquared;
+        double r2 = excessSquared(offset, circle.getRadius()) / q;
+        return new DoublePair(Math.min(r1, r2), Math.max(r1, r2));
+    }
+
+    @Override
+    public double timeUntilRotatingWallCollision(LineSegment line, Vect center, double angularVelocity, Circle ball,
+                                                 Vect velocity) {
+        throw new UnsupportedOperationException("rotating collisions come in the next commit");
+    }
+
+    @Override
+    public Vect reflectRotatingWall(LineSegment line, Vect center, double angularVelocity, Circle ball,
+                                    Vect velocity) {
+        return reflectRotatingWall(line, center, angularVelocity, ball, velocity, 1);
+    }
+
+    @Override
+    public Vect reflectRotatingWall(LineSegment line, Vect center, double angularVelocity, Circle ball, Vect velocity,
+                                    double reflectionCoeff) {
+        throw new UnsupportedOperationException("rotating collisions come in the next commit");
+    }
+
+    @Override
+    public double timeUntilRotatingCircleCollision(Circle circle, Vect center, double angularVelocity, Circle ball,
+                                                   Vect velocity) {
+        throw new UnsupportedOperationException("rotating collisions come in the next commit");
+    }
+
+    @Override
+    public Vect reflectRotatingCircle(Circle circle, Vect center, double angularVelocity, Circle ball,
+                                      Vect velocity) {
+        return reflectRotatingCircle(circle, center, angularVelocity, ball, velocity, 1);
+    }
+
+    @Override
+    public Vect reflectRotatingCircle(Circle circle, Vect center, double angularVelocity, Circle ball, Vect velocity,
+                                      double reflectionCoeff) {
+        throw new UnsupportedOperationException("rotating collisions come in the next commit");
+    }
+
+    /**
+     * Time until two moving balls touch. Touching or overlapping and closing gives 0; separating or equal
+     * velocities give infinity.
+     */
+    @Override
+    public double timeUntilBallBallCollision(Circle ball1, Vect velocity1, Circle ball2, Vect velocity2) {
+        return timeUntilCentresAt(ball1.getCenter().minus(ball2.getCenter()), velocity1.minus(velocity2),
+                ball1.getRadius() + ball2.getRadius());
+    }
+
+    /**
+     * The velocities after a perfectly elastic collision of two balls touching at their current centres: the
+     * normal parts are exchanged as momentum and energy conservation require, the tangential parts kept.
+     * One mass may be {@code Double.POSITIVE_INFINITY} (an immovable ball).
+     *
+     * @throws IllegalArgumentException for a mass that is not &gt; 0, two infinite masses, or equal centres
+     */
+    @Override
+    public VectPair reflectBalls(Vect center1, double mass1, Vect velocity1, Vect center2, double mass2,
+                                 Vect velocity2) {
+        if (!(mass1 > 0) || !(mass2 > 0)) {
+            throw new IllegalArgumentException("ball masses must be > 0, got " + mass1 + " and " + mass2);
+        }
+        if (Double.isInfinite(mass1) && Double.isInfinite(mass2)) {
+            throw new IllegalArgumentException("at most one ball may have infinite mass");
+        }
+        Vect normal = unitNormal(center1, center2);
+        double approach = velocity1.minus(velocity2).dot(normal);
+        // 2 m2 / (m1 + m2) and 2 m1 / (m1 + m2), written with mass ratios so that an infinite mass works.
+        double share1 = 2 / (1 + mass1 / mass2);
+        double share2 = 2 / (1 + mass2 / mass1);
+        return new VectPair(velocity1.minus(normal.times(share1 * approach)),
+                velocity2.plus(normal.times(share2 * approach)));
+    }
+
+    /**
+     * Time until |offset + velocity t| first equals distance, for the closest-approach problems (circle-ball,
+     * ball-ball). Uses (|d| - S)(|d| + S) for |d|&sup2; - S&sup2; and Lagrange's identity for the discriminant,
+     * and picks the root form without cancellation, so far-away contacts keep their digits.
+     */
+    private static double timeUntilCentresAt(Vect offset, Vect velocity, double distance) {
+        double excess = excessSquared(offset, distance);
+        double along = offset.dot(velocity);
+        if (excess <= 0) {
+            return along < 0 ? 0 : Double.POSITIVE_INFINITY;
+        }
+        if (along >= 0) {
+            return Double.POSITIVE_INFINITY;
+        }
+        double discriminant = quarterDiscriminant(offset, velocity, distance);
+        if (discriminant < 0) {
+            return Double.POSITIVE_INFINITY;
+        }
+        return excess / (-along + Math.sqrt(discriminant));
+    }
+
+    /** |offset|&sup2; - radius&sup2;, as a product of sum and difference. */
+    private static double excessSquared(Vect offset, double radius) {
+        double length = offset.length();
+        return (length - radius) * (length + radius);
+    }
+
+    /** (offset.v)&sup2; - |v|&sup2;(|offset|&sup2; - r&sup2;) = |v|&sup2;r&sup2; - (offset x v)&sup2;, factored. */
+    private static double quarterDiscriminant(Vect offset, Vect velocity, double radius) {
+        double cross = Math.abs(offset.x() * velocity.y() - offset.y() * velocity.x());
+        double reach = velocity.length() * radius;
+        return (reach - cross) * (reach + cross);
+    }
+
+    /** v with its part along the unit normal replaced by -coeff times that part. */
+    private static Vect reflectAlong(Vect unitNormal, Vect velocity, double reflectionCoeff) {
+        return velocity.minus(unitNormal.times((1 + reflectionCoeff) * velocity.dot(unitNormal)));
+    }
+
+    /** The unit vector from {@code from} to {@code to}. */
+    private static Vect unitNormal(Vect from, Vect to) {
+        Vect offset = to.minus(from);
+        if (offset.equals(Vect.ZERO)) {
+            throw new IllegalArgumentException("centres coincide at " + from + ": the contact normal is undefined");
+        }
+        return offset.unitSize();
+    }
+
+    private static void requireFinite(double value, String what) {
+        if (!Double.isFinite(value)) {
+            throw new IllegalArgumentException(what + " must be finite, got " + value);
+        }
+    }
+
+    double maximumForesight() {
+        return maximumForesight;
+    }
+
+    int searchSlices() {
+        return searchSlices;
+    }
+}
