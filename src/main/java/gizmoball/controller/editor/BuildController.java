@@ -415,8 +415,9 @@ public final class BuildController {
 
     /**
      * A key pressed over the board in build mode. Key Connect / Key Disconnect waiting for a key take any key
-     * (except Escape, which cancels); otherwise Escape cancels, Delete removes the selection and the tool
-     * shortcuts switch tools (only without Ctrl/Alt/Meta, which belong to the menus).
+     * but Escape (which cancels) and Ctrl/Alt/Meta combinations (which belong to the menus, e.g. Ctrl+Z while
+     * waiting). Otherwise Delete removes the selection, the arrow keys nudge it and the tool shortcuts switch
+     * tools.
      *
      * @return whether the key was used
      */
@@ -425,6 +426,9 @@ public final class BuildController {
             cancel();
             say("Cancelled");
             return true;
+        }
+        if (commandModifier) {
+            return false;
         }
         if (keyGizmo != null && pendingKey == null) {
             if (tool == Tool.KEY_CONNECT) {
@@ -437,16 +441,39 @@ public final class BuildController {
             }
             return true;
         }
-        if (commandModifier) {
-            return false;
+        switch (keyCode) {
+            case KeyEvent.VK_DELETE, KeyEvent.VK_BACK_SPACE -> deleteSelected();
+            case KeyEvent.VK_LEFT -> nudgeSelected(-1, 0);
+            case KeyEvent.VK_RIGHT -> nudgeSelected(1, 0);
+            case KeyEvent.VK_UP -> nudgeSelected(0, -1);
+            case KeyEvent.VK_DOWN -> nudgeSelected(0, 1);
+            default -> {
+                Optional<Tool> shortcut = Tool.forShortcut(keyCode);
+                shortcut.ifPresent(this::setTool);
+                return shortcut.isPresent();
+            }
         }
-        if (keyCode == KeyEvent.VK_DELETE || keyCode == KeyEvent.VK_BACK_SPACE) {
-            deleteSelected();
-            return true;
+        return true;
+    }
+
+    /** Moves the selected gizmo one cell, or the selected ball a quarter cell, in the direction (dx, dy). */
+    public boolean nudgeSelected(int dx, int dy) {
+        Optional<Gizmo> gizmo = selectedGizmo();
+        Optional<Ball> ball = selectedBall();
+        if (gizmo.isPresent()) {
+            Gizmo g = gizmo.get();
+            int x = g.x() + dx;
+            int y = g.y() + dy;
+            return edit("Moved " + g.name() + " to (" + x + "," + y + ")", b -> b.moveGizmo(g.name(), x, y));
         }
-        Optional<Tool> shortcut = Tool.forShortcut(keyCode);
-        shortcut.ifPresent(this::setTool);
-        return shortcut.isPresent();
+        if (ball.isPresent()) {
+            Ball b0 = ball.get();
+            double x = b0.position().x() + dx * BALL_SNAP;
+            double y = b0.position().y() + dy * BALL_SNAP;
+            return edit("Moved " + b0.name() + " to (" + x + ", " + y + ")", b -> b.moveBall(b0.name(), x, y));
+        }
+        say("Select a gizmo or ball to move it with the arrow keys");
+        return false;
     }
 
     /** Completes Key Connect: binds the pending key's down or up edge to the gizmo. */

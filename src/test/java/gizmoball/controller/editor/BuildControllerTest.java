@@ -548,4 +548,30 @@ class BuildControllerTest {
         assertThat(editor.awaitingKeyFor()).isEmpty();
         assertThat(editor.awaitingEdge()).isTrue();
     }
+
+    @Test
+    void arrowKeysNudgeTheSelectionByACellOrAQuarterCellAndStopAtTheEdge() {
+        click(Tool.SQUARE, 0, 3);
+        editor.keyPressed(KeyEvent.VK_RIGHT, false);
+        editor.keyPressed(KeyEvent.VK_DOWN, false);
+        assertThat(List.of(gizmo("S1").x(), gizmo("S1").y())).containsExactly(1, 4);
+        editor.keyPressed(KeyEvent.VK_LEFT, false);
+        editor.keyPressed(KeyEvent.VK_LEFT, false);
+        assertThat(gizmo("S1").x()).isZero();
+        assertThat(lastMessage()).containsIgnoringCase("outside");
+
+        board.addBall("B1", 5, 5, 0, 0);
+        editor.select("B1");
+        editor.keyPressed(KeyEvent.VK_UP, false);
+        assertThat(board.ball("B1").orElseThrow().position().y()).isEqualTo(4.75);
+    }
+
+    @Test
+    void ctrlCombinationsAreNotTakenAsTheKeyToBind() {
+        click(Tool.CIRCLE, 4, 4);
+        editor.setTool(Tool.KEY_CONNECT);
+        clickCell(4, 4);
+        assertThat(editor.keyPressed(KeyEvent.VK_Z, true)).isFalse();
+        assertThat(editor.awaitingKeyFor()).contains("C1");
+    }
 }
