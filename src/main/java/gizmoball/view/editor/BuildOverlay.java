@@ -136,7 +136,7 @@ public final class BuildOverlay implements BoardOverlay {
         Point2D to = t.toScreen(x + vx / BuildController.VELOCITY_PER_DRAG, y + vy / BuildController.VELOCITY_PER_DRAG);
         g.setStroke(new BasicStroke(LINE));
         arrow(g, from, to, color);
-        label(g, String.format("(%.4g, %.4g) L/s", vx, vy), to.getX() + 6, to.getY(), color);
+        label(g, "(" + Numbers.brief(vx) + ", " + Numbers.brief(vy) + ") L/s", to.getX() + 6, to.getY(), color);
     }
 
     /** Connect's first click is made: a dashed line from the source to the pointer, to where the target goes. */

@@ -11,6 +11,7 @@ import javax.swing.JToggleButton;
 import javax.swing.SwingConstants;
 import java.awt.BorderLayout;
 import java.awt.GridLayout;
+import java.awt.event.KeyEvent;
 import java.util.EnumMap;
 import java.util.Map;
 
@@ -29,7 +30,9 @@ public final class PalettePanel extends JPanel {
         add(column, BorderLayout.NORTH);
         ButtonGroup group = new ButtonGroup();
         for (Tool tool : Tool.values()) {
-            JToggleButton button = new JToggleButton(tool.label(), new ToolIcon(tool));
+            // The shortcut key, greyed after the label, so the keys are learnt by looking at the palette.
+            JToggleButton button = new JToggleButton("<html>" + tool.label() + " <font color=gray>"
+                    + KeyEvent.getKeyText(tool.shortcut()) + "</font></html>", new ToolIcon(tool));
             button.setName("tool." + tool.name());
             button.setHorizontalAlignment(SwingConstants.LEADING);
             button.setIconTextGap(8);

@@ -25,7 +25,6 @@ import java.awt.Dimension;
 import java.awt.GridBagConstraints;
 import java.awt.GridBagLayout;
 import java.awt.Insets;
-import java.math.BigDecimal;
 import java.util.Objects;
 import java.util.Optional;
 
@@ -90,9 +89,9 @@ public final class PropertiesPanel extends JPanel {
     /** Shows the board's current values; called on edits and selection changes, not on every pointer move. */
     public void refresh() {
         Board board = controller.board();
-        gravity.setText(format(board.gravity()));
-        mu.setText(format(board.mu()));
-        mu2.setText(format(board.mu2()));
+        gravity.setText(Numbers.exact(board.gravity()));
+        mu.setText(Numbers.exact(board.mu()));
+        mu2.setText(Numbers.exact(board.mu2()));
 
         shownSelection = controller.selected().orElse(null);
         Optional<Gizmo> gizmo = controller.selectedGizmo();
@@ -100,10 +99,10 @@ public final class PropertiesPanel extends JPanel {
         selection.setText(describe(gizmo, ball));
         ballRows.setVisible(ball.isPresent());
         ball.ifPresent(b -> {
-            ballX.setText(format(b.position().x()));
-            ballY.setText(format(b.position().y()));
-            ballVx.setText(format(b.velocity().x()));
-            ballVy.setText(format(b.velocity().y()));
+            ballX.setText(Numbers.exact(b.position().x()));
+            ballY.setText(Numbers.exact(b.position().y()));
+            ballVx.setText(Numbers.exact(b.velocity().x()));
+            ballVy.setText(Numbers.exact(b.velocity().y()));
         });
 
         links.clear();
@@ -192,7 +191,7 @@ public final class PropertiesPanel extends JPanel {
                 ballVx.getText(), ballVy.getText()));
     }
 
-    private static String describe(Optional<Gizmo> gizmo, Optional<Ball> ball) {
+    private String describe(Optional<Gizmo> gizmo, Optional<Ball> ball) {
         if (gizmo.isPresent()) {
             Gizmo g = gizmo.get();
             String size = g.width() + "x" + g.height();
@@ -205,11 +204,9 @@ public final class PropertiesPanel extends JPanel {
             return "<html><b>" + b.name() + "</b>: ball" + (b.isCaptured() ? " (held by an absorber)" : "")
                     + "</html>";
         }
-        return "Nothing selected";
-    }
-
-    private static String format(double v) {
-        return BigDecimal.valueOf(v).stripTrailingZeros().toPlainString();
+        return controller.selected().filter(Board.OUTER_WALLS::equals).isPresent()
+                ? "<html><b>" + Board.OUTER_WALLS + "</b>: the walls around the board</html>"
+                : "Nothing selected";
     }
 
     private static JTextField field(String name) {
