@@ -54,7 +54,7 @@ public final class BuildController {
     /** A press that is not finished yet: what the following drags and the release act on. */
     private sealed interface Gesture {
         record AbsorberDrag(int x0, int y0) implements Gesture { }
-        record BallDrag(double x, double y) implements Gesture { }
+        record BallDrag(double x, double y, double pressX, double pressY) implements Gesture { }
         record GizmoMove(Gizmo gizmo, int grabDx, int grabDy) implements Gesture { }
         record BallMove(Ball ball, double pressX, double pressY) implements Gesture { }
     }
@@ -329,7 +329,7 @@ public final class BuildController {
                 drag(x, y);
             }
             case BALL -> {
-                gesture = new Gesture.BallDrag(snap(x), snap(y));
+                gesture = new Gesture.BallDrag(snap(x), snap(y), x, y);
                 drag(x, y);
             }
             case SELECT -> pressSelect(x, y);
@@ -357,7 +357,10 @@ public final class BuildController {
         if (gesture instanceof Gesture.AbsorberDrag a) {
             setPreview(absorberFootprint(a.x0(), a.y0(), cell(x), cell(y)), true);
         } else if (gesture instanceof Gesture.BallDrag b) {
-            setPreview(ballPlacement(b.x(), b.y(), velocity(x - b.x()), velocity(y - b.y())), true);
+            // Measured from where the button went down, not from the snapped centre: a click is no velocity.
+            boolean still = Math.hypot(x - b.pressX(), y - b.pressY()) < DRAG_THRESHOLD;
+            setPreview(still ? ballPlacement(b.x(), b.y(), 0, 0)
+                    : ballPlacement(b.x(), b.y(), velocity(x - b.pressX()), velocity(y - b.pressY())), true);
         } else if (gesture instanceof Gesture.GizmoMove m) {
             Gizmo g = m.gizmo();
             int tx = cell(x) - m.grabDx();

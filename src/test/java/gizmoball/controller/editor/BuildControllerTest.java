@@ -94,15 +94,25 @@ class BuildControllerTest {
     @Test
     void ballIsPlacedAtTheSnappedClickAndTheDragGivesItsVelocity() {
         editor.setTool(Tool.BALL);
-        // Press 5.1 snaps to the quarter-cell 5.0; a drag of (+1.1, -0.9) L is (11, -9) L/s at 10 L/s per L.
-        drag(5.1, 5.1, 6.1, 4.1);
+        // Press 5.1 snaps the centre to the quarter-cell 5.0; the drag from the press, (+1.2, -0.9) L, is
+        // (12, -9) L/s at 10 L/s per L.
+        drag(5.1, 5.1, 6.3, 4.2);
 
         Ball b = board.ball("B1").orElseThrow();
         assertThat(b.position().x()).isEqualTo(5.0);
         assertThat(b.position().y()).isEqualTo(5.0);
-        assertThat(b.velocity().x()).isCloseTo(11, within(1e-9));
+        assertThat(b.velocity().x()).isCloseTo(12, within(1e-9));
         assertThat(b.velocity().y()).isCloseTo(-9, within(1e-9));
         assertThat(editor.selected()).contains("B1");
+    }
+
+    @Test
+    void aClickWithTheBallToolPlacesABallAtRestEvenOffTheSnapPoints() {
+        editor.setTool(Tool.BALL);
+        drag(7.37, 7.62, 7.4, 7.6);
+        Ball b = board.ball("B1").orElseThrow();
+        assertThat(List.of(b.position().x(), b.position().y())).containsExactly(7.25, 7.5);
+        assertThat(List.of(b.velocity().x(), b.velocity().y())).containsExactly(0.0, 0.0);
     }
 
     @Test

@@ -61,8 +61,14 @@ class BuildModeGuiTest {
 
     @Test
     void robotClicksOnThePaletteAndTheBoardPlaceASquare() throws Exception {
+        // Other tests' windows may still be on the screen: the real pointer must land on this one.
+        onEdt(() -> {
+            w.window.setAlwaysOnTop(true);
+            w.window.toFront();
+        });
         Robot robot = new Robot();
         robot.setAutoDelay(20);
+        robot.waitForIdle();
         Point button = BuildWindow.centreOnScreen(w.build.palette().button(Tool.SQUARE));
         Point cell = w.cellOnScreen(6, 9);
         robot.mouseMove(button.x, button.y);
