@@ -183,22 +183,24 @@ public final class BuildController {
 
     public boolean undo() {
         resetSteps();
+        Optional<String> what = history.undoable();
         if (!history.undo()) {
             say("Nothing to undo");
             return false;
         }
-        say("Undone");
+        say("Undone: " + what.orElseThrow());
         edited();
         return true;
     }
 
     public boolean redo() {
         resetSteps();
+        Optional<String> what = history.redoable();
         if (!history.redo()) {
             say("Nothing to redo");
             return false;
         }
-        say("Redone");
+        say("Redone: " + what.orElseThrow());
         edited();
         return true;
     }
@@ -579,7 +581,7 @@ public final class BuildController {
 
     private boolean edit(String success, Consumer<Board> operation) {
         try {
-            history.perform(operation);
+            history.perform(success, operation);
         } catch (BoardEditException refused) {
             say(refused.getMessage());
             stateChanged();

@@ -8,6 +8,7 @@ import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
 import java.util.List;
+import java.util.Optional;
 import java.util.function.Consumer;
 
 /**
@@ -27,8 +28,13 @@ public final class EditHistory {
     static final int LIMIT = 200;
 
     private final Board board;
-    private final Deque<Board> undo = new ArrayDeque<>();
-    private final Deque<Board> redo = new ArrayDeque<>();
+    /** A board as it was, and what the edit that left it did (for "Undo Placed S1" in menus and messages). */
+    private record Step(Board board, String what) { }
+
+    static final String ELSEWHERE = "change made outside the editor";
+
+    private final Deque<Step> undo = new ArrayDeque<>();
+    private final Deque<Step> redo = new ArrayDeque<>();
     private final List<Runnable> listeners = new ArrayList<>();
     private final List<Runnable> resetListeners = new ArrayList<>();
     /** The board as this history last saw it, to recognise what a change from elsewhere did. */
@@ -52,10 +58,10 @@ public final class EditHistory {
     }
 
     /**
-     * Runs the edit on the board. On success the board as it was before becomes an undo step and the redo
+     * Runs the edit on the board; {@code what} says what it does ("Placed S1 at (3,4)"). On success the board as it was before becomes an undo step and the redo
      * stack is dropped; on a refusal the board is left exactly as before and the exception is rethrown.
      */
-    public void perform(Consumer<Board> edit) {
+    public void perform(String what, Consumer<Board> edit) {
         Board before = board.copy();
         ownChange = true;
         editsDuringOperation = 0;
@@ -69,7 +75,7 @@ public final class EditHistory {
         } finally {
             ownChange = false;
         }
-        record(before);
+        record(new Step(before, what));
     }
 
     public boolean canUndo() {
@@ -78,6 +84,16 @@ public final class EditHistory {
 
     public boolean canRedo() {
         return !redo.isEmpty();
+    }
+
+    /** What Undo would take back, if anything. */
+    public Optional<String> undoable() {
+        return Optional.ofNullable(undo.peek()).map(Step::what);
+    }
+
+    /** What Redo would do again, if anything. */
+    public Optional<String> redoable() {
+        return Optional.ofNullable(redo.peek()).map(Step::what);
     }
 
     /** Puts back the board as it was before the last edit; false if there is nothing to undo. */
@@ -105,7 +121,7 @@ public final class EditHistory {
             return;
         }
         if (change == BoardChange.EDIT) {
-            record(current);
+            record(new Step(current, ELSEWHERE));
             return;
         }
         undo.clear();
@@ -115,8 +131,8 @@ public final class EditHistory {
         fire();
     }
 
-    private void record(Board before) {
-        undo.push(before);
+    private void record(Step step) {
+        undo.push(step);
         while (undo.size() > LIMIT) {
             undo.removeLast();
         }
@@ -125,14 +141,15 @@ public final class EditHistory {
         fire();
     }
 
-    private boolean swap(Deque<Board> from, Deque<Board> to) {
+    private boolean swap(Deque<Step> from, Deque<Step> to) {
         if (from.isEmpty()) {
             return false;
         }
-        to.push(board.copy());
+        Step step = from.pop();
+        to.push(new Step(board.copy(), step.what()));
         ownChange = true;
         try {
-            board.replaceContents(from.pop());
+            board.replaceContents(step.board());
         } finally {
             ownChange = false;
         }

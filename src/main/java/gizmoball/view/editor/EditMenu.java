@@ -49,6 +49,8 @@ public final class EditMenu extends JMenu {
         setEnabled(on);
         undo.setEnabled(on && controller.history().canUndo());
         redo.setEnabled(on && controller.history().canRedo());
+        undo.setToolTipText(controller.history().undoable().map(what -> "Undo: " + what).orElse(null));
+        redo.setToolTipText(controller.history().redoable().map(what -> "Redo: " + what).orElse(null));
     }
 
     private JMenuItem item(String text, KeyStroke accelerator, Runnable action) {

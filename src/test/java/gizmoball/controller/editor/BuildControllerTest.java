@@ -420,6 +420,7 @@ class BuildControllerTest {
         click(Tool.SQUARE, 1, 1);
         click(Tool.SQUARE, 2, 2);
         editor.undo();
+        assertThat(lastMessage()).isEqualTo("Undone: Placed S2 at (2,2)");
         click(Tool.CIRCLE, 5, 5);
 
         assertThat(editor.history().canRedo()).isFalse();

@@ -16,7 +16,7 @@ class EditHistoryTest {
 
     @Test
     void aCompoundEditRefusedHalfWayIsRolledBackCompletely() {
-        assertThatThrownBy(() -> history.perform(b -> {
+        assertThatThrownBy(() -> history.perform("edit", b -> {
             b.addGizmo(GizmoKind.SQUARE, "S1", 0, 0);
             b.addGizmo(GizmoKind.SQUARE, "S2", 0, 0);
         })).isInstanceOf(BoardEditException.class);
@@ -27,8 +27,8 @@ class EditHistoryTest {
 
     @Test
     void undoAndRedoRestoreWholeSnapshots() {
-        history.perform(b -> b.addGizmo(GizmoKind.SQUARE, "S1", 0, 0));
-        history.perform(b -> {
+        history.perform("edit", b -> b.addGizmo(GizmoKind.SQUARE, "S1", 0, 0));
+        history.perform("edit", b -> {
             b.addBall("B1", 5, 5, 1, 1);
             b.setGravity(3);
         });
@@ -46,7 +46,7 @@ class EditHistoryTest {
     void anotherDesignReplacingTheBoardStartsAFreshHistory() {
         AtomicInteger resets = new AtomicInteger();
         history.addResetListener(resets::incrementAndGet);
-        history.perform(b -> b.addGizmo(GizmoKind.CIRCLE, "C1", 1, 1));
+        history.perform("edit", b -> b.addGizmo(GizmoKind.CIRCLE, "C1", 1, 1));
         history.undo();
         history.redo();
         assertThat(resets).hasValue(0);
@@ -59,7 +59,7 @@ class EditHistoryTest {
 
     @Test
     void theSameDesignComingBackFromPlayKeepsTheHistory() {
-        history.perform(b -> b.addBall("B1", 5, 5, 3, 0));
+        history.perform("edit", b -> b.addBall("B1", 5, 5, 3, 0));
         Board design = board.copy();
         board.tick(0.25);
         assertThat(board.ball("B1").orElseThrow().position().x()).isGreaterThan(5.5);
@@ -72,11 +72,14 @@ class EditHistoryTest {
 
     @Test
     void anEditMadeElsewhereBecomesAnUndoStep() {
-        history.perform(b -> b.addGizmo(GizmoKind.SQUARE, "S1", 1, 1));
+        history.perform("Placed S1", b -> b.addGizmo(GizmoKind.SQUARE, "S1", 1, 1));
         board.addGizmo(GizmoKind.SQUARE, "S2", 3, 3);
+        assertThat(history.undoable()).contains(EditHistory.ELSEWHERE);
 
         history.undo();
         assertThat(board.gizmos()).extracting(g -> g.name()).containsExactly("S1");
+        assertThat(history.undoable()).contains("Placed S1");
+        assertThat(history.redoable()).contains(EditHistory.ELSEWHERE);
         history.undo();
         assertThat(board.gizmos()).isEmpty();
     }
@@ -85,7 +88,7 @@ class EditHistoryTest {
     void theOldestStepsAreForgottenBeyondTheLimit() {
         for (int i = 0; i < EditHistory.LIMIT + 5; i++) {
             double g = i;
-            history.perform(b -> b.setGravity(g));
+            history.perform("edit", b -> b.setGravity(g));
         }
         int undone = 0;
         while (history.undo()) {
