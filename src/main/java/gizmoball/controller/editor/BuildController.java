@@ -435,11 +435,18 @@ public final class BuildController {
         if (commandModifier) {
             return false;
         }
-        if (keyGizmo != null && pendingKey == null) {
+        if (pendingKey != null) {
+            // Waiting for down or up: the arrow keys answer; other keys must not start something else meanwhile.
+            if (keyCode == KeyEvent.VK_DOWN || keyCode == KeyEvent.VK_UP) {
+                chooseEdge(keyCode == KeyEvent.VK_DOWN ? KeyEdge.DOWN : KeyEdge.UP);
+            }
+            return true;
+        }
+        if (keyGizmo != null) {
             if (tool == Tool.KEY_CONNECT) {
                 pendingKey = keyCode;
                 say("Key " + KeyEvent.getKeyText(keyCode) + " for " + keyGizmo
-                        + ": choose down (on press) or up (on release)");
+                        + ": choose down (on press) or up (on release), or press the Down or Up arrow");
                 stateChanged();
             } else {
                 unbindKey(keyGizmo, keyCode);

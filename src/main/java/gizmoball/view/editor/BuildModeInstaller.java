@@ -5,17 +5,11 @@ import gizmoball.controller.Mode;
 import gizmoball.controller.editor.BoardInput;
 import gizmoball.controller.editor.BuildController;
 import gizmoball.controller.editor.Tool;
-import gizmoball.model.KeyEdge;
 import gizmoball.view.BoardPanel;
 import gizmoball.view.GameWindow;
 
 import javax.swing.JMenuBar;
-import javax.swing.JMenuItem;
-import javax.swing.JPopupMenu;
-import javax.swing.event.PopupMenuEvent;
-import javax.swing.event.PopupMenuListener;
 import java.awt.Cursor;
-import java.awt.geom.Point2D;
 import java.util.function.BooleanSupplier;
 
 /**
@@ -53,7 +47,8 @@ public final class BuildModeInstaller {
         menus.revalidate();
 
         panel.addOverlay(new BuildOverlay(controller, building));
-        BoardInput.attach(controller, panel, building, () -> chooseEdge(controller, panel));
+        EdgePopup edgePopup = new EdgePopup(controller, panel);
+        BoardInput.attach(controller, panel, building, edgePopup::show);
 
         session.addModeListener(mode -> {
             controller.cancel();
@@ -70,44 +65,5 @@ public final class BuildModeInstaller {
             return Cursor.getPredefinedCursor(Cursor.CROSSHAIR_CURSOR);
         }
         return Cursor.getPredefinedCursor(tool == Tool.SELECT ? Cursor.DEFAULT_CURSOR : Cursor.HAND_CURSOR);
-    }
-
-    /** Key Connect's last step: a popup at the gizmo asks whether the binding acts on key down or key up. */
-    private static void chooseEdge(BuildController controller, BoardPanel panel) {
-        JPopupMenu popup = new JPopupMenu("Key edge");
-        JMenuItem down = new JMenuItem("On key down (press)");
-        JMenuItem up = new JMenuItem("On key up (release)");
-        down.setName("edge.down");
-        up.setName("edge.up");
-        down.addActionListener(e -> {
-            popup.setVisible(false);
-            controller.chooseEdge(KeyEdge.DOWN);
-        });
-        up.addActionListener(e -> {
-            popup.setVisible(false);
-            controller.chooseEdge(KeyEdge.UP);
-        });
-        popup.add(down);
-        popup.add(up);
-        popup.addPopupMenuListener(new PopupMenuListener() {
-            @Override
-            public void popupMenuWillBecomeVisible(PopupMenuEvent e) {
-                // nothing to prepare
-            }
-
-            @Override
-            public void popupMenuWillBecomeInvisible(PopupMenuEvent e) {
-                // a choice was made or it was cancelled: handled by the items and popupMenuCanceled
-            }
-
-            @Override
-            public void popupMenuCanceled(PopupMenuEvent e) {
-                controller.cancel();
-            }
-        });
-        Point2D at = controller.selectedGizmo()
-                .map(g -> panel.transform().toScreen(g.x() + g.width(), g.y()))
-                .orElse(new Point2D.Double(panel.getWidth() / 2.0, panel.getHeight() / 2.0));
-        popup.show(panel, (int) at.getX(), (int) at.getY());
     }
 }

@@ -585,4 +585,18 @@ class BuildControllerTest {
         assertThat(editor.keyPressed(KeyEvent.VK_Z, true)).isFalse();
         assertThat(editor.awaitingKeyFor()).contains("C1");
     }
+
+    @Test
+    void theArrowKeysAnswerDownOrUpAndOtherKeysWaitMeanwhile() {
+        click(Tool.RIGHT_FLIPPER, 12, 16);
+        editor.setTool(Tool.KEY_CONNECT);
+        clickCell(12, 16);
+        editor.keyPressed(KeyEvent.VK_SLASH, false);
+        assertThat(editor.keyPressed(KeyEvent.VK_S, false)).isTrue();
+        assertThat(editor.tool()).isEqualTo(Tool.KEY_CONNECT);
+        editor.keyPressed(KeyEvent.VK_UP, false);
+
+        assertThat(board.keyBindings()).containsExactly(new KeyBinding(KeyEvent.VK_SLASH, KeyEdge.UP, "RF1"));
+        assertThat(editor.awaitingEdge()).isFalse();
+    }
 }
