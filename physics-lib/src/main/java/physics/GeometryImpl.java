@@ -236,40 +236,97 @@ public class GeometryImpl implements GeometryInterface {
         return new DoublePair(Math.min(r1, r2), Math.max(r1, r2));
     }
 
+    /**
+     * Time until the ball touches the closed segment that turns about {@code center} at {@code angularVelocity}
+     * rad/s (positive turns +x toward +y) from its given position at time 0. Contacts anywhere on the segment,
+     * its ends included, are found; only times in [0, maximumForesight] are reported, so a caller whose
+     * rotation stops earlier uses an instance whose foresight is the remaining rotation time and then treats the
+     * segment as static at its stop angle. At the returned time the ball is within 1e-9 L of touching (never
+     * inside); touching and closing is 0. A ball at rest is found. See {@link RotatingContactSearch}.
+     */
     @Override
     public double timeUntilRotatingWallCollision(LineSegment line, Vect center, double angularVelocity, Circle ball,
                                                  Vect velocity) {
-        throw new UnsupportedOperationException("rotating collisions come in the next commit");
+        return RotatingContactSearch.firstContact(line.p1(), line.p2(), 0, center, angularVelocity, ball, velocity,
+                maximumForesight, searchSlices);
     }
 
+    /** {@link #reflectRotatingWall(LineSegment, Vect, double, Circle, Vect, double)} with coefficient 1. */
     @Override
     public Vect reflectRotatingWall(LineSegment line, Vect center, double angularVelocity, Circle ball,
                                     Vect velocity) {
         return reflectRotatingWall(line, center, angularVelocity, ball, velocity, 1);
     }
 
+    /**
+     * The ball's velocity after it bounces off the segment (in its current position) that turns about
+     * {@code center} at {@code angularVelocity}: the velocity relative to the segment's surface at the contact
+     * point, w &times; (contact - center), is reflected off the segment's line with the coefficient, and the
+     * surface velocity is added back.
+     *
+     * @throws IllegalArgumentException if the ball touches the segment at one of its ends, i.e. the foot of the
+     *         perpendicular from the ball's centre falls off the segment or within {@link #END_CONTACT_TOLERANCE}
+     *         of an end. An end contact has its normal along the line of centres, not the segment's normal:
+     *         reflect it with {@link #reflectRotatingCircle} off {@code new Circle(end, 0)} instead.
+     */
     @Override
     public Vect reflectRotatingWall(LineSegment line, Vect center, double angularVelocity, Circle ball, Vect velocity,
                                     double reflectionCoeff) {
-        throw new UnsupportedOperationException("rotating collisions come in the next commit");
+        requireFinite(angularVelocity, "angular velocity");
+        requireFinite(reflectionCoeff, "reflection coefficient");
+        Vect contact = perpendicularPoint(line, ball.getCenter());
+        if (contact == null || contact.distanceSquared(line.p1()) < END_CONTACT_TOLERANCE * END_CONTACT_TOLERANCE
+                || contact.distanceSquared(line.p2()) < END_CONTACT_TOLERANCE * END_CONTACT_TOLERANCE) {
+            throw new IllegalArgumentException("ball at " + ball.getCenter() + " touches " + line
+                    + " at an end, not its face: reflect off a zero-radius circle at that end with "
+                    + "reflectRotatingCircle");
+        }
+        Vect dir = line.p2().minus(line.p1());
+        return reflectOffMovingSurface(new Vect(-dir.y(), dir.x()).unitSize(), contact, center, angularVelocity,
+                velocity, reflectionCoeff);
     }
 
+    /**
+     * Time until the ball touches the circle whose centre turns about {@code center} at {@code angularVelocity}
+     * rad/s; the same contract as {@link #timeUntilRotatingWallCollision}.
+     */
     @Override
     public double timeUntilRotatingCircleCollision(Circle circle, Vect center, double angularVelocity, Circle ball,
                                                    Vect velocity) {
-        throw new UnsupportedOperationException("rotating collisions come in the next commit");
+        return RotatingContactSearch.firstContact(circle.getCenter(), circle.getCenter(), circle.getRadius(), center,
+                angularVelocity, ball, velocity, maximumForesight, searchSlices);
     }
 
+    /** {@link #reflectRotatingCircle(Circle, Vect, double, Circle, Vect, double)} with coefficient 1. */
     @Override
     public Vect reflectRotatingCircle(Circle circle, Vect center, double angularVelocity, Circle ball,
                                       Vect velocity) {
         return reflectRotatingCircle(circle, center, angularVelocity, ball, velocity, 1);
     }
 
+    /**
+     * The ball's velocity after it bounces off the circle (in its current position) whose centre turns about
+     * {@code center} at {@code angularVelocity}: the velocity relative to the circle's surface at the contact
+     * point is reflected along the line of centres with the coefficient, and the surface velocity added back.
+     *
+     * @throws IllegalArgumentException if the ball's and the circle's centres coincide
+     */
     @Override
     public Vect reflectRotatingCircle(Circle circle, Vect center, double angularVelocity, Circle ball, Vect velocity,
                                       double reflectionCoeff) {
-        throw new UnsupportedOperationException("rotating collisions come in the next commit");
+        requireFinite(angularVelocity, "angular velocity");
+        requireFinite(reflectionCoeff, "reflection coefficient");
+        Vect normal = unitNormal(circle.getCenter(), ball.getCenter());
+        Vect contact = circle.getCenter().plus(normal.times(circle.getRadius()));
+        return reflectOffMovingSurface(normal, contact, center, angularVelocity, velocity, reflectionCoeff);
+    }
+
+    /** Reflects the velocity relative to the surface point turning with the obstacle, then adds its velocity back. */
+    private static Vect reflectOffMovingSurface(Vect unitNormal, Vect contact, Vect pivot, double angularVelocity,
+                                                Vect velocity, double reflectionCoeff) {
+        Vect arm = contact.minus(pivot);
+        Vect surfaceVelocity = new Vect(-arm.y(), arm.x()).times(angularVelocity);
+        return reflectAlong(unitNormal, velocity.minus(surfaceVelocity), reflectionCoeff).plus(surfaceVelocity);
     }
 
     /**
@@ -359,13 +416,5 @@ public class GeometryImpl implements GeometryInterface {
         if (!Double.isFinite(value)) {
             throw new IllegalArgumentException(what + " must be finite, got " + value);
         }
-    }
-
-    double maximumForesight() {
-        return maximumForesight;
-    }
-
-    int searchSlices() {
-        return searchSlices;
     }
 }

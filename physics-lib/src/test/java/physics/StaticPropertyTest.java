@@ -14,7 +14,7 @@ class StaticPropertyTest {
     private static final double INF = Double.POSITIVE_INFINITY;
 
     static LongStream seeds() {
-        return RandomScene.seeds(300);
+        return RandomScene.seeds(120);
     }
 
     /** Distance from the point to the segment's infinite line. */
@@ -72,13 +72,13 @@ class StaticPropertyTest {
     void ballBallContactIsAtTheSumOfRadiiOrNever(long seed) {
         RandomScene r = new RandomScene(seed);
         Circle a = new Circle(r.point(10), r.between(0.1, 1));
-        Circle b = new Circle(r.point(10), r.between(0.1, 1));
+        Circle b;
+        do { // apart at the start
+            b = new Circle(r.point(10), r.between(0.1, 1));
+        } while (Math.sqrt(a.getCenter().distanceSquared(b.getCenter())) <= a.getRadius() + b.getRadius());
         Vect va = r.vector(0, 20);
         Vect vb = r.vector(0, 20);
         double sum = a.getRadius() + b.getRadius();
-        if (a.getCenter().distanceSquared(b.getCenter()) <= sum * sum) {
-            return;
-        }
         double t = Geometry.timeUntilBallBallCollision(a, va, b, vb);
         Vect relative = a.getCenter().minus(b.getCenter());
         Vect relativeVelocity = va.minus(vb);

@@ -1,0 +1,124 @@
+package physics;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
+
+import java.util.stream.LongStream;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+
+/**
+ * The rotating methods against the brute-force oracle ({@link WorldGap}): over random flipper-like scenes the
+ * method's contact is never later than the oracle's and, when reported, is a true contact (gap within 1e-9 L).
+ */
+class RotatingOracleTest {
+    private static final double CONTACT = 1e-9;
+    private static final double FORESIGHT = GeometryImpl.DEFAULT_FORESIGHT;
+
+    static LongStream seeds() {
+        return RandomScene.seeds(120);
+    }
+
+    /** Up to 20 rad/s either way (1080 deg/s is 18.8 rad/s), sometimes not turning at all. */
+    static double angularVelocity(RandomScene r) {
+        double magnitude = r.between(0, 1) < 0.1 ? 0 : r.between(0.5, 20);
+        return r.coin() ? magnitude : -magnitude;
+    }
+
+    /** Sometimes at rest (pitfall 2), otherwise up to 30 L/s. */
+    static Vect ballVelocity(RandomScene r) {
+        return r.between(0, 1) < 0.2 ? Vect.ZERO : r.vector(0, 30);
+    }
+
+    @ParameterizedTest(name = "seed {0}")
+    @MethodSource("seeds")
+    void rotatingWallContactIsNeverLaterThanTheOracleAndIsExact(long seed) {
+        RandomScene r = new RandomScene(seed);
+        Vect pivot = r.point(5);
+        Vect p1 = r.coin() ? pivot : pivot.plus(r.vector(0, 0.5));
+        LineSegment segment = new LineSegment(p1, p1.plus(r.vector(1, 2.5)));
+        double w = angularVelocity(r);
+        Vect velocity = ballVelocity(r);
+        WorldGap gap;
+        Circle ball;
+        do { // a ball that starts clear of the segment
+            ball = new Circle(pivot.plus(r.vector(0.3, 3.5)), r.between(0.1, 0.5));
+            gap = WorldGap.wall(segment, pivot, w, ball, velocity);
+        } while (gap.at(0) <= 0);
+
+        double t = Geometry.timeUntilRotatingWallCollision(segment, pivot, w, ball, velocity);
+        assertAgreesWithOracle(seed, gap, t);
+    }
+
+    @ParameterizedTest(name = "seed {0}")
+    @MethodSource("seeds")
+    void rotatingCircleContactIsNeverLaterThanTheOracleAndIsExact(long seed) {
+        RandomScene r = new RandomScene(seed);
+        Vect pivot = r.point(5);
+        Circle circle = new Circle(pivot.plus(r.vector(0, 2.5)), r.coin() ? 0 : r.between(0.05, 0.5));
+        double w = angularVelocity(r);
+        Vect velocity = ballVelocity(r);
+        WorldGap gap;
+        Circle ball;
+        do { // a ball that starts clear of the circle
+            ball = new Circle(pivot.plus(r.vector(0.3, 3.5)), r.between(0.1, 0.5));
+            gap = WorldGap.circle(circle, pivot, w, ball, velocity);
+        } while (gap.at(0) <= 0);
+
+        double t = Geometry.timeUntilRotatingCircleCollision(circle, pivot, w, ball, velocity);
+        assertAgreesWithOracle(seed, gap, t);
+    }
+
+    @ParameterizedTest(name = "seed {0}")
+    @MethodSource("seeds")
+    void rotatingReflectionsKeepTheRelativeSpeedAndUndoThemselves(long seed) {
+        RandomScene r = new RandomScene(seed);
+        Vect pivot = r.point(5);
+        LineSegment segment = new LineSegment(pivot, pivot.plus(r.vector(1, 2.5)));
+        double w = angularVelocity(r);
+        Vect dir = segment.p2().minus(segment.p1()).unitSize();
+        Vect contact = segment.p1().plus(segment.p2().minus(segment.p1()).times(r.between(0.05, 0.95)));
+        double radius = r.between(0.1, 0.5);
+        Circle ball = new Circle(contact.plus(new Vect(-dir.y(), dir.x()).times(r.coin() ? radius : -radius)),
+                radius);
+        Vect v = r.vector(0, 30);
+        Vect arm = contact.minus(pivot);
+        Vect surface = new Vect(-arm.y(), arm.x()).times(w);
+        Vect once = Geometry.reflectRotatingWall(segment, pivot, w, ball, v);
+        assertThat(once.minus(surface).length()).as("seed %d: relative speed", seed)
+                .isCloseTo(v.minus(surface).length(), within(1e-12 * (1 + v.length() + surface.length())));
+        Vect twice = Geometry.reflectRotatingWall(segment, pivot, w, ball, once);
+        assertThat(twice.minus(v).length()).as("seed %d: reflecting twice", seed).isLessThan(1e-12 * (1 + v.length()
+                + surface.length()));
+        // The tangential part relative to the surface is untouched, whatever the coefficient.
+        double coeff = r.between(0, 1);
+        Vect damped = Geometry.reflectRotatingWall(segment, pivot, w, ball, v, coeff);
+        assertThat(damped.minus(surface).dot(dir)).as("seed %d: tangential part", seed)
+                .isCloseTo(v.minus(surface).dot(dir), within(1e-12 * (1 + v.length() + surface.length())));
+
+        Circle end = new Circle(segment.p2(), r.between(0, 0.3));
+        Vect outward = r.vector(1, 1);
+        Circle touching = new Circle(end.getCenter().plus(outward.times(end.getRadius() + radius)), radius);
+        Vect endArm = end.getCenter().plus(outward.times(end.getRadius())).minus(pivot);
+        Vect endSurface = new Vect(-endArm.y(), endArm.x()).times(w);
+        Vect offCircle = Geometry.reflectRotatingCircle(end, pivot, w, touching, v);
+        assertThat(offCircle.minus(endSurface).length()).as("seed %d: relative speed off the circle", seed)
+                .isCloseTo(v.minus(endSurface).length(), within(1e-12 * (1 + v.length() + endSurface.length())));
+        Vect back = Geometry.reflectRotatingCircle(end, pivot, w, touching, offCircle);
+        assertThat(back.minus(v).length()).as("seed %d: circle twice", seed).isLessThan(1e-12 * (1 + v.length()
+                + endSurface.length()));
+    }
+
+    static void assertAgreesWithOracle(long seed, WorldGap gap, double t) {
+        double oracle = gap.firstContact(FORESIGHT);
+        if (oracle < Double.POSITIVE_INFINITY) {
+            assertThat(t).as("seed %d: oracle contact at %s must not be missed or reported late", seed, oracle)
+                    .isLessThanOrEqualTo(oracle + CONTACT);
+        }
+        if (t < Double.POSITIVE_INFINITY) {
+            assertThat(t).as("seed %d: inside the foresight window", seed).isBetween(0.0, FORESIGHT);
+            assertThat(Math.abs(gap.at(t))).as("seed %d: gap at the reported time %s", seed, t)
+                    .isLessThanOrEqualTo(CONTACT);
+        }
+    }
+}

@@ -1,0 +1,90 @@
+package physics;
+
+/**
+ * The test oracle: the gap between a moving ball and a turning obstacle computed in the world frame, by turning
+ * the obstacle itself (independent of the library's rotating-frame search), and the first contact found by
+ * dense time sampling plus bisection.
+ */
+final class WorldGap {
+    /** Samples of the foresight window; the oracle can miss only contacts shallower than its sampling step. */
+    static final int SAMPLES = 20_000;
+
+    private final LineSegment segment;
+    private final Circle circle;
+    private final Vect pivot;
+    private final double w;
+    private final Circle ball;
+    private final Vect velocity;
+
+    private WorldGap(LineSegment segment, Circle circle, Vect pivot, double w, Circle ball, Vect velocity) {
+        this.segment = segment;
+        this.circle = circle;
+        this.pivot = pivot;
+        this.w = w;
+        this.ball = ball;
+        this.velocity = velocity;
+    }
+
+    static WorldGap wall(LineSegment segment, Vect pivot, double w, Circle ball, Vect velocity) {
+        return new WorldGap(segment, null, pivot, w, ball, velocity);
+    }
+
+    static WorldGap circle(Circle circle, Vect pivot, double w, Circle ball, Vect velocity) {
+        return new WorldGap(null, circle, pivot, w, ball, velocity);
+    }
+
+    /**
+     * Distance between the surfaces at time t (negative when overlapping): the obstacle's points are turned by
+     * w t about the pivot in the world frame, in plain arithmetic (no library call, for speed and independence).
+     */
+    double at(double t) {
+        double cos = Math.cos(w * t);
+        double sin = Math.sin(w * t);
+        double cx = ball.getCenter().x() + velocity.x() * t;
+        double cy = ball.getCenter().y() + velocity.y() * t;
+        if (segment == null) {
+            double qx = turnedX(circle.getCenter(), cos, sin);
+            double qy = turnedY(circle.getCenter(), cos, sin);
+            return Math.hypot(cx - qx, cy - qy) - circle.getRadius() - ball.getRadius();
+        }
+        double ax = turnedX(segment.p1(), cos, sin);
+        double ay = turnedY(segment.p1(), cos, sin);
+        double bx = turnedX(segment.p2(), cos, sin);
+        double by = turnedY(segment.p2(), cos, sin);
+        double dx = bx - ax;
+        double dy = by - ay;
+        double s = Math.max(0, Math.min(1, ((cx - ax) * dx + (cy - ay) * dy) / (dx * dx + dy * dy)));
+        return Math.hypot(cx - ax - s * dx, cy - ay - s * dy) - ball.getRadius();
+    }
+
+    private double turnedX(Vect p, double cos, double sin) {
+        return pivot.x() + (p.x() - pivot.x()) * cos - (p.y() - pivot.y()) * sin;
+    }
+
+    private double turnedY(Vect p, double cos, double sin) {
+        return pivot.y() + (p.x() - pivot.x()) * sin + (p.y() - pivot.y()) * cos;
+    }
+
+    /** The first sampled time in [0, horizon] with gap &le; 0, refined by bisection; infinity if none. */
+    double firstContact(double horizon) {
+        double previous = 0;
+        for (int i = 1; i <= SAMPLES; i++) {
+            double t = horizon * i / SAMPLES;
+            if (at(t) <= 0) {
+                double lo = previous;
+                double hi = t;
+                for (int k = 0; k < 60; k++) {
+                    double mid = 0.5 * (lo + hi);
+                    if (at(mid) <= 0) {
+                        hi = mid;
+                    } else {
+                        lo = mid;
+                    }
+                }
+                return hi;
+            }
+            previous = t;
+        }
+        return Double.POSITIVE_INFINITY;
+    }
+}

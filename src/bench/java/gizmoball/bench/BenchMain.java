@@ -1,0 +1,101 @@
+package gizmoball.bench;
+
+import physics.Vect;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * The benchmark: every scene with every method (cost and error), the scaling runs and the soak; a table
+ * on standard output, CSV and PNG charts in the output directory.
+ * <p>
+ * Arguments: {@code [--quick] --scripts DIR --out DIR}. {@code --quick} takes fewer and shorter timing
+ * samples, shorter scaling runs and a shorter soak, for a smoke run under two minutes.
+ */
+public final class BenchMain {
+
+    /** How much work each part does. */
+    record Effort(int samples, long minSampleNanos, double scalingSeconds, long soakTicks) {
+        static final Effort FULL = new Effort(5, 20_000_000, 5, 1_000_000);
+        static final Effort QUICK = new Effort(3, 5_000_000, 1, 50_000);
+    }
+
+    private BenchMain() {
+    }
+
+    public static void main(String[] args) throws IOException {
+        Effort effort = Effort.FULL;
+        Path scripts = Path.of("bench");
+        Path out = Path.of("build/reports/bench");
+        for (int i = 0; i < args.length; i++) {
+            switch (args[i]) {
+                case "--quick" -> effort = Effort.QUICK;
+                case "--scripts" -> scripts = Path.of(args[++i]);
+                case "--out" -> out = Path.of(args[++i]);
+                default -> throw new IllegalArgumentException("unknown argument " + args[i]
+                        + "; usage: [--quick] [--scripts DIR] [--out DIR]");
+            }
+        }
+        Files.createDirectories(out);
+        PrintStream stdout = System.out;
+        long wallStart = System.nanoTime();
+
+        List<Scene> scenes = Scenes.all(scripts);
+        stdout.println("warm-up");
+        for (Scene scene : scenes) {
+            for (Method method : Method.all()) {
+                Runner.cpuNanos(scene, method, true);
+            }
+        }
+        List<SceneResult> rows = new ArrayList<>();
+        for (Scene scene : scenes) {
+            stdout.println("scene: " + scene.name());
+            rows.addAll(runScene(scene, effort));
+        }
+        Report.printScenes(stdout, rows);
+        Report.writeScenes(out.resolve("accuracy.csv"), rows);
+        for (Scene scene : scenes) {
+            Charts.workPrecision(out, scene, rows);
+        }
+
+        stdout.println("scaling runs");
+        List<ScalingPoint> scaling = Scaling.run(effort.scalingSeconds(), effort.samples(), effort.minSampleNanos());
+        Report.printScaling(stdout, scaling);
+        Report.writeScaling(out.resolve("scaling.csv"), scaling);
+        Charts.scaling(out, scaling);
+
+        stdout.println("soak");
+        Soak.Result soak = Soak.run(effort.soakTicks());
+        Report.printSoak(stdout, soak);
+        Report.writeSoak(out.resolve("soak.csv"), soak);
+
+        stdout.printf(Locale.ROOT, "%nwrote CSV and charts to %s in %.0f s wall time%n", out.toAbsolutePath(),
+                (System.nanoTime() - wallStart) / 1e9);
+    }
+
+    /** The reference run (where there is no exact path), then every method: cost and accuracy. */
+    private static List<SceneResult> runScene(Scene scene, Effort effort) {
+        List<SceneResult> rows = new ArrayList<>();
+        List<Vect> expected;
+        if (scene.exact().isPresent()) {
+            expected = scene.exact().get().at(scene.duration());
+        } else {
+            Runner.Accuracy reference = Runner.measure(scene, Method.REFERENCE);
+            expected = reference.finalPositions();
+            long cost = Runner.medianCpuNanos(scene, Method.REFERENCE, true, 1, 0);
+            rows.add(new SceneResult(scene, Method.REFERENCE, true, cost, 0, reference));
+        }
+        for (Method method : Method.all()) {
+            Runner.Accuracy accuracy = Runner.measure(scene, method);
+            long cost = Runner.medianCpuNanos(scene, method, true, effort.samples(), effort.minSampleNanos());
+            rows.add(new SceneResult(scene, method, false, cost,
+                    Runner.meanDistance(accuracy.finalPositions(), expected), accuracy));
+        }
+        return rows;
+    }
+}

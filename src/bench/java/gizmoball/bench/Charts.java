@@ -1,0 +1,84 @@
+package gizmoball.bench;
+
+import org.knowm.xchart.AnnotationText;
+import org.knowm.xchart.BitmapEncoder;
+import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYChartBuilder;
+import org.knowm.xchart.XYSeries;
+import org.knowm.xchart.style.markers.SeriesMarkers;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.stream.Collectors;
+
+/** The PNG charts: one work-precision chart per scene and the two scaling charts. */
+final class Charts {
+
+    /** Log axes cannot show an exact zero; errors below this are drawn at this floor. */
+    static final double ERROR_FLOOR = 1e-15;
+
+    private static final org.knowm.xchart.style.markers.Marker[] MARKERS =
+            {SeriesMarkers.SQUARE, SeriesMarkers.CIRCLE, SeriesMarkers.TRIANGLE_UP};
+
+    private Charts() {
+    }
+
+    static void workPrecision(Path dir, Scene scene, List<SceneResult> rows) throws IOException {
+        XYChart chart = new XYChartBuilder().width(800).height(560)
+                .title("Work-precision: " + scene.name() + " (T = " + fmt(scene.duration()) + " s; points labelled with the tick, s)")
+                .xAxisTitle("CPU ms per simulated second (log)")
+                .yAxisTitle("position error at T, L (log" + (scene.exact().isPresent() ? ", vs exact" : ", vs reference") + ")")
+                .build();
+        chart.getStyler().setXAxisLogarithmic(true);
+        chart.getStyler().setYAxisLogarithmic(true);
+        chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideSW);
+        for (Loop loop : Loop.values()) {
+            List<SceneResult> line = rows.stream()
+                    .filter(r -> r.scene() == scene && !r.reference() && r.method().loop() == loop)
+                    .sorted((a, b) -> Integer.compare(a.method().ticksPerSecond(), b.method().ticksPerSecond()))
+                    .collect(Collectors.toList());
+            if (line.isEmpty()) {
+                continue;
+            }
+            double[] x = line.stream().mapToDouble(SceneResult::msPerSimSecond).toArray();
+            double[] y = line.stream().mapToDouble(r -> Math.max(ERROR_FLOOR, r.positionError())).toArray();
+            XYSeries series = chart.addSeries(loop.toString(), x, y);
+            series.setMarker(MARKERS[loop.ordinal()]);
+            for (int i = 0; i < line.size(); i++) {
+                // Tick length next to each point, a little above it on the log scale.
+                chart.addAnnotation(new AnnotationText("1/" + line.get(i).method().ticksPerSecond(), x[i], y[i] * 1.25, false));
+            }
+        }
+        save(chart, dir.resolve("work-precision-" + scene.name().replace(' ', '-') + ".png"));
+    }
+
+    static void scaling(Path dir, List<ScalingPoint> points) throws IOException {
+        scalingChart(dir, points, "gizmos", "number of gizmos (" + Scaling.BALLS_WHILE_GIZMOS_GROW + " balls)");
+        scalingChart(dir, points, "balls", "number of balls (" + Scaling.GIZMOS_WHILE_BALLS_GROW + " gizmos)");
+    }
+
+    private static void scalingChart(Path dir, List<ScalingPoint> points, String axis, String xTitle) throws IOException {
+        XYChart chart = new XYChartBuilder().width(800).height(560)
+                .title("Cost per tick against board size, " + Method.GAME_DEFAULT.label())
+                .xAxisTitle(xTitle).yAxisTitle("CPU microseconds per tick").build();
+        chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideNW);
+        for (boolean index : new boolean[] {true, false}) {
+            List<ScalingPoint> line = points.stream().filter(p -> p.axis().equals(axis) && p.spatialIndex() == index)
+                    .collect(Collectors.toList());
+            double[] x = line.stream().mapToDouble(p -> axis.equals("gizmos") ? p.gizmos() : p.balls()).toArray();
+            double[] y = line.stream().mapToDouble(ScalingPoint::usPerTick).toArray();
+            chart.addSeries(index ? "spatial index on" : "spatial index off (scan every gizmo)", x, y);
+        }
+        save(chart, dir.resolve("scaling-" + axis + ".png"));
+    }
+
+    private static void save(XYChart chart, Path file) throws IOException {
+        BitmapEncoder.saveBitmap(chart, file.toString(), BitmapEncoder.BitmapFormat.PNG);
+    }
+
+    private static String fmt(double v) {
+        return String.format(Locale.ROOT, "%g", v).replaceAll("\\.?0+$", "");
+    }
+}

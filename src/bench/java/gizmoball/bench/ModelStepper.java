@@ -1,0 +1,65 @@
+package gizmoball.bench;
+
+import gizmoball.model.Ball;
+import gizmoball.model.Board;
+import gizmoball.model.Gizmo;
+import gizmoball.model.Invariants;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/** The model's own loop, in the mode the method names. */
+final class ModelStepper implements Stepper {
+
+    private final Board board;
+
+    ModelStepper(Board board, Loop loop, boolean spatialIndex) {
+        this.board = board;
+        board.setLoopMode(loop.modelMode());
+        board.setSpatialIndexEnabled(spatialIndex);
+    }
+
+    @Override
+    public void tick(double dt) {
+        board.tick(dt);
+    }
+
+    @Override
+    public void keyDown(int keyCode) {
+        board.keyDown(keyCode);
+    }
+
+    @Override
+    public void keyUp(int keyCode) {
+        board.keyUp(keyCode);
+    }
+
+    @Override
+    public List<BallState> balls() {
+        List<BallState> balls = new ArrayList<>();
+        for (Ball b : board.balls()) {
+            balls.add(new BallState(b.position(), b.velocity(), b.radius(), b.isCaptured()));
+        }
+        return balls;
+    }
+
+    @Override
+    public List<Gizmo> gizmos() {
+        return board.gizmos();
+    }
+
+    @Override
+    public double energy() {
+        return board.energy();
+    }
+
+    @Override
+    public boolean checksModelInvariants() {
+        return true;
+    }
+
+    @Override
+    public boolean modelInvariantsHold() {
+        return Invariants.violations(board).isEmpty();
+    }
+}

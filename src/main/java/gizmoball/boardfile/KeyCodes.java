@@ -1,0 +1,39 @@
+package gizmoball.boardfile;
+
+import java.awt.event.KeyEvent;
+import java.lang.reflect.Field;
+import java.lang.reflect.Modifier;
+import java.util.HashSet;
+import java.util.Set;
+
+/**
+ * The key codes a board file may bind: the values of {@link KeyEvent}'s {@code VK_} constants
+ * (except {@code VK_UNDEFINED}). Read by reflection so the list is the running JDK's own.
+ * Loading KeyEvent needs no display, so this works headless.
+ */
+final class KeyCodes {
+    private static final Set<Integer> CODES = constantValues();
+
+    private KeyCodes() {
+    }
+
+    static boolean isKnown(int keyCode) {
+        return CODES.contains(keyCode);
+    }
+
+    private static Set<Integer> constantValues() {
+        Set<Integer> codes = new HashSet<>();
+        for (Field field : KeyEvent.class.getFields()) {
+            int modifiers = field.getModifiers();
+            if (field.getName().startsWith("VK_") && !field.getName().equals("VK_UNDEFINED")
+                    && Modifier.isStatic(modifiers) && field.getType() == int.class) {
+                try {
+                    codes.add(field.getInt(null));
+                } catch (IllegalAccessException e) {
+                    throw new IllegalStateException("public constant " + field + " is not readable", e);
+                }
+            }
+        }
+        return Set.copyOf(codes);
+    }
+}

@@ -1,0 +1,33 @@
+package gizmoball.boardfile;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * A board file read into commands: the well-formed lines in file order and an error for every other line.
+ * Every line is looked at, so one read reports all the syntax errors of a file.
+ */
+record ParsedFile(String source, List<Line> commands, List<BoardFileError> errors) {
+
+    /** A well-formed command and the line it came from, so that later refusals by the model name the line. */
+    record Line(SourceLine line, Command command) {
+    }
+
+    ParsedFile {
+        commands = List.copyOf(commands);
+        errors = List.copyOf(errors);
+    }
+
+    static ParsedFile parse(String source, String content) {
+        List<Line> commands = new ArrayList<>();
+        List<BoardFileError> errors = new ArrayList<>();
+        for (SourceLine line : BoardFileLexer.commandLines(content)) {
+            try {
+                commands.add(new Line(line, CommandParser.parse(line.text())));
+            } catch (CommandParser.Refusal refusal) {
+                errors.add(BoardFileError.at(source, line, refusal.getMessage()));
+            }
+        }
+        return new ParsedFile(source, commands, errors);
+    }
+}

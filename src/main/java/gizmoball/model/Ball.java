@@ -1,0 +1,79 @@
+package gizmoball.model;
+
+import physics.Circle;
+import physics.Vect;
+
+/** A ball: centre and velocity in L and L/s, radius {@link Board#BALL_RADIUS}; captured while an absorber holds it. */
+public final class Ball {
+    private final String name;
+    private Vect position;
+    private Vect velocity;
+    private boolean captured;
+
+    Ball(String name, Vect position, Vect velocity) {
+        this.name = name;
+        this.position = position;
+        this.velocity = velocity;
+    }
+
+    Ball copy() {
+        Ball copy = new Ball(name, position, velocity);
+        copy.captured = captured;
+        return copy;
+    }
+
+    public String name() {
+        return name;
+    }
+
+    public Vect position() {
+        return position;
+    }
+
+    public Vect velocity() {
+        return velocity;
+    }
+
+    public double radius() {
+        return Board.BALL_RADIUS;
+    }
+
+    public boolean isCaptured() {
+        return captured;
+    }
+
+    Circle circle() {
+        return new Circle(position, Board.BALL_RADIUS);
+    }
+
+    void moveTo(Vect newPosition) {
+        position = newPosition;
+    }
+
+    /** Sets the velocity, its speed clamped to {@link Board#MAX_SPEED}. */
+    void setVelocity(Vect newVelocity) {
+        double speed = newVelocity.length();
+        velocity = speed > Board.MAX_SPEED ? newVelocity.times(Board.MAX_SPEED / speed) : newVelocity;
+    }
+
+    void advance(double dt) {
+        position = position.plus(velocity.times(dt));
+    }
+
+    void capture(Vect holdingPosition) {
+        captured = true;
+        position = holdingPosition;
+        velocity = Vect.ZERO;
+    }
+
+    void release(Vect launchPosition, Vect launchVelocity) {
+        captured = false;
+        position = launchPosition;
+        setVelocity(launchVelocity);
+    }
+
+    @Override
+    public String toString() {
+        return "ball " + name + " at " + position + " moving " + velocity + (captured ? " (captured)" : "");
+    }
+}

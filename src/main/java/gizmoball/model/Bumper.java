@@ -1,0 +1,64 @@
+package gizmoball.model;
+
+import java.util.List;
+
+import physics.Circle;
+import physics.Vect;
+
+/** A square, circle or triangle bumper: reflects with coefficient 1.0, has no action of its own. */
+public final class Bumper extends GizmoBase implements Gizmo {
+    static final double CIRCLE_RADIUS = 0.5;
+
+    Bumper(GizmoKind kind, String name, int x, int y) {
+        super(name, kind, x, y);
+        if (kind != GizmoKind.SQUARE && kind != GizmoKind.CIRCLE && kind != GizmoKind.TRIANGLE) {
+            throw new IllegalArgumentException(kind + " is not a bumper");
+        }
+        rebuildShape();
+    }
+
+    private Bumper(Bumper other) {
+        super(other);
+    }
+
+    @Override
+    public double reflectionCoefficient() {
+        return 1.0;
+    }
+
+    /** Polygon corners in board coordinates in the current rotation (square 4, triangle 3); empty for a circle. */
+    public List<Vect> outline() {
+        int x = x();
+        int y = y();
+        return switch (kind()) {
+            case SQUARE -> List.of(new Vect(x, y), new Vect(x + 1, y), new Vect(x + 1, y + 1), new Vect(x, y + 1));
+            case TRIANGLE -> List.of(rotated(x, y), rotated(x + 1, y), rotated(x, y + 1));
+            default -> List.of();
+        };
+    }
+
+    /** The circle of a CIRCLE bumper: centred in its cell, radius 0.5. */
+    public Circle circle() {
+        if (kind() != GizmoKind.CIRCLE) {
+            throw new IllegalStateException(name() + " is a " + kind() + ", not a circle");
+        }
+        return new Circle(x() + 0.5, y() + 0.5, CIRCLE_RADIUS);
+    }
+
+    @Override
+    Shape buildShape() {
+        return kind() == GizmoKind.CIRCLE ? Shape.circle(circle()) : Shape.polygon(outline());
+    }
+
+    @Override
+    double signedDistance(Vect p) {
+        return kind() == GizmoKind.CIRCLE
+                ? Solids.toDisc(circle().getCenter(), CIRCLE_RADIUS, p)
+                : Solids.toConvexPolygon(outline(), p);
+    }
+
+    @Override
+    Bumper copy() {
+        return new Bumper(this);
+    }
+}

@@ -1,0 +1,169 @@
+package gizmoball.model;
+
+import java.util.List;
+
+import physics.Angle;
+import physics.Circle;
+import physics.Geometry;
+import physics.LineSegment;
+import physics.Vect;
+
+/**
+ * A left or right flipper: a 2 L bar with round ends of radius 0.25 pivoting near a top corner of its 2x2 box. It
+ * swings between rest (0 degrees, hanging down) and active (90 degrees, lying along the top edge) at 1080 deg/s
+ * and stops exactly at either limit. Its shape is two side segments and two end circles; the shape at rest is
+ * built once per placement and the current one only when the angle changes.
+ */
+public final class Flipper extends GizmoBase implements Gizmo {
+    static final double RADIUS = 0.25;
+    static final double REFLECTION = 0.95;
+    static final double MAX_ANGLE = 90;
+    static final double DEGREES_PER_SECOND = 1080;
+    /** Index of the pivot circle and of the tip circle in {@link Shape#circles()}. */
+    static final int PIVOT_CIRCLE = 0;
+    static final int TIP_CIRCLE = 1;
+    private static final double LIMIT_SNAP_DEGREES = 1e-9;
+
+    private double angle;
+    private boolean active;
+    private Shape restShape;
+    private Shape currentShape;
+
+    Flipper(GizmoKind kind, String name, int x, int y) {
+        super(name, kind, x, y);
+        if (kind != GizmoKind.LEFT_FLIPPER && kind != GizmoKind.RIGHT_FLIPPER) {
+            throw new IllegalArgumentException(kind + " is not a flipper");
+        }
+        rebuildShape();
+    }
+
+    private Flipper(Flipper other) {
+        super(other);
+        this.angle = other.angle;
+        this.active = other.active;
+        this.restShape = other.restShape;
+        this.currentShape = other.currentShape;
+    }
+
+    @Override
+    public double reflectionCoefficient() {
+        return REFLECTION;
+    }
+
+    /** Centre of the round end at the pivot. */
+    public Vect pivot() {
+        double local = kind() == GizmoKind.LEFT_FLIPPER ? x() + RADIUS : x() + 2 - RADIUS;
+        return rotated(local, y() + RADIUS);
+    }
+
+    /** Centre of the other round end, at the current angle. */
+    public Vect tip() {
+        return currentShape.circles().get(TIP_CIRCLE).getCenter();
+    }
+
+    public double radius() {
+        return RADIUS;
+    }
+
+    /** Degrees swung from rest, 0..90. */
+    public double angleFromRest() {
+        return angle;
+    }
+
+    /** True while the flipper is up or swinging up. */
+    public boolean isActive() {
+        return active;
+    }
+
+    public boolean isMoving() {
+        return active ? angle < MAX_ANGLE : angle > 0;
+    }
+
+    void activate() {
+        active = true;
+    }
+
+    void deactivate() {
+        active = false;
+    }
+
+    void toggle() {
+        active = !active;
+    }
+
+    /** Seconds until the flipper reaches the limit it is swinging to (0 when still). */
+    double timeToStop() {
+        return (active ? MAX_ANGLE - angle : angle) / DEGREES_PER_SECOND;
+    }
+
+    /**
+     * Signed angular velocity in radians per second in the library's sense (+x toward +y), 0 when still. A left
+     * flipper swings up from +y (hanging) to +x (the top edge): toward -; the right one mirrors it.
+     */
+    double angularVelocity() {
+        if (!isMoving()) {
+            return 0;
+        }
+        double up = kind() == GizmoKind.LEFT_FLIPPER ? -1 : 1;
+        return (active ? up : -up) * Math.toRadians(DEGREES_PER_SECOND);
+    }
+
+    /** Swings for dt seconds toward the current limit, stopping exactly at it. */
+    void advance(double dt) {
+        if (!isMoving() || dt <= 0) {
+            return;
+        }
+        double step = DEGREES_PER_SECOND * dt;
+        double limit = active ? MAX_ANGLE : 0;
+        double next = active ? Math.min(MAX_ANGLE, angle + step) : Math.max(0, angle - step);
+        // Sums of sub-tick steps round; a swing that ends within rounding of its limit ends exactly at it.
+        angle = Math.abs(limit - next) < LIMIT_SNAP_DEGREES ? limit : next;
+        currentShape = shapeAt(angle);
+    }
+
+    /** The shape at the limit it is swinging to (where it will stop). */
+    Shape shapeAtStop() {
+        return shapeAt(active ? MAX_ANGLE : 0);
+    }
+
+    @Override
+    Shape shape() {
+        return currentShape;
+    }
+
+    @Override
+    Shape buildShape() {
+        Vect pivot = pivot();
+        Vect restTip = pivot.plus(rotated(0, 1).minus(rotated(0, 0)).times(2 - 2 * RADIUS));
+        Vect across = rotated(1, 0).minus(rotated(0, 0)).times(RADIUS);
+        restShape = new Shape(
+                List.of(new LineSegment(pivot.plus(across), restTip.plus(across)),
+                        new LineSegment(pivot.minus(across), restTip.minus(across))),
+                List.of(new Circle(pivot, RADIUS), new Circle(restTip, RADIUS)));
+        currentShape = shapeAt(angle);
+        return restShape;
+    }
+
+    /** The rest shape turned about the pivot by the given degrees toward the active position. */
+    private Shape shapeAt(double degrees) {
+        if (degrees == 0) {
+            return restShape;
+        }
+        double up = kind() == GizmoKind.LEFT_FLIPPER ? -1 : 1;
+        Angle turn = new Angle(up * Math.toRadians(degrees));
+        Vect pivot = restShape.circles().get(PIVOT_CIRCLE).getCenter();
+        return new Shape(
+                restShape.segments().stream().map(s -> Geometry.rotateAround(s, pivot, turn)).toList(),
+                restShape.circles().stream().map(c -> Geometry.rotateAround(c, pivot, turn)).toList());
+    }
+
+    @Override
+    double signedDistance(Vect p) {
+        return Solids.toCapsule(pivot(), tip(), RADIUS, p);
+    }
+
+    @Override
+    Flipper copy() {
+        return new Flipper(this);
+    }
+}

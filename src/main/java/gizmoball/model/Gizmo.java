@@ -1,0 +1,25 @@
+package gizmoball.model;
+
+/** A gizmo on the board. Coordinates are whole cells; the footprint is the rectangle x..x+width, y..y+height. */
+public sealed interface Gizmo permits Bumper, Flipper, Absorber {
+    String name();
+
+    GizmoKind kind();
+
+    int x();
+
+    int y();
+
+    int width();
+
+    int height();
+
+    /** Quarter turns clockwise, 0..3; always 0 for CIRCLE and ABSORBER. */
+    int rotation();
+
+    /** 1.0 for bumpers, 0.95 for flippers, 0 for the absorber (it captures instead of reflecting). */
+    double reflectionCoefficient();
+
+    /** Board time of the last trigger or hit, NEGATIVE_INFINITY if never. */
+    double lastTriggeredAt();
+}

@@ -1,0 +1,126 @@
+package gizmoball.model;
+
+import physics.Vect;
+
+/**
+ * What every gizmo holds: name, kind, footprint cell, rotation, last trigger time, and its physical shape, which is
+ * rebuilt only when the gizmo is placed, moved or rotated (never per tick). Mutators are package-private: only
+ * {@link Board} changes gizmos, after it has checked the change on a copy.
+ */
+abstract sealed class GizmoBase permits Bumper, Flipper, Absorber {
+    private final String name;
+    private final GizmoKind kind;
+    private int x;
+    private int y;
+    private int rotation;
+    private double lastTriggeredAt = Double.NEGATIVE_INFINITY;
+    private Shape shape;
+
+    GizmoBase(String name, GizmoKind kind, int x, int y) {
+        this.name = name;
+        this.kind = kind;
+        this.x = x;
+        this.y = y;
+    }
+
+    /** Copies the common state of another gizmo (for deep copies). */
+    GizmoBase(GizmoBase other) {
+        this(other.name, other.kind, other.x, other.y);
+        this.rotation = other.rotation;
+        this.lastTriggeredAt = other.lastTriggeredAt;
+        this.shape = other.shape;
+    }
+
+    public String name() {
+        return name;
+    }
+
+    public GizmoKind kind() {
+        return kind;
+    }
+
+    public int x() {
+        return x;
+    }
+
+    public int y() {
+        return y;
+    }
+
+    public int width() {
+        return kind.width();
+    }
+
+    public int height() {
+        return kind.height();
+    }
+
+    public int rotation() {
+        return rotation;
+    }
+
+    public double lastTriggeredAt() {
+        return lastTriggeredAt;
+    }
+
+    public abstract double reflectionCoefficient();
+
+    /** The shape the collision detection uses now (for a flipper: at its current angle). */
+    Shape shape() {
+        return shape;
+    }
+
+    /** Builds the static shape for the current footprint and rotation; called after every placement change. */
+    abstract Shape buildShape();
+
+    /** Signed distance from p to the solid body of the gizmo as it is now (negative inside). */
+    abstract double signedDistance(Vect p);
+
+    /** A deep copy with all play state. */
+    abstract GizmoBase copy();
+
+    /** Whether a quarter turn changes anything (not for circles and absorbers). */
+    boolean rotates() {
+        return kind != GizmoKind.CIRCLE && kind != GizmoKind.ABSORBER;
+    }
+
+    void moveTo(int newX, int newY) {
+        x = newX;
+        y = newY;
+        rebuildShape();
+    }
+
+    void rotateClockwise() {
+        if (rotates()) {
+            rotation = (rotation + 1) % 4;
+            rebuildShape();
+        }
+    }
+
+    final void rebuildShape() {
+        shape = buildShape();
+    }
+
+    void markTriggered(double time) {
+        lastTriggeredAt = time;
+    }
+
+    /** Turns a point given for the unrotated footprint by the gizmo's rotation, clockwise about the footprint centre. */
+    Vect rotated(double px, double py) {
+        double cx = x + width() / 2.0;
+        double cy = y + height() / 2.0;
+        double dx = px - cx;
+        double dy = py - cy;
+        for (int i = 0; i < rotation; i++) {
+            double turned = -dy;   // clockwise on screen (y down): (dx, dy) -> (-dy, dx)
+            dy = dx;
+            dx = turned;
+        }
+        return new Vect(cx + dx, cy + dy);
+    }
+
+    @Override
+    public String toString() {
+        return kind + " " + name + " at (" + x + "," + y + ")";
+    }
+}

@@ -1,0 +1,61 @@
+package gizmoball.model;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import physics.Vect;
+
+/**
+ * The physical invariants of a board, for tests and the benchmark: no NaN or infinite ball state, every free ball
+ * inside the board, no free ball inside a gizmo or another free ball by more than {@link #TOLERANCE} L, speeds
+ * within {@link Board#MAX_SPEED}. Captured balls sit inside their absorber by design: only finiteness is checked.
+ */
+public final class Invariants {
+    public static final double TOLERANCE = 1e-6;
+
+    private Invariants() {
+    }
+
+    /** Empty when all hold; otherwise one line per violation, naming the ball and what is wrong. */
+    public static List<String> violations(Board board) {
+        List<String> found = new ArrayList<>();
+        List<Ball> free = new ArrayList<>();
+        for (Ball ball : board.ballStates()) {
+            Vect p = ball.position();
+            Vect v = ball.velocity();
+            if (!Double.isFinite(p.x()) || !Double.isFinite(p.y()) || !Double.isFinite(v.x()) || !Double.isFinite(v.y())) {
+                found.add(ball + ": not a finite state");
+                continue;
+            }
+            if (v.length() > Board.MAX_SPEED * (1 + 1e-12)) {
+                found.add(ball + ": speed " + v.length() + " over " + Board.MAX_SPEED);
+            }
+            if (!ball.isCaptured()) {
+                free.add(ball);
+            }
+        }
+        double r = Board.BALL_RADIUS;
+        for (Ball ball : free) {
+            Vect p = ball.position();
+            if (p.x() < r - TOLERANCE || p.x() > Board.SIZE - r + TOLERANCE
+                    || p.y() < r - TOLERANCE || p.y() > Board.SIZE - r + TOLERANCE) {
+                found.add(ball + ": outside the board");
+            }
+            for (GizmoBase gizmo : board.gizmoBases()) {
+                double depth = r - gizmo.signedDistance(p);
+                if (depth > TOLERANCE) {
+                    found.add(ball + ": " + depth + " L inside " + gizmo);
+                }
+            }
+        }
+        for (int i = 0; i < free.size(); i++) {
+            for (int j = i + 1; j < free.size(); j++) {
+                double depth = 2 * r - Math.sqrt(free.get(i).position().distanceSquared(free.get(j).position()));
+                if (depth > TOLERANCE) {
+                    found.add(free.get(i) + ": " + depth + " L inside " + free.get(j));
+                }
+            }
+        }
+        return found;
+    }
+}

@@ -1,0 +1,60 @@
+package gizmoball.model;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * A uniform grid over the 20x20 cells: each cell knows the gizmo whose footprint covers it (gizmos never overlap,
+ * so there is at most one). It answers "which cell is taken by whom" for editing, and "which gizmos can a ball
+ * reach" for collision detection: the gizmos covering the cells of the box a ball sweeps in the time considered.
+ * Every gizmo's shape lies inside its footprint (a swinging flipper's too), so no reachable shape is missed.
+ */
+final class SpatialIndex {
+    private final GizmoBase[][] cells = new GizmoBase[Board.SIZE][Board.SIZE];
+
+    GizmoBase at(int cx, int cy) {
+        return inside(cx, cy) ? cells[cx][cy] : null;
+    }
+
+    static boolean inside(int cx, int cy) {
+        return cx >= 0 && cy >= 0 && cx < Board.SIZE && cy < Board.SIZE;
+    }
+
+    void put(GizmoBase gizmo) {
+        fill(gizmo, gizmo);
+    }
+
+    void remove(GizmoBase gizmo) {
+        fill(gizmo, null);
+    }
+
+    private void fill(GizmoBase gizmo, GizmoBase value) {
+        for (int cx = gizmo.x(); cx < gizmo.x() + gizmo.width(); cx++) {
+            for (int cy = gizmo.y(); cy < gizmo.y() + gizmo.height(); cy++) {
+                cells[cx][cy] = value;
+            }
+        }
+    }
+
+    /** The distinct gizmos covering any cell that meets the box [minX, maxX] x [minY, maxY] (board coordinates). */
+    List<GizmoBase> within(double minX, double minY, double maxX, double maxY) {
+        List<GizmoBase> found = new ArrayList<>();
+        int x0 = clampCell(minX);
+        int x1 = clampCell(maxX);
+        int y0 = clampCell(minY);
+        int y1 = clampCell(maxY);
+        for (int cx = x0; cx <= x1; cx++) {
+            for (int cy = y0; cy <= y1; cy++) {
+                GizmoBase gizmo = cells[cx][cy];
+                if (gizmo != null && !found.contains(gizmo)) {
+                    found.add(gizmo);
+                }
+            }
+        }
+        return found;
+    }
+
+    private static int clampCell(double coordinate) {
+        return (int) Math.max(0, Math.min(Board.SIZE - 1, Math.floor(coordinate)));
+    }
+}

@@ -1,0 +1,78 @@
+package gizmoball.boardfile;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.util.stream.Stream;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
+
+class CommandParserTest {
+
+    static Stream<Arguments> wellFormedLines() {
+        return Stream.of(
+                Arguments.of("Square S1 1 2", new Command.AddGizmo(CommandWord.SQUARE, "S1", 1, 2)),
+                Arguments.of("circle C 3 4", new Command.AddGizmo(CommandWord.CIRCLE, "C", 3, 4)),
+                Arguments.of("TRIANGLE T 19 0", new Command.AddGizmo(CommandWord.TRIANGLE, "T", 19, 0)),
+                Arguments.of("LeftFlipper LF 7.0 8.0", new Command.AddGizmo(CommandWord.LEFT_FLIPPER, "LF", 7, 8)),
+                Arguments.of("rightflipper 12_4 10 11", new Command.AddGizmo(CommandWord.RIGHT_FLIPPER, "12_4", 10, 11)),
+                Arguments.of("Absorber A 0 19 20 20", new Command.AddAbsorber("A", 0, 19, 20, 20)),
+                Arguments.of("Ball B 1.5 2.25 -3 40.0", new Command.AddBall("B", 1.5, 2.25, -3, 40)),
+                Arguments.of("Rotate S1", new Command.Rotate("S1")),
+                Arguments.of("delete S1", new Command.Delete("S1")),
+                Arguments.of("Move B 3.5 4", new Command.Move("B", 3.5, 4)),
+                Arguments.of("Connect A A", new Command.Connect("A", "A")),
+                Arguments.of("Connect OuterWalls LF", new Command.Connect("OuterWalls", "LF")),
+                Arguments.of("KeyConnect key 32 down A", new Command.KeyConnect(32, true, "A")),
+                Arguments.of("keyconnect KEY 76.0 UP L", new Command.KeyConnect(76, false, "L")),
+                Arguments.of("Gravity 25.0", new Command.Gravity(25)),
+                Arguments.of("Friction 0.025 0.025", new Command.Friction(0.025, 0.025)),
+                Arguments.of("Square !@$%^&*()-=+[]{};:'\",.<>/?|\\~` 0 0",
+                        new Command.AddGizmo(CommandWord.SQUARE, "!@$%^&*()-=+[]{};:'\",.<>/?|\\~`", 0, 0)),
+                Arguments.of("\t Square   S \t 1   2  ", new Command.AddGizmo(CommandWord.SQUARE, "S", 1, 2)));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("wellFormedLines")
+    void parsesWellFormedLines(String line, Command expected) throws CommandParser.Refusal {
+        assertThat(CommandParser.parse(line)).isEqualTo(expected);
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("wellFormedLines")
+    void canonicalLineParsesBackToTheSameCommand(String line, Command command) throws CommandParser.Refusal {
+        assertThat(CommandParser.parse(command.toLine())).isEqualTo(command);
+    }
+
+    static Stream<Arguments> malformedLines() {
+        return Stream.of(
+                Arguments.of("Color S1 #ff0000", "unknown command 'Color'"),
+                Arguments.of("Sink S 1 2", "unknown command 'Sink'"),
+                Arguments.of("Square S1 1", "wrong number of arguments: Square takes 3 (Square <name> <x> <y>), found 2"),
+                Arguments.of("LeftFlipper LF87 8 7 false", "wrong number of arguments: LeftFlipper takes 3"),
+                Arguments.of("Absorber A 0 19", "wrong number of arguments: Absorber takes 5"),
+                Arguments.of("Ball B 1.0 11.0", "wrong number of arguments: Ball takes 5"),
+                Arguments.of("Delete", "wrong number of arguments: Delete takes 1"),
+                Arguments.of("Circle C0 jkj 3", "x 'jkj' is not a number"),
+                Arguments.of("Ball B 1 2 NaN 0", "vx 'NaN' is not a number"),
+                Arguments.of("Gravity Infinity", "gravity 'Infinity' is not a number"),
+                Arguments.of("Friction 0.025 1e999", "mu2 '1e999' is not a number"),
+                Arguments.of("Square S 1.5 2", "x coordinate 1.5 is not a whole cell"),
+                Arguments.of("Absorber A 0 19 20 19.75", "y2 coordinate 19.75 is not a whole cell"),
+                Arguments.of("Square S 1e12 2", "x coordinate 1e12 is outside the board"),
+                Arguments.of("KeyConnect key 32 sideways A", "bad direction 'sideways': expected down or up"),
+                Arguments.of("KeyConnect key 15 down A", "unknown key code 15"),
+                Arguments.of("KeyConnect key 0 down A", "unknown key code 0"),
+                Arguments.of("KeyConnect key Space down A", "key code 'Space' is not a number"),
+                Arguments.of("KeyConnect key 76.5 down A", "key code 76.5 is not a whole number"),
+                Arguments.of("KeyConnect button 32 down A", "expected the word 'key' after KeyConnect, found 'button'"));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("malformedLines")
+    void refusesMalformedLinesSayingWhy(String line, String reason) {
+        assertThatThrownBy(() -> CommandParser.parse(line)).isInstanceOf(CommandParser.Refusal.class)
+                .hasMessageStartingWith(reason);
+    }
+}

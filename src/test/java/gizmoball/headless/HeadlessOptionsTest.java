@@ -1,0 +1,45 @@
+package gizmoball.headless;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Optional;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+class HeadlessOptionsTest {
+
+    @Test
+    void readsEveryOptionInAnyOrder() throws HeadlessOptions.BadArguments {
+        HeadlessOptions options = HeadlessOptions.parse(List.of(
+                "--out", "after.txt", "board.txt", "--skip-bad-lines", "--dt", "0.01", "--headless", "--ticks", "2000"));
+        assertThat(options).isEqualTo(new HeadlessOptions(Path.of("board.txt"), 2000, Optional.of(0.01), true,
+                Optional.of(Path.of("after.txt"))));
+    }
+
+    @Test
+    void onlyTicksAndBoardAreRequired() throws HeadlessOptions.BadArguments {
+        assertThat(HeadlessOptions.parse(List.of("--headless", "--ticks", "0", "b.txt"))).isEqualTo(
+                new HeadlessOptions(Path.of("b.txt"), 0, Optional.empty(), false, Optional.empty()));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @CsvSource(delimiter = '|', value = {
+            "--headless b.txt | --ticks N is required",
+            "--headless --ticks 5 | no board file given",
+            "--headless --ticks | --ticks needs a value",
+            "--headless --ticks -1 b.txt | --ticks needs a whole number >= 0, not '-1'",
+            "--headless --ticks ten b.txt | --ticks needs a whole number >= 0, not 'ten'",
+            "--headless --ticks 5 --dt 0 b.txt | --dt needs a number of seconds > 0, not '0'",
+            "--headless --ticks 5 --dt NaN b.txt | --dt needs a number of seconds > 0, not 'NaN'",
+            "--headless --ticks 5 --fast b.txt | unknown option --fast",
+            "--headless --ticks 5 a.txt b.txt | more than one board file: a.txt and b.txt",
+            "--headless --ticks 5 b.txt --out | --out needs a value"})
+    void refusesBadCommandLinesSayingWhy(String commandLine, String message) {
+        assertThatThrownBy(() -> HeadlessOptions.parse(List.of(commandLine.split(" "))))
+                .isInstanceOf(HeadlessOptions.BadArguments.class).hasMessage(message);
+    }
+}
