@@ -5,6 +5,12 @@ import physics.Vect;
 
 /** A ball: centre and velocity in L and L/s, radius {@link Board#BALL_RADIUS}; captured while an absorber holds it. */
 public final class Ball {
+    /**
+     * L/s: components below this are rounding debris. Far below anything meaningful (resting-contact projections
+     * leave components near 1e-14 that decide whether a ball is still closing on a corner), far above the
+     * range where a collision time gap / speed overflows.
+     */
+    static final double NEGLIGIBLE_SPEED = 1e-100;
     private final String name;
     private Vect position;
     private Vect velocity;
@@ -50,10 +56,19 @@ public final class Ball {
         position = newPosition;
     }
 
-    /** Sets the velocity, its speed clamped to {@link Board#MAX_SPEED}. */
+    /**
+     * Sets the velocity, its speed clamped to {@link Board#MAX_SPEED}. Components below {@link #NEGLIGIBLE_SPEED}
+     * become 0: friction shrinks a leftover component geometrically toward the subnormal range, where the time
+     * until it crosses the board overflows (a 1e-308 L/s drift meets a wall after more than 1e308 s).
+     */
     void setVelocity(Vect newVelocity) {
         double speed = newVelocity.length();
-        velocity = speed > Board.MAX_SPEED ? newVelocity.times(Board.MAX_SPEED / speed) : newVelocity;
+        Vect clamped = speed > Board.MAX_SPEED ? newVelocity.times(Board.MAX_SPEED / speed) : newVelocity;
+        velocity = new Vect(negligibleToZero(clamped.x()), negligibleToZero(clamped.y()));
+    }
+
+    private static double negligibleToZero(double component) {
+        return Math.abs(component) < NEGLIGIBLE_SPEED ? 0 : component;
     }
 
     void advance(double dt) {

@@ -113,7 +113,7 @@ final class TickRun {
             Vect next = v.times(factor).plus(new Vect(0, board.gravity() * dt));
             ball.setVelocity(next);
             if (ball.velocity().equals(next)) {
-                shadowAtStart.put(ball, shadowEnergy(ball, -1));
+                shadowAtStart.put(ball, shadowEnergyAfterStage1(ball));
             }
         }
     }
@@ -276,11 +276,11 @@ final class TickRun {
     }
 
     /**
-     * The shadow energy the integration keeps in free flight: |v + side * g dt/2 y|^2/2 - g y, with side -1 right
-     * after stage 1 (the velocity before gravity's second half-kick) and +1 at the end of the tick.
+     * The shadow energy the integration keeps in free flight, |u|^2/2 - g y with u the velocity half a gravity
+     * kick back: right after stage 1 that is v - g dt/2 y; at the end of a tick it is v + g dt/2 y.
      */
-    private double shadowEnergy(Ball ball, int side) {
-        Vect u = ball.velocity().plus(new Vect(0, side * board.gravity() * dt / 2));
+    private double shadowEnergyAfterStage1(Ball ball) {
+        Vect u = ball.velocity().minus(new Vect(0, board.gravity() * dt / 2));
         return u.dot(u) / 2 - board.gravity() * ball.position().y();
     }
 
