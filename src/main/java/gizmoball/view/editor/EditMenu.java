@@ -26,8 +26,8 @@ public final class EditMenu extends JMenu {
         undo = item("Undo", KeyStroke.getKeyStroke(KeyEvent.VK_Z, InputEvent.CTRL_DOWN_MASK), controller::undo);
         redo = item("Redo", KeyStroke.getKeyStroke(KeyEvent.VK_Y, InputEvent.CTRL_DOWN_MASK), controller::redo);
         addSeparator();
-        item("Rotate selection", KeyStroke.getKeyStroke(KeyEvent.VK_R, InputEvent.CTRL_DOWN_MASK),
-                controller::rotateSelected);
+        // No accelerator: Ctrl+R is the File menu's Reload.
+        item("Rotate selection", null, controller::rotateSelected);
         item("Delete selection", null, controller::deleteSelected).setToolTipText("Also the Delete key over the board");
         addSeparator();
         item("Clear board\u2026", null, () -> {

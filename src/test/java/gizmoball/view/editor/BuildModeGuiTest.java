@@ -11,22 +11,19 @@ import gizmoball.model.Gizmo;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
-import gizmoball.view.BoardPanel;
-import gizmoball.view.GameWindow;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
 import javax.swing.JList;
+import javax.swing.JMenuBar;
 import javax.swing.JMenuItem;
 import javax.swing.JTextField;
+import javax.swing.KeyStroke;
 import java.awt.Point;
 import java.awt.Robot;
 import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
-import java.awt.event.KeyListener;
-import java.awt.event.MouseEvent;
-import java.awt.geom.Point2D;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -224,4 +221,24 @@ class BuildModeGuiTest {
         assertThat(onEdt(w.build.editMenu()::isEnabled)).isFalse();
     }
 
+
+    @Test
+    void theEditMenuSitsAfterFileAndItsShortcutsClashWithNoOtherMenu() {
+        JMenuBar menus = w.window.menus();
+        assertThat(onEdt(() -> menus.getMenu(1))).isSameAs(w.build.editMenu());
+        List<KeyStroke> accelerators = onEdt(() -> {
+            List<KeyStroke> all = new ArrayList<>();
+            for (int i = 0; i < menus.getMenuCount(); i++) {
+                for (int j = 0; j < menus.getMenu(i).getItemCount(); j++) {
+                    JMenuItem item = menus.getMenu(i).getItem(j);
+                    if (item != null && item.getAccelerator() != null) {
+                        all.add(item.getAccelerator());
+                    }
+                }
+            }
+            return all;
+        });
+        assertThat(accelerators).contains(KeyStroke.getKeyStroke(KeyEvent.VK_Z, InputEvent.CTRL_DOWN_MASK))
+                .doesNotHaveDuplicates();
+    }
 }
