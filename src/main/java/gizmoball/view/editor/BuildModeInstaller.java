@@ -50,7 +50,9 @@ public final class BuildModeInstaller {
         EdgePopup edgePopup = new EdgePopup(controller, panel);
         BoardInput.attach(controller, panel, building, edgePopup::show);
 
+        WindowFit fit = new WindowFit(window);
         session.addModeListener(mode -> {
+            fit.modeChanged(mode);
             controller.cancel();
             editMenu.update();
             cursor.run();

@@ -20,8 +20,10 @@ import javax.swing.JMenuBar;
 import javax.swing.JMenuItem;
 import javax.swing.JTextField;
 import javax.swing.KeyStroke;
+import java.awt.Dimension;
 import java.awt.Point;
 import java.awt.Robot;
+import java.awt.Toolkit;
 import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.util.ArrayList;
@@ -31,6 +33,7 @@ import static gizmoball.view.editor.EditorGui.await;
 import static gizmoball.view.editor.EditorGui.onEdt;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 /**
  * Build mode in a real window (under Xvfb in CI): palette buttons are clicked, mouse events arrive at the
@@ -240,5 +243,25 @@ class BuildModeGuiTest {
         });
         assertThat(accelerators).contains(KeyStroke.getKeyStroke(KeyEvent.VK_Z, InputEvent.CTRL_DOWN_MASK))
                 .doesNotHaveDuplicates();
+    }
+
+    @Test
+    void theSidePanelsDoNotSqueezeTheBoardAndPlayGetsItsSizeBack() {
+        onEdt(() -> w.session.setMode(Mode.PLAY));
+        await("play layout", () -> !w.build.palette().isShowing());
+        Dimension playWindow = onEdt(() -> w.window.getSize());
+        int playBoard = onEdt(() -> Math.min(w.panel.getWidth(), w.panel.getHeight()));
+
+        onEdt(() -> w.session.setMode(Mode.BUILD));
+        await("build layout", () -> w.build.palette().isShowing() && w.panel.getWidth() > 0);
+        Dimension wanted = onEdt(() -> w.window.getPreferredSize());
+        Dimension screen = Toolkit.getDefaultToolkit().getScreenSize();
+        assumeTrue(screen.width >= wanted.width && screen.height >= wanted.height,
+                "the screen (" + screen + ") is smaller than the build-mode window wants (" + wanted + ")");
+        int buildBoard = onEdt(() -> Math.min(w.panel.getWidth(), w.panel.getHeight()));
+        assertThat(buildBoard).isGreaterThanOrEqualTo(playBoard * 9 / 10);
+
+        onEdt(() -> w.session.setMode(Mode.PLAY));
+        assertThat(onEdt(() -> w.window.getSize())).isEqualTo(playWindow);
     }
 }
