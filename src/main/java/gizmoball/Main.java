@@ -1,9 +1,12 @@
 package gizmoball;
 
 import gizmoball.headless.HeadlessRunner;
+import gizmoball.view.GameWindow;
+import gizmoball.view.editor.BuildModeInstaller;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import javax.swing.SwingUtilities;
 
 /**
  * Entry point. {@code gizmoball [BOARD]} plays a board (default: boards/default.txt);
@@ -24,8 +27,8 @@ public final class Main {
             System.exit(HeadlessRunner.run(arguments, System.out, System.err));
         }
         Path board = arguments.isEmpty() ? defaultBoard() : Path.of(arguments.get(0));
-        System.err.println("play mode not built yet (board " + board + ")");
-        System.exit(1);
+        GameWindow window = GameWindow.launch(board);
+        SwingUtilities.invokeLater(() -> BuildModeInstaller.install(window));
     }
 
     /** boards/default.txt of the installation if there is one, else of the working directory. */
