@@ -72,6 +72,7 @@ public final class BenchMain {
         stdout.println("soak");
         Soak.Result soak = Soak.run(effort.soakTicks());
         Report.printSoak(stdout, soak);
+        Report.printHeadline(stdout, rows, scaling);
         Report.writeSoak(out.resolve("soak.csv"), soak);
 
         stdout.printf(Locale.ROOT, "%nwrote CSV and charts to %s in %.0f s wall time%n", out.toAbsolutePath(),

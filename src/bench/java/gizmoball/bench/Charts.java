@@ -56,14 +56,17 @@ final class Charts {
 
     static void scaling(Path dir, List<ScalingPoint> points) throws IOException {
         scalingChart(dir, points, "gizmos", "number of gizmos (" + Scaling.BALLS_WHILE_GIZMOS_GROW + " balls)");
-        scalingChart(dir, points, "balls", "number of balls (" + Scaling.GIZMOS_WHILE_BALLS_GROW + " gizmos)");
+        scalingChart(dir, points, "balls", "number of balls (log; " + Scaling.GIZMOS_WHILE_BALLS_GROW + " gizmos)");
     }
 
     private static void scalingChart(Path dir, List<ScalingPoint> points, String axis, String xTitle) throws IOException {
         XYChart chart = new XYChartBuilder().width(800).height(560)
                 .title("Cost per tick against board size, " + Method.GAME_DEFAULT.label())
-                .xAxisTitle(xTitle).yAxisTitle("CPU microseconds per tick").build();
+                .xAxisTitle(xTitle).yAxisTitle("CPU microseconds per tick (log)").build();
         chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideNW);
+        // Costs span four decades; the ball axis also grows geometrically (the gizmo axis starts at 0).
+        chart.getStyler().setYAxisLogarithmic(true);
+        chart.getStyler().setXAxisLogarithmic(axis.equals("balls"));
         for (boolean index : new boolean[] {true, false}) {
             List<ScalingPoint> line = points.stream().filter(p -> p.axis().equals(axis) && p.spatialIndex() == index)
                     .collect(Collectors.toList());

@@ -43,6 +43,42 @@ final class Report {
         }
     }
 
+    /**
+     * The headline: per scene at the game's tick length, each loop's cost and error as ratios to the game's
+     * loop; and the stress-sized board's cost per tick with and without the spatial index.
+     */
+    static void printHeadline(PrintStream out, List<SceneResult> rows, List<ScalingPoint> scaling) {
+        int rate = Method.GAME_DEFAULT.ticksPerSecond();
+        out.println();
+        out.println("Headline at 1/" + rate + " s: cost and error of each loop relative to " + Method.GAME_DEFAULT.label());
+        out.printf(Locale.ROOT, "%-20s %-11s %12s %12s %10s %12s%n", "scene", "loop", "ms/sim s", "pos err L", "cost x",
+                "error x");
+        for (SceneResult game : rows) {
+            if (game.reference() || !game.method().equals(Method.GAME_DEFAULT)) {
+                continue;
+            }
+            for (SceneResult r : rows) {
+                if (r.scene() == game.scene() && !r.reference() && r.method().ticksPerSecond() == rate) {
+                    out.printf(Locale.ROOT, "%-20s %-11s %12s %12s %10.2f %12s%n", r.scene().name(), r.method().loop(),
+                            f3(r.msPerSimSecond()), e(r.positionError()), r.msPerSimSecond() / game.msPerSimSecond(),
+                            e(r.positionError() / game.positionError()));
+                }
+            }
+        }
+        for (ScalingPoint on : scaling) {
+            if (on.axis().equals("gizmos") && on.gizmos() == Scaling.STRESS_GIZMOS && on.balls() == Scaling.STRESS_BALLS
+                    && on.spatialIndex()) {
+                for (ScalingPoint off : scaling) {
+                    if (off.axis().equals("gizmos") && off.gizmos() == on.gizmos() && !off.spatialIndex()) {
+                        out.printf(Locale.ROOT, "Stress-sized board (%d gizmos, %d balls): %s us/tick with the spatial index, "
+                                        + "%s us/tick without (x %.1f)%n", on.gizmos(), on.balls(), f3(on.usPerTick()),
+                                f3(off.usPerTick()), off.usPerTick() / on.usPerTick());
+                    }
+                }
+            }
+        }
+    }
+
     static void printSoak(PrintStream out, Soak.Result s) {
         out.println();
         out.printf(Locale.ROOT, "Soak: dense board, %s, %d ticks (%.0f simulated s) in %.1f s CPU%n",

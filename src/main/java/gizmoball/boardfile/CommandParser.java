@@ -1,5 +1,6 @@
 package gizmoball.boardfile;
 
+import gizmoball.model.KeyEdge;
 import java.util.List;
 import java.util.Locale;
 import java.util.OptionalDouble;
@@ -31,8 +32,8 @@ final class CommandParser {
                     + " (" + word.usage() + "), found " + args.size());
         }
         return switch (word) {
-            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER ->
-                    new Command.AddGizmo(word, args.get(0), cell("x", args.get(1)), cell("y", args.get(2)));
+            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER -> new Command.AddGizmo(word.kind(),
+                    args.get(0), cell("x", args.get(1)), cell("y", args.get(2)));
             case ABSORBER -> new Command.AddAbsorber(args.get(0), cell("x1", args.get(1)), cell("y1", args.get(2)),
                     cell("x2", args.get(3)), cell("y2", args.get(4)));
             case BALL -> new Command.AddBall(args.get(0), number("x", args.get(1)), number("y", args.get(2)),
@@ -55,12 +56,12 @@ final class CommandParser {
         if (!KeyCodes.isKnown(keyCode)) {
             throw new Refusal("unknown key code " + keyCode + " (not a java.awt.event.KeyEvent VK_ code)");
         }
-        boolean down = switch (args.get(2).toLowerCase(Locale.ROOT)) {
-            case "down" -> true;
-            case "up" -> false;
+        KeyEdge edge = switch (args.get(2).toLowerCase(Locale.ROOT)) {
+            case "down" -> KeyEdge.DOWN;
+            case "up" -> KeyEdge.UP;
             default -> throw new Refusal("bad direction '" + args.get(2) + "': expected down or up");
         };
-        return new Command.KeyConnect(keyCode, down, args.get(3));
+        return new Command.KeyConnect(keyCode, edge, args.get(3));
     }
 
     /** A gizmo coordinate: a whole number of cells, also when written as a decimal such as 7.0. */

@@ -1,5 +1,6 @@
 package gizmoball.boardfile;
 
+import gizmoball.model.GizmoKind;
 import java.util.Arrays;
 import java.util.Locale;
 import java.util.Map;
@@ -9,35 +10,51 @@ import java.util.stream.Collectors;
 
 /** The first word of each board-file command: its canonical spelling and the arguments it takes. */
 enum CommandWord {
-    SQUARE("Square", "<name> <x> <y>"),
-    CIRCLE("Circle", "<name> <x> <y>"),
-    TRIANGLE("Triangle", "<name> <x> <y>"),
-    LEFT_FLIPPER("LeftFlipper", "<name> <x> <y>"),
-    RIGHT_FLIPPER("RightFlipper", "<name> <x> <y>"),
-    ABSORBER("Absorber", "<name> <x1> <y1> <x2> <y2>"),
-    BALL("Ball", "<name> <x> <y> <vx> <vy>"),
-    ROTATE("Rotate", "<name>"),
-    DELETE("Delete", "<name>"),
-    MOVE("Move", "<name> <x> <y>"),
-    CONNECT("Connect", "<name1> <name2>"),
-    KEY_CONNECT("KeyConnect", "key <keycode> down|up <name>"),
-    GRAVITY("Gravity", "<g>"),
-    FRICTION("Friction", "<mu> <mu2>");
+    SQUARE("Square", GizmoKind.SQUARE, "<name> <x> <y>"),
+    CIRCLE("Circle", GizmoKind.CIRCLE, "<name> <x> <y>"),
+    TRIANGLE("Triangle", GizmoKind.TRIANGLE, "<name> <x> <y>"),
+    LEFT_FLIPPER("LeftFlipper", GizmoKind.LEFT_FLIPPER, "<name> <x> <y>"),
+    RIGHT_FLIPPER("RightFlipper", GizmoKind.RIGHT_FLIPPER, "<name> <x> <y>"),
+    ABSORBER("Absorber", GizmoKind.ABSORBER, "<name> <x1> <y1> <x2> <y2>"),
+    BALL("Ball", null, "<name> <x> <y> <vx> <vy>"),
+    ROTATE("Rotate", null, "<name>"),
+    DELETE("Delete", null, "<name>"),
+    MOVE("Move", null, "<name> <x> <y>"),
+    CONNECT("Connect", null, "<name1> <name2>"),
+    KEY_CONNECT("KeyConnect", null, "key <keycode> down|up <name>"),
+    GRAVITY("Gravity", null, "<g>"),
+    FRICTION("Friction", null, "<mu> <mu2>");
 
     private static final Map<String, CommandWord> BY_LOWER_CASE = Arrays.stream(values())
             .collect(Collectors.toUnmodifiableMap(w -> w.spelling.toLowerCase(Locale.ROOT), Function.identity()));
 
     private final String spelling;
+    private final GizmoKind kind;
     private final String usage;
 
-    CommandWord(String spelling, String arguments) {
+    /** @param kind the gizmo the command adds, or null for the other commands */
+    CommandWord(String spelling, GizmoKind kind, String arguments) {
         this.spelling = spelling;
+        this.kind = kind;
         this.usage = spelling + " " + arguments;
+    }
+
+    /** The command that adds a gizmo of that kind. */
+    static CommandWord of(GizmoKind kind) {
+        return Arrays.stream(values()).filter(word -> word.kind == kind).findFirst().orElseThrow();
     }
 
     /** The command word in any letter case (files from other implementations vary). */
     static Optional<CommandWord> lookup(String word) {
         return Optional.ofNullable(BY_LOWER_CASE.get(word.toLowerCase(Locale.ROOT)));
+    }
+
+    /** The gizmo this command adds (Square ... RightFlipper, Absorber). */
+    GizmoKind kind() {
+        if (kind == null) {
+            throw new IllegalStateException(spelling + " adds no gizmo");
+        }
+        return kind;
     }
 
     String spelling() {

@@ -7,7 +7,7 @@ import java.util.List;
  * A board file read into commands: the well-formed lines in file order and an error for every other line.
  * Every line is looked at, so one read reports all the syntax errors of a file.
  */
-record ParsedFile(String source, List<Line> commands, List<BoardFileError> errors) {
+record ParsedFile(List<Line> commands, List<BoardFileError> errors) {
 
     /** A well-formed command and the line it came from, so that later refusals by the model name the line. */
     record Line(SourceLine line, Command command) {
@@ -18,6 +18,7 @@ record ParsedFile(String source, List<Line> commands, List<BoardFileError> error
         errors = List.copyOf(errors);
     }
 
+    /** @param source names the file in the errors */
     static ParsedFile parse(String source, String content) {
         List<Line> commands = new ArrayList<>();
         List<BoardFileError> errors = new ArrayList<>();
@@ -28,6 +29,6 @@ record ParsedFile(String source, List<Line> commands, List<BoardFileError> error
                 errors.add(BoardFileError.at(source, line, refusal.getMessage()));
             }
         }
-        return new ParsedFile(source, commands, errors);
+        return new ParsedFile(commands, errors);
     }
 }

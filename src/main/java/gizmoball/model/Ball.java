@@ -57,13 +57,15 @@ public final class Ball {
     }
 
     /**
-     * Sets the velocity, its speed clamped to {@link Board#MAX_SPEED}. Components below {@link #NEGLIGIBLE_SPEED}
+     * Sets the velocity, its speed clamped to {@link Board#MAX_SPEED}. A clamped velocity can measure a rounding
+     * error over the limit; it is kept as it is (the tolerance of {@link Invariants}), so clamping twice changes
+     * nothing and a saved ball reloads with exactly its velocity. Components below {@link #NEGLIGIBLE_SPEED}
      * become 0: friction shrinks a leftover component geometrically toward the subnormal range, where the time
      * until it crosses the board overflows (a 1e-308 L/s drift meets a wall after more than 1e308 s).
      */
     void setVelocity(Vect newVelocity) {
         double speed = newVelocity.length();
-        Vect clamped = speed > Board.MAX_SPEED ? newVelocity.times(Board.MAX_SPEED / speed) : newVelocity;
+        Vect clamped = speed > Board.MAX_SPEED * (1 + 1e-12) ? newVelocity.times(Board.MAX_SPEED / speed) : newVelocity;
         velocity = new Vect(negligibleToZero(clamped.x()), negligibleToZero(clamped.y()));
     }
 

@@ -3,6 +3,8 @@ package gizmoball.boardfile;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import gizmoball.model.GizmoKind;
+import gizmoball.model.KeyEdge;
 import java.util.stream.Stream;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
@@ -12,11 +14,11 @@ class CommandParserTest {
 
     static Stream<Arguments> wellFormedLines() {
         return Stream.of(
-                Arguments.of("Square S1 1 2", new Command.AddGizmo(CommandWord.SQUARE, "S1", 1, 2)),
-                Arguments.of("circle C 3 4", new Command.AddGizmo(CommandWord.CIRCLE, "C", 3, 4)),
-                Arguments.of("TRIANGLE T 19 0", new Command.AddGizmo(CommandWord.TRIANGLE, "T", 19, 0)),
-                Arguments.of("LeftFlipper LF 7.0 8.0", new Command.AddGizmo(CommandWord.LEFT_FLIPPER, "LF", 7, 8)),
-                Arguments.of("rightflipper 12_4 10 11", new Command.AddGizmo(CommandWord.RIGHT_FLIPPER, "12_4", 10, 11)),
+                Arguments.of("Square S1 1 2", new Command.AddGizmo(GizmoKind.SQUARE, "S1", 1, 2)),
+                Arguments.of("circle C 3 4", new Command.AddGizmo(GizmoKind.CIRCLE, "C", 3, 4)),
+                Arguments.of("TRIANGLE T 19 0", new Command.AddGizmo(GizmoKind.TRIANGLE, "T", 19, 0)),
+                Arguments.of("LeftFlipper LF 7.0 8.0", new Command.AddGizmo(GizmoKind.LEFT_FLIPPER, "LF", 7, 8)),
+                Arguments.of("rightflipper 12_4 10 11", new Command.AddGizmo(GizmoKind.RIGHT_FLIPPER, "12_4", 10, 11)),
                 Arguments.of("Absorber A 0 19 20 20", new Command.AddAbsorber("A", 0, 19, 20, 20)),
                 Arguments.of("Ball B 1.5 2.25 -3 40.0", new Command.AddBall("B", 1.5, 2.25, -3, 40)),
                 Arguments.of("Rotate S1", new Command.Rotate("S1")),
@@ -24,13 +26,13 @@ class CommandParserTest {
                 Arguments.of("Move B 3.5 4", new Command.Move("B", 3.5, 4)),
                 Arguments.of("Connect A A", new Command.Connect("A", "A")),
                 Arguments.of("Connect OuterWalls LF", new Command.Connect("OuterWalls", "LF")),
-                Arguments.of("KeyConnect key 32 down A", new Command.KeyConnect(32, true, "A")),
-                Arguments.of("keyconnect KEY 76.0 UP L", new Command.KeyConnect(76, false, "L")),
+                Arguments.of("KeyConnect key 32 down A", new Command.KeyConnect(32, KeyEdge.DOWN, "A")),
+                Arguments.of("keyconnect KEY 76.0 UP L", new Command.KeyConnect(76, KeyEdge.UP, "L")),
                 Arguments.of("Gravity 25.0", new Command.Gravity(25)),
                 Arguments.of("Friction 0.025 0.025", new Command.Friction(0.025, 0.025)),
                 Arguments.of("Square !@$%^&*()-=+[]{};:'\",.<>/?|\\~` 0 0",
-                        new Command.AddGizmo(CommandWord.SQUARE, "!@$%^&*()-=+[]{};:'\",.<>/?|\\~`", 0, 0)),
-                Arguments.of("\t Square   S \t 1   2  ", new Command.AddGizmo(CommandWord.SQUARE, "S", 1, 2)));
+                        new Command.AddGizmo(GizmoKind.SQUARE, "!@$%^&*()-=+[]{};:'\",.<>/?|\\~`", 0, 0)),
+                Arguments.of("\t Square   S \t 1   2  ", new Command.AddGizmo(GizmoKind.SQUARE, "S", 1, 2)));
     }
 
     @ParameterizedTest(name = "{0}")

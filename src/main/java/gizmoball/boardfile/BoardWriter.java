@@ -1,0 +1,53 @@
+package gizmoball.boardfile;
+
+import gizmoball.model.Absorber;
+import gizmoball.model.Ball;
+import gizmoball.model.Board;
+import gizmoball.model.Connection;
+import gizmoball.model.Gizmo;
+import gizmoball.model.KeyBinding;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.stream.Collectors;
+
+/**
+ * The canonical form of a board: one command per line, gizmos (in the board's order), then rotations, balls,
+ * connections, key bindings, gravity and friction. Reading it back gives an equal board.
+ */
+final class BoardWriter {
+
+    private BoardWriter() {
+    }
+
+    static String toText(Board board) {
+        return commands(board).stream().map(Command::toLine).collect(Collectors.joining("\n", "", "\n"));
+    }
+
+    static List<Command> commands(Board board) {
+        List<Command> commands = new ArrayList<>();
+        for (Gizmo gizmo : board.gizmos()) {
+            commands.add(gizmo instanceof Absorber
+                    ? new Command.AddAbsorber(gizmo.name(), gizmo.x(), gizmo.y(),
+                            gizmo.x() + gizmo.width(), gizmo.y() + gizmo.height())
+                    : new Command.AddGizmo(gizmo.kind(), gizmo.name(), gizmo.x(), gizmo.y()));
+        }
+        for (Gizmo gizmo : board.gizmos()) {
+            commands.addAll(Collections.nCopies(gizmo.rotation(), new Command.Rotate(gizmo.name())));
+        }
+        for (Ball ball : board.balls()) {
+            // A captured ball sits at its absorber's corner with no velocity; written there, it is captured again.
+            commands.add(new Command.AddBall(ball.name(), ball.position().x(), ball.position().y(),
+                    ball.velocity().x(), ball.velocity().y()));
+        }
+        for (Connection connection : board.connections()) {
+            commands.add(new Command.Connect(connection.source(), connection.target()));
+        }
+        for (KeyBinding binding : board.keyBindings()) {
+            commands.add(new Command.KeyConnect(binding.keyCode(), binding.edge(), binding.gizmo()));
+        }
+        commands.add(new Command.Gravity(board.gravity()));
+        commands.add(new Command.Friction(board.mu(), board.mu2()));
+        return commands;
+    }
+}

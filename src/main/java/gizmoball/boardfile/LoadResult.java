@@ -1,0 +1,16 @@
+package gizmoball.boardfile;
+
+import gizmoball.model.Board;
+import java.util.List;
+
+/**
+ * A board loaded with its bad lines skipped.
+ *
+ * @param board        a new board holding every command of the file that could be applied
+ * @param skippedLines exactly the lines left out, and why, in line order; empty when the file was clean
+ */
+public record LoadResult(Board board, List<BoardFileError> skippedLines) {
+    public LoadResult {
+        skippedLines = List.copyOf(skippedLines);
+    }
+}

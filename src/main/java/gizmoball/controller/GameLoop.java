@@ -1,0 +1,90 @@
+package gizmoball.controller;
+
+import gizmoball.model.Board;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Consumer;
+import javax.swing.Timer;
+
+/**
+ * Runs the simulation: a Swing Timer ticks the board on the event dispatch thread, the same thread that
+ * paints it, so a view never sees a board half-way through a tick. The timer fires about twice per
+ * tick and the {@link TickPacer} decides how many ticks each event runs, keeping simulated time in step
+ * with real time without the drift of one tick per (late or early) timer event.
+ */
+public final class GameLoop {
+    private static final int MAX_CATCH_UP_TICKS = 4;
+
+    private final Board board;
+    private final double tick;
+    private final Timer timer;
+    private final List<Runnable> runningListeners = new ArrayList<>();
+    private Consumer<RuntimeException> failureHandler = e -> {
+        throw e;
+    };
+    private TickPacer pacer;
+    private long lastEventNanos;
+
+    public GameLoop(Board board, double tickSeconds) {
+        this.board = board;
+        this.tick = tickSeconds;
+        this.timer = new Timer(Math.max(1, (int) (tickSeconds * 1000 / 2)), e -> onTimer());
+        timer.setCoalesce(true);
+    }
+
+    public boolean isRunning() {
+        return timer.isRunning();
+    }
+
+    public void start() {
+        if (!timer.isRunning()) {
+            pacer = new TickPacer(tick, MAX_CATCH_UP_TICKS);
+            lastEventNanos = System.nanoTime();
+            timer.start();
+            fireRunningChanged();
+        }
+    }
+
+    public void stop() {
+        if (timer.isRunning()) {
+            timer.stop();
+            fireRunningChanged();
+        }
+    }
+
+    /** One tick, for stepping while stopped. */
+    public void step() {
+        ticks(1);
+    }
+
+    /** Told when a tick throws; the loop has stopped by then, rather than failing again 60 times a second. */
+    public void setFailureHandler(Consumer<RuntimeException> handler) {
+        failureHandler = handler;
+    }
+
+    public void addRunningListener(Runnable l) {
+        runningListeners.add(l);
+    }
+
+    private void onTimer() {
+        long now = System.nanoTime();
+        int ticks = pacer.ticksFor(now - lastEventNanos);
+        lastEventNanos = now;
+        ticks(ticks);
+    }
+
+    private void ticks(int n) {
+        try {
+            for (int i = 0; i < n; i++) {
+                board.tick(tick);
+            }
+        } catch (RuntimeException e) {
+            stop();
+            failureHandler.accept(e);
+        }
+    }
+
+    private void fireRunningChanged() {
+        runningListeners.forEach(Runnable::run);
+    }
+}

@@ -1,0 +1,200 @@
+package gizmoball.view;
+
+import gizmoball.model.Ball;
+import gizmoball.model.Board;
+import gizmoball.model.Bumper;
+import gizmoball.model.Flipper;
+import gizmoball.model.Gizmo;
+import gizmoball.model.GizmoKind;
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Font;
+import java.awt.FontMetrics;
+import java.awt.Graphics2D;
+import java.awt.Shape;
+import java.awt.geom.Ellipse2D;
+import java.awt.geom.Line2D;
+import java.awt.geom.Path2D;
+import java.awt.geom.Rectangle2D;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.stream.Collectors;
+import physics.Circle;
+import physics.Vect;
+
+/**
+ * Draws a board from the model's state alone. Everything is drawn in board coordinates (L) through the
+ * transform, so shapes, flipper angles and ball positions are exactly those of the model at any scale.
+ */
+public final class BoardPainter {
+    static final Color BACKGROUND = new Color(0x14161c);
+    static final Color FLOOR = new Color(0x1f2432);
+    static final Color WALLS = new Color(0x9aa3b5);
+    static final Color GRID = new Color(0x323a4d);
+    static final Color BALL = new Color(0xf2f2f2);
+    /** Size in L of the number of balls an absorber holds, written on the ball in its corner. */
+    private static final float HELD_COUNT_FONT = 0.36f;
+    private static final Color HELD_COUNT = new Color(0x202020);
+    /** Digits are about this part of a font's ascent tall (to centre them on the ball). */
+    private static final float DIGIT_HEIGHT_OF_ASCENT = 0.75f;
+    /** Thickness of the outer walls, drawn just outside the board. */
+    static final int WALL_PIXELS = 3;
+    /** How long (simulated seconds) a triggered gizmo stays lit, fading out. */
+    static final double HIGHLIGHT_SECONDS = 0.25;
+
+    private BoardPainter() {
+    }
+
+    /** The fill colour of a gizmo kind at rest. */
+    public static Color colourOf(GizmoKind kind) {
+        return switch (kind) {
+            case SQUARE -> new Color(0xe0483e);
+            case CIRCLE -> new Color(0x3fbf5a);
+            case TRIANGLE -> new Color(0x3d86f0);
+            case LEFT_FLIPPER, RIGHT_FLIPPER -> new Color(0xf2b705);
+            case ABSORBER -> new Color(0xb24fd6);
+        };
+    }
+
+    /**
+     * Paints into {@code screen}, whose coordinates are the component's pixels, the part of the board that
+     * only an edit changes: floor, grid, walls and every gizmo but the flippers,
+     * in their resting colours. A view may cache it between edits.
+     */
+    public static void paintFixed(Graphics2D screen, Board board, BoardTransform t, boolean grid) {
+        Graphics2D g = inBoardUnits(screen, t);
+        try {
+            float pixel = (float) (1 / t.scale());
+            g.setColor(FLOOR);
+            g.fill(new Rectangle2D.Double(0, 0, Board.SIZE, Board.SIZE));
+            if (grid) {
+                paintGrid(g, pixel);
+            }
+            for (Gizmo gizmo : board.gizmos()) {
+                if (!(gizmo instanceof Flipper)) {
+                    paintShape(g, shapeOf(gizmo), colourOf(gizmo.kind()), pixel);
+                }
+            }
+            g.setColor(WALLS);
+            float wall = WALL_PIXELS * pixel;
+            g.setStroke(new BasicStroke(wall));
+            g.draw(new Rectangle2D.Double(-wall / 2, -wall / 2, Board.SIZE + wall, Board.SIZE + wall));
+        } finally {
+            g.dispose();
+        }
+    }
+
+    /** The part that changes while playing, drawn over {@link #paintFixed}: highlights, flippers and balls. */
+    public static void paintMoving(Graphics2D screen, Board board, BoardTransform t) {
+        Graphics2D g = inBoardUnits(screen, t);
+        try {
+            float pixel = (float) (1 / t.scale());
+            for (Gizmo gizmo : board.gizmos()) {
+                Color colour = colourOf(gizmo.kind());
+                Color fill = lit(colour, board.time() - gizmo.lastTriggeredAt());
+                if (gizmo instanceof Flipper flipper) {
+                    paintFlipper(g, flipper, fill, pixel);
+                } else if (!fill.equals(colour)) {
+                    paintShape(g, shapeOf(gizmo), fill, pixel);
+                }
+            }
+            for (Ball ball : board.balls()) {
+                paintShape(g, circle(new Circle(ball.position(), ball.radius())), BALL, pixel);
+            }
+            paintHeldCounts(g, board);
+        } finally {
+            g.dispose();
+        }
+    }
+
+    /** Balls held by an absorber all sit in its corner, one on another: the top one shows how many there are. */
+    private static void paintHeldCounts(Graphics2D g, Board board) {
+        Map<Vect, Long> held = board.balls().stream().filter(Ball::isCaptured)
+                .collect(Collectors.groupingBy(Ball::position, LinkedHashMap::new, Collectors.counting()));
+        g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 1).deriveFont(HELD_COUNT_FONT));
+        g.setColor(HELD_COUNT);
+        FontMetrics metrics = g.getFontMetrics();
+        held.forEach((at, count) -> {
+            if (count > 1) {
+                String text = Long.toString(count);
+                Rectangle2D bounds = metrics.getStringBounds(text, g);
+                float digitHeight = metrics.getAscent() * DIGIT_HEIGHT_OF_ASCENT;
+                g.drawString(text, (float) (at.x() - bounds.getWidth() / 2), (float) at.y() + digitHeight / 2);
+            }
+        });
+    }
+
+    private static Graphics2D inBoardUnits(Graphics2D screen, BoardTransform t) {
+        Graphics2D g = (Graphics2D) screen.create();
+        g.transform(t.boardToScreen());
+        return g;
+    }
+
+    private static void paintGrid(Graphics2D g, float pixel) {
+        g.setColor(GRID);
+        g.setStroke(new BasicStroke(pixel));
+        for (int i = 1; i < Board.SIZE; i++) {
+            g.draw(new Line2D.Double(i, 0, i, Board.SIZE));
+            g.draw(new Line2D.Double(0, i, Board.SIZE, i));
+        }
+    }
+
+    private static Shape shapeOf(Gizmo gizmo) {
+        if (gizmo instanceof Bumper bumper) {
+            return bumper.kind() == GizmoKind.CIRCLE ? circle(bumper.circle()) : polygon(bumper.outline());
+        }
+        return new Rectangle2D.Double(gizmo.x(), gizmo.y(), gizmo.width(), gizmo.height());
+    }
+
+    /** Filled, with a one-pixel darker edge so that neighbouring gizmos of one kind stay distinguishable. */
+    private static void paintShape(Graphics2D g, Shape shape, Color fill, float pixel) {
+        g.setColor(fill);
+        g.fill(shape);
+        g.setColor(fill.darker());
+        g.setStroke(new BasicStroke(pixel));
+        g.draw(shape);
+    }
+
+    private static void paintFlipper(Graphics2D g, Flipper f, Color fill, float pixel) {
+        Line2D bar = new Line2D.Double(f.pivot().toPoint2D(), f.tip().toPoint2D());
+        g.setColor(fill.darker());
+        g.setStroke(new BasicStroke((float) (2 * f.radius()), BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+        g.draw(bar);
+        g.setColor(fill);
+        g.setStroke(new BasicStroke((float) (2 * f.radius()) - 2 * pixel, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+        g.draw(bar);
+        double hub = f.radius() / 3;
+        g.setColor(fill.darker().darker());
+        g.fill(new Ellipse2D.Double(f.pivot().x() - hub, f.pivot().y() - hub, 2 * hub, 2 * hub));
+    }
+
+    /** Mixes the colour towards white, fully at the trigger and fading to nothing over HIGHLIGHT_SECONDS. */
+    static Color lit(Color colour, double secondsSinceTrigger) {
+        if (!(secondsSinceTrigger >= 0 && secondsSinceTrigger < HIGHLIGHT_SECONDS)) {
+            return colour;
+        }
+        double w = 0.75 * (1 - secondsSinceTrigger / HIGHLIGHT_SECONDS);
+        return new Color(mix(colour.getRed(), w), mix(colour.getGreen(), w), mix(colour.getBlue(), w));
+    }
+
+    private static int mix(int channel, double towardsWhite) {
+        return (int) Math.round(channel + (255 - channel) * towardsWhite);
+    }
+
+    private static Shape circle(Circle c) {
+        Vect centre = c.getCenter();
+        double r = c.getRadius();
+        return new Ellipse2D.Double(centre.x() - r, centre.y() - r, 2 * r, 2 * r);
+    }
+
+    private static Shape polygon(List<Vect> corners) {
+        Path2D.Double path = new Path2D.Double();
+        path.moveTo(corners.get(0).x(), corners.get(0).y());
+        for (Vect corner : corners.subList(1, corners.size())) {
+            path.lineTo(corner.x(), corner.y());
+        }
+        path.closePath();
+        return path;
+    }
+}

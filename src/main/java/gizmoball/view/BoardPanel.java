@@ -1,0 +1,123 @@
+package gizmoball.view;
+
+import gizmoball.model.Board;
+import gizmoball.model.BoardChange;
+import gizmoball.model.BoardObserver;
+import java.awt.Dimension;
+import java.awt.Graphics2D;
+import java.awt.Graphics;
+import java.awt.RenderingHints;
+import java.awt.geom.AffineTransform;
+import java.awt.image.BufferedImage;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicLong;
+import javax.swing.JComponent;
+
+/**
+ * The board view: observes the Board and repaints the whole board on every change (a tick, an edit, a
+ * load), scaled to its size with the aspect ratio kept. Swing double-buffers it, so it never flickers.
+ * Overlays (build mode's selection and previews) are drawn on top.
+ * <p>
+ * The fixed part of the board (everything but flippers, balls and highlights) is drawn once per edit into
+ * an image at the screen's device resolution and copied on each frame: antialiased drawing of hundreds of
+ * gizmos would otherwise cost more than a 60 Hz frame on a slow machine.
+ */
+public final class BoardPanel extends JComponent {
+    private static final int PREFERRED_PIXELS_PER_L = 30;
+    /** Room around the board for the outer walls. */
+    private static final int MARGIN = 6;
+
+    private final transient Board board;
+    private final transient List<BoardOverlay> overlays = new ArrayList<>();
+    private final transient FpsMeter fps = new FpsMeter();
+    private boolean gridVisible;
+    /** Counts edits and loads (not ticks): the fixed image is redrawn when it moves on. */
+    private final AtomicLong layout = new AtomicLong();
+    private transient BufferedImage fixedImage;
+    private transient List<Object> fixedImageKey;
+
+    public BoardPanel(Board board) {
+        this.board = board;
+        setOpaque(true);
+        setDoubleBuffered(true);
+        setFocusable(true);
+        int side = PREFERRED_PIXELS_PER_L * Board.SIZE + 2 * MARGIN;
+        setPreferredSize(new Dimension(side, side));
+        setMinimumSize(new Dimension(4 * Board.SIZE, 4 * Board.SIZE));
+        BoardObserver repaintOnChange = (Board b, BoardChange change) -> {
+            if (change != BoardChange.TICK) {
+                layout.incrementAndGet();
+            }
+            repaint();
+        };
+        board.addObserver(repaintOnChange);
+    }
+
+    /** The mapping between board and pixels at the panel's current size. */
+    public BoardTransform transform() {
+        return BoardTransform.fit(getWidth(), getHeight(), MARGIN);
+    }
+
+    public void addOverlay(BoardOverlay overlay) {
+        overlays.add(overlay);
+        repaint();
+    }
+
+    public void setGridVisible(boolean visible) {
+        gridVisible = visible;
+        repaint();
+    }
+
+    public boolean isGridVisible() {
+        return gridVisible;
+    }
+
+    /** Frames painted in the last second. */
+    public int framesPerSecond() {
+        return fps.fps(System.nanoTime());
+    }
+
+    @Override
+    protected void paintComponent(Graphics graphics) {
+        Graphics2D g = (Graphics2D) graphics.create();
+        try {
+            g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+            g.setRenderingHint(RenderingHints.KEY_STROKE_CONTROL, RenderingHints.VALUE_STROKE_PURE);
+            g.setRenderingHint(RenderingHints.KEY_RENDERING, RenderingHints.VALUE_RENDER_QUALITY);
+            BoardTransform t = transform();
+            g.drawImage(fixedImage(g, t), 0, 0, getWidth(), getHeight(), null);
+            BoardPainter.paintMoving(g, board, t);
+            for (BoardOverlay overlay : overlays) {
+                overlay.paint(g, t);
+            }
+        } finally {
+            g.dispose();
+        }
+        fps.frame(System.nanoTime());
+    }
+
+    /** Background and the fixed part of the board, at the device resolution of {@code g} (HiDPI stays sharp). */
+    private BufferedImage fixedImage(Graphics2D g, BoardTransform t) {
+        AffineTransform device = g.getTransform();
+        double sx = device.getScaleX();
+        double sy = device.getScaleY();
+        List<Object> key = List.of(getWidth(), getHeight(), sx, sy, gridVisible, layout.get());
+        if (!key.equals(fixedImageKey)) {
+            fixedImage = new BufferedImage(Math.max(1, (int) Math.ceil(getWidth() * sx)),
+                    Math.max(1, (int) Math.ceil(getHeight() * sy)), BufferedImage.TYPE_INT_RGB);
+            Graphics2D ig = fixedImage.createGraphics();
+            try {
+                ig.setRenderingHints(g.getRenderingHints());
+                ig.scale(sx, sy);
+                ig.setColor(BoardPainter.BACKGROUND);
+                ig.fillRect(0, 0, getWidth(), getHeight());
+                BoardPainter.paintFixed(ig, board, t, gridVisible);
+            } finally {
+                ig.dispose();
+            }
+            fixedImageKey = key;
+        }
+        return fixedImage;
+    }
+}

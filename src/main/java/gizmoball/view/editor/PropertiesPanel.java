@@ -1,0 +1,239 @@
+package gizmoball.view.editor;
+
+import gizmoball.controller.editor.BuildController;
+import gizmoball.model.Ball;
+import gizmoball.model.Board;
+import gizmoball.model.BoardChange;
+import gizmoball.model.Connection;
+import gizmoball.model.Gizmo;
+import gizmoball.model.KeyBinding;
+
+import javax.swing.BorderFactory;
+import javax.swing.Box;
+import javax.swing.BoxLayout;
+import javax.swing.DefaultListModel;
+import javax.swing.JButton;
+import javax.swing.JComponent;
+import javax.swing.JLabel;
+import javax.swing.JList;
+import javax.swing.JPanel;
+import javax.swing.JScrollPane;
+import javax.swing.JTextField;
+import javax.swing.ListSelectionModel;
+import java.awt.BorderLayout;
+import java.awt.Dimension;
+import java.awt.GridBagConstraints;
+import java.awt.GridBagLayout;
+import java.awt.Insets;
+import java.util.Objects;
+import java.util.Optional;
+
+/**
+ * Build mode's east panel: the board's gravity and friction, and the selection: its name and place, a ball's
+ * position and velocity, a gizmo's connections and key bindings (each removable). Input is handed to the
+ * controller as text; it validates and reports problems on the status line, so nothing here throws.
+ */
+public final class PropertiesPanel extends JPanel {
+    /** One line of the links list, with what removing it means. */
+    private record Link(String text, Runnable remove) {
+        @Override
+        public String toString() {
+            return text;
+        }
+    }
+
+    private final BuildController controller;
+    private final JTextField gravity = field("gravity");
+    private final JTextField mu = field("mu");
+    private final JTextField mu2 = field("mu2");
+    private final JLabel selection = new JLabel();
+    private final JTextField ballX = field("ball.x");
+    private final JTextField ballY = field("ball.y");
+    private final JTextField ballVx = field("ball.vx");
+    private final JTextField ballVy = field("ball.vy");
+    private final JButton applyBall = new JButton("Apply");
+    private final JPanel ballRows = new JPanel(new GridBagLayout());
+    private final DefaultListModel<Link> links = new DefaultListModel<>();
+    private final JList<Link> linkList = new JList<>(links);
+    private final JButton removeLink = new JButton("Remove");
+    private String shownSelection;
+
+    public PropertiesPanel(BuildController controller) {
+        this.controller = controller;
+        setLayout(new BorderLayout());
+        setBorder(BorderFactory.createEmptyBorder(6, 6, 6, 6));
+        // A fixed width: the board view must not jump when the selection shows more or fewer rows.
+        setPreferredSize(new Dimension(250, 10));
+        // Stacked at the top at their natural heights, however tall the window is.
+        JPanel stack = new JPanel();
+        stack.setLayout(new BoxLayout(stack, BoxLayout.Y_AXIS));
+        stack.add(section("Board", boardSection()));
+        stack.add(Box.createVerticalStrut(8));
+        stack.add(section("Selection", selectionSection()));
+        add(stack, BorderLayout.NORTH);
+
+        controller.board().addObserver((board, change) -> {
+            if (change != BoardChange.TICK) {
+                refresh();
+            }
+        });
+        controller.addStateListener(() -> {
+            String now = controller.selected().orElse(null);
+            if (!Objects.equals(now, shownSelection)) {
+                refresh();
+            }
+        });
+        refresh();
+    }
+
+    /** Shows the board's current values; called on edits and selection changes, not on every pointer move. */
+    public void refresh() {
+        Board board = controller.board();
+        gravity.setText(Numbers.exact(board.gravity()));
+        mu.setText(Numbers.exact(board.mu()));
+        mu2.setText(Numbers.exact(board.mu2()));
+
+        shownSelection = controller.selected().orElse(null);
+        Optional<Gizmo> gizmo = controller.selectedGizmo();
+        Optional<Ball> ball = controller.selectedBall();
+        selection.setText(describe(gizmo, ball));
+        ballRows.setVisible(ball.isPresent());
+        ball.ifPresent(b -> {
+            ballX.setText(Numbers.exact(b.position().x()));
+            ballY.setText(Numbers.exact(b.position().y()));
+            ballVx.setText(Numbers.exact(b.velocity().x()));
+            ballVy.setText(Numbers.exact(b.velocity().y()));
+        });
+
+        links.clear();
+        if (shownSelection != null) {
+            String name = shownSelection;
+            for (Connection c : board.connections()) {
+                if (c.source().equals(name) || c.target().equals(name)) {
+                    links.addElement(new Link(c.source() + " \u2192 " + c.target(),
+                            () -> controller.disconnect(c.source(), c.target())));
+                }
+            }
+            for (KeyBinding k : board.keyBindings()) {
+                if (k.gizmo().equals(name)) {
+                    links.addElement(new Link(BuildController.describe(k), () -> controller.unbind(k)));
+                }
+            }
+        }
+        removeLink.setEnabled(!links.isEmpty());
+    }
+
+    private JComponent boardSection() {
+        JPanel p = new JPanel(new GridBagLayout());
+        row(p, 0, "Gravity (L/s\u00b2)", gravity);
+        row(p, 1, "mu (per s)", mu);
+        row(p, 2, "mu2 (per L)", mu2);
+        JButton apply = new JButton("Apply");
+        apply.setName("board.apply");
+        apply.addActionListener(e -> applyBoard());
+        for (JTextField f : new JTextField[]{gravity, mu, mu2}) {
+            f.addActionListener(e -> applyBoard());
+        }
+        p.add(apply, constraints(1, 3));
+        return p;
+    }
+
+    private JComponent selectionSection() {
+        JPanel p = new JPanel(new GridBagLayout());
+        selection.setName("selection");
+        GridBagConstraints c = constraints(0, 0);
+        c.gridwidth = 2;
+        p.add(selection, c);
+        row(ballRows, 0, "Ball x", ballX);
+        row(ballRows, 1, "Ball y", ballY);
+        row(ballRows, 2, "vx (L/s)", ballVx);
+        row(ballRows, 3, "vy (L/s)", ballVy);
+        applyBall.setName("ball.apply");
+        applyBall.addActionListener(e -> applyBall());
+        for (JTextField f : new JTextField[]{ballX, ballY, ballVx, ballVy}) {
+            f.addActionListener(e -> applyBall());
+        }
+        ballRows.add(applyBall, constraints(1, 4));
+        GridBagConstraints b = constraints(0, 1);
+        b.gridwidth = 2;
+        p.add(ballRows, b);
+
+        GridBagConstraints l = constraints(0, 6);
+        l.gridwidth = 2;
+        p.add(new JLabel("Connections and keys"), l);
+        linkList.setName("links");
+        linkList.setSelectionMode(ListSelectionModel.SINGLE_SELECTION);
+        linkList.setVisibleRowCount(6);
+        JScrollPane scroll = new JScrollPane(linkList);
+        scroll.setPreferredSize(new Dimension(200, 150));
+        GridBagConstraints s = constraints(0, 7);
+        s.gridwidth = 2;
+        s.fill = GridBagConstraints.BOTH;
+        p.add(scroll, s);
+        removeLink.setName("links.remove");
+        removeLink.setToolTipText("Remove the chosen connection or key binding");
+        removeLink.addActionListener(e -> {
+            Link chosen = linkList.getSelectedValue();
+            if (chosen != null) {
+                chosen.remove().run();
+            }
+        });
+        p.add(removeLink, constraints(1, 8));
+        return p;
+    }
+
+    private void applyBoard() {
+        controller.setConstants(gravity.getText(), mu.getText(), mu2.getText());
+    }
+
+    private void applyBall() {
+        controller.selectedBall().ifPresent(b -> controller.setBall(b.name(), ballX.getText(), ballY.getText(),
+                ballVx.getText(), ballVy.getText()));
+    }
+
+    private String describe(Optional<Gizmo> gizmo, Optional<Ball> ball) {
+        if (gizmo.isPresent()) {
+            Gizmo g = gizmo.get();
+            String size = g.width() + "x" + g.height();
+            return "<html><b>" + g.name() + "</b>: " + g.kind().name().toLowerCase().replace('_', ' ') + " " + size
+                    + " at (" + g.x() + "," + g.y() + ")" + (g.rotation() == 0 ? "" : ", " + g.rotation() * 90
+                    + "\u00b0") + "</html>";
+        }
+        if (ball.isPresent()) {
+            Ball b = ball.get();
+            return "<html><b>" + b.name() + "</b>: ball" + (b.isCaptured() ? " (held by an absorber)" : "")
+                    + "</html>";
+        }
+        return controller.selected().filter(Board.OUTER_WALLS::equals).isPresent()
+                ? "<html><b>" + Board.OUTER_WALLS + "</b>: the walls around the board</html>"
+                : "Nothing selected";
+    }
+
+    private static JTextField field(String name) {
+        JTextField f = new JTextField(7);
+        f.setName(name);
+        return f;
+    }
+
+    private static JComponent section(String title, JComponent content) {
+        content.setBorder(BorderFactory.createTitledBorder(title));
+        content.setAlignmentX(LEFT_ALIGNMENT);
+        return content;
+    }
+
+    private static void row(JPanel p, int y, String label, JComponent field) {
+        p.add(new JLabel(label), constraints(0, y));
+        p.add(field, constraints(1, y));
+    }
+
+    private static GridBagConstraints constraints(int x, int y) {
+        GridBagConstraints c = new GridBagConstraints();
+        c.gridx = x;
+        c.gridy = y;
+        c.anchor = GridBagConstraints.WEST;
+        c.insets = new Insets(2, 2, 2, 2);
+        c.fill = GridBagConstraints.HORIZONTAL;
+        c.weightx = x;
+        return c;
+    }
+}

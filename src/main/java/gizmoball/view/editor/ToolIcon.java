@@ -1,0 +1,176 @@
+package gizmoball.view.editor;
+
+import gizmoball.controller.editor.Tool;
+import gizmoball.model.GizmoKind;
+import gizmoball.view.BoardPainter;
+
+import javax.swing.Icon;
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Component;
+import java.awt.Font;
+import java.awt.Graphics;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.geom.Arc2D;
+import java.awt.geom.Ellipse2D;
+import java.awt.geom.Line2D;
+import java.awt.geom.Path2D;
+import java.awt.geom.Rectangle2D;
+import java.awt.geom.RoundRectangle2D;
+
+/** A palette icon drawn with Java2D in the board's colours, so the palette looks like what it places. */
+public final class ToolIcon implements Icon {
+    static final int SIZE = 28;
+
+    private final Tool tool;
+
+    public ToolIcon(Tool tool) {
+        this.tool = tool;
+    }
+
+    @Override
+    public int getIconWidth() {
+        return SIZE;
+    }
+
+    @Override
+    public int getIconHeight() {
+        return SIZE;
+    }
+
+    @Override
+    public void paintIcon(Component c, Graphics graphics, int x, int y) {
+        Graphics2D g = (Graphics2D) graphics.create();
+        try {
+            g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+            g.translate(x, y);
+            g.setColor(EditorColors.ICON_BACKGROUND);
+            g.fill(new RoundRectangle2D.Double(0, 0, SIZE, SIZE, 6, 6));
+            g.setStroke(new BasicStroke(2f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+            paintSymbol(g);
+        } finally {
+            g.dispose();
+        }
+    }
+
+    private void paintSymbol(Graphics2D g) {
+        double m = 6;
+        double s = SIZE - 2 * m;
+        switch (tool) {
+            case SQUARE -> fill(g, colour(GizmoKind.SQUARE), new Rectangle2D.Double(m, m, s, s));
+            case CIRCLE -> fill(g, colour(GizmoKind.CIRCLE), new Ellipse2D.Double(m, m, s, s));
+            case TRIANGLE -> fill(g, colour(GizmoKind.TRIANGLE), triangle(m, m, s));
+            case LEFT_FLIPPER -> flipper(g, m, m, s, true);
+            case RIGHT_FLIPPER -> flipper(g, m, m, s, false);
+            case ABSORBER -> fill(g, colour(GizmoKind.ABSORBER), new Rectangle2D.Double(4, SIZE / 2.0, SIZE - 8, 8));
+            case BALL -> {
+                fill(g, EditorColors.BALL, new Ellipse2D.Double(6, 12, 10, 10));
+                arrow(g, EditorColors.ICON_INK, 14, 14, 23, 5);
+            }
+            case SELECT -> fill(g, EditorColors.ICON_INK, pointer());
+            case ROTATE -> {
+                g.setColor(EditorColors.ICON_INK);
+                g.draw(new Arc2D.Double(m, m, s, s, 100, -300, Arc2D.OPEN));
+                arrowHead(g, EditorColors.ICON_INK, 11, 9, 15, 6.5);
+            }
+            case DELETE -> {
+                g.setColor(EditorColors.REFUSED);
+                g.setStroke(new BasicStroke(3.5f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+                g.draw(new Line2D.Double(m + 2, m + 2, SIZE - m - 2, SIZE - m - 2));
+                g.draw(new Line2D.Double(SIZE - m - 2, m + 2, m + 2, SIZE - m - 2));
+            }
+            case CONNECT, DISCONNECT -> {
+                fill(g, colour(GizmoKind.SQUARE), new Rectangle2D.Double(3, 3, 8, 8));
+                fill(g, colour(GizmoKind.CIRCLE), new Ellipse2D.Double(17, 17, 8, 8));
+                arrow(g, EditorColors.CONNECTION, 10, 10, 18, 18);
+                if (tool == Tool.DISCONNECT) {
+                    slash(g);
+                }
+            }
+            case KEY_CONNECT, KEY_DISCONNECT -> {
+                keyCap(g);
+                if (tool == Tool.KEY_DISCONNECT) {
+                    slash(g);
+                }
+            }
+        }
+    }
+
+    /** The colour the board painter gives that kind, so the palette shows what will appear on the board. */
+    private static Color colour(GizmoKind kind) {
+        return BoardPainter.colourOf(kind);
+    }
+
+    private static void fill(Graphics2D g, Color color, java.awt.Shape shape) {
+        g.setColor(color);
+        g.fill(shape);
+        g.setColor(color.darker());
+        g.setStroke(new BasicStroke(1f));
+        g.draw(shape);
+        g.setStroke(new BasicStroke(2f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+    }
+
+    private static Path2D triangle(double x, double y, double s) {
+        Path2D p = new Path2D.Double();
+        p.moveTo(x, y);
+        p.lineTo(x + s, y);
+        p.lineTo(x, y + s);
+        p.closePath();
+        return p;
+    }
+
+    /** The flipper's 2x2 box, faint, with the bar hanging at rest along its left or right edge. */
+    private static void flipper(Graphics2D g, double x, double y, double size, boolean left) {
+        g.setColor(EditorColors.translucent(EditorColors.ICON_INK, 70));
+        g.setStroke(new BasicStroke(1f));
+        g.draw(new Rectangle2D.Double(x, y, size, size));
+        double barX = left ? x + 3 : x + size - 3;
+        g.setColor(colour(GizmoKind.LEFT_FLIPPER));
+        g.setStroke(new BasicStroke(6f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+        g.draw(new Line2D.Double(barX, y + 3, barX, y + size - 3));
+        g.setColor(EditorColors.ICON_BACKGROUND);
+        g.fill(new Ellipse2D.Double(barX - 1.5, y + 1.5, 3, 3));
+        g.setStroke(new BasicStroke(2f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+    }
+
+    private static Path2D pointer() {
+        Path2D p = new Path2D.Double();
+        p.moveTo(8, 4);
+        p.lineTo(8, 22);
+        p.lineTo(12.5, 17.5);
+        p.lineTo(16, 24);
+        p.lineTo(19, 22.5);
+        p.lineTo(15.5, 16);
+        p.lineTo(21, 16);
+        p.closePath();
+        return p;
+    }
+
+    private static void keyCap(Graphics2D g) {
+        RoundRectangle2D cap = new RoundRectangle2D.Double(5, 5, 18, 18, 5, 5);
+        g.setColor(Color.WHITE);
+        g.fill(cap);
+        g.setColor(EditorColors.ICON_BACKGROUND);
+        g.draw(cap);
+        g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 12));
+        g.drawString("K", 10, 19);
+    }
+
+    private static void slash(Graphics2D g) {
+        g.setColor(EditorColors.REFUSED);
+        g.setStroke(new BasicStroke(3f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+        g.draw(new Line2D.Double(4, SIZE - 4, SIZE - 4, 4));
+    }
+
+    private static void arrow(Graphics2D g, Color color, double x0, double y0, double x1, double y1) {
+        g.setColor(color);
+        g.draw(new Line2D.Double(x0, y0, x1, y1));
+        arrowHead(g, color, x0, y0, x1, y1);
+    }
+
+    private static void arrowHead(Graphics2D g, Color color, double x0, double y0, double x1, double y1) {
+        g.setColor(color);
+        g.fill(Arrows.head(x0, y0, x1, y1, 7));
+    }
+}

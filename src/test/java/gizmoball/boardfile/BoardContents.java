@@ -1,0 +1,61 @@
+package gizmoball.boardfile;
+
+import gizmoball.model.Ball;
+import gizmoball.model.Board;
+import gizmoball.model.Connection;
+import gizmoball.model.Gizmo;
+import gizmoball.model.GizmoKind;
+import gizmoball.model.KeyBinding;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Objects;
+
+/** Everything a board file records about a board, as a value, so two boards can be compared with equals. */
+record BoardContents(List<GizmoState> gizmos, List<BallState> balls, List<Connection> connections,
+                     List<KeyBinding> keyBindings, double gravity, double mu, double mu2) {
+
+    record GizmoState(String name, GizmoKind kind, int x, int y, int width, int height, int rotation) {
+    }
+
+    /** Doubles compared exactly (records use Double.compare semantics), so a lost bit shows. */
+    record BallState(String name, double x, double y, double vx, double vy, boolean captured) {
+    }
+
+    /** What differs from {@code other}, element by element, so a failure names the one ball or gizmo at fault. */
+    List<String> differences(BoardContents other) {
+        List<String> differences = new ArrayList<>();
+        compare("gizmo", gizmos, other.gizmos, differences);
+        compare("ball", balls, other.balls, differences);
+        compare("connection", connections, other.connections, differences);
+        compare("key binding", keyBindings, other.keyBindings, differences);
+        compare("constants", List.of(gravity, mu, mu2), List.of(other.gravity, other.mu, other.mu2), differences);
+        return differences;
+    }
+
+    private static <T> void compare(String what, List<T> mine, List<T> theirs, List<String> differences) {
+        for (int i = 0; i < Math.max(mine.size(), theirs.size()); i++) {
+            T a = i < mine.size() ? mine.get(i) : null;
+            T b = i < theirs.size() ? theirs.get(i) : null;
+            if (!Objects.equals(a, b)) {
+                differences.add(what + " " + i + ": " + a + " became " + b);
+            }
+        }
+    }
+
+    static BoardContents of(Board board) {
+        return new BoardContents(
+                board.gizmos().stream().map(BoardContents::state).toList(),
+                board.balls().stream().map(BoardContents::state).toList(),
+                List.copyOf(board.connections()), List.copyOf(board.keyBindings()),
+                board.gravity(), board.mu(), board.mu2());
+    }
+
+    private static GizmoState state(Gizmo g) {
+        return new GizmoState(g.name(), g.kind(), g.x(), g.y(), g.width(), g.height(), g.rotation());
+    }
+
+    private static BallState state(Ball b) {
+        return new BallState(b.name(), b.position().x(), b.position().y(), b.velocity().x(), b.velocity().y(),
+                b.isCaptured());
+    }
+}

@@ -1,0 +1,103 @@
+package gizmoball.boardfile;
+
+import gizmoball.model.Board;
+import gizmoball.model.BoardEditException;
+import gizmoball.model.GizmoKind;
+import gizmoball.model.KeyEdge;
+import java.util.List;
+import java.util.Random;
+
+/** Random boards built through the board's own editing operations, for property tests. */
+final class RandomBoards {
+    /** Names of any non-space characters, as peer files use: digits first, punctuation, mixed case. */
+    private static final String NAME_CHARACTERS =
+            "abcXYZ0123456789_-.!$%&*+/:;<=>?@[]^{|}~'\"`,()#\\";
+    private static final int[] KEY_CODES = {32, 47, 65, 76, 81, 87, 90, 10, 37, 38, 39, 40, 127, 112};
+    private static final GizmoKind[] PLACEABLE = {GizmoKind.SQUARE, GizmoKind.CIRCLE, GizmoKind.TRIANGLE,
+            GizmoKind.LEFT_FLIPPER, GizmoKind.RIGHT_FLIPPER};
+
+    private final Random random;
+
+    RandomBoards(Random random) {
+        this.random = random;
+    }
+
+    Board next() {
+        Board board = new Board();
+        int gizmos = random.nextInt(40);
+        for (int i = 0; i < gizmos; i++) {
+            attempt(() -> addGizmo(board));
+        }
+        List<String> names = board.gizmos().stream().map(g -> g.name()).toList();
+        for (String name : names) {
+            int turns = random.nextInt(4);
+            for (int t = 0; t < turns; t++) {
+                attempt(() -> board.rotate(name));
+            }
+        }
+        int balls = random.nextInt(12);
+        for (int i = 0; i < balls; i++) {
+            attempt(() -> board.addBall(name(), 0.25 + random.nextDouble() * 19.5, 0.25 + random.nextDouble() * 19.5,
+                    velocity(), velocity()));
+        }
+        if (!names.isEmpty()) {
+            int connections = random.nextInt(10);
+            for (int i = 0; i < connections; i++) {
+                String source = random.nextInt(5) == 0 ? Board.OUTER_WALLS : pick(names);
+                attempt(() -> board.connect(source, pick(names)));
+            }
+            int bindings = random.nextInt(8);
+            for (int i = 0; i < bindings; i++) {
+                attempt(() -> board.bindKey(KEY_CODES[random.nextInt(KEY_CODES.length)],
+                        random.nextBoolean() ? KeyEdge.DOWN : KeyEdge.UP, pick(names)));
+            }
+        }
+        if (random.nextBoolean()) {
+            board.setGravity((random.nextDouble() - 0.3) * 60);
+        }
+        if (random.nextBoolean()) {
+            board.setFriction(random.nextDouble() * 0.1, random.nextDouble() * 0.1);
+        }
+        return board;
+    }
+
+    private void addGizmo(Board board) {
+        int x = random.nextInt(20);
+        int y = random.nextInt(20);
+        if (random.nextInt(8) == 0) {
+            board.addAbsorber(name(), x, y, x + 1 + random.nextInt(20 - x), y + 1 + random.nextInt(Math.min(3, 20 - y)));
+        } else {
+            board.addGizmo(PLACEABLE[random.nextInt(PLACEABLE.length)], name(), x, y);
+        }
+    }
+
+    private double velocity() {
+        return switch (random.nextInt(4)) {
+            case 0 -> 0.0;
+            case 1 -> random.nextInt(41) - 20;
+            default -> (random.nextDouble() - 0.5) * 300;
+        };
+    }
+
+    private String name() {
+        StringBuilder name = new StringBuilder();
+        int length = 1 + random.nextInt(6);
+        for (int i = 0; i < length; i++) {
+            name.append(NAME_CHARACTERS.charAt(random.nextInt(NAME_CHARACTERS.length())));
+        }
+        return name.toString();
+    }
+
+    private String pick(List<String> names) {
+        return names.get(random.nextInt(names.size()));
+    }
+
+    /** Random edits may be refused (overlap, duplicate...); the board then stays valid, which is all we need. */
+    private static void attempt(Runnable edit) {
+        try {
+            edit.run();
+        } catch (BoardEditException refused) {
+            // the board is unchanged: nothing to undo
+        }
+    }
+}

@@ -1,0 +1,93 @@
+package gizmoball.stability;
+
+import gizmoball.model.Ball;
+import gizmoball.model.Board;
+import gizmoball.model.GizmoKind;
+import gizmoball.model.LoopMode;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
+import physics.Vect;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
+
+/**
+ * Failure mode: two collisions at the same instant. Whichever is resolved first, the other must follow at
+ * time 0 (in the SEED loop, in the next tick), not be lost or pass through. Without gravity or friction
+ * the outcomes are exact: a ball meeting two perpendicular walls at once comes straight back along its
+ * path; a ball striking two touching balls conserves momentum and energy.
+ */
+class SimultaneousCollisionTest {
+
+    private static final double DT = Board.DEFAULT_TICK;
+    private static final double R = Board.BALL_RADIUS;
+
+    private static Board frictionless(LoopMode mode) {
+        Board board = new Board();
+        board.setLoopMode(mode);
+        board.setGravity(0);
+        board.setFriction(0, 0);
+        return board;
+    }
+
+    /** Into the board's bottom-right corner along the diagonal: both walls at once, straight back out. */
+    @ParameterizedTest
+    @EnumSource(LoopMode.class)
+    void ballIntoTheBoardCornerComesStraightBack(LoopMode mode) {
+        Board board = frictionless(mode);
+        board.addBall("B", 15.3, 15.3, 6, 6);
+        new Watch("board corner", board, DT).run(180, (tick, b) -> {
+            Ball ball = b.balls().get(0);
+            assertThat(ball.position().x()).as("on the diagonal at tick " + tick).isCloseTo(ball.position().y(), within(1e-9));
+        });
+        // 180 ticks = 3 s: 4.45 L in, 13.55 L back out along the diagonal.
+        assertThat(board.balls().get(0).velocity().x()).isCloseTo(-6, within(1e-9));
+        assertThat(board.balls().get(0).velocity().y()).isCloseTo(-6, within(1e-9));
+    }
+
+    /**
+     * Squares at (9,10) and (10,9) touch corner to corner at (10,10): below-right of that point their
+     * faces x = 10 and y = 10 form a 90-degree corner. A ball along the diagonal meets both faces at once.
+     */
+    @ParameterizedTest
+    @EnumSource(LoopMode.class)
+    void ballIntoTheCornerBetweenTwoSquaresComesStraightBack(LoopMode mode) {
+        Board board = frictionless(mode);
+        board.addGizmo(GizmoKind.SQUARE, "A", 9, 10);
+        board.addGizmo(GizmoKind.SQUARE, "B", 10, 9);
+        board.addBall("ball", 12.4, 12.4, -5, -5);
+        new Watch("corner between squares", board, DT).run(60, (tick, b) -> {
+            Ball ball = b.balls().get(0);
+            assertThat(ball.position().x()).as("on the diagonal at tick " + tick).isCloseTo(ball.position().y(), within(1e-9));
+            assertThat(Math.min(ball.position().x(), ball.position().y())).as("outside both squares at tick " + tick)
+                    .isGreaterThanOrEqualTo(10 + R - 1e-6);
+        });
+        // 60 ticks = 1 s: 2.15 L in at 5 L/s per axis, then back out.
+        Ball ball = board.balls().get(0);
+        assertThat(ball.velocity().x()).isCloseTo(5, within(1e-9));
+        assertThat(ball.velocity().y()).isCloseTo(5, within(1e-9));
+    }
+
+    /** A ball strikes two touching balls symmetrically, meeting both at the same instant. */
+    @ParameterizedTest
+    @EnumSource(LoopMode.class)
+    void ballStrikingTwoTouchingBallsConservesMomentumAndEnergy(LoopMode mode) {
+        Board board = frictionless(mode);
+        board.addBall("upper", 10, 10 - R, 0, 0);
+        board.addBall("lower", 10, 10 + R, 0, 0);
+        board.addBall("striker", 5, 10, 10, 0);
+        double e0 = board.energy();
+        // 60 ticks = 1 s: contact after about 0.46 s; nobody reaches a wall before 1 s.
+        new Watch("striking two touching balls", board, DT).run(60, (tick, b) -> {
+            Vect momentum = Vect.ZERO;
+            for (Ball ball : b.balls()) {
+                momentum = momentum.plus(ball.velocity());
+            }
+            assertThat(momentum.x()).as("momentum x at tick " + tick).isCloseTo(10, within(1e-9));
+            assertThat(momentum.y()).as("momentum y at tick " + tick).isCloseTo(0, within(1e-9));
+            assertThat(b.energy()).as("energy at tick " + tick).isCloseTo(e0, within(1e-9 * e0));
+        });
+        assertThat(board.balls().get(0).velocity().length()).as("the upper ball was struck").isGreaterThan(1);
+        assertThat(board.balls().get(1).velocity().length()).as("the lower ball was struck").isGreaterThan(1);
+    }
+}

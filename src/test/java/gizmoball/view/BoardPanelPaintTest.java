@@ -1,0 +1,153 @@
+package gizmoball.view;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import gizmoball.model.Board;
+import gizmoball.model.GizmoKind;
+import gizmoball.model.KeyEdge;
+import java.awt.Color;
+import java.awt.Graphics2D;
+import java.awt.geom.Point2D;
+import java.awt.image.BufferedImage;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+
+/** Renders a BoardPanel into an image (no display needed) and reads the pixels where the model says things are. */
+class BoardPanelPaintTest {
+    private static final int SIZE = 612;   // 30 px per L inside the 6 px margin
+    private static final int Z = 90;
+
+    private final Board board = new Board();
+    private BoardPanel panel;
+
+    @BeforeEach
+    void board() {
+        board.addGizmo(GizmoKind.SQUARE, "S", 2, 2);
+        board.addGizmo(GizmoKind.CIRCLE, "C", 5, 5);
+        board.addGizmo(GizmoKind.TRIANGLE, "T", 8, 3);
+        board.addGizmo(GizmoKind.LEFT_FLIPPER, "LF", 6, 15);
+        board.addAbsorber("A", 0, 19, 20, 20);
+        board.addBall("B", 10.5, 10.5, 0, 0);
+        board.bindKey(Z, KeyEdge.DOWN, "LF");
+        panel = new BoardPanel(board);
+        panel.setSize(SIZE, SIZE);
+    }
+
+    private BufferedImage render() {
+        BufferedImage image = new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = image.createGraphics();
+        panel.paint(g);
+        g.dispose();
+        return image;
+    }
+
+    private Color at(BufferedImage image, double x, double y) {
+        Point2D p = panel.transform().toScreen(x, y);
+        return new Color(image.getRGB((int) p.getX(), (int) p.getY()));
+    }
+
+    @Test
+    void eachGizmoAndBallIsPaintedInItsColourWhereTheModelPutsIt() {
+        BufferedImage image = render();
+
+        assertThat(at(image, 2.5, 2.5)).isEqualTo(BoardPainter.colourOf(GizmoKind.SQUARE));
+        assertThat(at(image, 5.5, 5.5)).isEqualTo(BoardPainter.colourOf(GizmoKind.CIRCLE));
+        assertThat(at(image, 8.25, 3.25)).isEqualTo(BoardPainter.colourOf(GizmoKind.TRIANGLE));
+        assertThat(at(image, 8.8, 3.8)).as("the triangle's empty half").isEqualTo(BoardPainter.FLOOR);
+        assertThat(at(image, 6.25, 16)).as("flipper at rest, along its box's left edge")
+                .isEqualTo(BoardPainter.colourOf(GizmoKind.LEFT_FLIPPER));
+        assertThat(at(image, 12.5, 19.5)).isEqualTo(BoardPainter.colourOf(GizmoKind.ABSORBER));
+        assertThat(at(image, 10.5, 10.5)).isEqualTo(BoardPainter.BALL);
+        assertThat(at(image, 15.5, 5.5)).isEqualTo(BoardPainter.FLOOR);
+        assertThat(new Color(image.getRGB(2, 2))).as("outside the walls").isEqualTo(BoardPainter.BACKGROUND);
+    }
+
+    @Test
+    void theFlipperIsPaintedAtItsCurrentAngle() {
+        board.keyDown(Z);
+        for (int i = 0; i < 20; i++) {   // 1/3 s: the 90 degree swing takes 1/12 s, the highlight 1/4 s
+            board.tick(Board.DEFAULT_TICK);
+        }
+        BufferedImage image = render();
+
+        assertThat(at(image, 7.5, 15.25)).as("along its box's top edge")
+                .isEqualTo(BoardPainter.colourOf(GizmoKind.LEFT_FLIPPER));
+        assertThat(at(image, 6.25, 16.5)).isEqualTo(BoardPainter.FLOOR);
+    }
+
+    @Test
+    void aTriggeredGizmoIsLitBrieflyThenBackToItsColour() {
+        board.trigger("S");
+        Color lit = at(render(), 2.5, 2.5);
+        for (int i = 0; i < 30; i++) {   // half a second, twice the highlight
+            board.tick(Board.DEFAULT_TICK);
+        }
+        Color later = at(render(), 2.5, 2.5);
+
+        Color square = BoardPainter.colourOf(GizmoKind.SQUARE);
+        assertThat(lit.getGreen()).isGreaterThan(square.getGreen());
+        assertThat(lit.getBlue()).isGreaterThan(square.getBlue());
+        assertThat(later).isEqualTo(square);
+    }
+
+    @Test
+    void severalBallsHeldByAnAbsorberShowHowManyOnTheBallInItsCorner() {
+        Board held = new Board();
+        held.addAbsorber("A", 0, 18, 20, 20);
+        held.addBall("B1", 5, 18.5, 0, 0);
+        panel = new BoardPanel(held);
+        panel.setSize(SIZE, SIZE);
+        assertThat(darkPixelsOnBall(render(), 19.75, 19.75)).as("one ball: no label").isZero();
+
+        held.addBall("B2", 7, 18.5, 0, 0);
+        held.addBall("B3", 9, 18.5, 0, 0);
+
+        assertThat(held.balls()).allSatisfy(b -> assertThat(b.isCaptured()).isTrue());
+        assertThat(darkPixelsOnBall(render(), 19.75, 19.75)).as("three balls: a label").isPositive();
+    }
+
+    /** Pixels well inside the ball (away from its outline) much darker than the ball's colour. */
+    private int darkPixelsOnBall(BufferedImage image, double x, double y) {
+        int dark = 0;
+        double r = 0.8 * Board.BALL_RADIUS;
+        for (double dx = -r; dx <= r; dx += 0.02) {
+            for (double dy = -r; dy <= r; dy += 0.02) {
+                if (dx * dx + dy * dy <= r * r && at(image, x + dx, y + dy).getRed() < 128) {
+                    dark++;
+                }
+            }
+        }
+        return dark;
+    }
+
+    @Test
+    void theGridIsDrawnOnlyWhenAskedFor() {
+        Point2D line = panel.transform().toScreen(15, 5.5);
+        int x = (int) line.getX();
+        int y = (int) line.getY();
+        assertThat(new Color(render().getRGB(x, y))).isEqualTo(BoardPainter.FLOOR);
+
+        panel.setGridVisible(true);
+        BufferedImage image = render();
+
+        assertThat(new Color(image.getRGB(x, y))).isNotEqualTo(BoardPainter.FLOOR);
+        assertThat(at(image, 15.5, 5.5)).as("between grid lines").isEqualTo(BoardPainter.FLOOR);
+    }
+
+    @Test
+    void theBoardKeepsItsAspectRatioAndIsCentredInAWidePanel() {
+        panel.setSize(1000, 500);
+        BufferedImage image = new BufferedImage(1000, 500, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = image.createGraphics();
+        panel.paint(g);
+        g.dispose();
+
+        BoardTransform t = panel.transform();
+        assertThat(t.scale()).isEqualTo(24);   // (500 - 2 * 6) / 20, rounded down
+        assertThat(t.toScreen(10, 10)).isEqualTo(new Point2D.Double(500, 250));
+        Point2D square = t.toScreen(2.5, 2.5);
+        assertThat(new Color(image.getRGB((int) square.getX(), (int) square.getY())))
+                .isEqualTo(BoardPainter.colourOf(GizmoKind.SQUARE));
+        assertThat(new Color(image.getRGB(100, 250))).as("left of the board").isEqualTo(BoardPainter.BACKGROUND);
+    }
+}

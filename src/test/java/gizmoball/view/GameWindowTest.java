@@ -1,0 +1,175 @@
+package gizmoball.view;
+
+import static gizmoball.view.Gui.await;
+import static gizmoball.view.Gui.clickMenu;
+import static gizmoball.view.Gui.onEdt;
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
+
+import gizmoball.controller.Mode;
+import gizmoball.model.Board;
+import gizmoball.model.Flipper;
+import gizmoball.model.GizmoKind;
+import gizmoball.model.KeyEdge;
+import java.awt.Point;
+import java.awt.Robot;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
+import javax.swing.JLabel;
+import javax.swing.JToggleButton;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+
+/** The window on a real board, driven through its menus, toolbar and the keyboard (needs a display). */
+class GameWindowTest {
+    private static final double DT = Board.DEFAULT_TICK;
+    private static final int FLIPPER_KEY = KeyEvent.VK_Z;
+
+    private GameWindow window;
+
+    @BeforeEach
+    void open() {
+        Gui.assumeDisplay();
+        window = GameWindow.launch(null);
+        onEdt(() -> {
+            Board board = new Board();
+            board.addGizmo(GizmoKind.LEFT_FLIPPER, "LF", 6, 15);
+            board.addGizmo(GizmoKind.SQUARE, "S", 2, 2);
+            board.addBall("B", 10.5, 5, 0, 0);
+            board.bindKey(FLIPPER_KEY, KeyEdge.DOWN, "LF");
+            board.bindKey(FLIPPER_KEY, KeyEdge.UP, "LF");
+            window.session().load(board, null);
+        });
+    }
+
+    @AfterEach
+    void close() {
+        if (window != null) {
+            onEdt(window::dispose);
+        }
+    }
+
+    private double time() {
+        return onEdt(() -> window.session().board().time());
+    }
+
+    private Flipper flipper() {
+        return onEdt(() -> (Flipper) window.session().board().gizmo("LF").orElseThrow());
+    }
+
+    @Test
+    void tickStepsOneTickAtATimeWhileStopped() {
+        clickMenu(window.menus(), "Tick");
+        assertThat(time()).isEqualTo(DT);
+
+        clickMenu(window.menus(), "Tick");
+        clickMenu(window.menus(), "Tick");
+        assertThat(time()).isCloseTo(3 * DT, within(1e-12));
+    }
+
+    @Test
+    void startRunsTheClockAndStopHaltsIt() {
+        clickMenu(window.menus(), "Start");
+        await("simulated time to pass", () -> window.session().board().time() > 10 * DT);
+        assertThat(onEdt(() -> Gui.menuItem(window.menus(), "Tick").isEnabled())).isFalse();
+
+        clickMenu(window.menus(), "Stop");
+        double stoppedAt = time();
+        Gui.sleep(200);
+
+        assertThat(time()).isEqualTo(stoppedAt);
+        assertThat(onEdt(() -> Gui.menuItem(window.menus(), "Tick").isEnabled())).isTrue();
+    }
+
+    @Test
+    void resetPutsTheBallBackWhereTheBoardStarted() {
+        for (int i = 0; i < 20; i++) {
+            clickMenu(window.menus(), "Tick");
+        }
+        assertThat(onEdt(() -> window.session().board().balls().get(0).position().y())).isGreaterThan(5);
+
+        clickMenu(window.menus(), "Reset");
+
+        assertThat(onEdt(() -> window.session().board().balls().get(0).position().y())).isEqualTo(5);
+    }
+
+    @Test
+    void holdingTheBoundKeySwingsTheFlipperUpAndReleasingItSwingsItBack() throws Exception {
+        focusBoard();
+        Robot robot = new Robot();
+        robot.setAutoDelay(10);
+
+        robot.keyPress(FLIPPER_KEY);
+        await("the flipper to go active", () -> flipper().isActive());
+        for (int i = 0; i < 10; i++) {   // 1/6 s: more than the 1/12 s the 90 degree swing takes
+            clickMenu(window.menus(), "Tick");
+        }
+        assertThat(flipper().angleFromRest()).isEqualTo(90);
+        Gui.sleep(700);   // longer than the keyboard's auto-repeat delay: a held key must not toggle it
+        robot.waitForIdle();
+        assertThat(flipper().isActive()).as("still held").isTrue();
+
+        robot.keyRelease(FLIPPER_KEY);
+        await("the flipper to be released", () -> !flipper().isActive());
+        for (int i = 0; i < 10; i++) {
+            clickMenu(window.menus(), "Tick");
+        }
+        assertThat(flipper().angleFromRest()).isZero();
+    }
+
+    @Test
+    void buildModeStopsTheGameShowsTheGridAndHidesTheSidePanels() {
+        JLabel west = new JLabel("palette");
+        JLabel east = new JLabel("properties");
+        onEdt(() -> window.setSidePanels(west, east));
+        assertThat(onEdt(west::isVisible)).isFalse();
+        clickMenu(window.menus(), "Start");
+
+        onEdt(() -> Gui.find(window.toolBar(), JToggleButton.class, b -> "Build".equals(b.getText()))
+                .orElseThrow().doClick(0));
+
+        assertThat(onEdt(() -> window.session().mode())).isEqualTo(Mode.BUILD);
+        assertThat(onEdt(west::isVisible)).isTrue();
+        assertThat(onEdt(east::isVisible)).isTrue();
+        assertThat(onEdt(() -> window.boardPanel().isGridVisible())).isTrue();
+        assertThat(onEdt(() -> Gui.menuItem(window.menus(), "Start").isEnabled())).isFalse();
+        assertThat(onEdt(() -> Gui.menuItem(window.menus(), "Build").isSelected())).isTrue();
+        double t = time();
+        Gui.sleep(100);
+        assertThat(time()).isEqualTo(t);
+
+        clickMenu(window.menus(), "Play");
+        assertThat(onEdt(west::isVisible)).isFalse();
+        assertThat(onEdt(() -> Gui.menuItem(window.menus(), "Start").isEnabled())).isTrue();
+    }
+
+    @Test
+    void theTitleMarksUnsavedChanges() {
+        assertThat(onEdt(window::getTitle)).isEqualTo("Gizmoball - untitled");
+
+        onEdt(() -> window.session().markModified());
+
+        assertThat(onEdt(window::getTitle)).isEqualTo("Gizmoball - untitled *");
+    }
+
+    @Test
+    void quitClosesTheWindowWhenNothingIsUnsaved() {
+        clickMenu(window.menus(), "Quit");
+
+        assertThat(onEdt(window::isDisplayable)).isFalse();
+    }
+
+    /** Clicks into the board so that the window has the keyboard focus (there is no window manager under Xvfb). */
+    private void focusBoard() throws Exception {
+        Robot robot = new Robot();
+        Point centre = onEdt(() -> {
+            Point p = window.boardPanel().getLocationOnScreen();
+            return new Point(p.x + window.boardPanel().getWidth() / 2, p.y + window.boardPanel().getHeight() / 2);
+        });
+        robot.mouseMove(centre.x, centre.y);
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        await("the board to have the keyboard focus", () -> window.boardPanel().isFocusOwner());
+    }
+}

@@ -1,0 +1,267 @@
+package gizmoball.view.editor;
+
+import gizmoball.controller.GameSession;
+import gizmoball.controller.Mode;
+import gizmoball.controller.editor.Design;
+import gizmoball.controller.editor.Tool;
+import gizmoball.model.Board;
+import gizmoball.model.Connection;
+import gizmoball.model.Flipper;
+import gizmoball.model.Gizmo;
+import gizmoball.model.GizmoKind;
+import gizmoball.model.KeyBinding;
+import gizmoball.model.KeyEdge;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+
+import javax.swing.JList;
+import javax.swing.JMenuBar;
+import javax.swing.JMenuItem;
+import javax.swing.JTextField;
+import javax.swing.KeyStroke;
+import java.awt.Dimension;
+import java.awt.Point;
+import java.awt.Robot;
+import java.awt.Toolkit;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
+import java.util.ArrayList;
+import java.util.List;
+
+import static gizmoball.view.editor.EditorGui.await;
+import static gizmoball.view.editor.EditorGui.onEdt;
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+/**
+ * Build mode in a real window (under Xvfb in CI): palette buttons are clicked, mouse events arrive at the
+ * board view at the pixels of board cells, keys go through the board view's key listener, menus are clicked.
+ * One test drives the real pointer with java.awt.Robot. Skipped, with the reason, without a display.
+ */
+class BuildModeGuiTest {
+    private BuildWindow w;
+    private Board board;
+    private GameSession session;
+
+    @BeforeEach
+    void openWindowInBuildMode() {
+        w = BuildWindow.open();
+        board = w.board;
+        session = w.session;
+    }
+
+    @AfterEach
+    void close() {
+        if (w != null) {
+            w.close();
+        }
+    }
+
+    @Test
+    void robotClicksOnThePaletteAndTheBoardPlaceASquare() throws Exception {
+        // Other tests' windows may still be on the screen: the real pointer must land on this one.
+        onEdt(() -> {
+            w.window.setAlwaysOnTop(true);
+            w.window.toFront();
+        });
+        Robot robot = new Robot();
+        robot.setAutoDelay(20);
+        robot.waitForIdle();
+        Point button = BuildWindow.centreOnScreen(w.build.palette().button(Tool.SQUARE));
+        Point cell = w.cellOnScreen(6, 9);
+        robot.mouseMove(button.x, button.y);
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        await("the Square tool is chosen", () -> w.build.controller().tool() == Tool.SQUARE);
+        robot.mouseMove(cell.x, cell.y);
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+
+        await("S1 is on the board", () -> board.gizmo("S1").isPresent());
+        Gizmo s1 = board.gizmo("S1").orElseThrow();
+        assertThat(List.of(s1.x(), s1.y())).containsExactly(6, 9);
+        assertThat(session.isModified()).isTrue();
+    }
+
+    @Test
+    void everyKindIsPlacedByClickingItsToolAndTheBoard() {
+        w.clickTool(Tool.SQUARE);
+        w.clickCell(1, 1);
+        w.clickTool(Tool.CIRCLE);
+        w.clickCell(3, 1);
+        w.clickTool(Tool.TRIANGLE);
+        w.clickCell(5, 1);
+        w.clickTool(Tool.LEFT_FLIPPER);
+        w.clickCell(1, 5);
+        w.clickTool(Tool.RIGHT_FLIPPER);
+        w.clickCell(5, 5);
+        w.clickTool(Tool.ABSORBER);
+        w.dragCells(0, 19, 19, 19);
+        w.clickTool(Tool.BALL);
+        w.drag(10.5, 10.5, 11.5, 8.5);
+
+        assertThat(onEdt(() -> board.gizmos().stream().map(Gizmo::kind).toList())).containsExactly(
+                GizmoKind.SQUARE, GizmoKind.CIRCLE, GizmoKind.TRIANGLE, GizmoKind.LEFT_FLIPPER,
+                GizmoKind.RIGHT_FLIPPER, GizmoKind.ABSORBER);
+        Gizmo absorber = board.gizmo("A1").orElseThrow();
+        assertThat(List.of(absorber.x(), absorber.y(), absorber.width(), absorber.height()))
+                .containsExactly(0, 19, 20, 1);
+        // A drag of (+1, -2) L from the ball's centre gives (10, -20) L/s at 10 L/s per L dragged.
+        var ball = board.ball("B1").orElseThrow();
+        assertThat(ball.position().x()).isCloseTo(10.5, within(1e-9));
+        assertThat(ball.velocity().x()).isCloseTo(10, within(1e-9));
+        assertThat(ball.velocity().y()).isCloseTo(-20, within(1e-9));
+        assertThat(session.isModified()).isTrue();
+    }
+
+    @Test
+    void draggingAGizmoMovesItAndRotateAndDeleteActOnTheClickedGizmo() {
+        w.clickTool(Tool.TRIANGLE);
+        w.clickCell(2, 2);
+        w.clickTool(Tool.SELECT);
+        w.dragCells(2, 2, 12, 7);
+        assertThat(onEdt(() -> List.of(board.gizmo("T1").orElseThrow().x(), board.gizmo("T1").orElseThrow().y())))
+                .containsExactly(12, 7);
+
+        w.clickTool(Tool.ROTATE);
+        w.clickCell(12, 7);
+        assertThat(board.gizmo("T1").orElseThrow().rotation()).isEqualTo(1);
+
+        w.clickTool(Tool.DELETE);
+        w.clickCell(12, 7);
+        assertThat(board.gizmos()).isEmpty();
+    }
+
+    @Test
+    void connectingTwoGizmosShowsTheConnectionInTheProperties() {
+        w.clickTool(Tool.CIRCLE);
+        w.clickCell(4, 4);
+        w.clickTool(Tool.LEFT_FLIPPER);
+        w.clickCell(8, 8);
+        w.clickTool(Tool.CONNECT);
+        w.clickCell(4, 4);
+        w.clickCell(9, 9);
+
+        assertThat(board.connections()).containsExactly(new Connection("C1", "LF1"));
+        JList<?> links = onEdt(() -> EditorGui.find(w.build.properties(), JList.class, "links"));
+        assertThat(onEdt(() -> links.getModel().getSize())).isEqualTo(1);
+        assertThat(onEdt(() -> links.getModel().getElementAt(0).toString())).isEqualTo("C1 \u2192 LF1");
+    }
+
+    @Test
+    void aKeyBoundInBuildModeSwingsTheFlipperInPlay() {
+        w.clickTool(Tool.LEFT_FLIPPER);
+        w.clickCell(3, 15);
+        w.clickTool(Tool.KEY_CONNECT);
+        w.clickCell(3, 15);
+        w.key(KeyEvent.VK_SPACE);
+        JMenuItem down = onEdt(() -> EditorGui.showingMenuItem("edge.down"));
+        onEdt(() -> down.doClick(0));
+
+        assertThat(board.keyBindings()).containsExactly(new KeyBinding(KeyEvent.VK_SPACE, KeyEdge.DOWN, "LF1"));
+        onEdt(() -> session.setMode(Mode.PLAY));
+        onEdt(() -> {
+            board.keyDown(KeyEvent.VK_SPACE);
+            board.tick(0.1);
+        });
+        Flipper lf1 = (Flipper) board.gizmo("LF1").orElseThrow();
+        assertThat(lf1.angleFromRest()).isCloseTo(90, within(1e-9));
+    }
+
+    @Test
+    void undoAndRedoFromTheEditMenu() {
+        w.clickTool(Tool.SQUARE);
+        w.clickCell(1, 1);
+        w.clickCell(2, 1);
+        JMenuItem undo = onEdt(() -> EditorGui.menuItem(w.window.menus(), "Undo"));
+        JMenuItem redo = onEdt(() -> EditorGui.menuItem(w.window.menus(), "Redo"));
+        assertThat(onEdt(redo::isEnabled)).isFalse();
+
+        onEdt(() -> undo.doClick(0));
+        assertThat(board.gizmos()).extracting(Gizmo::name).containsExactly("S1");
+        assertThat(onEdt(redo::isEnabled)).isTrue();
+        onEdt(() -> redo.doClick(0));
+        assertThat(board.gizmos()).extracting(Gizmo::name).containsExactly("S1", "S2");
+    }
+
+    @Test
+    void aRefusedOverlapLeavesTheBoardAsItWasAndSaysWhyOnTheStatusLine() {
+        w.clickTool(Tool.SQUARE);
+        w.clickCell(5, 5);
+        Design before = onEdt(() -> Design.of(board));
+        w.clickTool(Tool.RIGHT_FLIPPER);
+        w.clickCell(4, 4);
+
+        assertThat(onEdt(() -> Design.of(board))).isEqualTo(before);
+        assertThat(w.status()).contains("overlap").contains("S1");
+    }
+
+    @Test
+    void gravityTypedIntoThePropertiesIsValidated() {
+        JTextField gravity = onEdt(() -> EditorGui.find(w.build.properties(), JTextField.class, "gravity"));
+        onEdt(() -> {
+            gravity.setText("strong");
+            gravity.postActionEvent();
+        });
+        assertThat(board.gravity()).isEqualTo(Board.DEFAULT_GRAVITY);
+        assertThat(w.status()).contains("not a number");
+
+        onEdt(() -> {
+            gravity.setText("10");
+            gravity.postActionEvent();
+        });
+        assertThat(board.gravity()).isEqualTo(10);
+    }
+
+    @Test
+    void inPlayModeTheMouseDoesNotEdit() {
+        w.clickTool(Tool.SQUARE);
+        onEdt(() -> session.setMode(Mode.PLAY));
+        w.clickCell(3, 3);
+        assertThat(board.gizmos()).isEmpty();
+        assertThat(onEdt(w.build.editMenu()::isEnabled)).isFalse();
+    }
+
+
+    @Test
+    void theEditMenuSitsAfterFileAndItsShortcutsClashWithNoOtherMenu() {
+        JMenuBar menus = w.window.menus();
+        assertThat(onEdt(() -> menus.getMenu(1))).isSameAs(w.build.editMenu());
+        List<KeyStroke> accelerators = onEdt(() -> {
+            List<KeyStroke> all = new ArrayList<>();
+            for (int i = 0; i < menus.getMenuCount(); i++) {
+                for (int j = 0; j < menus.getMenu(i).getItemCount(); j++) {
+                    JMenuItem item = menus.getMenu(i).getItem(j);
+                    if (item != null && item.getAccelerator() != null) {
+                        all.add(item.getAccelerator());
+                    }
+                }
+            }
+            return all;
+        });
+        assertThat(accelerators).contains(KeyStroke.getKeyStroke(KeyEvent.VK_Z, InputEvent.CTRL_DOWN_MASK))
+                .doesNotHaveDuplicates();
+    }
+
+    @Test
+    void theSidePanelsDoNotSqueezeTheBoardAndPlayGetsItsSizeBack() {
+        onEdt(() -> w.session.setMode(Mode.PLAY));
+        await("play layout", () -> !w.build.palette().isShowing());
+        Dimension playWindow = onEdt(() -> w.window.getSize());
+        int playBoard = onEdt(() -> Math.min(w.panel.getWidth(), w.panel.getHeight()));
+
+        onEdt(() -> w.session.setMode(Mode.BUILD));
+        await("build layout", () -> w.build.palette().isShowing() && w.panel.getWidth() > 0);
+        Dimension wanted = onEdt(() -> w.window.getPreferredSize());
+        Dimension screen = Toolkit.getDefaultToolkit().getScreenSize();
+        assumeTrue(screen.width >= wanted.width && screen.height >= wanted.height,
+                "the screen (" + screen + ") is smaller than the build-mode window wants (" + wanted + ")");
+        int buildBoard = onEdt(() -> Math.min(w.panel.getWidth(), w.panel.getHeight()));
+        assertThat(buildBoard).isGreaterThanOrEqualTo(playBoard * 9 / 10);
+
+        onEdt(() -> w.session.setMode(Mode.PLAY));
+        assertThat(onEdt(() -> w.window.getSize())).isEqualTo(playWindow);
+    }
+}

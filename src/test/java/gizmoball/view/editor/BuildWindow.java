@@ -1,0 +1,117 @@
+package gizmoball.view.editor;
+
+import gizmoball.controller.GameSession;
+import gizmoball.controller.Mode;
+import gizmoball.controller.editor.Tool;
+import gizmoball.model.Board;
+import gizmoball.view.BoardPanel;
+import gizmoball.view.GameWindow;
+
+import java.awt.Component;
+import java.awt.Point;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
+import java.awt.event.KeyListener;
+import java.awt.event.MouseEvent;
+import java.awt.geom.Point2D;
+import java.util.List;
+
+import static gizmoball.view.editor.EditorGui.await;
+import static gizmoball.view.editor.EditorGui.onEdt;
+
+/**
+ * A game window with build mode installed and switched on, and the gestures of a board author: palette
+ * clicks, and mouse events delivered to the board view at the pixels of board points, as AWT would.
+ */
+final class BuildWindow {
+    final GameWindow window;
+    final BuildModeInstaller.BuildMode build;
+    final GameSession session;
+    final Board board;
+    final BoardPanel panel;
+
+    private BuildWindow() {
+        window = GameWindow.launch(null);
+        build = onEdt(() -> BuildModeInstaller.install(window));
+        session = window.session();
+        board = session.board();
+        panel = window.boardPanel();
+        onEdt(() -> session.setMode(Mode.BUILD));
+        await("the board view is laid out", () -> panel.isShowing() && panel.getWidth() > 100);
+    }
+
+    /** Opens one (skipping the test, with the reason, when there is no display). */
+    static BuildWindow open() {
+        EditorGui.assumeDisplay();
+        return new BuildWindow();
+    }
+
+    void close() {
+        onEdt(window::dispose);
+    }
+
+    void clickTool(Tool tool) {
+        onEdt(() -> build.palette().button(tool).doClick(0));
+    }
+
+    void clickCell(int cx, int cy) {
+        click(cx + 0.5, cy + 0.5);
+    }
+
+    void click(double x, double y) {
+        onEdt(() -> {
+            mouse(MouseEvent.MOUSE_PRESSED, x, y);
+            mouse(MouseEvent.MOUSE_RELEASED, x, y);
+        });
+    }
+
+    void dragCells(int x0, int y0, int x1, int y1) {
+        drag(x0 + 0.5, y0 + 0.5, x1 + 0.5, y1 + 0.5);
+    }
+
+    void drag(double x0, double y0, double x1, double y1) {
+        onEdt(() -> {
+            mouse(MouseEvent.MOUSE_PRESSED, x0, y0);
+            mouse(MouseEvent.MOUSE_DRAGGED, (x0 + x1) / 2, (y0 + y1) / 2);
+            mouse(MouseEvent.MOUSE_DRAGGED, x1, y1);
+            mouse(MouseEvent.MOUSE_RELEASED, x1, y1);
+        });
+    }
+
+    /** A key press handed to the board view's key listeners (no window focus needed on a bare X server). */
+    void key(int keyCode) {
+        onEdt(() -> {
+            KeyEvent e = new KeyEvent(panel, KeyEvent.KEY_PRESSED, System.currentTimeMillis(), 0, keyCode,
+                    KeyEvent.CHAR_UNDEFINED);
+            List.of(panel.getKeyListeners()).forEach((KeyListener l) -> l.keyPressed(e));
+        });
+    }
+
+    String status() {
+        return onEdt(() -> window.statusLine().message());
+    }
+
+    /** Screen position of the middle of a board cell, for java.awt.Robot. */
+    Point cellOnScreen(int cx, int cy) {
+        return onEdt(() -> {
+            Point2D p = panel.transform().toScreen(cx + 0.5, cy + 0.5);
+            Point origin = panel.getLocationOnScreen();
+            return new Point(origin.x + (int) Math.round(p.getX()), origin.y + (int) Math.round(p.getY()));
+        });
+    }
+
+    static Point centreOnScreen(Component c) {
+        return onEdt(() -> {
+            Point origin = c.getLocationOnScreen();
+            return new Point(origin.x + c.getWidth() / 2, origin.y + c.getHeight() / 2);
+        });
+    }
+
+    private void mouse(int id, double x, double y) {
+        Point2D p = panel.transform().toScreen(x, y);
+        int modifiers = id == MouseEvent.MOUSE_RELEASED ? 0 : InputEvent.BUTTON1_DOWN_MASK;
+        int clicks = id == MouseEvent.MOUSE_DRAGGED ? 0 : 1;
+        panel.dispatchEvent(new MouseEvent(panel, id, System.currentTimeMillis(), modifiers,
+                (int) Math.round(p.getX()), (int) Math.round(p.getY()), clicks, false, MouseEvent.BUTTON1));
+    }
+}
