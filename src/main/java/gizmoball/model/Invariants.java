@@ -11,7 +11,7 @@ import physics.Vect;
  * within {@link Board#MAX_SPEED}. Captured balls sit inside their absorber by design: only finiteness is checked.
  */
 public final class Invariants {
-    public static final double TOLERANCE = 1e-6;
+    static final double TOLERANCE = 1e-6;
 
     private Invariants() {
     }
