@@ -143,6 +143,11 @@ public class GeometryImpl implements GeometryInterface {
             return Double.POSITIVE_INFINITY;
         }
         double time = gap / -closingRate;
+        if (time == Double.POSITIVE_INFINITY) {
+            // A subnormal closing speed: the contact lies beyond the range of doubles, and moving the centre
+            // by an infinite time would turn its zero components into NaN.
+            return time;
+        }
         Vect centerAtContact = center.plus(velocity.times(time));
         return perpendicularPoint(line, centerAtContact) != null ? time : Double.POSITIVE_INFINITY;
     }

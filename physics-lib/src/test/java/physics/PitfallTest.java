@@ -296,6 +296,16 @@ class PitfallTest {
         }
 
         @Test
+        void subnormalSpeedTowardAWallGivesInfinityNotNaN() {
+            // 1 L at 1e-320 L/s is 1e320 s away: beyond the doubles, so infinity, not a NaN centre at contact.
+            LineSegment floor = new LineSegment(0, 20, 20, 20);
+            assertThat(Geometry.timeUntilWallCollision(floor, new Circle(10, 18.75, 0.25), new Vect(0, 1e-320)))
+                    .isEqualTo(INF);
+            assertThat(Geometry.timeUntilWallCollision(floor, new Circle(10, 18.75, 0.25), new Vect(1e-320, 1e-320)))
+                    .isEqualTo(INF);
+        }
+
+        @Test
         void zeroVelocityZeroRadiusAndZeroSpinGiveDefinedAnswers() {
             Circle point = new Circle(3, 3, 0);
             assertThat(Geometry.timeUntilWallCollision(FLIPPER, point, Vect.ZERO)).isEqualTo(INF);
