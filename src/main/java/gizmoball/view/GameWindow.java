@@ -44,6 +44,7 @@ public final class GameWindow extends JFrame {
     private final BoardPanel boardPanel = new BoardPanel(session.board());
     private final StatusLine statusLine = new StatusLine();
     private final GameLoop loop = new GameLoop(session.board(), Board.DEFAULT_TICK);
+    private final BoardFileCommands files = new BoardFileCommands(this, session, loop);
     private final KeyForwarder keys = new KeyForwarder(this, session.board(), () -> session.mode() == Mode.PLAY);
     private final Timer statusRefresh = new Timer(STATUS_REFRESH_MILLIS, e -> refreshStatus());
     private final JPanel centre = new JPanel(new BorderLayout());
@@ -52,6 +53,11 @@ public final class GameWindow extends JFrame {
     private JComponent west;
     private JComponent east;
 
+    private final Action newBoard = action("New", KeyEvent.VK_N, 0, files::newBoard);
+    private final Action open = action("Open...", KeyEvent.VK_O, 0, files::open);
+    private final Action save = action("Save", KeyEvent.VK_S, 0, files::save);
+    private final Action saveAs = action("Save As...", KeyEvent.VK_S, InputEvent.SHIFT_DOWN_MASK, files::saveAs);
+    private final Action reload = action("Reload", KeyEvent.VK_R, 0, files::reload);
     private final Action quit = action("Quit", KeyEvent.VK_Q, 0, this::quit);
     private final Action start = action("Start", KeyEvent.VK_G, 0, loop::start);
     private final Action stop = action("Stop", KeyEvent.VK_H, 0, loop::stop);
@@ -111,6 +117,9 @@ public final class GameWindow extends JFrame {
     public static GameWindow launch(Path board) {
         if (SwingUtilities.isEventDispatchThread()) {
             GameWindow window = new GameWindow();
+            if (board != null) {
+                window.files.openAtLaunch(board);
+            }
             window.setVisible(true);
             return window;
         }
@@ -146,6 +155,11 @@ public final class GameWindow extends JFrame {
         return statusLine;
     }
 
+    /** The File menu's commands (package-private: the tests open files without a file chooser). */
+    BoardFileCommands fileCommands() {
+        return files;
+    }
+
     /** The build-mode side panels; shown while the session is in BUILD mode. Either may be null. */
     public void setSidePanels(JComponent west, JComponent east) {
         if (this.west != null) {
@@ -168,6 +182,10 @@ public final class GameWindow extends JFrame {
     private void buildMenus() {
         JMenu file = new JMenu("File");
         file.setMnemonic(KeyEvent.VK_F);
+        for (Action a : new Action[] {newBoard, open, save, saveAs, reload}) {
+            file.add(a);
+        }
+        file.addSeparator();
         file.add(quit);
         JMenu game = new JMenu("Game");
         game.setMnemonic(KeyEvent.VK_G);
@@ -194,6 +212,10 @@ public final class GameWindow extends JFrame {
 
     private void buildToolBar() {
         toolBar.setFloatable(false);
+        for (Action a : new Action[] {open, save, reload}) {
+            toolBar.add(button(new JButton(a)));
+        }
+        toolBar.addSeparator();
         for (Action a : new Action[] {start, stop, tick, reset}) {
             toolBar.add(button(new JButton(a)));
         }
@@ -250,6 +272,7 @@ public final class GameWindow extends JFrame {
         stop.setEnabled(running);
         tick.setEnabled(playing && !running);
         reset.setEnabled(playing);
+        reload.setEnabled(session.file().isPresent());
         play.putValue(Action.SELECTED_KEY, playing);
         build.putValue(Action.SELECTED_KEY, !playing);
         setTitle("Gizmoball - " + session.boardName() + (session.isModified() ? " *" : ""));
@@ -273,6 +296,8 @@ public final class GameWindow extends JFrame {
     }
 
     private void quit() {
-        dispose();
+        if (files.confirmDiscard("quit")) {
+            dispose();
+        }
     }
 }

@@ -1,0 +1,102 @@
+package gizmoball.view;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import gizmoball.boardfile.BoardFiles;
+import gizmoball.model.Ball;
+import gizmoball.model.Board;
+import gizmoball.model.Bumper;
+import gizmoball.model.Gizmo;
+import gizmoball.model.GizmoKind;
+import java.awt.Color;
+import java.awt.Graphics2D;
+import java.awt.geom.Point2D;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+import physics.Vect;
+
+/**
+ * Every board that ships with the game, and every peer board we can load, is painted with each gizmo and
+ * ball in its colour where the model puts it (headless: the panel is painted into an image).
+ */
+class BoardFilesPaintTest {
+    private static final int SIZE = 492;   // 24 px per L: a pixel sampled 0.1 L inside a shape is clear of its antialiased edge
+    private static final Path PEER_BOARDS = Path.of("..", "shared", "peer-boards");
+
+    static Stream<Path> sampleBoards() throws IOException {
+        try (Stream<Path> files = Files.list(Path.of("boards"))) {
+            return files.filter(p -> p.toString().endsWith(".txt")).sorted().toList().stream();
+        }
+    }
+
+    static Stream<Path> peerBoards() throws IOException {
+        if (!Files.isDirectory(PEER_BOARDS)) {
+            return Stream.of(PEER_BOARDS);   // one case, skipped below with the reason
+        }
+        try (Stream<Path> files = Files.list(PEER_BOARDS)) {
+            return files.filter(Files::isRegularFile).sorted().toList().stream();
+        }
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("sampleBoards")
+    void sampleBoardLoadsCleanlyAndPaints(Path file) throws Exception {
+        assertPaintedAsModelled(BoardFiles.load(file), file);
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("peerBoards")
+    void peerBoardPaintsWhatLoads(Path file) throws Exception {
+        assumeTrue(Files.isRegularFile(file), "no peer boards at " + PEER_BOARDS.toAbsolutePath());
+        assertPaintedAsModelled(BoardFiles.loadSkippingBadLines(file).board(), file);
+    }
+
+    private static void assertPaintedAsModelled(Board board, Path file) {
+        BoardPanel panel = new BoardPanel(board);
+        panel.setSize(SIZE, SIZE);
+        BufferedImage image = new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = image.createGraphics();
+        panel.paint(g);
+        g.dispose();
+        BoardTransform t = panel.transform();
+        for (Gizmo gizmo : board.gizmos()) {
+            if (gizmo.kind() == GizmoKind.LEFT_FLIPPER || gizmo.kind() == GizmoKind.RIGHT_FLIPPER) {
+                continue;
+            }
+            Vect inside = gizmo instanceof Bumper b && gizmo.kind() == GizmoKind.TRIANGLE ? centroid(b.outline())
+                    : new Vect(gizmo.x() + gizmo.width() / 2.0, gizmo.y() + gizmo.height() / 2.0);
+            assertThat(pixel(image, t, inside)).as("%s: %s at %s", file, gizmo.name(), inside)
+                    .isEqualTo(BoardPainter.colourOf(gizmo.kind()));
+        }
+        Map<Vect, Long> ballsAt = board.balls().stream()
+                .collect(Collectors.groupingBy(Ball::position, Collectors.counting()));
+        for (Ball ball : board.balls()) {
+            if (ballsAt.get(ball.position()) == 1) {   // several balls held in one corner carry a count label
+                assertThat(pixel(image, t, ball.position())).as("%s: ball %s", file, ball.name())
+                        .isEqualTo(BoardPainter.BALL);
+            }
+        }
+    }
+
+    private static Vect centroid(List<Vect> corners) {
+        Vect sum = new Vect(0, 0);
+        for (Vect c : corners) {
+            sum = sum.plus(c);
+        }
+        return sum.times(1.0 / corners.size());
+    }
+
+    private static Color pixel(BufferedImage image, BoardTransform t, Vect at) {
+        Point2D p = t.toScreen(at.x(), at.y());
+        return new Color(image.getRGB((int) p.getX(), (int) p.getY()));
+    }
+}

@@ -1,0 +1,196 @@
+package gizmoball.view;
+
+import static gizmoball.view.Gui.await;
+import static gizmoball.view.Gui.onEdt;
+import static org.assertj.core.api.Assertions.assertThat;
+
+import gizmoball.boardfile.BoardFiles;
+import gizmoball.model.Board;
+import gizmoball.model.Gizmo;
+import java.awt.Window;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Optional;
+import javax.swing.JButton;
+import javax.swing.JDialog;
+import javax.swing.JList;
+import javax.swing.SwingUtilities;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** Opening, reloading and saving board files through the window (needs a display). */
+class GameWindowFilesTest {
+    private static final String GOOD = "Square S1 2 2\nCircle C1 5 5\nBall B 10.5 5 0 0\n";
+    private static final String BAD = "Square S1 2 2\nSquare S2 x 3\nCircle C1 5 5\nBogus 1 2\n";
+
+    @TempDir
+    Path dir;
+    private GameWindow window;
+
+    @BeforeEach
+    void display() {
+        Gui.assumeDisplay();
+    }
+
+    @AfterEach
+    void close() {
+        if (window != null) {
+            onEdt(window::dispose);
+        }
+        for (Window w : Window.getWindows()) {
+            onEdt(w::dispose);
+        }
+    }
+
+    private Path write(String name, String text) throws Exception {
+        return Files.writeString(dir.resolve(name), text);
+    }
+
+    private List<String> gizmoNames() {
+        return onEdt(() -> window.session().board().gizmos().stream().map(Gizmo::name).toList());
+    }
+
+    @Test
+    void launchOpensTheWindowOnTheBoardFile() throws Exception {
+        window = GameWindow.launch(write("good.txt", GOOD));
+
+        assertThat(gizmoNames()).containsExactly("S1", "C1");
+        assertThat(onEdt(window::getTitle)).isEqualTo("Gizmoball - good.txt");
+        assertThat(onEdt(() -> window.session().file())).contains(dir.resolve("good.txt"));
+    }
+
+    @Test
+    void aBadFileShowsItsLineNumberedProblemsAndCanBeKeptOut() throws Exception {
+        window = GameWindow.launch(write("good.txt", GOOD));
+        Path bad = write("bad.txt", BAD);
+
+        SwingUtilities.invokeLater(() -> window.fileCommands().open(bad));
+        JDialog dialog = awaitProblemsDialog();
+        List<String> problems = problemsListed(dialog);
+        assertThat(problems).hasSize(2);
+        assertThat(problems.get(0)).startsWith("line 2: ").contains("Square S2 x 3");
+        assertThat(problems.get(1)).startsWith("line 4: ").contains("Bogus 1 2");
+
+        click(dialog, LoadProblemsDialog.KEEP);
+
+        await("the dialog to close", () -> !dialog.isShowing());
+        assertThat(gizmoNames()).containsExactly("S1", "C1");
+        assertThat(onEdt(() -> window.session().file())).contains(dir.resolve("good.txt"));
+        assertThat(onEdt(() -> window.session().board().balls())).hasSize(1);
+    }
+
+    @Test
+    void aBadFileCanBeLoadedWithoutItsBadLines() throws Exception {
+        window = GameWindow.launch(null);
+        Path bad = write("bad.txt", BAD);
+
+        SwingUtilities.invokeLater(() -> window.fileCommands().open(bad));
+        click(awaitProblemsDialog(), LoadProblemsDialog.SKIP);
+
+        await("the good lines to load", () -> window.session().board().gizmos().size() == 2);
+        assertThat(gizmoNames()).containsExactly("S1", "C1");
+        assertThat(onEdt(() -> window.statusLine().message())).contains("bad.txt", "2 bad lines");
+    }
+
+    @Test
+    void launchOnABadFileShowsTheProblemsOnceTheWindowIsUp() throws Exception {
+        window = GameWindow.launch(write("bad.txt", BAD));
+
+        click(awaitProblemsDialog(), LoadProblemsDialog.KEEP);
+
+        assertThat(gizmoNames()).isEmpty();
+        assertThat(onEdt(() -> window.isShowing())).isTrue();
+    }
+
+    @Test
+    void saveWritesTheDesignThatLoadsBackTheSame() throws Exception {
+        Path file = write("good.txt", GOOD);
+        window = GameWindow.launch(file);
+        for (int i = 0; i < 30; i++) {
+            Gui.clickMenu(window.menus(), "Tick");
+        }
+        onEdt(() -> window.session().markModified());
+
+        Gui.clickMenu(window.menus(), "Save");
+
+        assertThat(onEdt(() -> window.session().isModified())).isFalse();
+        Board saved = BoardFiles.load(file);
+        assertThat(saved.gizmos()).extracting(Gizmo::name).containsExactly("S1", "C1");
+        assertThat(saved.balls()).singleElement()
+                .satisfies(b -> assertThat(b.position().y()).as("the design, not the ball in flight").isEqualTo(5));
+    }
+
+    @Test
+    void reloadReadsTheFileAgain() throws Exception {
+        Path file = write("good.txt", GOOD);
+        window = GameWindow.launch(file);
+        Files.writeString(file, "Square S9 9 9\n");
+
+        Gui.clickMenu(window.menus(), "Reload");
+
+        assertThat(gizmoNames()).containsExactly("S9");
+    }
+
+    @Test
+    void aMissingFileIsReportedAndTheBoardKept() throws Exception {
+        window = GameWindow.launch(write("good.txt", GOOD));
+
+        SwingUtilities.invokeLater(() -> window.fileCommands().open(dir.resolve("missing.txt")));
+        await("an error message", () -> window.statusLine().message().contains("missing.txt"));
+        assertThat(onEdt(() -> window.statusLine().message())).contains("no such file");
+        for (Window w : Window.getWindows()) {
+            if (w instanceof JDialog d && d.isShowing()) {
+                onEdt(d::dispose);
+            }
+        }
+        assertThat(gizmoNames()).containsExactly("S1", "C1");
+    }
+
+    @Test
+    void newAsksBeforeDiscardingUnsavedChanges() throws Exception {
+        window = GameWindow.launch(write("good.txt", GOOD));
+        onEdt(() -> window.session().markModified());
+
+        SwingUtilities.invokeLater(() -> Gui.menuItem(window.menus(), "New").doClick(0));
+        await("the unsaved-changes question", () -> unsavedChangesDialog().isPresent());
+        onEdt(() -> Gui.find(unsavedChangesDialog().orElseThrow(), JButton.class, b -> "Discard".equals(b.getText()))
+                .orElseThrow().doClick(0));
+
+        await("the new board", () -> window.session().board().gizmos().isEmpty());
+        assertThat(onEdt(() -> window.session().isModified())).isFalse();
+    }
+
+    private Optional<JDialog> unsavedChangesDialog() {
+        return Arrays.stream(Window.getWindows())
+                .filter(w -> w instanceof JDialog d && d.isShowing() && "Unsaved changes".equals(d.getTitle()))
+                .map(JDialog.class::cast)
+                .findFirst();
+    }
+
+    private JDialog awaitProblemsDialog() {
+        await("the problems dialog", () -> Gui.showingWindow("loadProblems").isPresent());
+        return (JDialog) Gui.showingWindow("loadProblems").orElseThrow();
+    }
+
+    private static List<String> problemsListed(JDialog dialog) {
+        return onEdt(() -> {
+            @SuppressWarnings("unchecked")
+            JList<String> list = Gui.find(dialog.getContentPane(), JList.class, l -> true).orElseThrow();
+            List<String> items = new ArrayList<>();
+            for (int i = 0; i < list.getModel().getSize(); i++) {
+                items.add(list.getModel().getElementAt(i));
+            }
+            return items;
+        });
+    }
+
+    private static void click(JDialog dialog, String text) {
+        onEdt(() -> Gui.find(dialog.getContentPane(), JButton.class, b -> text.equals(b.getText()))
+                .orElseThrow().doClick(0));
+    }
+}
