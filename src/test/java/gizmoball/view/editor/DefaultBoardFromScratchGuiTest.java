@@ -1,0 +1,160 @@
+package gizmoball.view.editor;
+
+import gizmoball.boardfile.BoardFiles;
+import gizmoball.controller.Mode;
+import gizmoball.controller.editor.Design;
+import gizmoball.controller.editor.Tool;
+import gizmoball.model.Ball;
+import gizmoball.model.Board;
+import gizmoball.model.Connection;
+import gizmoball.model.Flipper;
+import gizmoball.model.Gizmo;
+import gizmoball.model.Invariants;
+import gizmoball.model.KeyBinding;
+import gizmoball.model.KeyEdge;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import javax.swing.JMenuItem;
+import javax.swing.JTextField;
+import java.awt.event.KeyEvent;
+import java.nio.file.Path;
+import java.util.HashMap;
+import java.util.Map;
+
+import static gizmoball.view.editor.EditorGui.onEdt;
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
+
+/**
+ * The issue's "done when": a board author makes the shipped default board from scratch in the editor (palette,
+ * clicks, drags, Rotate, Connect, Key Connect with its popup, the properties panel), saves it, loads it back
+ * unchanged, and plays it. The editor picks its own names, so the comparison with boards/default.txt maps them.
+ */
+class DefaultBoardFromScratchGuiTest {
+    private BuildWindow w;
+
+    @AfterEach
+    void close() {
+        if (w != null) {
+            w.close();
+        }
+    }
+
+    @Test
+    void theDefaultBoardCanBeBuiltByHandSavedReloadedAndPlayed(@TempDir Path dir) throws Exception {
+        Board target = BoardFiles.load(Path.of("boards", "default.txt"));
+        w = BuildWindow.open();
+        Map<String, String> editorName = new HashMap<>();
+
+        // One event-thread task for the whole replay: the same events, without a thread hand-over per click.
+        onEdt(() -> {
+            for (Gizmo g : target.gizmos()) {
+                place(g);
+                editorName.put(g.name(), w.build.controller().selected().orElseThrow());
+            }
+            for (Ball b : target.balls()) {
+                w.clickTool(Tool.BALL);
+                w.drag(b.position().x(), b.position().y(), b.position().x() + b.velocity().x() / 10,
+                        b.position().y() + b.velocity().y() / 10);
+                editorName.put(b.name(), w.build.controller().selected().orElseThrow());
+            }
+            editorName.put(Board.OUTER_WALLS, Board.OUTER_WALLS);
+            for (Connection c : target.connections()) {
+                w.clickTool(Tool.CONNECT);
+                clickOn(target, c.source());
+                clickOn(target, c.target());
+            }
+        });
+        for (KeyBinding k : target.keyBindings()) {
+            w.clickTool(Tool.KEY_CONNECT);
+            clickOn(target, k.gizmo());
+            w.key(k.keyCode());
+            JMenuItem edge = onEdt(() -> EditorGui.showingMenuItem(k.edge() == KeyEdge.DOWN ? "edge.down" : "edge.up"));
+            onEdt(() -> edge.doClick(0));
+        }
+        type("gravity", target.gravity());
+        type("mu", target.mu());
+        type("mu2", target.mu2());
+
+        Board built = w.board;
+        assertThat(renamed(Design.of(built), inverse(editorName))).isEqualTo(Design.of(target));
+
+        Path file = dir.resolve("by-hand.txt");
+        onEdt(() -> {
+            BoardFiles.save(built, file);
+            return null;
+        });
+        Board reloaded = BoardFiles.load(file);
+        assertThat(Design.of(reloaded)).isEqualTo(onEdt(() -> Design.of(built)));
+
+        onEdt(() -> w.session.setMode(Mode.PLAY));
+        String leftFlipper = editorName.get("LF");
+        onEdt(() -> {
+            built.keyDown(KeyEvent.VK_Z);
+            for (int i = 0; i < 60; i++) {
+                built.tick(Board.DEFAULT_TICK);
+            }
+        });
+        assertThat(((Flipper) built.gizmo(leftFlipper).orElseThrow()).angleFromRest()).isCloseTo(90, within(1e-9));
+        assertThat(onEdt(() -> Invariants.violations(built))).isEmpty();
+        // In that second the ball fell 1.5 L from (19.75, 17.5) into the absorber along the bottom.
+        assertThat(onEdt(() -> built.balls().get(0).isCaptured())).isTrue();
+    }
+
+    private void place(Gizmo g) {
+        Tool tool = switch (g.kind()) {
+            case SQUARE -> Tool.SQUARE;
+            case CIRCLE -> Tool.CIRCLE;
+            case TRIANGLE -> Tool.TRIANGLE;
+            case LEFT_FLIPPER -> Tool.LEFT_FLIPPER;
+            case RIGHT_FLIPPER -> Tool.RIGHT_FLIPPER;
+            case ABSORBER -> Tool.ABSORBER;
+        };
+        w.clickTool(tool);
+        w.dragCells(g.x(), g.y(), g.x() + g.width() - 1, g.y() + g.height() - 1);
+        if (g.rotation() > 0) {
+            w.clickTool(Tool.ROTATE);
+            for (int i = 0; i < g.rotation(); i++) {
+                w.clickCell(g.x(), g.y());
+            }
+        }
+    }
+
+    /** Clicks a gizmo of the target board where it stands, or just left of the board for the outer walls. */
+    private void clickOn(Board target, String name) {
+        if (name.equals(Board.OUTER_WALLS)) {
+            w.click(-0.5, Board.SIZE / 2.0);
+        } else {
+            Gizmo g = target.gizmo(name).orElseThrow();
+            w.clickCell(g.x(), g.y());
+        }
+    }
+
+    private void type(String field, double value) {
+        JTextField f = onEdt(() -> EditorGui.find(w.build.properties(), JTextField.class, field));
+        onEdt(() -> {
+            f.setText(Double.toString(value));
+            f.postActionEvent();
+        });
+    }
+
+    private static Map<String, String> inverse(Map<String, String> map) {
+        Map<String, String> inverse = new HashMap<>();
+        map.forEach((k, v) -> inverse.put(v, k));
+        return inverse;
+    }
+
+    private static Design renamed(Design d, Map<String, String> name) {
+        return new Design(
+                d.gizmos().stream().map(g -> new Design.GizmoState(name.get(g.name()), g.kind(), g.x(), g.y(),
+                        g.width(), g.height(), g.rotation())).toList(),
+                d.balls().stream().map(b -> new Design.BallState(name.get(b.name()), b.x(), b.y(), b.vx(), b.vy()))
+                        .toList(),
+                d.connections().stream().map(c -> new Connection(name.get(c.source()), name.get(c.target())))
+                        .toList(),
+                d.keys().stream().map(k -> new KeyBinding(k.keyCode(), k.edge(), name.get(k.gizmo()))).toList(),
+                d.gravity(), d.mu(), d.mu2());
+    }
+}
