@@ -14,7 +14,8 @@ import java.util.Locale;
  * The benchmark: every scene with every method (cost and error), the scaling runs and the soak; a table
  * on standard output, CSV and PNG charts in the output directory.
  * <p>
- * Arguments: {@code [--quick] --scripts DIR --out DIR}. {@code --quick} takes fewer and shorter timing
+ * Arguments: {@code [--quick] --scripts DIR --boards DIR --out DIR} (key scripts, the game's sample boards,
+ * where to write). {@code --quick} takes fewer and shorter timing
  * samples, shorter scaling runs and a shorter soak, for a smoke run under two minutes.
  */
 public final class BenchMain {
@@ -31,14 +32,16 @@ public final class BenchMain {
     public static void main(String[] args) throws IOException {
         Effort effort = Effort.FULL;
         Path scripts = Path.of("bench");
+        Path boards = Path.of("boards");
         Path out = Path.of("build/reports/bench");
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
                 case "--quick" -> effort = Effort.QUICK;
                 case "--scripts" -> scripts = Path.of(args[++i]);
+                case "--boards" -> boards = Path.of(args[++i]);
                 case "--out" -> out = Path.of(args[++i]);
                 default -> throw new IllegalArgumentException("unknown argument " + args[i]
-                        + "; usage: [--quick] [--scripts DIR] [--out DIR]");
+                        + "; usage: [--quick] [--scripts DIR] [--boards DIR] [--out DIR]");
             }
         }
         Files.createDirectories(out);
@@ -64,7 +67,10 @@ public final class BenchMain {
         }
 
         stdout.println("scaling runs");
-        List<ScalingPoint> scaling = Scaling.run(effort.scalingSeconds(), effort.samples(), effort.minSampleNanos());
+        List<ScalingPoint> scaling = new ArrayList<>(Scaling.run(effort.scalingSeconds(), effort.samples(),
+                effort.minSampleNanos()));
+        scaling.addAll(Scaling.shippedStressBoard(boards.resolve("stress.txt"), effort.scalingSeconds(), effort.samples(),
+                effort.minSampleNanos()));
         Report.printScaling(stdout, scaling);
         Report.writeScaling(out.resolve("scaling.csv"), scaling);
         Charts.scaling(out, scaling);

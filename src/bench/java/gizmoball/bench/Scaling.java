@@ -1,5 +1,12 @@
 package gizmoball.bench;
 
+import gizmoball.boardfile.BoardFileException;
+import gizmoball.boardfile.BoardFiles;
+import gizmoball.model.Board;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
@@ -16,7 +23,6 @@ final class Scaling {
     static final int BALLS_WHILE_GIZMOS_GROW = 20;
     static final int GIZMOS_WHILE_BALLS_GROW = 100;
     static final int STRESS_GIZMOS = 300;
-    static final int STRESS_BALLS = 20;
     private static final long SEED = 300;
 
     private Scaling() {
@@ -42,6 +48,35 @@ final class Scaling {
         Scene scene = board(gizmos, balls, seconds);
         long nanos = Runner.medianCpuNanos(scene, Method.GAME_DEFAULT, index, samples, minSampleNanos);
         return new ScalingPoint(axis, gizmos, balls, index, nanos / 1e3 / scene.ticks(Method.GAME_DEFAULT));
+    }
+
+    /**
+     * The stress board the game ships (boards/stress.txt, loaded by the game's loader), with the index on
+     * and off: as many gizmos as the random boards' stress size, but in the bands and shafts a person laid out.
+     */
+    static List<ScalingPoint> shippedStressBoard(Path file, double seconds, int samples, long minSampleNanos)
+            throws IOException {
+        String text = Files.readString(file);
+        String name = file.getFileName().toString();
+        Board probe = load(file.toString(), text);
+        int gizmos = probe.gizmos().size();
+        int balls = probe.balls().size();
+        Scene scene = new Scene(name, seconds, () -> load(file.toString(), text), KeyScript.NONE, Optional.empty(),
+                Optional.empty());
+        List<ScalingPoint> points = new ArrayList<>();
+        for (boolean index : new boolean[] {true, false}) {
+            long nanos = Runner.medianCpuNanos(scene, Method.GAME_DEFAULT, index, samples, minSampleNanos);
+            points.add(new ScalingPoint(name, gizmos, balls, index, nanos / 1e3 / scene.ticks(Method.GAME_DEFAULT)));
+        }
+        return points;
+    }
+
+    private static Board load(String source, String text) {
+        try {
+            return BoardFiles.load(source, text);
+        } catch (BoardFileException e) {
+            throw new IllegalStateException("the shipped stress board does not load: " + e.getMessage(), e);
+        }
     }
 
     static Scene board(int gizmos, int balls, double seconds) {
