@@ -159,7 +159,7 @@ final class BoardFileCommands {
     }
 
     private static List<String> describe(List<BoardFileError> errors) {
-        return errors.stream().map(e -> "line " + e.line() + ": " + e.reason() + ":   " + e.text().strip()).toList();
+        return errors.stream().map(e -> "line " + e.line() + ": " + e.text().strip() + "   <- " + e.reason()).toList();
     }
 
     private static String reason(IOException e) {

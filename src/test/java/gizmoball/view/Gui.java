@@ -17,19 +17,22 @@ import javax.swing.JMenuBar;
 import javax.swing.JMenuItem;
 import javax.swing.SwingUtilities;
 
-/** Helpers for the tests that open real windows: skip without a display, run on the EDT, wait for conditions. */
-final class Gui {
+/**
+ * Helpers for the tests that open real windows: skip without a display, run on the EDT, wait for conditions.
+ * Public so that build mode's GUI tests (gizmoball.view.editor) use them too instead of a copy.
+ */
+public final class Gui {
     private static final long PATIENCE_MILLIS = 5000;
 
     private Gui() {
     }
 
-    static void assumeDisplay() {
+    public static void assumeDisplay() {
         assumeFalse(GraphicsEnvironment.isHeadless(),
                 "GUI test skipped: no display (run under xvfb-run, as .ci/run does)");
     }
 
-    static <T> T onEdt(Callable<T> body) {
+    public static <T> T onEdt(Callable<T> body) {
         if (SwingUtilities.isEventDispatchThread()) {
             try {
                 return body.call();
@@ -57,7 +60,7 @@ final class Gui {
         return t;
     }
 
-    static void onEdt(Runnable body) {
+    public static void onEdt(Runnable body) {
         onEdt(() -> {
             body.run();
             return null;
@@ -65,7 +68,7 @@ final class Gui {
     }
 
     /** Waits until {@code condition} (evaluated on the EDT) holds; fails with {@code what} after a few seconds. */
-    static void await(String what, BooleanSupplier condition) {
+    public static void await(String what, BooleanSupplier condition) {
         long deadline = System.currentTimeMillis() + PATIENCE_MILLIS;
         while (!onEdt(condition::getAsBoolean)) {
             if (System.currentTimeMillis() > deadline) {
@@ -75,7 +78,7 @@ final class Gui {
         }
     }
 
-    static void sleep(long millis) {
+    public static void sleep(long millis) {
         try {
             Thread.sleep(millis);
         } catch (InterruptedException e) {
@@ -85,11 +88,11 @@ final class Gui {
     }
 
     /** Clicks the menu item with that text, as a player would (through its action). */
-    static void clickMenu(JMenuBar menus, String text) {
+    public static void clickMenu(JMenuBar menus, String text) {
         onEdt(() -> menuItem(menus, text).doClick(0));
     }
 
-    static JMenuItem menuItem(JMenuBar menus, String text) {
+    public static JMenuItem menuItem(JMenuBar menus, String text) {
         for (int i = 0; i < menus.getMenuCount(); i++) {
             JMenu menu = menus.getMenu(i);
             for (int j = 0; j < menu.getItemCount(); j++) {
@@ -102,7 +105,7 @@ final class Gui {
         throw new AssertionError("no menu item " + text);
     }
 
-    static Optional<Window> showingWindow(String name) {
+    public static Optional<Window> showingWindow(String name) {
         return onEdt(() -> {
             for (Window w : Window.getWindows()) {
                 if (w.isShowing() && name.equals(w.getName())) {
@@ -114,7 +117,7 @@ final class Gui {
     }
 
     /** The first component of that type inside {@code root} (depth first) that {@code which} accepts. */
-    static <C extends Component> Optional<C> find(Container root, Class<C> type, Predicate<C> which) {
+    public static <C extends Component> Optional<C> find(Container root, Class<C> type, Predicate<C> which) {
         for (Component c : root.getComponents()) {
             if (type.isInstance(c) && which.test(type.cast(c))) {
                 return Optional.of(type.cast(c));
