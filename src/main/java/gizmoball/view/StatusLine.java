@@ -51,6 +51,11 @@ public final class StatusLine extends JPanel {
         return message.getText();
     }
 
+    /** Everything the line says, as one string. */
+    public String text() {
+        return String.join("   ", board.getText(), state.getText(), time.getText(), fps.getText(), message.getText());
+    }
+
     private static void setText(JLabel label, String text) {
         if (!text.equals(label.getText())) {
             label.setText(text);

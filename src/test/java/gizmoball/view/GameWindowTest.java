@@ -83,6 +83,22 @@ class GameWindowTest {
     }
 
     @Test
+    void theStatusLineShowsTheBoardItsStateAndTheSimulatedTime() {
+        for (int i = 0; i < 3; i++) {
+            clickMenu(window.menus(), "Tick");
+        }
+        await("the status line to show 3 ticks", () -> statusText().contains("t = 0.05 s"));
+        assertThat(statusText()).contains("untitled", "Play - stopped");
+
+        clickMenu(window.menus(), "Start");
+        await("the status line to say running", () -> statusText().contains("Play - running"));
+    }
+
+    private String statusText() {
+        return onEdt(() -> window.statusLine().text());
+    }
+
+    @Test
     void resetPutsTheBallBackWhereTheBoardStarted() {
         for (int i = 0; i < 20; i++) {
             clickMenu(window.menus(), "Tick");
