@@ -11,6 +11,7 @@ import gizmoball.model.Gizmo;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
+import gizmoball.view.Gui;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -29,8 +30,8 @@ import java.awt.event.KeyEvent;
 import java.util.ArrayList;
 import java.util.List;
 
-import static gizmoball.view.editor.EditorGui.await;
-import static gizmoball.view.editor.EditorGui.onEdt;
+import static gizmoball.view.Gui.await;
+import static gizmoball.view.Gui.onEdt;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
@@ -175,8 +176,8 @@ class BuildModeGuiTest {
         w.clickTool(Tool.SQUARE);
         w.clickCell(1, 1);
         w.clickCell(2, 1);
-        JMenuItem undo = onEdt(() -> EditorGui.menuItem(w.window.menus(), "Undo"));
-        JMenuItem redo = onEdt(() -> EditorGui.menuItem(w.window.menus(), "Redo"));
+        JMenuItem undo = onEdt(() -> Gui.menuItem(w.window.menus(), "Undo"));
+        JMenuItem redo = onEdt(() -> Gui.menuItem(w.window.menus(), "Redo"));
         assertThat(onEdt(redo::isEnabled)).isFalse();
 
         onEdt(() -> undo.doClick(0));

@@ -6,6 +6,7 @@ import gizmoball.controller.editor.Tool;
 import gizmoball.model.Board;
 import gizmoball.view.BoardPanel;
 import gizmoball.view.GameWindow;
+import gizmoball.view.Gui;
 
 import java.awt.Component;
 import java.awt.Point;
@@ -16,8 +17,8 @@ import java.awt.event.MouseEvent;
 import java.awt.geom.Point2D;
 import java.util.List;
 
-import static gizmoball.view.editor.EditorGui.await;
-import static gizmoball.view.editor.EditorGui.onEdt;
+import static gizmoball.view.Gui.await;
+import static gizmoball.view.Gui.onEdt;
 
 /**
  * A game window with build mode installed and switched on, and the gestures of a board author: palette
@@ -42,7 +43,7 @@ final class BuildWindow {
 
     /** Opens one (skipping the test, with the reason, when there is no display). */
     static BuildWindow open() {
-        EditorGui.assumeDisplay();
+        Gui.assumeDisplay();
         return new BuildWindow();
     }
 
