@@ -30,15 +30,23 @@ final class CollisionDetector {
     private final Board board;
     private final Set<Flipper> stoppedFlippers;
     private final Set<Ball> stoppedBalls;
+    private final Set<Touch> settled;
+
+    /** A ball touching what it would hit. */
+    record Touch(Ball ball, Contact contact) {
+    }
 
     /**
      * @param stoppedFlippers flippers held still for the rest of the tick (pinched balls), treated as fixed
      * @param stoppedBalls    balls that move no more this tick, treated as at rest
+     * @param settled         touches whose zero-time collision was resolved without changing any velocity: they
+     *                        close at a rounding of the velocity, so a zero-time collision of theirs is no collision
      */
-    CollisionDetector(Board board, Set<Flipper> stoppedFlippers, Set<Ball> stoppedBalls) {
+    CollisionDetector(Board board, Set<Flipper> stoppedFlippers, Set<Ball> stoppedBalls, Set<Touch> settled) {
         this.board = board;
         this.stoppedFlippers = stoppedFlippers;
         this.stoppedBalls = stoppedBalls;
+        this.settled = settled;
     }
 
     /** The velocity the ball moves with for the rest of the tick. */
@@ -61,7 +69,18 @@ final class CollisionDetector {
             return;   // cannot close the gap within the window
         }
         double time = Geometry.timeUntilBallBallCollision(ball.circle(), motion(ball), other.circle(), motion(other));
-        earliest.offer(time, ball, new Contact.OtherBall(other), true);
+        offer(earliest, time, ball, new Contact.OtherBall(other), true);
+    }
+
+    /**
+     * Offers a collision unless it is a settled touch at zero time: resolving it again would change nothing, and
+     * the loop would meet it again and again without time passing.
+     */
+    private void offer(Earliest earliest, double time, Ball ball, Contact contact, boolean circle) {
+        if (time <= TickRun.ZERO_TIME && settled.contains(new Touch(ball, contact))) {
+            return;
+        }
+        earliest.offer(time, ball, contact, circle);
     }
 
     boolean isMoving(Flipper flipper) {
@@ -74,7 +93,7 @@ final class CollisionDetector {
         boolean still = velocity.x() == 0 && velocity.y() == 0;
         if (!still) {
             for (LineSegment wall : OUTER_WALLS) {
-                earliest.offer(Geometry.timeUntilWallCollision(wall, circle, velocity), ball,
+                offer(earliest, Geometry.timeUntilWallCollision(wall, circle, velocity), ball,
                         new Contact.Wall(wall, null), false);
             }
         }
@@ -100,18 +119,18 @@ final class CollisionDetector {
     }
 
     /** A shape that does not move; {@code delay}: the ball's circle is where the ball will be after that time. */
-    private static void againstFixedShape(Ball ball, Circle circle, Vect velocity, double delay, GizmoBase gizmo,
-                                          Shape shape, Earliest earliest) {
+    private void againstFixedShape(Ball ball, Circle circle, Vect velocity, double delay, GizmoBase gizmo,
+                                   Shape shape, Earliest earliest) {
         List<LineSegment> segments = shape.segments();
         for (int i = 0; i < segments.size(); i++) {
             double time = delay + Geometry.timeUntilWallCollision(segments.get(i), circle, velocity);
-            earliest.offer(time, ball, gizmo instanceof Flipper flipper ? new Contact.FlipperPart(flipper, false, i)
+            offer(earliest, time, ball, gizmo instanceof Flipper flipper ? new Contact.FlipperPart(flipper, false, i)
                     : new Contact.Wall(segments.get(i), gizmo), false);
         }
         List<Circle> circles = shape.circles();
         for (int i = 0; i < circles.size(); i++) {
             double time = delay + Geometry.timeUntilCircleCollision(circles.get(i), circle, velocity);
-            earliest.offer(time, ball, gizmo instanceof Flipper flipper ? new Contact.FlipperPart(flipper, true, i)
+            offer(earliest, time, ball, gizmo instanceof Flipper flipper ? new Contact.FlipperPart(flipper, true, i)
                     : new Contact.Round(circles.get(i), gizmo), true);
         }
     }
@@ -132,14 +151,14 @@ final class CollisionDetector {
         for (int i = 0; i < now.segments().size(); i++) {
             double time = rotating.timeUntilRotatingWallCollision(now.segments().get(i), pivot, omega, circle, velocity);
             if (time <= swingLeft) {
-                earliest.offer(time, ball, new Contact.FlipperPart(flipper, false, i), false);
+                offer(earliest, time, ball, new Contact.FlipperPart(flipper, false, i), false);
             }
         }
         for (int i = 0; i < now.circles().size(); i++) {
             double time = rotating.timeUntilRotatingCircleCollision(now.circles().get(i), pivot, omega, circle,
                     velocity);
             if (time <= swingLeft) {
-                earliest.offer(time, ball, new Contact.FlipperPart(flipper, true, i), true);
+                offer(earliest, time, ball, new Contact.FlipperPart(flipper, true, i), true);
             }
         }
         boolean still = velocity.x() == 0 && velocity.y() == 0;

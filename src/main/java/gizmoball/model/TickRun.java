@@ -26,8 +26,10 @@ import physics.Vect;
  *
  * <p>Resting contact (pitfall 11): a ball meeting a fixed surface more slowly than about two ticks of gravity
  * loses its normal velocity instead of bouncing, so a ball lying on a surface sees one zero-time collision per
- * tick, keeps its position and ends the tick at rest on it. Guards bound the work of a tick: a ball with many
- * zero-time collisions in one tick is wedged and stops; a flipper hitting the same ball again and again in one
+ * tick, keeps its position and ends the tick at rest on it. Guards bound the work of a tick: a touch whose
+ * zero-time collision changed no velocity (it closes at a rounding of the velocity) is settled and not met again
+ * at zero time until its balls' velocities change; a ball with many zero-time collisions in one tick is wedged
+ * and stops (also against a flipper held still); a flipper hitting the same ball again and again in one
  * tick is pinching it against something and is held still for the rest of the tick; a tick with an absurd number
  * of collisions ends early (nothing moves any further, so nothing overlaps).
  *
@@ -39,7 +41,7 @@ import physics.Vect;
  */
 final class TickRun {
     /** A collision sooner than this after the previous one counts as zero-time. */
-    private static final double ZERO_TIME = 1e-12;
+    static final double ZERO_TIME = 1e-12;
     private static final int ZERO_TIME_HITS_BEFORE_WEDGED = 8;
     private static final int FLIPPER_HITS_BEFORE_PINCHED = 3;
     private static final int MAX_COLLISIONS_BASE = 500;
@@ -58,6 +60,7 @@ final class TickRun {
     private final Set<Flipper> stoppedFlippers = new HashSet<>();
     private final CollisionDetector detector;
     private final CollisionSchedule schedule;
+    private final Set<CollisionDetector.Touch> settled = new HashSet<>();
     private final Map<Ball, Integer> zeroTimeHits = new HashMap<>();
     private final Map<List<Object>, Integer> flipperHits = new HashMap<>();
     /** SEED: balls that have had their collision this tick and move no more. */
@@ -76,7 +79,7 @@ final class TickRun {
         this.dt = dt;
         this.startTime = board.time();
         this.restSpeed = Math.max(MIN_REST_SPEED, REST_TICKS_OF_GRAVITY * Math.abs(board.gravity()) * dt);
-        this.detector = new CollisionDetector(board, stoppedFlippers, finished);
+        this.detector = new CollisionDetector(board, stoppedFlippers, finished, settled);
         this.schedule = new CollisionSchedule(detector);
     }
 
@@ -93,7 +96,10 @@ final class TickRun {
             }
             stage2BallMotion(collision.time());
             remaining -= collision.time();
+            List<Ball> involved = ballsOf(collision);
+            List<Vect> before = velocitiesOf(involved);
             String hit = stage4CollisionResolution(collision);
+            settleOrUnsettle(collision, involved, before);
             forgetWhatChanged(collision);
             if (hit != null) {
                 stage5Triggering(hit);
@@ -180,7 +186,7 @@ final class TickRun {
                 GizmoBase target = board.gizmoBase(connection.target());
                 if (target != null) {
                     board.performAction(target, now);
-                    schedule.forgetAll();   // a flipper turned round or an absorber fired: the scene changed
+                    sceneChanged();   // a flipper turned round or an absorber fired
                 }
             }
         }
@@ -255,7 +261,7 @@ final class TickRun {
         }
         if (countFlipperHit(ball, flipper)) {
             stoppedFlippers.add(flipper);   // the ball is pinched: hold the flipper rather than push it through
-            schedule.forgetAll();
+            sceneChanged();
         }
         return flipper.name();
     }
@@ -276,6 +282,38 @@ final class TickRun {
         bouncedElastically.add(other);
         ballPairs.add(List.of(ball, other));
         return null;
+    }
+
+    private void sceneChanged() {
+        schedule.forgetAll();
+        settled.clear();
+    }
+
+    private static List<Ball> ballsOf(Collision collision) {
+        return collision.contact() instanceof Contact.OtherBall other ? List.of(collision.ball(), other.other())
+                : List.of(collision.ball());
+    }
+
+    private static List<Vect> velocitiesOf(List<Ball> balls) {
+        return balls.stream().map(Ball::velocity).toList();
+    }
+
+    /**
+     * A zero-time collision whose resolution left every velocity as it was closes at a rounding of the velocity
+     * (the reflection's change fell below the last digit): detection would report it again at once, for ever,
+     * with no time passing. It is settled: the detector skips its zero-time collisions until a velocity of its
+     * balls changes. A swinging flipper is never settled, it turns on into the ball (the pinch guard bounds it).
+     */
+    private void settleOrUnsettle(Collision collision, List<Ball> involved, List<Vect> before) {
+        if (!velocitiesOf(involved).equals(before)) {
+            settled.removeIf(touch -> involved.contains(touch.ball())
+                    || touch.contact() instanceof Contact.OtherBall other && involved.contains(other.other()));
+        } else if (collision.time() <= ZERO_TIME && !isSwingingFlipper(collision.contact())) {
+            settled.add(new CollisionDetector.Touch(collision.ball(), collision.contact()));
+            if (collision.contact() instanceof Contact.OtherBall other) {
+                settled.add(new CollisionDetector.Touch(other.other(), new Contact.OtherBall(collision.ball())));
+            }
+        }
     }
 
     /** The balls of a resolved collision move differently now: stage 3 asks about them again. */
@@ -353,7 +391,7 @@ final class TickRun {
     }
 
     private boolean isSwingingFlipper(Contact contact) {
-        return contact instanceof Contact.FlipperPart part && part.flipper().isMoving();
+        return contact instanceof Contact.FlipperPart part && detector.isMoving(part.flipper());
     }
 
     /** Counts a zero-time collision of the ball; true once it has had too many this tick. */

@@ -39,7 +39,7 @@ class CollisionScheduleTest {
             }
         }
         List<Ball> free = new ArrayList<>(board.balls());
-        CollisionDetector detector = new CollisionDetector(board, Set.of(), Set.of());
+        CollisionDetector detector = new CollisionDetector(board, Set.of(), Set.of(), Set.of());
         CollisionSchedule schedule = new CollisionSchedule(detector);
         double tick = 0.25;
         double elapsed = 0;
