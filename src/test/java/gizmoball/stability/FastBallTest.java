@@ -32,10 +32,7 @@ class FastBallTest {
     @ParameterizedTest
     @EnumSource(LoopMode.class)
     void topSpeedAtThinCornersBouncesBack(LoopMode mode) {
-        Board board = new Board();
-        board.setLoopMode(mode);
-        board.setGravity(0);
-        board.setFriction(0, 0);
+        Board board = FreeSpace.board(mode);
         board.addGizmo(GizmoKind.TRIANGLE, "T", 10, 5);   // corners (10,5), (11,5), (10,6): tip (11,5) points right
         board.addGizmo(GizmoKind.SQUARE, "S", 10, 14);
         board.addBall("atTip", 18, 5.1, -Board.MAX_SPEED, 0);

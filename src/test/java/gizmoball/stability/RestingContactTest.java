@@ -73,10 +73,7 @@ class RestingContactTest {
     @ParameterizedTest
     @EnumSource(LoopMode.class)
     void ballGlidingAlongAWallIsNotDeflected(LoopMode mode) {
-        Board board = new Board();
-        board.setLoopMode(mode);
-        board.setGravity(0);
-        board.setFriction(0, 0);
+        Board board = FreeSpace.board(mode);
         board.addBall("glider", R, 1, 0, 9);
         // 120 ticks: 18 L down the wall, short of the floor.
         new Watch("gliding along the left wall", board, DT).run(120, (tick, b) -> {

@@ -22,19 +22,11 @@ class SimultaneousCollisionTest {
     private static final double DT = Board.DEFAULT_TICK;
     private static final double R = Board.BALL_RADIUS;
 
-    private static Board frictionless(LoopMode mode) {
-        Board board = new Board();
-        board.setLoopMode(mode);
-        board.setGravity(0);
-        board.setFriction(0, 0);
-        return board;
-    }
-
     /** Into the board's bottom-right corner along the diagonal: both walls at once, straight back out. */
     @ParameterizedTest
     @EnumSource(LoopMode.class)
     void ballIntoTheBoardCornerComesStraightBack(LoopMode mode) {
-        Board board = frictionless(mode);
+        Board board = FreeSpace.board(mode);
         board.addBall("B", 15.3, 15.3, 6, 6);
         new Watch("board corner", board, DT).run(180, (tick, b) -> {
             Ball ball = b.balls().get(0);
@@ -52,7 +44,7 @@ class SimultaneousCollisionTest {
     @ParameterizedTest
     @EnumSource(LoopMode.class)
     void ballIntoTheCornerBetweenTwoSquaresComesStraightBack(LoopMode mode) {
-        Board board = frictionless(mode);
+        Board board = FreeSpace.board(mode);
         board.addGizmo(GizmoKind.SQUARE, "A", 9, 10);
         board.addGizmo(GizmoKind.SQUARE, "B", 10, 9);
         board.addBall("ball", 12.4, 12.4, -5, -5);
@@ -72,7 +64,7 @@ class SimultaneousCollisionTest {
     @ParameterizedTest
     @EnumSource(LoopMode.class)
     void ballStrikingTwoTouchingBallsConservesMomentumAndEnergy(LoopMode mode) {
-        Board board = frictionless(mode);
+        Board board = FreeSpace.board(mode);
         board.addBall("upper", 10, 10 - R, 0, 0);
         board.addBall("lower", 10, 10 + R, 0, 0);
         board.addBall("striker", 5, 10, 10, 0);

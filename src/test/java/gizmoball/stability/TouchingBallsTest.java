@@ -19,19 +19,11 @@ class TouchingBallsTest {
     private static final double DT = Board.DEFAULT_TICK;
     private static final double R = Board.BALL_RADIUS;
 
-    private static Board frictionless(LoopMode mode) {
-        Board board = new Board();
-        board.setLoopMode(mode);
-        board.setGravity(0);
-        board.setFriction(0, 0);
-        return board;
-    }
-
     /** Touching and closing head-on: equal masses swap velocities at once, in the first tick. */
     @ParameterizedTest
     @EnumSource(LoopMode.class)
     void touchingAndClosingSwapVelocitiesInTheFirstTick(LoopMode mode) {
-        Board board = frictionless(mode);
+        Board board = FreeSpace.board(mode);
         board.addBall("left", 10 - R, 10, 4, 0);
         board.addBall("right", 10 + R, 10, -4, 0);
         new Watch("touching head-on", board, DT).run(1);
@@ -44,7 +36,7 @@ class TouchingBallsTest {
     @ParameterizedTest
     @EnumSource(LoopMode.class)
     void touchingAndSeparatingFlyApartUntouched(LoopMode mode) {
-        Board board = frictionless(mode);
+        Board board = FreeSpace.board(mode);
         board.addBall("left", 10 - R, 10, -3, 1);
         board.addBall("right", 10 + R, 10, 3, -1);
         // 60 ticks = 1 s: 3 L each way, no wall reached.
@@ -85,7 +77,7 @@ class TouchingBallsTest {
     @ParameterizedTest
     @EnumSource(LoopMode.class)
     void touchingRowDrivenIntoAWall(LoopMode mode) {
-        Board board = frictionless(mode);
+        Board board = FreeSpace.board(mode);
         board.addBall("a", 15, 10, 7, 0);
         board.addBall("b", 15 + 2 * R, 10, 7, 0);
         board.addBall("c", 15 + 4 * R, 10, 7, 0);
