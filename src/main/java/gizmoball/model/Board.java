@@ -28,9 +28,6 @@ public final class Board {
     public static final double ABSORBER_LAUNCH_SPEED = 50;
     public static final String OUTER_WALLS = "OuterWalls";
 
-    /** Overlap below this is touching, which placements allow (two balls may touch, a ball may rest on a gizmo). */
-    static final double TOUCH_TOLERANCE = 1e-9;
-
     private final Map<String, GizmoBase> gizmos = new LinkedHashMap<>();
     private final Map<String, Ball> balls = new LinkedHashMap<>();
     private final List<Connection> connections = new ArrayList<>();
@@ -40,9 +37,15 @@ public final class Board {
     private double mu = DEFAULT_MU;
     private double mu2 = DEFAULT_MU2;
     private double time;
-    private LoopMode loopMode = LoopMode.CONTINUOUS;
     private boolean spatialIndexEnabled = true;
+    private LoopMode loopMode = LoopMode.CONTINUOUS;
     private final List<BoardObserver> observers = new CopyOnWriteArrayList<>();
+    private final Sleepers sleepers = new Sleepers(balls.values());
+    private final List<PlayEvent> pendingEvents = new ArrayList<>();
+    private TickReport lastTick = TickReport.NONE;
+    private GuardCounts guardsFired = GuardCounts.NONE;
+    private long lastRedrawNanos;
+    private double nextCollisionLookAhead;
 
     /** An empty board with default gravity and friction at time 0. */
     public Board() {
@@ -99,7 +102,7 @@ public final class Board {
         };
         refuseIfPresent(problemFor(candidate, null));
         insert(candidate);
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     /** Adds an absorber covering the cells from (x1, y1) to the exclusive corner (x2, y2). */
@@ -113,7 +116,7 @@ public final class Board {
         refuseIfPresent(problemFor(candidate, null));
         insert(candidate);
         captureFreeBallsIn(candidate);
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     /**
@@ -133,7 +136,7 @@ public final class Board {
         if (captor != null) {
             capture(ball, captor);
         }
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     /** Turns a gizmo 90 degrees clockwise within its footprint; circles and absorbers stay as they are. */
@@ -146,7 +149,7 @@ public final class Board {
                     + ball));
             target.rotateClockwise();
         }
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     /**
@@ -169,7 +172,7 @@ public final class Board {
         } else {
             throw new BoardEditException("cannot delete " + name + ": no gizmo or ball named " + name);
         }
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     /** Moves a gizmo to a new top-left cell, with the same checks as adding it there. */
@@ -185,7 +188,7 @@ public final class Board {
             absorber.held().forEach(held -> balls.get(held).capture(absorber.holdingPosition()));
             captureFreeBallsIn(absorber);
         }
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     /** Moves a ball's centre, with the same checks as adding it there; its velocity is kept unless captured. */
@@ -205,7 +208,7 @@ public final class Board {
         if (captor != null) {
             capture(target, captor);
         }
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     /** Whenever source (a gizmo or OUTER_WALLS) is hit, target performs its action. Self-connections allowed. */
@@ -217,14 +220,14 @@ public final class Board {
             throw new BoardEditException("connection " + source + " -> " + target + " already exists");
         }
         connections.add(connection);
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     public void disconnect(String source, String target) {
         if (!connections.remove(new Connection(source, target))) {
             throw new BoardEditException("there is no connection " + source + " -> " + target);
         }
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     public void bindKey(int keyCode, KeyEdge edge, String gizmo) {
@@ -240,14 +243,14 @@ public final class Board {
             throw new BoardEditException("key " + keyCode + " " + edgeName(edge) + " is already bound to " + gizmo);
         }
         keyBindings.add(binding);
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     public void unbindKey(int keyCode, KeyEdge edge, String gizmo) {
         if (!keyBindings.remove(new KeyBinding(keyCode, edge, gizmo))) {
             throw new BoardEditException("key " + keyCode + " " + edgeName(edge) + " is not bound to " + gizmo);
         }
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     public void setGravity(double g) {
@@ -255,7 +258,7 @@ public final class Board {
             throw new BoardEditException("gravity must be a finite number, got " + g);
         }
         gravity = g;
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     public void setFriction(double newMu, double newMu2) {
@@ -264,7 +267,7 @@ public final class Board {
         }
         mu = newMu;
         mu2 = newMu2;
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     /** Removes everything, puts gravity and friction back to their defaults and the time to 0. */
@@ -339,7 +342,7 @@ public final class Board {
     private Optional<String> ballOverlap(GizmoBase candidate) {
         return balls.values().stream()
                 .filter(ball -> !ball.isCaptured())
-                .filter(ball -> candidate.signedDistance(ball.position()) < BALL_RADIUS - TOUCH_TOLERANCE)
+                .filter(ball -> candidate.signedDistance(ball.position()) < BALL_RADIUS - Tolerances.PLACEMENT)
                 .map(Ball::name)
                 .findFirst();
     }
@@ -358,7 +361,7 @@ public final class Board {
                 position.x() + BALL_RADIUS, position.y() + BALL_RADIUS);
         Absorber captor = null;
         for (GizmoBase gizmo : near) {
-            if (gizmo.signedDistance(position) < BALL_RADIUS - TOUCH_TOLERANCE) {
+            if (gizmo.signedDistance(position) < BALL_RADIUS - Tolerances.PLACEMENT) {
                 if (gizmo instanceof Absorber absorber) {
                     captor = absorber;
                 } else {
@@ -369,7 +372,7 @@ public final class Board {
         if (captor == null) {
             for (Ball other : balls.values()) {
                 if (!other.isCaptured() && !other.name().equals(ignoring)
-                        && Math.sqrt(other.position().distanceSquared(position)) < 2 * BALL_RADIUS - TOUCH_TOLERANCE) {
+                        && Math.sqrt(other.position().distanceSquared(position)) < 2 * BALL_RADIUS - Tolerances.PLACEMENT) {
                     throw new BoardEditException(what + " would overlap ball " + other.name());
                 }
             }
@@ -429,7 +432,7 @@ public final class Board {
 
     private void captureFreeBallsIn(Absorber absorber) {
         for (Ball ball : balls.values()) {
-            if (!ball.isCaptured() && absorber.signedDistance(ball.position()) < BALL_RADIUS - TOUCH_TOLERANCE) {
+            if (!ball.isCaptured() && absorber.signedDistance(ball.position()) < BALL_RADIUS - Tolerances.PLACEMENT) {
                 capture(ball, absorber);
             }
         }
@@ -517,7 +520,55 @@ public final class Board {
         if (!Double.isFinite(dt) || dt < 0) {
             throw new IllegalArgumentException("tick length must be finite and not negative, got " + dt);
         }
-        new TickRun(this, dt).run();
+        lastTick = new TickRun(this, dt).run();
+        guardsFired = guardsFired.plus(lastTick.guards());
+        long start = System.nanoTime();
+        notifyObservers(BoardChange.TICK);
+        lastRedrawNanos = System.nanoTime() - start;
+    }
+
+    /** What the last tick did (stage times, collisions, balls awake, events); {@link TickReport#NONE} before any. */
+    public TickReport lastTick() {
+        return lastTick;
+    }
+
+    /** How often each last-resort guard of the loop has fired since this board was made. */
+    public GuardCounts guardsFired() {
+        return guardsFired;
+    }
+
+    /**
+     * How far ahead, in seconds, each tick's report looks for every ball's next collision (0, the default: not at
+     * all). The physics overlay turns it on; it costs a detection pass per ball and tick.
+     */
+    public void setNextCollisionLookAhead(double seconds) {
+        if (!(seconds >= 0) || Double.isInfinite(seconds)) {
+            throw new IllegalArgumentException("look-ahead must be finite and not negative, got " + seconds);
+        }
+        nextCollisionLookAhead = seconds;
+    }
+
+    double nextCollisionLookAhead() {
+        return nextCollisionLookAhead;
+    }
+
+    long lastRedrawNanos() {
+        return lastRedrawNanos;
+    }
+
+    void recordEvent(PlayEvent event) {
+        pendingEvents.add(event);
+    }
+
+    /** The events since the last tick's report, for this tick's. */
+    List<PlayEvent> drainEvents() {
+        List<PlayEvent> events = List.copyOf(pendingEvents);
+        pendingEvents.clear();
+        return events;
+    }
+
+    Sleepers sleepers() {
+        return sleepers;
     }
 
     /** Performs the actions bound to (keyCode, DOWN): flippers swing up, others perform their action. */
@@ -536,11 +587,13 @@ public final class Board {
                 GizmoBase gizmo = gizmos.get(binding.gizmo());
                 if (gizmo instanceof Flipper flipper) {
                     flipper.markTriggered(time);
+                    boolean wasMoving = flipper.isMoving();
                     if (edge == KeyEdge.DOWN) {
                         flipper.activate();
                     } else {
                         flipper.deactivate();
                     }
+                    swung(flipper, wasMoving);
                 } else {
                     performAction(gizmo, time);
                 }
@@ -560,9 +613,23 @@ public final class Board {
     void performAction(GizmoBase gizmo, double now) {
         gizmo.markTriggered(now);
         if (gizmo instanceof Flipper flipper) {
+            boolean wasMoving = flipper.isMoving();
             flipper.toggle();
+            swung(flipper, wasMoving);
         } else if (gizmo instanceof Absorber absorber) {
             fire(absorber);
+        }
+    }
+
+    /**
+     * A flipper that starts to swing wakes every ball in its box (its whole sweep lies there) and what rests on them.
+     */
+    private void swung(Flipper flipper, boolean wasMoving) {
+        if (flipper.isMoving() && !wasMoving) {
+            recordEvent(new PlayEvent.Swing(flipper.name(), flipper.isActive()));
+            double margin = 2 * BALL_RADIUS;
+            sleepers.wakeWithin(flipper.x() - margin, flipper.y() - margin, flipper.x() + flipper.width() + margin,
+                    flipper.y() + flipper.height() + margin);
         }
     }
 
@@ -577,12 +644,15 @@ public final class Board {
         }
         Vect launch = absorber.launchPosition();
         boolean blocked = !insideBoard(launch)
-                || gizmos.values().stream().anyMatch(g -> g.signedDistance(launch) < BALL_RADIUS - TOUCH_TOLERANCE)
+                || gizmos.values().stream().anyMatch(g -> g.signedDistance(launch) < BALL_RADIUS - Tolerances.PLACEMENT)
                 || balls.values().stream().anyMatch(b -> !b.isCaptured()
-                && Math.sqrt(b.position().distanceSquared(launch)) < 2 * BALL_RADIUS - TOUCH_TOLERANCE);
+                && Math.sqrt(b.position().distanceSquared(launch)) < 2 * BALL_RADIUS - Tolerances.PLACEMENT);
         if (!blocked) {
             absorber.held().removeFirst();
             balls.get(name).release(launch, new Vect(0, -ABSORBER_LAUNCH_SPEED));
+            recordEvent(new PlayEvent.Fired(absorber.name()));
+            double margin = 4 * BALL_RADIUS;
+            sleepers.wakeWithin(launch.x() - margin, launch.y() - margin, launch.x() + margin, launch.y() + margin);
         }
     }
 
@@ -598,6 +668,12 @@ public final class Board {
 
     public void removeObserver(BoardObserver observer) {
         observers.remove(observer);
+    }
+
+    /** After every successful edit: the board changed under the balls, which forget their contacts and wake. */
+    private void edited() {
+        sleepers.disturbAll();
+        notifyObservers(BoardChange.EDIT);
     }
 
     void notifyObservers(BoardChange change) {
@@ -652,6 +728,10 @@ public final class Board {
 
     GizmoBase gizmoBase(String name) {
         return gizmos.get(name);
+    }
+
+    Ball ballState(String name) {
+        return balls.get(name);
     }
 
     SpatialIndex index() {
