@@ -290,7 +290,7 @@ public final class GameWindow extends JFrame {
     }
 
     private void showKeys() {
-        List<String> lines = KeyHelp.describe(session.board().keyBindings());
+        List<String> lines = KeyHelp.describe(session.board());
         JOptionPane.showMessageDialog(this, lines.isEmpty() ? "This board binds no keys." : String.join("\n", lines),
                 "Keys of " + session.boardName(), JOptionPane.INFORMATION_MESSAGE);
     }
