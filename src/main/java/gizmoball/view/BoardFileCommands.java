@@ -36,6 +36,11 @@ final class BoardFileCommands {
         chooser.setFileFilter(new FileNameExtensionFilter("Board files (.txt, .gizmo)", "txt", "gizmo"));
     }
 
+    /** The folder the file chooser opens in (the last one the player used, remembered between runs). */
+    void startIn(Path folder) {
+        chooser.setCurrentDirectory(folder.toFile());
+    }
+
     void newBoard() {
         if (confirmDiscard("start a new board")) {
             loop.stop();

@@ -9,7 +9,7 @@ import javax.swing.BoxLayout;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 
-/** The line under the board: board name, running or stopped, simulated time, measured frame rate, last message. */
+/** The line under the board: board name, running or stopped and at what speed, simulated time, measured frame rate, last message. */
 public final class StatusLine extends JPanel {
     private final JLabel board = new JLabel();
     private final JLabel state = new JLabel();
@@ -35,9 +35,10 @@ public final class StatusLine extends JPanel {
     }
 
     /** The facts of the moment; cheap when nothing changed (labels only repaint on a new text). */
-    public void show(String boardName, String mode, boolean running, double simulatedTime, int framesPerSecond) {
+    public void show(String boardName, String mode, boolean running, String speed, double simulatedTime,
+                     int framesPerSecond) {
         setText(board, boardName);
-        setText(state, mode + (running ? " - running" : " - stopped"));
+        setText(state, mode + (running ? " - running" : " - stopped") + " at " + speed);
         setText(time, String.format(Locale.ROOT, "t = %.2f s", simulatedTime));
         setText(fps, String.format(Locale.ROOT, "%3d fps", framesPerSecond));
     }
