@@ -43,6 +43,11 @@ final class BoardFileCommands {
         chooser.setFileFilter(boardFiles);
     }
 
+    /** The folder the file chooser opens in (the last one the player used, remembered between runs). */
+    void startIn(Path folder) {
+        chooser.setCurrentDirectory(folder.toFile());
+    }
+
     void newBoard() {
         if (confirmDiscard("start a new board")) {
             loop.stop();

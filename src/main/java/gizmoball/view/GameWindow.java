@@ -151,6 +151,10 @@ public final class GameWindow extends JFrame {
         return session;
     }
 
+    public GameLoop loop() {
+        return loop;
+    }
+
     public StatusLine statusLine() {
         return statusLine;
     }
@@ -235,7 +239,7 @@ public final class GameWindow extends JFrame {
         return b;
     }
 
-    private static Action action(String name, int key, int extraModifiers, Runnable body) {
+    static Action action(String name, int key, int extraModifiers, Runnable body) {
         Action a = new AbstractAction(name) {
             @Override
             public void actionPerformed(ActionEvent e) {
@@ -279,9 +283,10 @@ public final class GameWindow extends JFrame {
         refreshStatus();
     }
 
-    private void refreshStatus() {
+    /** Brings the status line up to date now (the window also does so a few times a second). */
+    public void refreshStatus() {
         statusLine.show(session.boardName(), session.mode() == Mode.PLAY ? "Play" : "Build", loop.isRunning(),
-                session.board().time(), boardPanel.framesPerSecond());
+                loop.speed().label(), session.board().time(), boardPanel.framesPerSecond());
     }
 
     private void reset() {

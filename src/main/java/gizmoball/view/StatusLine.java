@@ -13,7 +13,7 @@ import javax.swing.JLabel;
 import javax.swing.JPanel;
 
 /**
- * The line under the board: board name, mode and running or stopped, simulated time, the frame rate while the
+ * The line under the board: board name, mode, running or stopped and at what speed, simulated time, the frame rate while the
  * game runs, and the last message. When the line is too narrow the message keeps its room: the frame rate,
  * the time and the state give way in that order, and the board name is shortened in its middle (keeping its
  * end, where the extension is). The tooltip always says the whole line.
@@ -54,10 +54,11 @@ public final class StatusLine extends JPanel {
      * The facts of the moment; cheap when nothing changed (labels only repaint on a new text). The frame rate
      * is shown only while the game runs: stopped, or in build mode, it measures nothing worth reading.
      */
-    public void show(String boardName, String mode, boolean running, double simulatedTime, int framesPerSecond) {
+    public void show(String boardName, String mode, boolean running, String speed, double simulatedTime,
+                     int framesPerSecond) {
         boolean changed = !boardName.equals(this.boardName);
         this.boardName = boardName;
-        changed |= setText(state, mode + (running ? " - running" : " - stopped"));
+        changed |= setText(state, mode + (running ? " - running" : " - stopped") + " at " + speed);
         changed |= setText(time, String.format(Locale.ROOT, "t = %.2f s", simulatedTime));
         changed |= setText(fps, running ? String.format(Locale.ROOT, "%3d fps", framesPerSecond) : "");
         if (changed) {

@@ -25,19 +25,19 @@ class StatusLineTest {
 
     @Test
     void theFrameRateShowsOnlyWhileTheGameRuns() {
-        line.show("b.txt", "Play", false, 1.5, 34);
-        assertThat(line.text()).doesNotContain("fps").isEqualTo("b.txt   Play - stopped   t = 1.50 s");
+        line.show("b.txt", "Play", false, "1x", 1.5, 34);
+        assertThat(line.text()).doesNotContain("fps").isEqualTo("b.txt   Play - stopped at 1x   t = 1.50 s");
 
-        line.show("b.txt", "Play", true, 1.5, 34);
+        line.show("b.txt", "Play", true, "1x", 1.5, 34);
         assertThat(line.text()).contains(" 34 fps");
 
-        line.show("b.txt", "Build", false, 0, 2);
+        line.show("b.txt", "Build", false, "1x", 0, 2);
         assertThat(line.text()).doesNotContain("fps");
     }
 
     @Test
     void aLongNameIsShortenedInTheMiddleSoTheMessageShowsWhole() {
-        line.show(LONG_NAME, "Play", false, 0, 0);
+        line.show(LONG_NAME, "Play", false, "1x", 0, 0);
         line.showMessage("Loaded without its 3 bad lines");
         layOut(700);
 
@@ -51,7 +51,7 @@ class StatusLineTest {
 
     @Test
     void atFourHundredPixelsTheMessageHasPriorityOverEveryFact() {
-        line.show("b.txt", "Play", false, 12.25, 0);
+        line.show("b.txt", "Play", false, "1x", 12.25, 0);
         line.showMessage("Loaded b.txt without its 3 bad lines");
         layOut(400);
 
@@ -63,11 +63,11 @@ class StatusLineTest {
 
     @Test
     void theTooltipSaysTheWholeLine() {
-        line.show(LONG_NAME, "Play", true, 2, 60);
+        line.show(LONG_NAME, "Play", true, "1x", 2, 60);
         line.showMessage(MESSAGE);
         layOut(300);
 
-        assertThat(line.getToolTipText()).isEqualTo(line.text()).contains(LONG_NAME, MESSAGE, "Play - running");
+        assertThat(line.getToolTipText()).isEqualTo(line.text()).contains(LONG_NAME, MESSAGE, "Play - running at 1x");
     }
 
     @Test
