@@ -16,7 +16,7 @@ import javax.swing.JPanel;
  * The line under the board: board name, mode, running or stopped and at what speed, simulated time, the frame rate while the
  * game runs, and the last message. When the line is too narrow the message keeps its room: the frame rate,
  * the time and the state give way in that order, and the board name is shortened in its middle (keeping its
- * end, where the extension is). The tooltip always says the whole line.
+ * end, where the extension is); a message longer than the whole line is shortened in its middle too. The tooltip always says the whole line.
  */
 public final class StatusLine extends JPanel {
     private static final int GAP = 16;
@@ -31,6 +31,7 @@ public final class StatusLine extends JPanel {
     private final JLabel fps = label("status.fps");
     private final JLabel message = label("status.message");
     private String boardName = "";
+    private String messageText = " ";
 
     public StatusLine() {
         super(null);
@@ -41,7 +42,6 @@ public final class StatusLine extends JPanel {
         for (JLabel label : new JLabel[] {board, state, time, fps, message}) {
             add(label);
         }
-        message.setText(" ");
     }
 
     private static JLabel label(String name) {
@@ -68,18 +68,19 @@ public final class StatusLine extends JPanel {
 
     /** A message for the player (a refused edit, a saved file, an error), kept until the next one. */
     public void showMessage(String text) {
-        if (setText(message, text)) {
+        if (!text.equals(messageText)) {
+            messageText = text;
             textChanged();
         }
     }
 
     public String message() {
-        return message.getText();
+        return messageText;
     }
 
     /** Everything the line says, in full, as one string (also its tooltip). */
     public String text() {
-        return Stream.of(boardName, state.getText(), time.getText(), fps.getText(), message.getText())
+        return Stream.of(boardName, state.getText(), time.getText(), fps.getText(), messageText)
                 .filter(s -> !s.isBlank()).collect(Collectors.joining("   "));
     }
 
@@ -89,8 +90,8 @@ public final class StatusLine extends JPanel {
             return super.getPreferredSize();
         }
         Insets in = getInsets();
-        int width = in.left + in.right + message.getPreferredSize().width + fullBoardWidth() + GAP;
-        int height = message.getPreferredSize().height;
+        int width = in.left + in.right + messageWidth() + fullBoardWidth() + GAP;
+        int height = Math.max(message.getPreferredSize().height, message.getFontMetrics(message.getFont()).getHeight());
         for (JLabel fact : List.of(board, state, time, fps)) {
             width += fact == board ? 0 : fact.getPreferredSize().width + GAP;
             height = Math.max(height, fact.getPreferredSize().height);
@@ -113,7 +114,7 @@ public final class StatusLine extends JPanel {
         Insets in = getInsets();
         int width = getWidth() - in.left - in.right;
         int height = getHeight() - in.top - in.bottom;
-        int messageWidth = message.getPreferredSize().width;
+        int messageWidth = messageWidth();
         // Lowest priority first: these give way, one by one, until the message fits.
         List<JLabel> shown = Stream.of(fps, time, state).filter(l -> !l.getText().isEmpty())
                 .collect(Collectors.toList());
@@ -140,20 +141,30 @@ public final class StatusLine extends JPanel {
                 x += w + GAP;
             }
         }
-        message.setBounds(x, in.top, Math.max(0, in.left + width - x), height);
+        int messageRoom = Math.max(0, in.left + width - x);
+        // A message longer than the whole line loses its middle, not its end ("...without its 3 bad lines").
+        setText(message, middleEllipsis(messageText, message.getFontMetrics(message.getFont()), messageRoom));
+        message.setBounds(x, in.top, messageRoom, height);
     }
 
     private int fullBoardWidth() {
         return board.getFontMetrics(board.getFont()).stringWidth(boardName);
     }
 
-    /** {@code text} shortened in its middle to fit {@code width} pixels: "a-very-lo…board.txt". */
+    private int messageWidth() {
+        return message.getFontMetrics(message.getFont()).stringWidth(messageText);
+    }
+
+    /**
+     * {@code text} shortened in its middle to fit {@code width} pixels, keeping twice as much of its end (where
+     * a file name has its extension and a message its outcome) as of its start: "a-ve…long-board.txt".
+     */
     static String middleEllipsis(String text, FontMetrics metrics, int width) {
         if (metrics.stringWidth(text) <= width) {
             return text;
         }
         for (int keep = text.length() - 1; keep > 0; keep--) {
-            int back = keep / 2;
+            int back = 2 * keep / 3;
             String shortened = text.substring(0, keep - back) + ELLIPSIS + text.substring(text.length() - back);
             if (metrics.stringWidth(shortened) <= width) {
                 return shortened;

@@ -62,6 +62,18 @@ class StatusLineTest {
     }
 
     @Test
+    void aMessageLongerThanTheLineLosesItsMiddleNotItsEnd() {
+        line.show(LONG_NAME, "Play", false, "1x", 0, 0);
+        line.showMessage(MESSAGE);
+        layOut(300);
+
+        JLabel message = label("status.message");
+        assertThat(message.getText()).contains("\u2026").startsWith("Loaded").endsWith("its 3 bad lines");
+        assertThat(message.getX() + message.getPreferredSize().width).isLessThanOrEqualTo(300);
+        assertThat(line.message()).isEqualTo(MESSAGE);
+    }
+
+    @Test
     void theTooltipSaysTheWholeLine() {
         line.show(LONG_NAME, "Play", true, "1x", 2, 60);
         line.showMessage(MESSAGE);
