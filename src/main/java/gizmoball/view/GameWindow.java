@@ -1,5 +1,6 @@
 package gizmoball.view;
 
+import gizmoball.boardfile.SampleBoards;
 import gizmoball.controller.GameLoop;
 import gizmoball.controller.GameSession;
 import gizmoball.controller.KeyForwarder;
@@ -111,6 +112,7 @@ public final class GameWindow extends JFrame {
         statusRefresh.start();
         refreshControls();
         ModalPause.install(this, loop);
+        setIconImages(AppIcon.windowImages());
         pack();
         // Centred on the screen; the window's remembered place, if any, is restored over this.
         setLocationRelativeTo(null);
@@ -195,6 +197,7 @@ public final class GameWindow extends JFrame {
         for (Action a : new Action[] {newBoard, open, save, saveAs, reload}) {
             file.add(a);
         }
+        file.add(samplesMenu());
         file.addSeparator();
         file.add(quit);
         JMenu game = new JMenu("Game");
@@ -220,6 +223,25 @@ public final class GameWindow extends JFrame {
         menus.add(mode);
         menus.add(help);
         setJMenuBar(menus);
+    }
+
+    /** File > Sample boards: the boards that ship inside the game, for a player with no boards/ folder near. */
+    private JMenu samplesMenu() {
+        JMenu samples = new JMenu("Sample boards");
+        for (String name : SampleBoards.names()) {
+            samples.add(command(name, () -> {
+                if (files.confirmDiscard("open the sample board " + name)) {
+                    files.openSample(name);
+                }
+            }));
+        }
+        samples.setEnabled(samples.getItemCount() > 0);
+        return samples;
+    }
+
+    /** Shows a sample board inside the game, as a new untitled board (as File > Sample boards does). */
+    public void openSample(String name) {
+        files.openSample(name);
     }
 
     private void buildToolBar() {
