@@ -30,24 +30,59 @@ class RotatingOracleTest {
         return r.between(0, 1) < 0.2 ? Vect.ZERO : r.vector(0, 30);
     }
 
+    /** A flipper-like segment turning about a pivot at or near one end, and a ball that starts clear of it. */
+    private record WallScene(LineSegment segment, Vect pivot, double w, Circle ball, Vect velocity, WorldGap gap) {
+        static WallScene random(RandomScene r) {
+            Vect pivot = r.point(5);
+            Vect p1 = r.coin() ? pivot : pivot.plus(r.vector(0, 0.5));
+            LineSegment segment = new LineSegment(p1, p1.plus(r.vector(1, 2.5)));
+            double w = angularVelocity(r);
+            Vect velocity = ballVelocity(r);
+            WorldGap gap;
+            Circle ball;
+            do { // a ball that starts clear of the segment
+                ball = new Circle(pivot.plus(r.vector(0.3, 3.5)), r.between(0.1, 0.5));
+                gap = WorldGap.wall(segment, pivot, w, ball, velocity);
+            } while (gap.at(0) <= 0);
+            return new WallScene(segment, pivot, w, ball, velocity, gap);
+        }
+
+        double face() {
+            return Geometry.timeUntilRotatingWallCollision(segment, pivot, w, ball, velocity);
+        }
+
+        double end(Vect end) {
+            return Geometry.timeUntilRotatingCircleCollision(new Circle(end, 0), pivot, w, ball, velocity);
+        }
+    }
+
+    /** The face and the zero-radius circles at the ends together find every contact of the closed segment. */
     @ParameterizedTest(name = "seed {0}")
     @MethodSource("seeds")
     void rotatingWallContactIsNeverLaterThanTheOracleAndIsExact(long seed) {
-        RandomScene r = new RandomScene(seed);
-        Vect pivot = r.point(5);
-        Vect p1 = r.coin() ? pivot : pivot.plus(r.vector(0, 0.5));
-        LineSegment segment = new LineSegment(p1, p1.plus(r.vector(1, 2.5)));
-        double w = angularVelocity(r);
-        Vect velocity = ballVelocity(r);
-        WorldGap gap;
-        Circle ball;
-        do { // a ball that starts clear of the segment
-            ball = new Circle(pivot.plus(r.vector(0.3, 3.5)), r.between(0.1, 0.5));
-            gap = WorldGap.wall(segment, pivot, w, ball, velocity);
-        } while (gap.at(0) <= 0);
+        WallScene scene = WallScene.random(new RandomScene(seed));
+        double t = Math.min(scene.face(), Math.min(scene.end(scene.segment.p1()), scene.end(scene.segment.p2())));
+        assertAgreesWithOracle(seed, scene.gap, t);
+    }
 
-        double t = Geometry.timeUntilRotatingWallCollision(segment, pivot, w, ball, velocity);
-        assertAgreesWithOracle(seed, gap, t);
+    /** The face alone: its contacts are the oracle's face contacts, never later, and lie on the face. */
+    @ParameterizedTest(name = "seed {0}")
+    @MethodSource("seeds")
+    void rotatingWallFindsTheFaceContactsOfTheOracleAndOnlyThose(long seed) {
+        WallScene scene = WallScene.random(new RandomScene(seed));
+        double t = scene.face();
+        double oracle = scene.gap.firstFaceContact(FORESIGHT);
+        if (oracle < Double.POSITIVE_INFINITY) {
+            assertThat(t).as("seed %d: oracle face contact at %s must not be missed or reported late", seed, oracle)
+                    .isLessThanOrEqualTo(oracle + CONTACT);
+        }
+        if (t < Double.POSITIVE_INFINITY) {
+            assertThat(t).as("seed %d: inside the foresight window", seed).isBetween(0.0, FORESIGHT);
+            assertThat(Math.abs(scene.gap.faceGap(t))).as("seed %d: face gap at the reported time %s", seed, t)
+                    .isLessThanOrEqualTo(CONTACT);
+            assertThat(scene.gap.footBeyond(t)).as("seed %d: foot beyond the ends at %s", seed, t)
+                    .isLessThanOrEqualTo(CONTACT);
+        }
     }
 
     @ParameterizedTest(name = "seed {0}")
