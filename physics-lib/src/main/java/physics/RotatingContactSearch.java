@@ -124,7 +124,7 @@ final class RotatingContactSearch {
         double spin = Math.abs(w);
         double t = 0;
         evaluate(t);
-        Region region = classify(null);
+        Region region = classify(null, 0);
         for (int slice = 0, steps = 0; slice < slices; slice++) {
             double sliceEnd = slice == slices - 1 ? foresight : foresight * (slice + 1) / slices;
             double farthest = Math.max(u(t).length(), u(sliceEnd).length());
@@ -144,8 +144,9 @@ final class RotatingContactSearch {
                     return Double.POSITIVE_INFINITY; // straight motion, not closing: the convex gap only grows
                 }
                 t = Math.min(t + step(region, lipschitz, curvature), sliceEnd);
+                double beyondBefore = beyond;
                 evaluate(t);
-                region = classify(region);
+                region = classify(region, beyondBefore);
             }
         }
         return Double.POSITIVE_INFINITY;
@@ -165,20 +166,27 @@ final class RotatingContactSearch {
     }
 
     /**
-     * The region q is in now, given the region it was in at the previous evaluation (null at time 0). Overlapping
-     * the face counts as touching it only if the ball got there over the face or was there at time 0.
+     * The region q is in now, given the region it was in at the previous evaluation (null at time 0) and how far
+     * its foot was beyond the ends then. Overlapping the face counts as touching it only if the ball got there
+     * over the face or was there at time 0. A safe step from clear lands on the boundary of the face rectangle,
+     * so it came in over an end only if its foot was beyond one before; judging by that, rounding that puts the
+     * landing point a little inside cannot turn a face contact into an end one.
      */
-    private Region classify(Region previous) {
+    private Region classify(Region previous, double beyondBefore) {
         if (gap > CONTACT_TOLERANCE) {
             return Region.CLEAR;
         }
         if (!wall || faceGap >= -CONTACT_TOLERANCE) {
             return Region.TOUCHING;
         }
-        if (previous == Region.THROUGH_END || beyond > 0) {
-            return Region.THROUGH_END;
+        if (previous == null) {
+            return beyond > 0 ? Region.THROUGH_END : Region.TOUCHING;
         }
-        return previous == Region.TOUCHING || previous == null ? Region.TOUCHING : Region.THROUGH_END;
+        return switch (previous) {
+            case CLEAR -> beyondBefore > CONTACT_TOLERANCE ? Region.THROUGH_END : Region.TOUCHING;
+            case TOUCHING -> beyond > 0 ? Region.THROUGH_END : Region.TOUCHING;
+            case THROUGH_END -> Region.THROUGH_END;
+        };
     }
 
     /**
