@@ -26,6 +26,7 @@ public final class GameLoop {
     private Speed speed = Speed.NORMAL;
     private TickPacer pacer;
     private long lastEventNanos;
+    private boolean resumeOnRelease;
 
     public GameLoop(Board board, double tickSeconds) {
         this.board = board;
@@ -49,9 +50,30 @@ public final class GameLoop {
     }
 
     public void stop() {
+        resumeOnRelease = false;
         if (timer.isRunning()) {
             timer.stop();
             fireRunningChanged();
+        }
+    }
+
+    /**
+     * Pauses a running game until {@link #release()} (while a modal dialog is open, say). A {@link #stop()} in
+     * between, such as loading another board, means it stays stopped.
+     */
+    public void hold() {
+        if (timer.isRunning()) {
+            timer.stop();
+            resumeOnRelease = true;
+            fireRunningChanged();
+        }
+    }
+
+    /** Resumes a game paused by {@link #hold()}, unless it was stopped meanwhile. */
+    public void release() {
+        if (resumeOnRelease) {
+            resumeOnRelease = false;
+            start();
         }
     }
 

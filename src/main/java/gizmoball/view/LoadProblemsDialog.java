@@ -4,6 +4,7 @@ import java.awt.BorderLayout;
 import java.awt.Component;
 import java.awt.FlowLayout;
 import java.awt.Font;
+import java.awt.Window;
 import java.util.List;
 import javax.swing.BorderFactory;
 import javax.swing.JButton;
@@ -25,7 +26,8 @@ public final class LoadProblemsDialog extends JDialog {
     private boolean skip;
 
     private LoadProblemsDialog(Component parent, String fileName, List<String> problems, boolean skippable) {
-        super(SwingUtilities.getWindowAncestor(parent), "Problems in " + fileName, ModalityType.APPLICATION_MODAL);
+        super(parent instanceof Window w ? w : SwingUtilities.getWindowAncestor(parent), "Problems in " + fileName,
+                ModalityType.APPLICATION_MODAL);
         setName("loadProblems");
         JLabel heading = new JLabel(!skippable
                 ? "Nothing in " + fileName + " can be loaded:"
