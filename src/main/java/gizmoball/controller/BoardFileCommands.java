@@ -1,18 +1,20 @@
-package gizmoball.view;
+package gizmoball.controller;
 
 import gizmoball.boardfile.BoardFileError;
 import gizmoball.boardfile.BoardFileException;
 import gizmoball.boardfile.BoardFiles;
 import gizmoball.boardfile.LoadResult;
-import gizmoball.controller.GameLoop;
-import gizmoball.controller.GameSession;
+import gizmoball.session.GameSession;
 import gizmoball.model.Board;
+import gizmoball.view.LoadProblemsDialog;
+import java.awt.Component;
 import java.io.IOException;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.function.Consumer;
 import javax.swing.JFileChooser;
 import javax.swing.JOptionPane;
 import javax.swing.SwingUtilities;
@@ -23,47 +25,50 @@ import javax.swing.filechooser.FileNameExtensionFilter;
  * player before unsaved changes are lost. Every failure is shown to the player; a failed load leaves
  * the current board exactly as it was.
  */
-final class BoardFileCommands {
-    private final GameWindow window;
+public final class BoardFileCommands {
+    private final Component window;
+    private final Consumer<String> status;
     private final GameSession session;
     private final GameLoop loop;
     private final JFileChooser chooser = new JFileChooser(Path.of("boards").toAbsolutePath().toFile());
 
-    BoardFileCommands(GameWindow window, GameSession session, GameLoop loop) {
+    /** Dialogs open over {@code window}; outcomes are told to {@code status} (the status line). */
+    public BoardFileCommands(Component window, Consumer<String> status, GameSession session, GameLoop loop) {
         this.window = window;
+        this.status = status;
         this.session = session;
         this.loop = loop;
         chooser.setFileFilter(new FileNameExtensionFilter("Board files (.txt, .gizmo)", "txt", "gizmo"));
     }
 
-    void newBoard() {
+    public void newBoard() {
         if (confirmDiscard("start a new board")) {
             loop.stop();
             session.newBoard();
-            window.statusLine().showMessage("New board");
+            status.accept("New board");
         }
     }
 
-    void open() {
+    public void open() {
         if (confirmDiscard("open another board")
                 && chooser.showOpenDialog(window) == JFileChooser.APPROVE_OPTION) {
             open(chooser.getSelectedFile().toPath());
         }
     }
 
-    void reload() {
+    public void reload() {
         session.file().ifPresentOrElse(file -> {
             if (confirmDiscard("reload it from " + file.getFileName())) {
                 open(file);
             }
-        }, () -> window.statusLine().showMessage("This board has no file to reload from"));
+        }, () -> status.accept("This board has no file to reload from"));
     }
 
     /**
      * Loads {@code file}. A file with bad lines opens the problems dialog: load without them, or keep the
      * board shown now. Returns whether a board was loaded.
      */
-    boolean open(Path file) {
+    public boolean open(Path file) {
         String name = String.valueOf(file.getFileName());
         try {
             try {
@@ -71,7 +76,7 @@ final class BoardFileCommands {
                 return true;
             } catch (BoardFileException e) {
                 if (!LoadProblemsDialog.askSkip(window, name, describe(e.errors()))) {
-                    window.statusLine().showMessage("Kept the current board; " + name + " has bad lines");
+                    status.accept("Kept the current board; " + name + " has bad lines");
                     return false;
                 }
                 LoadResult result = BoardFiles.loadSkippingBadLines(file);
@@ -90,7 +95,7 @@ final class BoardFileCommands {
      * Loads the board the window opens on. A clean file is shown at once; a problem (and its dialog) waits
      * until the window is up, so that whoever opened the window is not blocked by a modal dialog.
      */
-    void openAtLaunch(Path file) {
+    public void openAtLaunch(Path file) {
         try {
             show(BoardFiles.load(file), file, "Loaded " + file.getFileName());
         } catch (BoardFileException | IOException e) {
@@ -99,11 +104,11 @@ final class BoardFileCommands {
     }
 
     /** Saves to the board's file, or asks for one. Returns whether the board was saved. */
-    boolean save() {
+    public boolean save() {
         return session.file().map(this::saveTo).orElseGet(this::saveAs);
     }
 
-    boolean saveAs() {
+    public boolean saveAs() {
         session.file().ifPresent(f -> chooser.setSelectedFile(f.toFile()));
         if (chooser.showSaveDialog(window) != JFileChooser.APPROVE_OPTION) {
             return false;
@@ -119,7 +124,7 @@ final class BoardFileCommands {
     /**
      * True when nothing unsaved would be lost by {@code doing}, or the player saved it or agreed to lose it.
      */
-    boolean confirmDiscard(String doing) {
+    public boolean confirmDiscard(String doing) {
         if (!session.isModified()) {
             return true;
         }
@@ -139,7 +144,7 @@ final class BoardFileCommands {
         try {
             BoardFiles.save(session.boardToSave(), file);
             session.saved(file);
-            window.statusLine().showMessage("Saved " + file.getFileName());
+            status.accept("Saved " + file.getFileName());
             return true;
         } catch (IOException e) {
             error("Cannot save " + file + ": " + reason(e) + ". The file on disk is unchanged.");
@@ -150,11 +155,11 @@ final class BoardFileCommands {
     private void show(Board board, Path file, String message) {
         loop.stop();
         session.load(board, file);
-        window.statusLine().showMessage(message);
+        status.accept(message);
     }
 
     private void error(String message) {
-        window.statusLine().showMessage(message);
+        status.accept(message);
         JOptionPane.showMessageDialog(window, message, "Gizmoball", JOptionPane.ERROR_MESSAGE);
     }
 
