@@ -3,6 +3,8 @@ package gizmoball.app;
 import gizmoball.controller.BoardFileCommands;
 import gizmoball.controller.GameLoop;
 import gizmoball.controller.KeyForwarder;
+import gizmoball.controller.ModalPause;
+import gizmoball.controller.Settings;
 import gizmoball.model.Board;
 import gizmoball.session.GameSession;
 import gizmoball.session.Mode;
@@ -24,14 +26,16 @@ public final class Gizmoball {
     private final GameWindow window;
     private final BoardFileCommands files;
     private final BuildModeInstaller.BuildMode build;
+    private final PlayFeatures play;
 
     private Gizmoball(GameSession session, GameLoop loop, GameWindow window, BoardFileCommands files,
-                      BuildModeInstaller.BuildMode build) {
+                      BuildModeInstaller.BuildMode build, PlayFeatures play) {
         this.session = session;
         this.loop = loop;
         this.window = window;
         this.files = files;
         this.build = build;
+        this.play = play;
     }
 
     /**
@@ -39,10 +43,15 @@ public final class Gizmoball {
      * whichever thread calls this). A board that cannot be loaded is reported once the window shows.
      */
     public static Gizmoball launch(Path board) {
+        return launch(board, Settings.forUser());
+    }
+
+    /** As {@link #launch(Path)}, with the player's settings kept in {@code settings}. */
+    public static Gizmoball launch(Path board, Settings settings) {
         if (!SwingUtilities.isEventDispatchThread()) {
             Gizmoball[] app = new Gizmoball[1];
             try {
-                SwingUtilities.invokeAndWait(() -> app[0] = launch(board));
+                SwingUtilities.invokeAndWait(() -> app[0] = launch(board, settings));
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
                 throw new IllegalStateException("interrupted while opening the window", e);
@@ -51,7 +60,7 @@ public final class Gizmoball {
             }
             return app[0];
         }
-        Gizmoball app = assemble();
+        Gizmoball app = assemble(settings);
         if (board != null) {
             app.files.openAtLaunch(board);
         }
@@ -59,7 +68,7 @@ public final class Gizmoball {
         return app;
     }
 
-    private static Gizmoball assemble() {
+    private static Gizmoball assemble(Settings settings) {
         GameSession session = new GameSession();
         GameLoop loop = new GameLoop(session.board(), Board.DEFAULT_TICK);
         // The window's menus call the file commands, and the file commands open their dialogs over the
@@ -88,8 +97,10 @@ public final class Gizmoball {
                 keys.uninstall();
             }
         });
+        ModalPause.install(window, loop);
         BuildModeInstaller.BuildMode build = BuildModeInstaller.install(window, session);
-        return new Gizmoball(session, loop, window, files, build);
+        PlayFeatures play = PlayFeatures.install(window, session, loop, files, settings);
+        return new Gizmoball(session, loop, window, files, build, play);
     }
 
     public GameWindow window() {
@@ -110,6 +121,10 @@ public final class Gizmoball {
 
     public BuildModeInstaller.BuildMode build() {
         return build;
+    }
+
+    public PlayFeatures playFeatures() {
+        return play;
     }
 
     /** The menus' commands: the game loop, the session and the file commands. */
@@ -179,7 +194,8 @@ public final class Gizmoball {
         @Override
         public void reset() {
             session.reset();
-            window.refresh();
+            window.refreshStatus();
+            window.statusLine().showMessage("Reset: the board is back as loaded or built");
         }
 
         @Override
@@ -190,6 +206,11 @@ public final class Gizmoball {
         @Override
         public boolean running() {
             return loop.isRunning();
+        }
+
+        @Override
+        public String speed() {
+            return loop.speed().label();
         }
     }
 }

@@ -60,6 +60,9 @@ public final class GameWindow extends JFrame {
         void setMode(Mode mode);
 
         boolean running();
+
+        /** The game's speed as the status line shows it ("1x"). */
+        String speed();
     }
 
     private final GameSession session;
@@ -86,6 +89,8 @@ public final class GameWindow extends JFrame {
     private final Action play;
     private final Action build;
     private final Action keysHelp;
+    private final Action howToPlay;
+    private final Action buildModeHelp;
 
     private GameWindow(GameSession session, Commands commands) {
         super("Gizmoball");
@@ -105,6 +110,10 @@ public final class GameWindow extends JFrame {
         play = action("Play", KeyEvent.VK_P, 0, () -> commands.setMode(Mode.PLAY));
         build = action("Build", KeyEvent.VK_B, 0, () -> commands.setMode(Mode.BUILD));
         keysHelp = action("Keys of this board...", KeyEvent.VK_K, 0, this::showKeys);
+        howToPlay = command(HelpPages.HOW_TO_PLAY + "...",
+                () -> HelpPages.show(this, HelpPages.HOW_TO_PLAY, HelpPages.howToPlay(menus, session.board())));
+        buildModeHelp = command(HelpPages.BUILD_MODE + "...",
+                () -> HelpPages.show(this, HelpPages.BUILD_MODE, HelpPages.buildMode()));
         setDefaultCloseOperation(DO_NOTHING_ON_CLOSE);
         buildMenus();
         buildToolBar();
@@ -113,7 +122,8 @@ public final class GameWindow extends JFrame {
         add(centre, BorderLayout.CENTER);
         add(statusLine, BorderLayout.SOUTH);
         pack();
-        setLocationByPlatform(true);
+        // Centred on the screen; the window's remembered place, if any, is restored over this.
+        setLocationRelativeTo(null);
     }
 
     /**
@@ -218,6 +228,8 @@ public final class GameWindow extends JFrame {
         JMenu help = new JMenu("Help");
         help.setMnemonic(KeyEvent.VK_H);
         help.add(keysHelp);
+        help.add(howToPlay);
+        help.add(buildModeHelp);
         menus.add(file);
         menus.add(game);
         menus.add(mode);
@@ -250,15 +262,21 @@ public final class GameWindow extends JFrame {
         return b;
     }
 
-    private static Action action(String name, int key, int extraModifiers, Runnable body) {
-        Action a = new AbstractAction(name) {
+    /** A menu command with the shortcut Ctrl (+ {@code extraModifiers}) + {@code key}. */
+    public static Action action(String name, int key, int extraModifiers, Runnable body) {
+        Action a = command(name, body);
+        a.putValue(Action.ACCELERATOR_KEY, KeyStroke.getKeyStroke(key, InputEvent.CTRL_DOWN_MASK | extraModifiers));
+        return a;
+    }
+
+    /** A menu command without a shortcut. */
+    private static Action command(String name, Runnable body) {
+        return new AbstractAction(name) {
             @Override
             public void actionPerformed(ActionEvent e) {
                 body.run();
             }
         };
-        a.putValue(Action.ACCELERATOR_KEY, KeyStroke.getKeyStroke(key, InputEvent.CTRL_DOWN_MASK | extraModifiers));
-        return a;
     }
 
     private void modeChanged(Mode mode) {
@@ -292,13 +310,14 @@ public final class GameWindow extends JFrame {
         refreshStatus();
     }
 
-    private void refreshStatus() {
+    /** Brings the status line up to date now (the window also does so a few times a second). */
+    public void refreshStatus() {
         statusLine.show(session.boardName(), session.mode() == Mode.PLAY ? "Play" : "Build", commands.running(),
-                session.board().time(), boardPanel.framesPerSecond());
+                commands.speed(), session.board().time(), boardPanel.framesPerSecond());
     }
 
     private void showKeys() {
-        List<String> lines = KeyHelp.describe(session.board().keyBindings());
+        List<String> lines = KeyHelp.describe(session.board());
         JOptionPane.showMessageDialog(this, lines.isEmpty() ? "This board binds no keys." : String.join("\n", lines),
                 "Keys of " + session.boardName(), JOptionPane.INFORMATION_MESSAGE);
     }
