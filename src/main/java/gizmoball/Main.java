@@ -1,12 +1,9 @@
 package gizmoball;
 
-import gizmoball.controller.Settings;
+import gizmoball.app.Gizmoball;
 import gizmoball.headless.HeadlessOptions;
 import gizmoball.headless.HeadlessRunner;
-import gizmoball.view.GameWindow;
-import gizmoball.view.PlayFeatures;
 import gizmoball.view.WindowClass;
-import gizmoball.view.editor.BuildModeInstaller;
 import java.awt.AWTError;
 import java.awt.GraphicsEnvironment;
 import java.awt.HeadlessException;
@@ -121,14 +118,10 @@ public final class Main {
 
     private static void openWindow(Optional<Path> board) {
         WindowClass.name("Gizmoball");
-        GameWindow window = GameWindow.launch(board.orElse(null));
-        SwingUtilities.invokeLater(() -> {
-            if (board.isEmpty()) {
-                window.openSample(DEFAULT_SAMPLE);
-            }
-            BuildModeInstaller.install(window);
-            PlayFeatures.install(window, Settings.forUser());
-        });
+        Gizmoball app = Gizmoball.launch(board.orElse(null));
+        if (board.isEmpty()) {
+            SwingUtilities.invokeLater(() -> app.files().openSample(DEFAULT_SAMPLE));
+        }
     }
 
     /** One line for a window that could not open for want of a display; empty for any other failure. */

@@ -4,6 +4,7 @@ import static gizmoball.view.Gui.await;
 import static gizmoball.view.Gui.onEdt;
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gizmoball.app.Gizmoball;
 import gizmoball.view.GameWindow;
 import gizmoball.view.Gui;
 import gizmoball.view.WindowClass;
@@ -18,6 +19,8 @@ import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
 import java.util.OptionalInt;
+import javax.swing.JMenu;
+import javax.swing.JMenuItem;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -122,12 +125,14 @@ class MainTest {
     void withADisplayAndNoBoardsFolderNearTheSampleInsideTheGameOpens() {
         Gui.assumeDisplay();
         // The tests run in the project folder, which has boards/: the sample is what File > Sample boards opens.
-        GameWindow window = GameWindow.launch(null);
-        onEdt(() -> window.openSample("multiball.txt"));
-        assertThat(onEdt(() -> window.session().board().balls())).hasSize(5);
-        assertThat(onEdt(() -> window.session().file())).isEmpty();
-        assertThat(onEdt(() -> window.statusLine().message())).contains("sample board multiball.txt");
-        assertThat(onEdt(() -> Gui.menuItem(window.menus(), "Sample boards").isEnabled())).isTrue();
+        Gizmoball app = Gizmoball.launch(null);
+        JMenu samples = (JMenu) Gui.menuItem(app.window().menus(), "Sample boards");
+        assertThat(onEdt(samples::isEnabled)).isTrue();
+        onEdt(() -> Gui.find(samples.getPopupMenu(), JMenuItem.class, i -> "multiball.txt".equals(i.getText()))
+                .orElseThrow().doClick(0));
+        assertThat(onEdt(() -> app.session().board().balls())).hasSize(5);
+        assertThat(onEdt(() -> app.session().file())).isEmpty();
+        assertThat(onEdt(() -> app.window().statusLine().message())).contains("sample board multiball.txt");
     }
 
     private static List<Frame> showingFrames() {
