@@ -13,4 +13,9 @@ public record LoadResult(Board board, List<BoardFileError> skippedLines) {
     public LoadResult {
         skippedLines = List.copyOf(skippedLines);
     }
+
+    /** Nothing of the file made it in: the board is exactly a new, empty one (its settings included). */
+    public boolean keptNothing() {
+        return BoardWriter.toText(board).equals(BoardWriter.toText(new Board()));
+    }
 }

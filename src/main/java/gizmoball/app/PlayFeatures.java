@@ -1,0 +1,189 @@
+package gizmoball.app;
+
+import gizmoball.controller.BoardFileCommands;
+import gizmoball.controller.GameLoop;
+import gizmoball.controller.Settings;
+import gizmoball.controller.Speed;
+import gizmoball.session.GameSession;
+import gizmoball.sound.SoundPlayer;
+import gizmoball.view.BallTrails;
+import gizmoball.view.GameWindow;
+import java.awt.GraphicsConfiguration;
+import java.awt.GraphicsDevice;
+import java.awt.GraphicsEnvironment;
+import java.awt.Rectangle;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
+import java.awt.event.WindowAdapter;
+import java.awt.event.WindowEvent;
+import java.nio.file.Path;
+import java.util.function.Consumer;
+import javax.swing.Action;
+import javax.swing.ButtonGroup;
+import javax.swing.JCheckBoxMenuItem;
+import javax.swing.JMenu;
+import javax.swing.JMenuBar;
+import javax.swing.JRadioButtonMenuItem;
+import javax.swing.KeyStroke;
+import javax.swing.SwingUtilities;
+
+/**
+ * Adds to a game window what makes the physics visible and audible and the window remember itself:
+ * Game > Speed and Sound, View > Ball trails, and the settings that stick (speed, sound, trails, last
+ * folder, window place and size).
+ * Every setting the player changes is written to {@link Settings} at once.
+ */
+public final class PlayFeatures {
+    private final GameWindow window;
+    private final GameSession session;
+    private final GameLoop loop;
+    private final BoardFileCommands files;
+    private final Settings settings;
+    private final BallTrails trails;
+    private final SoundPlayer sound;
+
+    private PlayFeatures(GameWindow window, GameSession session, GameLoop loop, BoardFileCommands files,
+                         Settings settings) {
+        this.window = window;
+        this.session = session;
+        this.loop = loop;
+        this.files = files;
+        this.settings = settings;
+        this.trails = new BallTrails(session.board());
+        this.sound = new SoundPlayer(notice -> SwingUtilities.invokeLater(() -> window.statusLine().showMessage(notice)));
+    }
+
+    public static PlayFeatures install(GameWindow window, GameSession session, GameLoop loop,
+                                       BoardFileCommands files, Settings settings) {
+        PlayFeatures features = new PlayFeatures(window, session, loop, files, settings);
+        features.installSpeed();
+        features.installSound();
+        features.installView();
+        features.rememberFolder();
+        features.rememberPlace();
+        return features;
+    }
+
+    public BallTrails trails() {
+        return trails;
+    }
+
+    private void installSpeed() {
+        JMenu speedMenu = new JMenu("Speed");
+        ButtonGroup group = new ButtonGroup();
+        Speed[] speeds = Speed.values();
+        for (int i = 0; i < speeds.length; i++) {
+            Speed speed = speeds[i];
+            // Ctrl+1 (slowest) to Ctrl+5 (fastest): Ctrl, like every shortcut, so no board key is shadowed.
+            Action a = GameWindow.action(speed.label(), KeyEvent.VK_1 + i, 0, () -> setSpeed(speed));
+            a.putValue(Action.SELECTED_KEY, speed == settings.speed());
+            JRadioButtonMenuItem item = new JRadioButtonMenuItem(a);
+            group.add(item);
+            speedMenu.add(item);
+        }
+        loop.setSpeed(settings.speed());
+        JMenu game = menu(window.menus(), "Game");
+        game.addSeparator();
+        game.add(speedMenu);
+        window.refreshStatus();
+    }
+
+    private void setSpeed(Speed speed) {
+        loop.setSpeed(speed);
+        settings.setSpeed(speed);
+        window.refreshStatus();
+        window.statusLine().showMessage("Speed " + speed.label());
+    }
+
+    public SoundPlayer sound() {
+        return sound;
+    }
+
+    private void installSound() {
+        JMenu game = menu(window.menus(), "Game");
+        // Ctrl+M (mute), like every shortcut a Ctrl one, so no board key is shadowed.
+        game.add(toggle("Sound", KeyEvent.VK_M, 0, settings.sound(), on -> {
+            sound.setEnabled(on);
+            settings.setSound(on);
+            window.statusLine().showMessage(on ? "Sound on" : "Sound off");
+        }));
+        sound.setEnabled(settings.sound());
+        window.addWindowListener(new WindowAdapter() {
+            @Override
+            public void windowClosed(WindowEvent e) {
+                sound.close();
+            }
+        });
+    }
+
+    private void installView() {
+        JMenu view = new JMenu("View");
+        view.setMnemonic(KeyEvent.VK_V);
+        view.add(toggle("Ball trails", KeyEvent.VK_T, InputEvent.SHIFT_DOWN_MASK, settings.ballTrails(), on -> {
+            trails.setEnabled(on);
+            settings.setBallTrails(on);
+            window.boardPanel().repaint();
+        }));
+        trails.setEnabled(settings.ballTrails());
+        window.boardPanel().addUnderlay(trails);
+        JMenuBar menus = window.menus();
+        menus.add(view, Math.min(menus.getComponentIndex(menu(menus, "Mode")) + 1, menus.getMenuCount()));
+        menus.revalidate();
+    }
+
+    /** A check box item with a Ctrl shortcut. */
+    private static JCheckBoxMenuItem toggle(String name, int key, int extraModifiers, boolean initially,
+                                            Consumer<Boolean> changed) {
+        JCheckBoxMenuItem item = new JCheckBoxMenuItem(name, initially);
+        item.setAccelerator(KeyStroke.getKeyStroke(key, InputEvent.CTRL_DOWN_MASK | extraModifiers));
+        item.addActionListener(e -> changed.accept(item.isSelected()));
+        return item;
+    }
+
+    /** The file chooser starts where the player last opened or saved a board, in this run or an earlier one. */
+    private void rememberFolder() {
+        settings.lastFolder().ifPresent(files::startIn);
+        session.addStateListener(() -> session.file()
+                .map(f -> f.toAbsolutePath().getParent())
+                .ifPresent(this::folderUsed));
+    }
+
+    private void folderUsed(Path folder) {
+        if (!settings.lastFolder().map(folder::equals).orElse(false)) {
+            settings.setLastFolder(folder);
+        }
+    }
+
+    /** The window opens where it was closed, at the same size, if that place is still on a screen. */
+    private void rememberPlace() {
+        settings.windowBounds().filter(PlayFeatures::onSomeScreen).ifPresent(window::setBounds);
+        window.addWindowListener(new WindowAdapter() {
+            @Override
+            public void windowClosing(WindowEvent e) {
+                settings.setWindowBounds(window.getBounds());
+            }
+        });
+    }
+
+    /** True when the window's title bar would be on a screen: at least 100 x 40 pixels of its top. */
+    private static boolean onSomeScreen(Rectangle bounds) {
+        Rectangle top = new Rectangle(bounds.x, bounds.y, bounds.width, Math.min(bounds.height, 40));
+        for (GraphicsDevice device : GraphicsEnvironment.getLocalGraphicsEnvironment().getScreenDevices()) {
+            GraphicsConfiguration config = device.getDefaultConfiguration();
+            Rectangle visible = config.getBounds().intersection(top);
+            if (visible.width >= Math.min(100, bounds.width) && visible.height >= Math.min(40, bounds.height)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    static JMenu menu(JMenuBar menus, String text) {
+        for (int i = 0; i < menus.getMenuCount(); i++) {
+            if (text.equals(menus.getMenu(i).getText())) {
+                return menus.getMenu(i);
+            }
+        }
+        throw new IllegalStateException("the window has no " + text + " menu");
+    }
+}

@@ -1,0 +1,249 @@
+package gizmoball.controller;
+
+import gizmoball.boardfile.BoardFileError;
+import gizmoball.boardfile.BoardFileException;
+import gizmoball.boardfile.BoardFiles;
+import gizmoball.boardfile.FileErrors;
+import gizmoball.boardfile.LoadResult;
+import gizmoball.boardfile.SampleBoards;
+import gizmoball.session.GameSession;
+import gizmoball.model.Board;
+import gizmoball.view.LoadProblemsDialog;
+import java.awt.Component;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.function.Consumer;
+import java.util.Optional;
+import javax.swing.JFileChooser;
+import javax.swing.JOptionPane;
+import javax.swing.SwingUtilities;
+import javax.swing.filechooser.FileNameExtensionFilter;
+
+/**
+ * The File menu's work: choosing files, loading and saving through gizmoball.boardfile, and asking the
+ * player before unsaved changes are lost. Every failure is shown to the player; a failed load leaves
+ * the current board exactly as it was.
+ */
+public final class BoardFileCommands {
+    private final Component window;
+    private final Consumer<String> status;
+    private final GameSession session;
+    private final GameLoop loop;
+    private static final String BOARD_EXTENSION = "txt";
+    private static final String SAVE_AS = "Save As...";
+    private static final String RELOAD = "Reload";
+    private static final String CANCEL = "Cancel";
+
+    private final JFileChooser chooser = new JFileChooser(Path.of("boards").toAbsolutePath().toFile());
+    private final FileNameExtensionFilter boardFiles =
+            new FileNameExtensionFilter("Board files (.txt, .gizmo)", BOARD_EXTENSION, "gizmo");
+
+    /** Dialogs open over {@code window}; outcomes are told to {@code status} (the status line). */
+    public BoardFileCommands(Component window, Consumer<String> status, GameSession session, GameLoop loop) {
+        this.window = window;
+        this.status = status;
+        this.session = session;
+        this.loop = loop;
+        chooser.setFileFilter(boardFiles);
+    }
+
+    /** The folder the file chooser opens in (the last one the player used, remembered between runs). */
+    public void startIn(Path folder) {
+        chooser.setCurrentDirectory(folder.toFile());
+    }
+
+    public void newBoard() {
+        if (confirmDiscard("start a new board")) {
+            loop.stop();
+            session.newBoard();
+            status.accept("New board");
+        }
+    }
+
+    public void open() {
+        if (confirmDiscard("open another board")
+                && chooser.showOpenDialog(window) == JFileChooser.APPROVE_OPTION) {
+            open(chooser.getSelectedFile().toPath());
+        }
+    }
+
+    /** Reload means "throw my changes away": asked as that, with Cancel the default, so Enter reverts nothing. */
+    public void reload() {
+        session.file().ifPresentOrElse(file -> {
+            if (!session.isModified() || ask("Discard your changes to " + file.getFileName()
+                    + " and reload it from disk?", "Reload", RELOAD, CANCEL) == 0) {
+                open(file);
+            }
+        }, () -> status.accept("This board has no file to reload from"));
+    }
+
+    /**
+     * Loads {@code file}. A file with bad lines opens the problems dialog: load without them (unless nothing
+     * would be left), or keep the board shown now. Returns whether a board was loaded.
+     */
+    public boolean open(Path file) {
+        String name = String.valueOf(file.getFileName());
+        LoadResult result;
+        try {
+            result = BoardFiles.loadSkippingBadLines(file);
+        } catch (IOException e) {
+            error(FileErrors.cannotRead(file, e));
+            return false;
+        }
+        List<BoardFileError> bad = result.skippedLines();
+        if (bad.isEmpty()) {
+            show(result.board(), file, 0, "Loaded " + name);
+            return true;
+        }
+        // A board empty because of skipping is not offered: one Save would write it over the whole file.
+        if (!LoadProblemsDialog.askSkip(window, name, describe(bad), !result.keptNothing())) {
+            status.accept("Kept the current board; " + name + " has bad lines");
+            return false;
+        }
+        show(result.board(), file, bad.size(), "Loaded " + name + " without its " + lines(bad.size()));
+        return true;
+    }
+
+    /**
+     * Opens one of the sample boards inside the game as a new, untitled board: it has no file of its own,
+     * so Save asks where to put it. Unsaved changes are asked about first.
+     */
+    public boolean openSample(String name) {
+        if (!confirmDiscard("open the sample board " + name)) {
+            return false;
+        }
+        Optional<String> text = SampleBoards.text(name);
+        if (text.isEmpty()) {
+            error("there is no sample board " + name + " inside this build of the game");
+            return false;
+        }
+        try {
+            show(BoardFiles.load(name, text.get()), null, 0, "Opened the sample board " + name
+                    + "; Save As keeps a copy");
+            return true;
+        } catch (BoardFileException e) {
+            error("the sample board " + name + " does not load: " + e.getMessage());
+            return false;
+        }
+    }
+
+    /**
+     * Loads the board the window opens on. A clean file is shown at once; a problem (and its dialog) waits
+     * until the window is up, so that whoever opened the window is not blocked by a modal dialog.
+     */
+    public void openAtLaunch(Path file) {
+        try {
+            show(BoardFiles.load(file), file, 0, "Loaded " + file.getFileName());
+        } catch (BoardFileException | IOException e) {
+            SwingUtilities.invokeLater(() -> open(file));
+        }
+    }
+
+    /**
+     * Saves to the board's file, or asks for one. A board loaded without some of its lines would remove them
+     * from its file: that is asked first, offering Save As. Returns whether the board was saved.
+     */
+    public boolean save() {
+        Optional<Path> file = session.file();
+        if (file.isEmpty()) {
+            return saveAs();
+        }
+        int lost = session.linesLostBySaving();
+        if (lost > 0) {
+            String name = String.valueOf(file.get().getFileName());
+            int choice = ask(name + " was loaded without " + lines(lost) + ". Saving over it removes "
+                    + (lost == 1 ? "that line" : "those " + lost + " lines") + " from the file.",
+                    "Save would lose lines", SAVE_AS, "Save and lose " + lines(lost), CANCEL);
+            return switch (choice) {
+                case 0 -> saveAs();
+                case 1 -> saveTo(file.get());
+                default -> false;
+            };
+        }
+        return saveTo(file.get());
+    }
+
+    /**
+     * Asks for a file and saves there. A name without an extension gets .txt while the board-files filter is
+     * chosen; an existing file is replaced only if the player says so.
+     */
+    public boolean saveAs() {
+        session.file().ifPresent(f -> chooser.setSelectedFile(f.toFile()));
+        if (chooser.showSaveDialog(window) != JFileChooser.APPROVE_OPTION) {
+            return false;
+        }
+        Path file = withBoardExtension(chooser.getSelectedFile().toPath(), chooser.getFileFilter() == boardFiles);
+        if (Files.exists(file) && ask(file.getFileName() + " already exists. Replace it?", "Save As",
+                "Replace", CANCEL) != 0) {
+            return false;
+        }
+        return saveTo(file);
+    }
+
+    /** {@code file} with ".txt" added if it has no extension and {@code boardFilter} (the chooser's) applies. */
+    static Path withBoardExtension(Path file, boolean boardFilter) {
+        String name = String.valueOf(file.getFileName());
+        boolean hasExtension = name.lastIndexOf('.') > 0;
+        return boardFilter && !hasExtension ? file.resolveSibling(name + "." + BOARD_EXTENSION) : file;
+    }
+
+    /**
+     * True when nothing unsaved would be lost by {@code doing}, or the player saved it or agreed to lose it.
+     */
+    public boolean confirmDiscard(String doing) {
+        if (!session.isModified()) {
+            return true;
+        }
+        Object[] choices = {"Save", "Discard", "Cancel"};
+        int choice = JOptionPane.showOptionDialog(window,
+                session.boardName() + " has unsaved changes. Save them before you " + doing + "?",
+                "Unsaved changes", JOptionPane.YES_NO_CANCEL_OPTION, JOptionPane.WARNING_MESSAGE, null, choices,
+                choices[0]);
+        return switch (choice) {
+            case 0 -> save();
+            case 1 -> true;
+            default -> false;
+        };
+    }
+
+    private boolean saveTo(Path file) {
+        try {
+            BoardFiles.save(session.boardToSave(), file);
+            session.saved(file);
+            status.accept("Saved " + file.getFileName());
+            return true;
+        } catch (IOException e) {
+            error(FileErrors.cannotSave(file, e) + (Files.exists(file) ? ". The file on disk is unchanged." : ""));
+            return false;
+        }
+    }
+
+    private void show(Board board, Path file, int skippedLines, String message) {
+        loop.stop();
+        session.loadWithout(board, file, skippedLines);
+        status.accept(message);
+    }
+
+    /** Shows a lower-case sentence of FileErrors (shared with the headless runner) as the player reads it. */
+    private void error(String sentence) {
+        String message = Character.toUpperCase(sentence.charAt(0)) + sentence.substring(1);
+        status.accept(message);
+        JOptionPane.showMessageDialog(window, message, "Gizmoball", JOptionPane.ERROR_MESSAGE);
+    }
+
+    private static List<String> describe(List<BoardFileError> errors) {
+        return errors.stream().map(e -> "line " + e.line() + ": " + e.text().strip() + "   <- " + e.reason()).toList();
+    }
+
+    /** A question with these buttons, the last (Cancel) the default; the index of the one chosen, -1 if closed. */
+    private int ask(String question, String title, String... choices) {
+        return JOptionPane.showOptionDialog(window, question, title, JOptionPane.DEFAULT_OPTION,
+                JOptionPane.WARNING_MESSAGE, null, choices, choices[choices.length - 1]);
+    }
+
+    private static String lines(int count) {
+        return count + (count == 1 ? " bad line" : " bad lines");
+    }
+}

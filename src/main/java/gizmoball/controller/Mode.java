@@ -1,4 +1,0 @@
-package gizmoball.controller;
-
-/** What the window is doing with its board: playing it, or editing it. */
-public enum Mode { PLAY, BUILD }

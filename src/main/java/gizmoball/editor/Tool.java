@@ -1,0 +1,65 @@
+package gizmoball.editor;
+
+import gizmoball.model.GizmoKind;
+
+import java.awt.event.KeyEvent;
+import java.util.Arrays;
+import java.util.Optional;
+
+/** The build-mode tools, in palette order, each with the key that selects it and the hint the status line shows. */
+public enum Tool {
+    SQUARE("Square", KeyEvent.VK_S, GizmoKind.SQUARE, "click a cell to place a square bumper"),
+    CIRCLE("Circle", KeyEvent.VK_C, GizmoKind.CIRCLE, "click a cell to place a circle bumper"),
+    TRIANGLE("Triangle", KeyEvent.VK_T, GizmoKind.TRIANGLE, "click a cell to place a triangle bumper"),
+    LEFT_FLIPPER("Left Flipper", KeyEvent.VK_L, GizmoKind.LEFT_FLIPPER, "click the top-left cell of a 2x2 box"),
+    RIGHT_FLIPPER("Right Flipper", KeyEvent.VK_R, GizmoKind.RIGHT_FLIPPER, "click the top-left cell of a 2x2 box"),
+    ABSORBER("Absorber", KeyEvent.VK_A, GizmoKind.ABSORBER, "drag out a rectangle of cells"),
+    BALL("Ball", KeyEvent.VK_B, null, "click to place a ball; drag before releasing to give it a velocity"),
+    SELECT("Select / Move", KeyEvent.VK_M, null, "click to select, drag a gizmo or ball to move it"),
+    ROTATE("Rotate", KeyEvent.VK_O, null, "click a gizmo to turn it 90 degrees clockwise"),
+    DELETE("Delete", KeyEvent.VK_D, null, "click a gizmo or ball to delete it"),
+    CONNECT("Connect", KeyEvent.VK_N, null,
+            "click the trigger source (outside the board = outer walls), then the gizmo it drives"),
+    DISCONNECT("Disconnect", KeyEvent.VK_X, null, "click the source, then the target of the connection to remove"),
+    KEY_CONNECT("Key Connect", KeyEvent.VK_K, null, "click a gizmo, press the key, then choose down or up"),
+    KEY_DISCONNECT("Key Disconnect", KeyEvent.VK_U, null, "click a gizmo, then press the key to unbind");
+
+    private final String label;
+    private final int shortcut;
+    private final GizmoKind kind;
+    private final String hint;
+
+    Tool(String label, int shortcut, GizmoKind kind, String hint) {
+        this.label = label;
+        this.shortcut = shortcut;
+        this.kind = kind;
+        this.hint = hint;
+    }
+
+    public String label() {
+        return label;
+    }
+
+    /** KeyEvent code of the (unmodified) key that selects this tool in build mode. */
+    public int shortcut() {
+        return shortcut;
+    }
+
+    /** The gizmo kind this tool places, if it is a placement tool. */
+    public Optional<GizmoKind> kind() {
+        return Optional.ofNullable(kind);
+    }
+
+    public String hint() {
+        return hint;
+    }
+
+    /** "Square (S)" style text for tooltips and the status line. */
+    public String labelWithShortcut() {
+        return label + " (" + KeyEvent.getKeyText(shortcut) + ")";
+    }
+
+    public static Optional<Tool> forShortcut(int keyCode) {
+        return Arrays.stream(values()).filter(t -> t.shortcut == keyCode).findFirst();
+    }
+}

@@ -1,0 +1,122 @@
+package gizmoball.view.editor;
+
+import gizmoball.editor.Editor;
+import gizmoball.view.BoardPanel;
+import physics.Vect;
+
+import javax.swing.SwingUtilities;
+import java.awt.event.KeyEvent;
+import java.awt.event.KeyListener;
+import java.awt.event.MouseAdapter;
+import java.awt.event.MouseEvent;
+import java.util.function.BooleanSupplier;
+
+/**
+ * Turns mouse and key events on the board view into {@link Editor} calls in board coordinates.
+ * It listens all the time but acts only while {@code active} says so (build mode): play mode keeps the keys.
+ */
+public final class BoardInput extends MouseAdapter implements KeyListener {
+    private final Editor controller;
+    private final BoardPanel panel;
+    private final BooleanSupplier active;
+    private final Runnable chooseEdge;
+
+    /**
+     * @param chooseEdge asked to let the user pick down or up once Key Connect has its key (e.g. a popup menu)
+     */
+    private BoardInput(Editor controller, BoardPanel panel, BooleanSupplier active, Runnable chooseEdge) {
+        this.controller = controller;
+        this.panel = panel;
+        this.active = active;
+        this.chooseEdge = chooseEdge;
+    }
+
+    public static BoardInput attach(Editor controller, BoardPanel panel, BooleanSupplier active,
+                                    Runnable chooseEdge) {
+        BoardInput input = new BoardInput(controller, panel, active, chooseEdge);
+        panel.addMouseListener(input);
+        panel.addMouseMotionListener(input);
+        panel.addKeyListener(input);
+        panel.setFocusable(true);
+        return input;
+    }
+
+    @Override
+    public void mousePressed(MouseEvent e) {
+        if (!active.getAsBoolean()) {
+            return;
+        }
+        // Keys (tool shortcuts, Key Connect) go to the board once the author works on it.
+        panel.requestFocusInWindow();
+        if (SwingUtilities.isLeftMouseButton(e)) {
+            Vect p = toBoard(e);
+            controller.press(p.x(), p.y());
+            afterKeyOrClick();
+        } else if (SwingUtilities.isRightMouseButton(e)) {
+            controller.cancel();
+        }
+    }
+
+    @Override
+    public void mouseDragged(MouseEvent e) {
+        if (active.getAsBoolean() && SwingUtilities.isLeftMouseButton(e)) {
+            Vect p = toBoard(e);
+            controller.drag(p.x(), p.y());
+        }
+    }
+
+    @Override
+    public void mouseReleased(MouseEvent e) {
+        if (active.getAsBoolean() && SwingUtilities.isLeftMouseButton(e)) {
+            Vect p = toBoard(e);
+            controller.release(p.x(), p.y());
+        }
+    }
+
+    @Override
+    public void mouseMoved(MouseEvent e) {
+        if (active.getAsBoolean()) {
+            Vect p = toBoard(e);
+            controller.hover(p.x(), p.y());
+        }
+    }
+
+    @Override
+    public void mouseExited(MouseEvent e) {
+        if (active.getAsBoolean()) {
+            controller.exit();
+        }
+    }
+
+    @Override
+    public void keyPressed(KeyEvent e) {
+        if (!active.getAsBoolean()) {
+            return;
+        }
+        boolean command = e.isControlDown() || e.isAltDown() || e.isMetaDown();
+        if (controller.keyPressed(e.getKeyCode(), command)) {
+            e.consume();
+            afterKeyOrClick();
+        }
+    }
+
+    @Override
+    public void keyReleased(KeyEvent e) {
+        // Bindings are made on press; the edge (down/up) is chosen explicitly.
+    }
+
+    @Override
+    public void keyTyped(KeyEvent e) {
+        // Key codes, not characters, are what key connections use.
+    }
+
+    private void afterKeyOrClick() {
+        if (controller.awaitingEdge()) {
+            chooseEdge.run();
+        }
+    }
+
+    private Vect toBoard(MouseEvent e) {
+        return panel.transform().toBoard(e.getX(), e.getY());
+    }
+}

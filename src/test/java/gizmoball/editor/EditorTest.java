@@ -1,0 +1,602 @@
+package gizmoball.editor;
+
+import gizmoball.model.Ball;
+import gizmoball.model.Board;
+import gizmoball.model.Connection;
+import gizmoball.model.Flipper;
+import gizmoball.model.Gizmo;
+import gizmoball.model.GizmoKind;
+import gizmoball.model.KeyBinding;
+import gizmoball.model.KeyEdge;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+import java.awt.event.KeyEvent;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Optional;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
+
+class EditorTest {
+    private Board board;
+    private Editor editor;
+    private final List<String> messages = new ArrayList<>();
+    private int edits;
+
+    @BeforeEach
+    void setUp() {
+        board = new Board();
+        editor = new Editor(board);
+        editor.setMessageSink(messages::add);
+        editor.addEditListener(() -> edits++);
+    }
+
+    /** Clicks the middle of a cell with the given tool. */
+    private void click(Tool tool, int cx, int cy) {
+        editor.setTool(tool);
+        clickCell(cx, cy);
+    }
+
+    private void clickCell(int cx, int cy) {
+        editor.press(cx + 0.5, cy + 0.5);
+        editor.release(cx + 0.5, cy + 0.5);
+    }
+
+    private void drag(double x0, double y0, double x1, double y1) {
+        editor.press(x0, y0);
+        editor.drag((x0 + x1) / 2, (y0 + y1) / 2);
+        editor.release(x1, y1);
+    }
+
+    private String lastMessage() {
+        return messages.get(messages.size() - 1);
+    }
+
+    private Gizmo gizmo(String name) {
+        return board.gizmo(name).orElseThrow(() -> new AssertionError("no gizmo " + name + " on " + board.gizmos()));
+    }
+
+    @ParameterizedTest(name = "{0} placed at ({2},{3}) is named {1}")
+    @CsvSource({
+            "SQUARE, S1, 3, 4, SQUARE, 1, 1",
+            "CIRCLE, C1, 0, 0, CIRCLE, 1, 1",
+            "TRIANGLE, T1, 19, 19, TRIANGLE, 1, 1",
+            "LEFT_FLIPPER, LF1, 5, 10, LEFT_FLIPPER, 2, 2",
+            "RIGHT_FLIPPER, RF1, 18, 18, RIGHT_FLIPPER, 2, 2"})
+    void clickingPlacesEachGizmoKindWithAGeneratedName(Tool tool, String name, int x, int y, GizmoKind kind,
+                                                       int width, int height) {
+        click(tool, x, y);
+
+        Gizmo g = gizmo(name);
+        assertThat(g.kind()).isEqualTo(kind);
+        assertThat(List.of(g.x(), g.y(), g.width(), g.height())).containsExactly(x, y, width, height);
+        assertThat(editor.selected()).contains(name);
+        assertThat(edits).isEqualTo(1);
+    }
+
+    @Test
+    void absorberIsTheRectangleDraggedOutInEitherDirection() {
+        editor.setTool(Tool.ABSORBER);
+        drag(2.5, 18.5, 7.5, 19.5);
+        drag(19.9, 16.9, 12.1, 15.1);
+
+        Gizmo a1 = gizmo("A1");
+        assertThat(List.of(a1.x(), a1.y(), a1.width(), a1.height())).containsExactly(2, 18, 6, 2);
+        Gizmo a2 = gizmo("A2");
+        assertThat(List.of(a2.x(), a2.y(), a2.width(), a2.height())).containsExactly(12, 15, 8, 2);
+    }
+
+    @Test
+    void ballIsPlacedAtTheSnappedClickAndTheDragGivesItsVelocity() {
+        editor.setTool(Tool.BALL);
+        // Press 5.1 snaps the centre to the quarter-cell 5.0; the drag from the press, (+1.2, -0.9) L, is
+        // (12, -9) L/s at 10 L/s per L.
+        drag(5.1, 5.1, 6.3, 4.2);
+
+        Ball b = board.ball("B1").orElseThrow();
+        assertThat(b.position().x()).isEqualTo(5.0);
+        assertThat(b.position().y()).isEqualTo(5.0);
+        assertThat(b.velocity().x()).isCloseTo(12, within(1e-9));
+        assertThat(b.velocity().y()).isCloseTo(-9, within(1e-9));
+        assertThat(editor.selected()).contains("B1");
+    }
+
+    @Test
+    void aClickWithTheBallToolPlacesABallAtRestEvenOffTheSnapPoints() {
+        editor.setTool(Tool.BALL);
+        drag(7.37, 7.62, 7.4, 7.6);
+        Ball b = board.ball("B1").orElseThrow();
+        assertThat(List.of(b.position().x(), b.position().y())).containsExactly(7.25, 7.5);
+        assertThat(List.of(b.velocity().x(), b.velocity().y())).containsExactly(0.0, 0.0);
+    }
+
+    @Test
+    void draggingAGizmoMovesItKeepingTheCellThatWasGrabbed() {
+        click(Tool.LEFT_FLIPPER, 4, 4);
+        editor.setTool(Tool.SELECT);
+        // Grabbed by its lower-right cell (5,5); released over (10,12): the box's top-left goes to (9,11).
+        drag(5.5, 5.5, 10.5, 12.5);
+
+        Gizmo lf = gizmo("LF1");
+        assertThat(List.of(lf.x(), lf.y())).containsExactly(9, 11);
+        assertThat(edits).isEqualTo(2);
+    }
+
+    @Test
+    void draggingOntoAnotherGizmoIsRefusedAndLeavesBothInPlace() {
+        click(Tool.SQUARE, 3, 3);
+        click(Tool.CIRCLE, 6, 3);
+        Design before = Design.of(board);
+        editor.setTool(Tool.SELECT);
+        drag(3.5, 3.5, 6.5, 3.5);
+
+        assertThat(Design.of(board)).isEqualTo(before);
+        assertThat(lastMessage()).contains("overlap");
+    }
+
+    @Test
+    void draggingABallMovesItsCentreByTheDragSnappedToQuarterCells() {
+        board.addBall("B1", 3.0, 3.0, 1, 2);
+        editor.setTool(Tool.SELECT);
+        drag(3.1, 2.9, 8.2, 10.9);
+
+        Ball b = board.ball("B1").orElseThrow();
+        // 3.0 + (8.2 - 3.1) = 8.1 -> 8.0;  3.0 + (10.9 - 2.9) = 11.0
+        assertThat(b.position().x()).isCloseTo(8.0, within(1e-9));
+        assertThat(b.position().y()).isCloseTo(11.0, within(1e-9));
+        assertThat(b.velocity().y()).isCloseTo(2, within(1e-9));
+    }
+
+    @Test
+    void clickingABallWithoutDraggingOnlySelectsIt() {
+        board.addBall("Ball", 3.1, 3.3, 0, 0);
+        editor.setTool(Tool.SELECT);
+        drag(3.1, 3.3, 3.12, 3.31);
+
+        assertThat(board.ball("Ball").orElseThrow().position().x()).isEqualTo(3.1);
+        assertThat(editor.selected()).contains("Ball");
+        assertThat(edits).isZero();
+    }
+
+    @Test
+    void rotateTurnsAGizmoAQuarterClockwiseEachClick() {
+        click(Tool.TRIANGLE, 7, 7);
+        editor.setTool(Tool.ROTATE);
+        clickCell(7, 7);
+        assertThat(gizmo("T1").rotation()).isEqualTo(1);
+        clickCell(7, 7);
+        clickCell(7, 7);
+        clickCell(7, 7);
+        assertThat(gizmo("T1").rotation()).isZero();
+    }
+
+    @Test
+    void rotatingAFlipperByClickingItsLowerCellWorks() {
+        click(Tool.RIGHT_FLIPPER, 10, 10);
+        editor.setTool(Tool.ROTATE);
+        clickCell(11, 11);
+        assertThat(gizmo("RF1").rotation()).isEqualTo(1);
+    }
+
+    @Test
+    void deleteRemovesTheGizmoWithItsConnectionsAndBindings() {
+        click(Tool.SQUARE, 1, 1);
+        click(Tool.LEFT_FLIPPER, 4, 4);
+        board.connect("S1", "LF1");
+        board.bindKey(KeyEvent.VK_SPACE, KeyEdge.DOWN, "LF1");
+
+        click(Tool.DELETE, 5, 5);
+
+        assertThat(board.gizmo("LF1")).isEmpty();
+        assertThat(board.connections()).isEmpty();
+        assertThat(board.keyBindings()).isEmpty();
+        assertThat(board.gizmo("S1")).isPresent();
+    }
+
+    @Test
+    void deleteTakesABallBeforeTheAbsorberHoldingIt() {
+        editor.setTool(Tool.ABSORBER);
+        drag(0.5, 19.5, 19.5, 19.5);
+        board.addBall("B1", 19.75, 19.75, 0, 0);
+
+        editor.setTool(Tool.DELETE);
+        editor.press(19.7, 19.7);
+
+        assertThat(board.balls()).isEmpty();
+        assertThat(board.gizmo("A1")).isPresent();
+    }
+
+    @Test
+    void deleteOnAnEmptyCellSaysSo() {
+        click(Tool.DELETE, 9, 9);
+        assertThat(lastMessage()).isEqualTo("Nothing here to delete");
+        assertThat(edits).isZero();
+    }
+
+    @Test
+    void connectJoinsTheFirstClickedSourceToTheSecondClickedTarget() {
+        click(Tool.CIRCLE, 2, 2);
+        click(Tool.LEFT_FLIPPER, 8, 8);
+        editor.setTool(Tool.CONNECT);
+        clickCell(2, 2);
+        assertThat(editor.connectSource()).contains("C1");
+        clickCell(9, 9);
+
+        assertThat(board.connections()).containsExactly(new Connection("C1", "LF1"));
+        assertThat(editor.connectSource()).isEmpty();
+        assertThat(editor.selected()).contains("C1");
+    }
+
+    @ParameterizedTest(name = "a click at ({0},{1}) picks the outer walls")
+    @CsvSource({"-1, 5", "5, -0.5", "20.5, 20.5", "19.9, 10.5", "10.5, 0.1"})
+    void connectTakesTheOuterWallsAsSourceOutsideOrOnTheBorder(double x, double y) {
+        click(Tool.ABSORBER, 10, 18);
+        editor.setTool(Tool.CONNECT);
+        editor.press(x, y);
+        clickCell(10, 18);
+
+        assertThat(board.connections()).containsExactly(new Connection(Board.OUTER_WALLS, "A1"));
+    }
+
+    @Test
+    void aGizmoInABorderCellIsTheGizmoNotTheWalls() {
+        click(Tool.SQUARE, 0, 5);
+        click(Tool.SQUARE, 3, 5);
+        editor.setTool(Tool.CONNECT);
+        editor.press(0.1, 5.5);
+        clickCell(3, 5);
+        assertThat(board.connections()).containsExactly(new Connection("S1", "S2"));
+    }
+
+    @Test
+    void theOuterWallsCannotBeATarget() {
+        click(Tool.SQUARE, 3, 3);
+        editor.setTool(Tool.CONNECT);
+        clickCell(3, 3);
+        editor.press(-2, 4);
+
+        assertThat(board.connections()).isEmpty();
+        assertThat(lastMessage()).contains("outer walls can only be a trigger source");
+        assertThat(editor.connectSource()).contains("S1");
+    }
+
+    @Test
+    void aRefusedConnectionReportsTheBoardsReason() {
+        click(Tool.SQUARE, 3, 3);
+        click(Tool.SQUARE, 5, 3);
+        editor.setTool(Tool.CONNECT);
+        clickCell(3, 3);
+        clickCell(5, 3);
+        clickCell(3, 3);
+        clickCell(5, 3);
+
+        assertThat(board.connections()).containsExactly(new Connection("S1", "S2"));
+        assertThat(messages).anyMatch(m -> m.startsWith("Connected"));
+        assertThat(lastMessage()).doesNotStartWith("Connected");
+        assertThat(edits).isEqualTo(3);
+    }
+
+    @Test
+    void disconnectRemovesTheClickedConnection() {
+        click(Tool.SQUARE, 3, 3);
+        click(Tool.SQUARE, 5, 3);
+        board.connect("S1", "S2");
+        board.connect("S2", "S1");
+        editor.setTool(Tool.DISCONNECT);
+        clickCell(3, 3);
+        clickCell(5, 3);
+
+        assertThat(board.connections()).containsExactly(new Connection("S2", "S1"));
+    }
+
+    @Test
+    void keyConnectBindsAKeyThatThenSwingsTheFlipperInPlay() {
+        click(Tool.LEFT_FLIPPER, 4, 16);
+        editor.setTool(Tool.KEY_CONNECT);
+        clickCell(4, 16);
+        assertThat(editor.keyPressed(KeyEvent.VK_SPACE, false)).isTrue();
+        assertThat(editor.awaitingEdge()).isTrue();
+        editor.chooseEdge(KeyEdge.DOWN);
+
+        assertThat(board.keyBindings()).containsExactly(new KeyBinding(KeyEvent.VK_SPACE, KeyEdge.DOWN, "LF1"));
+        assertThat(editor.awaitingEdge()).isFalse();
+
+        board.keyDown(KeyEvent.VK_SPACE);
+        // 1080 deg/s for 0.1 s would be 108 degrees: the flipper has reached its 90-degree stop.
+        board.tick(0.1);
+        Flipper lf = (Flipper) gizmo("LF1");
+        assertThat(lf.isActive()).isTrue();
+        assertThat(lf.angleFromRest()).isCloseTo(90, within(1e-9));
+    }
+
+    @Test
+    void keyConnectTakesLetterKeysThatOtherwiseChooseTools() {
+        click(Tool.CIRCLE, 4, 4);
+        editor.setTool(Tool.KEY_CONNECT);
+        clickCell(4, 4);
+        editor.keyPressed(KeyEvent.VK_S, false);
+        editor.chooseEdge(KeyEdge.UP);
+
+        assertThat(editor.tool()).isEqualTo(Tool.KEY_CONNECT);
+        assertThat(board.keyBindings()).containsExactly(new KeyBinding(KeyEvent.VK_S, KeyEdge.UP, "C1"));
+    }
+
+    @Test
+    void escapeCancelsAPendingKeyConnect() {
+        click(Tool.CIRCLE, 4, 4);
+        editor.setTool(Tool.KEY_CONNECT);
+        clickCell(4, 4);
+        editor.keyPressed(KeyEvent.VK_Z, false);
+        editor.keyPressed(KeyEvent.VK_ESCAPE, false);
+
+        assertThat(editor.chooseEdge(KeyEdge.DOWN)).isFalse();
+        assertThat(board.keyBindings()).isEmpty();
+    }
+
+    @Test
+    void keyDisconnectRemovesBothEdgesOfThePressedKeyOnly() {
+        click(Tool.RIGHT_FLIPPER, 10, 16);
+        board.bindKey(KeyEvent.VK_M, KeyEdge.DOWN, "RF1");
+        board.bindKey(KeyEvent.VK_M, KeyEdge.UP, "RF1");
+        board.bindKey(KeyEvent.VK_N, KeyEdge.DOWN, "RF1");
+
+        editor.setTool(Tool.KEY_DISCONNECT);
+        clickCell(11, 17);
+        editor.keyPressed(KeyEvent.VK_M, false);
+
+        assertThat(board.keyBindings()).containsExactly(new KeyBinding(KeyEvent.VK_N, KeyEdge.DOWN, "RF1"));
+        editor.undo();
+        assertThat(board.keyBindings()).hasSize(3);
+    }
+
+    @Test
+    void aRefusedOverlapLeavesTheBoardUnchangedAndSaysWhy() {
+        click(Tool.SQUARE, 3, 4);
+        Design before = Design.of(board);
+        click(Tool.LEFT_FLIPPER, 2, 3);
+
+        assertThat(Design.of(board)).isEqualTo(before);
+        assertThat(lastMessage()).contains("overlap").contains("S1");
+        assertThat(edits).isEqualTo(1);
+        editor.undo();
+        assertThat(board.gizmos()).isEmpty();
+        assertThat(editor.history().canUndo()).isFalse();
+    }
+
+    @Test
+    void aPlacementLeavingTheBoardIsRefusedWithTheReason() {
+        click(Tool.LEFT_FLIPPER, 19, 5);
+        assertThat(board.gizmos()).isEmpty();
+        assertThat(lastMessage()).containsIgnoringCase("outside");
+    }
+
+    @Test
+    void hoverPreviewsWhetherAPlacementFits() {
+        click(Tool.SQUARE, 3, 3);
+        editor.setTool(Tool.LEFT_FLIPPER);
+        editor.hover(10.5, 10.5);
+        assertThat(editor.preview()).get().isEqualTo(
+                new Preview.Footprint(10, 10, 2, 2, Optional.empty()));
+
+        messages.clear();
+        editor.hover(2.5, 2.5);
+        Preview refused = editor.preview().orElseThrow();
+        assertThat(refused.fits()).isFalse();
+        assertThat(refused.problem().orElseThrow()).contains("overlap");
+        assertThat(messages).containsExactly(refused.problem().get());
+        // Moving within the same refusal does not repeat the message.
+        editor.hover(2.7, 2.2);
+        assertThat(messages).hasSize(1);
+    }
+
+    @Test
+    void undoAndRedoStepThroughEveryEdit() {
+        click(Tool.SQUARE, 1, 1);
+        click(Tool.CIRCLE, 2, 2);
+        click(Tool.TRIANGLE, 3, 3);
+        click(Tool.ROTATE, 3, 3);
+        Design all = Design.of(board);
+
+        assertThat(editor.undo()).isTrue();
+        assertThat(gizmo("T1").rotation()).isZero();
+        editor.undo();
+        editor.undo();
+        assertThat(board.gizmos()).extracting(Gizmo::name).containsExactly("S1");
+        editor.redo();
+        editor.redo();
+        editor.redo();
+        assertThat(Design.of(board)).isEqualTo(all);
+        assertThat(editor.redo()).isFalse();
+        assertThat(lastMessage()).isEqualTo("Nothing to redo");
+    }
+
+    @Test
+    void aNewEditAfterUndoDropsTheRedoSteps() {
+        click(Tool.SQUARE, 1, 1);
+        click(Tool.SQUARE, 2, 2);
+        editor.undo();
+        assertThat(lastMessage()).isEqualTo("Undone: Placed S2 at (2,2)");
+        click(Tool.CIRCLE, 5, 5);
+
+        assertThat(editor.history().canRedo()).isFalse();
+        assertThat(board.gizmos()).extracting(Gizmo::name).containsExactly("S1", "C1");
+    }
+
+    @Test
+    void generatedNamesSkipNamesInUseByGizmosOrBalls() {
+        board.addGizmo(GizmoKind.SQUARE, "S1", 0, 0);
+        board.addBall("S2", 5.5, 5.5, 0, 0);
+        click(Tool.SQUARE, 1, 0);
+        assertThat(gizmo("S3").x()).isEqualTo(1);
+
+        click(Tool.DELETE, 0, 0);
+        click(Tool.SQUARE, 2, 0);
+        assertThat(gizmo("S1").x()).isEqualTo(2);
+    }
+
+    @Test
+    void constantsAreValidatedAndSetAsOneUndoStep() {
+        assertThat(editor.setConstants("12.5", "abc", "0.1")).isFalse();
+        assertThat(lastMessage()).isEqualTo("mu: \"abc\" is not a number");
+        assertThat(board.gravity()).isEqualTo(Board.DEFAULT_GRAVITY);
+
+        assertThat(editor.setConstants("12.5", "0.5", "-1")).isFalse();
+        assertThat(board.gravity()).isEqualTo(Board.DEFAULT_GRAVITY);
+        assertThat(board.mu()).isEqualTo(Board.DEFAULT_MU);
+
+        assertThat(editor.setConstants(" 12.5 ", "0.5", "0.1")).isTrue();
+        assertThat(List.of(board.gravity(), board.mu(), board.mu2())).containsExactly(12.5, 0.5, 0.1);
+        editor.undo();
+        assertThat(List.of(board.gravity(), board.mu(), board.mu2()))
+                .containsExactly(Board.DEFAULT_GRAVITY, Board.DEFAULT_MU, Board.DEFAULT_MU2);
+        assertThat(editor.history().canUndo()).isFalse();
+    }
+
+    @Test
+    void theSelectedBallsPositionAndVelocityCanBeTypedIn() {
+        board.addBall("B1", 3, 3, 0, 0);
+        assertThat(editor.setBall("B1", "4.5", "6", "-3", "7.25")).isTrue();
+        Ball b = board.ball("B1").orElseThrow();
+        assertThat(List.of(b.position().x(), b.position().y(), b.velocity().x(), b.velocity().y()))
+                .containsExactly(4.5, 6.0, -3.0, 7.25);
+
+        Design before = Design.of(board);
+        assertThat(editor.setBall("B1", "25", "6", "1", "1")).isFalse();
+        assertThat(Design.of(board)).isEqualTo(before);
+        assertThat(editor.setBall("B1", "4.5", "6", "x", "1")).isFalse();
+        assertThat(lastMessage()).isEqualTo("vx: \"x\" is not a number");
+        assertThat(Design.of(board)).isEqualTo(before);
+    }
+
+    @Test
+    void clearBoardEmptiesItAndUndoBringsItBack() {
+        click(Tool.SQUARE, 1, 1);
+        click(Tool.LEFT_FLIPPER, 4, 4);
+        board.connect("S1", "LF1");
+        editor.setConstants("10", "0", "0");
+        Design full = Design.of(board);
+
+        editor.clearBoard();
+        assertThat(board.gizmos()).isEmpty();
+        assertThat(board.connections()).isEmpty();
+        assertThat(board.gravity()).isEqualTo(Board.DEFAULT_GRAVITY);
+        editor.undo();
+        assertThat(Design.of(board)).isEqualTo(full);
+    }
+
+    @Test
+    void toolShortcutsSwitchToolsButNotWithCtrl() {
+        assertThat(editor.keyPressed(KeyEvent.VK_T, false)).isTrue();
+        assertThat(editor.tool()).isEqualTo(Tool.TRIANGLE);
+        assertThat(editor.keyPressed(KeyEvent.VK_S, true)).isFalse();
+        assertThat(editor.tool()).isEqualTo(Tool.TRIANGLE);
+        assertThat(editor.keyPressed(KeyEvent.VK_F12, false)).isFalse();
+    }
+
+    @Test
+    void everyToolHasItsOwnShortcut() {
+        assertThat(Arrays.stream(Tool.values()).map(Tool::shortcut).distinct())
+                .hasSize(Tool.values().length);
+    }
+
+    @Test
+    void theDeleteKeyDeletesTheSelection() {
+        click(Tool.SQUARE, 6, 6);
+        editor.setTool(Tool.SELECT);
+        clickCell(6, 6);
+        editor.keyPressed(KeyEvent.VK_DELETE, false);
+        assertThat(board.gizmos()).isEmpty();
+        assertThat(editor.selected()).isEmpty();
+    }
+
+    @Test
+    void selectingOutsideTheBoardSelectsTheOuterWalls() {
+        editor.setTool(Tool.SELECT);
+        editor.press(-1, 10);
+        editor.release(-1, 10);
+        assertThat(editor.selected()).contains(Board.OUTER_WALLS);
+        assertThat(editor.deleteSelected()).isFalse();
+    }
+
+    @Test
+    void theTargetUnderThePointerDependsOnTheTool() {
+        click(Tool.SQUARE, 4, 4);
+        board.addBall("B1", 8.5, 8.5, 0, 0);
+        editor.setTool(Tool.ROTATE);
+        editor.hover(4.5, 4.5);
+        assertThat(editor.target()).contains("S1");
+        editor.hover(8.5, 8.6);
+        assertThat(editor.target()).isEmpty();
+
+        editor.setTool(Tool.DELETE);
+        editor.hover(8.5, 8.6);
+        assertThat(editor.target()).contains("B1");
+
+        editor.setTool(Tool.CONNECT);
+        editor.hover(-1, 3);
+        assertThat(editor.target()).contains(Board.OUTER_WALLS);
+
+        editor.setTool(Tool.SQUARE);
+        editor.hover(4.5, 4.5);
+        assertThat(editor.target()).isEmpty();
+        editor.exit();
+        assertThat(editor.pointer()).isEmpty();
+    }
+
+    @Test
+    void keyConnectSaysWhichGizmoWaitsForAKey() {
+        click(Tool.TRIANGLE, 4, 4);
+        editor.setTool(Tool.KEY_CONNECT);
+        assertThat(editor.awaitingKeyFor()).isEmpty();
+        clickCell(4, 4);
+        assertThat(editor.awaitingKeyFor()).contains("T1");
+        editor.keyPressed(KeyEvent.VK_Q, false);
+        assertThat(editor.awaitingKeyFor()).isEmpty();
+        assertThat(editor.awaitingEdge()).isTrue();
+    }
+
+    @Test
+    void arrowKeysNudgeTheSelectionByACellOrAQuarterCellAndStopAtTheEdge() {
+        click(Tool.SQUARE, 0, 3);
+        editor.keyPressed(KeyEvent.VK_RIGHT, false);
+        editor.keyPressed(KeyEvent.VK_DOWN, false);
+        assertThat(List.of(gizmo("S1").x(), gizmo("S1").y())).containsExactly(1, 4);
+        editor.keyPressed(KeyEvent.VK_LEFT, false);
+        editor.keyPressed(KeyEvent.VK_LEFT, false);
+        assertThat(gizmo("S1").x()).isZero();
+        assertThat(lastMessage()).containsIgnoringCase("outside");
+
+        board.addBall("B1", 5, 5, 0, 0);
+        editor.select("B1");
+        editor.keyPressed(KeyEvent.VK_UP, false);
+        assertThat(board.ball("B1").orElseThrow().position().y()).isEqualTo(4.75);
+    }
+
+    @Test
+    void ctrlCombinationsAreNotTakenAsTheKeyToBind() {
+        click(Tool.CIRCLE, 4, 4);
+        editor.setTool(Tool.KEY_CONNECT);
+        clickCell(4, 4);
+        assertThat(editor.keyPressed(KeyEvent.VK_Z, true)).isFalse();
+        assertThat(editor.awaitingKeyFor()).contains("C1");
+    }
+
+    @Test
+    void theArrowKeysAnswerDownOrUpAndOtherKeysWaitMeanwhile() {
+        click(Tool.RIGHT_FLIPPER, 12, 16);
+        editor.setTool(Tool.KEY_CONNECT);
+        clickCell(12, 16);
+        editor.keyPressed(KeyEvent.VK_SLASH, false);
+        assertThat(editor.keyPressed(KeyEvent.VK_S, false)).isTrue();
+        assertThat(editor.tool()).isEqualTo(Tool.KEY_CONNECT);
+        editor.keyPressed(KeyEvent.VK_UP, false);
+
+        assertThat(board.keyBindings()).containsExactly(new KeyBinding(KeyEvent.VK_SLASH, KeyEdge.UP, "RF1"));
+        assertThat(editor.awaitingEdge()).isFalse();
+    }
+}
