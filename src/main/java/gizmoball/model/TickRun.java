@@ -48,6 +48,8 @@ final class TickRun {
     private static final int ZERO_TIME_HITS_BEFORE_WEDGED = 32;
     /** A flipper striking the same ball this often in one tick has it pinched against something. */
     private static final int STRIKES_OF_A_PINCH = 2;
+    /** A flipper striking the same ball this often in one tick, nothing in between, is pushing it. */
+    private static final int STRIKES_OF_A_PUSH = 3;
     private static final int MAX_COLLISIONS_BASE = 500;
     private static final int MAX_COLLISIONS_PER_BALL = 100;
 
@@ -71,6 +73,8 @@ final class TickRun {
     private final List<Ball> awake = new ArrayList<>();
     private final Map<Ball, Integer> zeroTimeHits = new HashMap<>();
     private final Map<Strike, Integer> strikes = new HashMap<>();
+    /** Balls that met something else since a swinging flipper last struck them in this tick. */
+    private final Set<Ball> metSinceStrike = new HashSet<>();
     private final Map<Ball, Double> shadowAtStart = new HashMap<>();
     /** The normal of each ball's last elastic bounce this tick, in order of first bounce (runs stay bit-identical). */
     private final Map<Ball, Vect> elasticNormals = new LinkedHashMap<>();
@@ -228,6 +232,12 @@ final class TickRun {
         Contact contact = collision.contact();
         restingContact = false;
         ball.setStillTicks(0);
+        if (!(contact instanceof Contact.SwingingPart)) {
+            metSinceStrike.add(ball);
+            if (contact instanceof Contact.OtherBall other) {
+                metSinceStrike.add(other.other());
+            }
+        }
         String hit;
         if (contact instanceof Contact.OuterWall wall) {
             hitStill(ball, wall, null, normalFromSegment(ball, wall.segment()),
@@ -330,23 +340,45 @@ final class TickRun {
         Vect pivot = flipper.pivot();
         Circle circle = ball.circle();
         Vect before = ball.velocity();
-        if (part.circle()) {
-            ball.setVelocity(Geometry.reflectRotatingCircle(shape.circles().get(part.index()), pivot, omega, circle,
-                    before, Flipper.REFLECTION));
-        } else {
-            ball.setVelocity(Geometry.reflectRotatingWall(shape.segments().get(part.index()), pivot, omega, circle,
-                    before, Flipper.REFLECTION));
-        }
+        boolean cameBack = metSinceStrike.remove(ball);
+        int strike = strikes.merge(new Strike(ball, flipper), 1, Integer::sum);
+        ball.setVelocity(strike >= STRIKES_OF_A_PUSH && !cameBack
+                ? pushed(before, reflectOffSwinging(part, shape, pivot, omega, circle, Vect.ZERO))
+                : reflectOffSwinging(part, shape, pivot, omega, circle, before));
         board.recordEvent(new PlayEvent.Hit(flipper.name(), flipper.kind(), ball.velocity().minus(before).length() / 2));
-        if (strikes.merge(new Strike(ball, flipper), 1, Integer::sum) >= STRIKES_OF_A_PINCH) {
+        if (strike >= STRIKES_OF_A_PINCH && cameBack) {
             pinch(ball, flipper);
         }
         return flipper.name();
     }
 
+    private static Vect reflectOffSwinging(Contact.SwingingPart part, Shape shape, Vect pivot, double omega,
+                                           Circle circle, Vect velocity) {
+        return part.circle()
+                ? Geometry.reflectRotatingCircle(shape.circles().get(part.index()), pivot, omega, circle, velocity,
+                        Flipper.REFLECTION)
+                : Geometry.reflectRotatingWall(shape.segments().get(part.index()), pivot, omega, circle, velocity,
+                        Flipper.REFLECTION);
+    }
+
     /**
-     * The flipper met the ball again within the tick: the ball came straight back from something it is squeezed
-     * against, and each further strike would pump it faster in a shrinking gap. The jammed ball blocks the flipper
+     * A ball the flipper keeps striking with nothing in between is being pushed: each bounce leaves it a little
+     * slower than the surface further out, which meets it again at once, without end. It is batted as a ball at
+     * rest would be (the normal velocity a still ball would take), keeping its sliding along the surface, and so
+     * leaves the surface for good.
+     */
+    private static Vect pushed(Vect before, Vect fromRest) {
+        double speed = fromRest.length();
+        if (speed == 0) {
+            return before;
+        }
+        Vect normal = fromRest.times(1 / speed);
+        return before.minus(normal.times(before.dot(normal))).plus(fromRest);
+    }
+    /**
+     * The flipper met the ball again within the tick after the ball met something else: it came straight back from
+     * something it is squeezed against, and each further strike would pump it faster in a shrinking gap. (A ball
+     * struck again with nothing in between is only pushed on by a surface that moves faster further out.) The jammed ball blocks the flipper
      * where it is and stops (counted); it keeps everything it touches, the flipper too, as contacts.
      */
     private void pinch(Ball ball, Flipper flipper) {
