@@ -378,23 +378,27 @@ public class GeometryImpl implements GeometryInterface {
         if (Double.isInfinite(mass1) && Double.isInfinite(mass2)) {
             throw new IllegalArgumentException("at most one ball may have infinite mass");
         }
-        // The unit normal from centre 1 to centre 2 and the exchange along it, on the components: no allocation
-        // but the result.
-        double nx = center2.x() - center1.x();
-        double ny = center2.y() - center1.y();
-        if (nx == 0 && ny == 0) {
+        // Along d = centre 2 - centre 1 the normal part of u = v1 - v2 is d (u.d) / (d.d): no square root and no
+        // allocation but the result. d may be scaled freely, which keeps d.d normal for any distance.
+        double dx = center2.x() - center1.x();
+        double dy = center2.y() - center1.y();
+        if (dx == 0 && dy == 0) {
             throw new IllegalArgumentException("centres coincide at " + center1
                     + ": the contact normal is undefined");
         }
-        double inverseLength = 1 / norm(nx, ny);
-        nx *= inverseLength;
-        ny *= inverseLength;
-        double approach = (velocity1.x() - velocity2.x()) * nx + (velocity1.y() - velocity2.y()) * ny;
+        double dd = dx * dx + dy * dy;
+        if (dd < Double.MIN_NORMAL || dd == Double.POSITIVE_INFINITY) {
+            double scale = Math.max(Math.abs(dx), Math.abs(dy));
+            dx /= scale;
+            dy /= scale;
+            dd = dx * dx + dy * dy;
+        }
+        double approach = ((velocity1.x() - velocity2.x()) * dx + (velocity1.y() - velocity2.y()) * dy) / dd;
         // 2 m2 / (m1 + m2) and 2 m1 / (m1 + m2), written with mass ratios so that an infinite mass works.
         double change1 = 2 / (1 + mass1 / mass2) * approach;
         double change2 = 2 / (1 + mass2 / mass1) * approach;
-        return new VectPair(new Vect(velocity1.x() - nx * change1, velocity1.y() - ny * change1),
-                new Vect(velocity2.x() + nx * change2, velocity2.y() + ny * change2));
+        return new VectPair(new Vect(velocity1.x() - dx * change1, velocity1.y() - dy * change1),
+                new Vect(velocity2.x() + dx * change2, velocity2.y() + dy * change2));
     }
 
     /**
