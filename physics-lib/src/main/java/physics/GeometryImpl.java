@@ -248,8 +248,8 @@ public class GeometryImpl implements GeometryInterface {
      * Time until the ball touches the face of the segment that turns about {@code center} at
      * {@code angularVelocity} rad/s (positive turns +x toward +y) from its given position at time 0: what
      * {@link #timeUntilWallCollision} means, turning. Contacts whose foot lies on the segment, ends included, are
-     * found; contacts beyond the ends are left to zero-radius circles there ({@link #timeUntilRotatingCircleCollision}),
-     * and at angular velocity 0 the answer is the static one. Only times in [0, maximumForesight] are reported, so
+     * found; contacts beyond the ends are left to zero-radius circles there
+     * ({@link #timeUntilRotatingCircleCollision}), and at angular velocity 0 the answer is the static one. Only times in [0, maximumForesight] are reported, so
      * a caller whose rotation stops earlier uses an instance whose foresight is the remaining rotation time and then
      * treats the segment as static at its stop angle. At the returned time the ball is within 1e-10 L of touching
      * the face (never inside it); touching or overlapping the face and closing is 0. A ball at rest is found. See
