@@ -650,10 +650,15 @@ public final class Board {
     private void swung(Flipper flipper, boolean wasMoving) {
         if (flipper.isMoving() && !wasMoving) {
             recordEvent(new PlayEvent.Swing(flipper.name(), flipper.isActive()));
-            double margin = 2 * BALL_RADIUS;
-            sleepers.wakeWithin(flipper.x() - margin, flipper.y() - margin, flipper.x() + flipper.width() + margin,
-                    flipper.y() + flipper.height() + margin);
+            wakeSweep(flipper);
         }
+    }
+
+    /** Wakes every ball in the flipper's box, where all of its sweep lies, and what rests on them. */
+    void wakeSweep(Flipper flipper) {
+        double margin = 2 * BALL_RADIUS;
+        sleepers.wakeWithin(flipper.x() - margin, flipper.y() - margin, flipper.x() + flipper.width() + margin,
+                flipper.y() + flipper.height() + margin);
     }
 
     /**

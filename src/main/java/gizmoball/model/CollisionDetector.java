@@ -97,7 +97,7 @@ final class CollisionDetector {
         double time = Geometry.timeUntilBallBallCollision(ball.circle(), mine, other.circle(), theirs);
         if (time <= window) {
             Vect normal = ball.position().plus(mine.times(time)).minus(other.position().plus(theirs.times(time)));
-            if (closing(normal, relative)) {
+            if (closingOnCircle(normal, relative)) {
                 earliest.offer(time, ball, new Contact.OtherBall(other), true);
             }
         }
@@ -128,8 +128,8 @@ final class CollisionDetector {
         List<Circle> circles = shape.circles();
         for (int i = 0; i < circles.size(); i++) {
             double time = delay + Geometry.timeUntilCircleCollision(circles.get(i), circle, velocity);
-            if (time <= earliest.limit()
-                    && closing(ball.position().plus(velocity.times(time)).minus(circles.get(i).getCenter()), velocity)) {
+            if (time <= earliest.limit() && closingOnCircle(
+                    ball.position().plus(velocity.times(time)).minus(circles.get(i).getCenter()), velocity)) {
                 earliest.offer(time, ball, new Contact.Round(gizmo, i, circles.get(i)), true);
             }
         }
@@ -165,8 +165,8 @@ final class CollisionDetector {
             if (i == Flipper.PIVOT_CIRCLE) {
                 // Its centre is the pivot: it turns in place, a still circle to the ball.
                 double time = Geometry.timeUntilCircleCollision(end, circle, velocity);
-                if (time <= earliest.limit() && closing(ball.position().plus(velocity.times(time)).minus(end.getCenter()),
-                        velocity)) {
+                if (time <= earliest.limit() && closingOnCircle(
+                        ball.position().plus(velocity.times(time)).minus(end.getCenter()), velocity)) {
                     earliest.offer(time, ball, new Contact.Round(flipper, i, end), true);
                 }
                 continue;
@@ -175,7 +175,7 @@ final class CollisionDetector {
             if (time <= swingLeft && time <= earliest.limit()) {
                 Vect centre = ball.position().plus(velocity.times(time));
                 Vect endCentre = Geometry.rotateAround(end.getCenter(), pivot, new Angle(omega * time));
-                if (closing(centre.minus(endCentre), velocity.minus(surfaceVelocity(pivot, omega, endCentre)))) {
+                if (closingOnCircle(centre.minus(endCentre), velocity.minus(surfaceVelocity(pivot, omega, endCentre)))) {
                     earliest.offer(time, ball, new Contact.SwingingPart(flipper, true, i), true);
                 }
             }
@@ -207,5 +207,12 @@ final class CollisionDetector {
     static boolean closing(Vect away, Vect relative) {
         double length = away.length();
         return length > 0 && -relative.dot(away) / length > Tolerances.ROUNDING_SPEED;
+    }
+
+    /** As {@link #closing}, for a circle: a touch within {@link Tolerances#GRAZE_ANGLE} of tangent is a graze. */
+    static boolean closingOnCircle(Vect away, Vect relative) {
+        double length = away.length();
+        double closing = length > 0 ? -relative.dot(away) / length : 0;
+        return closing > Math.max(Tolerances.ROUNDING_SPEED, Tolerances.GRAZE_ANGLE * relative.length());
     }
 }

@@ -56,6 +56,17 @@ final class Contacts {
         return normals;
     }
 
+    /** The normals of the ball's contacts other than {@code surface}, as they are now. */
+    List<Vect> normalsBesides(Ball ball, ContactRef surface) {
+        List<Vect> normals = new ArrayList<>();
+        for (ContactRef ref : ball.contacts()) {
+            if (!ref.equals(surface)) {
+                normalOf(ball, ref, normals);
+            }
+        }
+        return normals;
+    }
+
     /** Adds a contact (if new). */
     static void attach(Ball ball, ContactRef ref) {
         if (!ball.contacts().contains(ref)) {

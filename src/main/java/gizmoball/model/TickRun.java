@@ -111,6 +111,7 @@ final class TickRun {
             if (flipper.isBlocked() && board.ballStates().stream().noneMatch(ball -> !ball.isCaptured()
                     && flipper.signedDistance(ball.position()) <= Board.BALL_RADIUS + Tolerances.CONTACT)) {
                 flipper.unblock();
+                board.wakeSweep(flipper);   // it swings on into whatever fell asleep in its way
             }
         }
     }
@@ -293,8 +294,9 @@ final class TickRun {
         double approach = -ball.velocity().dot(normal);
         board.recordEvent(new PlayEvent.Hit(gizmo == null ? Board.OUTER_WALLS : gizmo.name(),
                 gizmo == null ? null : gizmo.kind(), approach));
-        if (approach <= restingSpeed(ball, normal)) {
-            comeToRest(ball, Contacts.refOf(contact));
+        ContactRef surface = Contacts.refOf(contact);
+        if (approach <= restingSpeed(ball, normal, surface)) {
+            comeToRest(ball, surface);
             return;
         }
         double coefficient = gizmo == null ? 1.0 : gizmo.reflectionCoefficient();
@@ -315,8 +317,8 @@ final class TickRun {
      * acceleration pressing it into the surface, which is gravity as the ball's other contacts leave it (a ball on a
      * slope is pressed into the wall at its foot by the slope, though gravity is parallel to the wall).
      */
-    private double restingSpeed(Ball ball, Vect normal) {
-        Vect pull = Contacts.project(new Vect(0, gravity), contacts.normals(ball));
+    private double restingSpeed(Ball ball, Vect normal, ContactRef surface) {
+        Vect pull = Contacts.project(new Vect(0, gravity), contacts.normalsBesides(ball, surface));
         double pressing = Math.max(0, -pull.dot(normal));
         return Math.max(Tolerances.ROUNDING_SPEED, REST_TICKS_OF_GRAVITY * pressing * dt);
     }
@@ -403,6 +405,13 @@ final class TickRun {
         if (slow && (Contacts.supports(other, ball) || Contacts.supports(ball, other))) {
             restAgainst(ball, other);
             restAgainst(other, ball);
+            if (-ball.velocity().minus(other.velocity()).dot(normal) > Tolerances.ROUNDING_SPEED) {
+                // the support itself moves into the ball: they go on together along the normal, momentum kept
+                double common = (ball.velocity().dot(normal) + other.velocity().dot(normal)) / 2;
+                ball.setVelocity(ball.velocity().plus(normal.times(common - ball.velocity().dot(normal))));
+                other.setVelocity(other.velocity().plus(normal.times(common - other.velocity().dot(normal))));
+                lostEnergy.add(other);
+            }
             restingContact = true;
             return null;
         }

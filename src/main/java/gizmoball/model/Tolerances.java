@@ -23,6 +23,14 @@ public final class Tolerances {
      */
     public static final double ROUNDING_SPEED = 1e-9;
 
+    /**
+     * Radians: a ball passing a circle (a corner, a bumper, a ball) this close to tangent grazes it. Rounding of a
+     * path that just touches a corner reports its contact up to about 1e-7 of a turn early, closing at a speed that
+     * is rounding too; ignoring such a touch lets the ball overlap the circle by at most (R + r) angle^2 / 2, below
+     * 1e-12 L. Faces have no such allowance: along a face a graze could sink a ball.
+     */
+    public static final double GRAZE_ANGLE = 1e-6;
+
     private Tolerances() {
     }
 }
