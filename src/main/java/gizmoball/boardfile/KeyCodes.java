@@ -3,7 +3,10 @@ package gizmoball.boardfile;
 import java.awt.event.KeyEvent;
 import java.lang.reflect.Field;
 import java.lang.reflect.Modifier;
-import java.util.HashSet;
+import java.util.HashMap;
+import java.util.Locale;
+import java.util.Map;
+import java.util.OptionalInt;
 import java.util.Set;
 
 /**
@@ -12,7 +15,9 @@ import java.util.Set;
  * Loading KeyEvent needs no display, so this works headless.
  */
 final class KeyCodes {
-    private static final Set<Integer> CODES = constantValues();
+    private static final String PREFIX = "VK_";
+    private static final Map<String, Integer> BY_NAME = constants();
+    private static final Set<Integer> CODES = Set.copyOf(BY_NAME.values());
 
     private KeyCodes() {
     }
@@ -21,19 +26,27 @@ final class KeyCodes {
         return CODES.contains(keyCode);
     }
 
-    private static Set<Integer> constantValues() {
-        Set<Integer> codes = new HashSet<>();
+    /** The code of a KeyEvent key name in any letter case, with or without its VK_ prefix: Space, q, vk_left. */
+    static OptionalInt named(String name) {
+        String upper = name.toUpperCase(Locale.ROOT);
+        Integer code = BY_NAME.get(upper.startsWith(PREFIX) ? upper.substring(PREFIX.length()) : upper);
+        return code == null ? OptionalInt.empty() : OptionalInt.of(code);
+    }
+
+    /** Name without the prefix -> code. */
+    private static Map<String, Integer> constants() {
+        Map<String, Integer> codes = new HashMap<>();
         for (Field field : KeyEvent.class.getFields()) {
             int modifiers = field.getModifiers();
-            if (field.getName().startsWith("VK_") && !field.getName().equals("VK_UNDEFINED")
+            if (field.getName().startsWith(PREFIX) && !field.getName().equals("VK_UNDEFINED")
                     && Modifier.isStatic(modifiers) && field.getType() == int.class) {
                 try {
-                    codes.add(field.getInt(null));
+                    codes.put(field.getName().substring(PREFIX.length()), field.getInt(null));
                 } catch (IllegalAccessException e) {
                     throw new IllegalStateException("public constant " + field + " is not readable", e);
                 }
             }
         }
-        return Set.copyOf(codes);
+        return Map.copyOf(codes);
     }
 }
