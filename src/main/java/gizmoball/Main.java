@@ -1,7 +1,9 @@
 package gizmoball;
 
+import gizmoball.controller.Settings;
 import gizmoball.headless.HeadlessRunner;
 import gizmoball.view.GameWindow;
+import gizmoball.view.PlayFeatures;
 import gizmoball.view.editor.BuildModeInstaller;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -28,7 +30,10 @@ public final class Main {
         }
         Path board = arguments.isEmpty() ? defaultBoard() : Path.of(arguments.get(0));
         GameWindow window = GameWindow.launch(board);
-        SwingUtilities.invokeLater(() -> BuildModeInstaller.install(window));
+        SwingUtilities.invokeLater(() -> {
+            BuildModeInstaller.install(window);
+            PlayFeatures.install(window, Settings.forUser());
+        });
     }
 
     /** boards/default.txt of the installation if there is one, else of the working directory. */

@@ -17,15 +17,15 @@ import physics.Geometry.VectPair;
  */
 public class GeometryImpl implements GeometryInterface {
     /** Default foresight of the rotating methods, in seconds. */
-    public static final double DEFAULT_FORESIGHT = 1.0;
+    static final double DEFAULT_FORESIGHT = 1.0;
     /** Default number of slices over which the rotating search computes its motion bounds. */
-    public static final int DEFAULT_SEARCH_SLICES = 16;
+    static final int DEFAULT_SEARCH_SLICES = 16;
     /**
      * A contact point closer than this (in L) to an end of a rotating segment is an end contact, which
      * {@link #reflectRotatingWall} refuses: end contacts belong to {@link #reflectRotatingCircle} with a
      * zero-radius circle at the end.
      */
-    public static final double END_CONTACT_TOLERANCE = 1e-9;
+    static final double END_CONTACT_TOLERANCE = 1e-9;
 
     private final double maximumForesight;
     private final int searchSlices;

@@ -15,4 +15,9 @@ public record LoadResult(Board board, List<BoardFileError> skippedLines, List<Bo
         skippedLines = List.copyOf(skippedLines);
         notes = List.copyOf(notes);
     }
+
+    /** Nothing of the file made it in: the board is exactly a new, empty one (its settings included). */
+    public boolean keptNothing() {
+        return BoardWriter.toText(board).equals(BoardWriter.toText(new Board()));
+    }
 }

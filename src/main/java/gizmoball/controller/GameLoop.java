@@ -10,7 +10,8 @@ import javax.swing.Timer;
  * Runs the simulation: a Swing Timer ticks the board on the event dispatch thread, the same thread that
  * paints it, so a view never sees a board half-way through a tick. The timer fires about twice per
  * tick and the {@link TickPacer} decides how many ticks each event runs, keeping simulated time in step
- * with real time without the drift of one tick per (late or early) timer event.
+ * with real time (scaled by the {@link Speed}) without the drift of one tick per (late or early) timer event.
+ * Every tick is {@code tickSeconds} long at any speed: a slower speed ticks less often.
  */
 public final class GameLoop {
     private static final int MAX_CATCH_UP_TICKS = 4;
@@ -22,14 +23,17 @@ public final class GameLoop {
     private Consumer<RuntimeException> failureHandler = e -> {
         throw e;
     };
+    private Speed speed = Speed.NORMAL;
     private TickPacer pacer;
     private long lastEventNanos;
+    private boolean resumeOnRelease;
 
     public GameLoop(Board board, double tickSeconds) {
         this.board = board;
         this.tick = tickSeconds;
         this.timer = new Timer(Math.max(1, (int) (tickSeconds * 1000 / 2)), e -> onTimer());
         timer.setCoalesce(true);
+        pacer = pacerFor(speed);
     }
 
     public boolean isRunning() {
@@ -38,7 +42,7 @@ public final class GameLoop {
 
     public void start() {
         if (!timer.isRunning()) {
-            pacer = new TickPacer(tick, MAX_CATCH_UP_TICKS);
+            pacer = pacerFor(speed);
             lastEventNanos = System.nanoTime();
             timer.start();
             fireRunningChanged();
@@ -46,10 +50,41 @@ public final class GameLoop {
     }
 
     public void stop() {
+        resumeOnRelease = false;
         if (timer.isRunning()) {
             timer.stop();
             fireRunningChanged();
         }
+    }
+
+    /**
+     * Pauses a running game until {@link #release()} (while a modal dialog is open, say). A {@link #stop()} in
+     * between, such as loading another board, means it stays stopped.
+     */
+    public void hold() {
+        if (timer.isRunning()) {
+            timer.stop();
+            resumeOnRelease = true;
+            fireRunningChanged();
+        }
+    }
+
+    /** Resumes a game paused by {@link #hold()}, unless it was stopped meanwhile. */
+    public void release() {
+        if (resumeOnRelease) {
+            resumeOnRelease = false;
+            start();
+        }
+    }
+
+    public Speed speed() {
+        return speed;
+    }
+
+    /** Takes effect at once, also while running (the part of a tick already waited for is forgotten). */
+    public void setSpeed(Speed s) {
+        speed = s;
+        pacer = pacerFor(s);
     }
 
     /** One tick, for stepping while stopped. */
@@ -68,9 +103,17 @@ public final class GameLoop {
 
     private void onTimer() {
         long now = System.nanoTime();
-        int ticks = pacer.ticksFor(now - lastEventNanos);
+        elapsed(now - lastEventNanos);
         lastEventNanos = now;
-        ticks(ticks);
+    }
+
+    /** Runs the ticks owed after {@code nanos} of real time (what each timer event does; tests call it directly). */
+    void elapsed(long nanos) {
+        ticks(pacer.ticksFor(nanos));
+    }
+
+    private TickPacer pacerFor(Speed s) {
+        return new TickPacer(tick / s.factor(), MAX_CATCH_UP_TICKS);
     }
 
     private void ticks(int n) {

@@ -19,6 +19,8 @@ public final class GameSession {
     private Mode mode = Mode.PLAY;
     private boolean modified;
     private Path file;
+    /** Lines of {@link #file} that the design lacks because they were skipped when it was loaded. */
+    private int linesLeftOut;
     private final List<Consumer<Mode>> modeListeners = new ArrayList<>();
     private final List<Runnable> stateListeners = new ArrayList<>();
 
@@ -85,7 +87,24 @@ public final class GameSession {
         board.replaceContents(loaded);
         file = from;
         modified = false;
+        linesLeftOut = 0;
         fireStateChanged();
+    }
+
+    /**
+     * Shows {@code loaded}, read from {@code from} without {@code skippedLines} of its lines. That is a changed
+     * board, unsaved: saving it over its file would remove those lines from the file.
+     */
+    public void loadWithout(Board loaded, Path from, int skippedLines) {
+        load(loaded, from);
+        linesLeftOut = skippedLines;
+        modified = skippedLines > 0;
+        fireStateChanged();
+    }
+
+    /** How many lines of the board's file saving over it would remove (lines skipped when it was loaded). */
+    public int linesLostBySaving() {
+        return linesLeftOut;
     }
 
     /** An empty, unsaved board. */
@@ -97,6 +116,7 @@ public final class GameSession {
     public void saved(Path to) {
         file = to;
         modified = false;
+        linesLeftOut = 0;
         fireStateChanged();
     }
 

@@ -3,13 +3,11 @@ package gizmoball.headless;
 import gizmoball.boardfile.BoardFileError;
 import gizmoball.boardfile.BoardFileException;
 import gizmoball.boardfile.BoardFiles;
+import gizmoball.boardfile.FileErrors;
 import gizmoball.boardfile.LoadResult;
 import gizmoball.model.Board;
 import java.io.IOException;
 import java.io.PrintStream;
-import java.nio.file.AccessDeniedException;
-import java.nio.file.FileSystemException;
-import java.nio.file.NoSuchFileException;
 import java.util.List;
 
 /**
@@ -38,7 +36,7 @@ public final class HeadlessRunner {
         try {
             board = load(options, err);
         } catch (IOException e) {
-            err.println("gizmoball: cannot read " + options.board() + ": " + describe(e));
+            err.println("gizmoball: " + FileErrors.cannotRead(options.board(), e));
             return BAD_INPUT;
         } catch (BoardFileException e) {
             err.println("gizmoball: " + options.board() + " not loaded, " + e.getMessage());
@@ -67,7 +65,7 @@ public final class HeadlessRunner {
             try {
                 BoardFiles.save(board, options.out().get());
             } catch (IOException e) {
-                err.println("gizmoball: cannot write " + options.out().get() + ": " + describe(e));
+                err.println("gizmoball: " + FileErrors.cannotSave(options.out().get(), e));
                 return WRITE_FAILED;
             }
         } else {
@@ -79,19 +77,5 @@ public final class HeadlessRunner {
             }
         }
         return OK;
-    }
-
-    /** The file-system exceptions carry only the path as their message: say what happened instead. */
-    private static String describe(IOException e) {
-        if (e instanceof NoSuchFileException) {
-            return "no such file or directory";
-        }
-        if (e instanceof AccessDeniedException) {
-            return "permission denied";
-        }
-        if (e instanceof FileSystemException fileSystem && fileSystem.getReason() != null) {
-            return fileSystem.getReason();
-        }
-        return e.toString();
     }
 }

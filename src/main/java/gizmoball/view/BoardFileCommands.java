@@ -3,16 +3,16 @@ package gizmoball.view;
 import gizmoball.boardfile.BoardFileError;
 import gizmoball.boardfile.BoardFileException;
 import gizmoball.boardfile.BoardFiles;
+import gizmoball.boardfile.FileErrors;
 import gizmoball.boardfile.LoadResult;
 import gizmoball.controller.GameLoop;
 import gizmoball.controller.GameSession;
 import gizmoball.model.Board;
 import java.io.IOException;
-import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Optional;
 import javax.swing.JFileChooser;
 import javax.swing.JOptionPane;
 import javax.swing.SwingUtilities;
@@ -27,13 +27,25 @@ final class BoardFileCommands {
     private final GameWindow window;
     private final GameSession session;
     private final GameLoop loop;
+    private static final String BOARD_EXTENSION = "txt";
+    private static final String SAVE_AS = "Save As...";
+    private static final String RELOAD = "Reload";
+    private static final String CANCEL = "Cancel";
+
     private final JFileChooser chooser = new JFileChooser(Path.of("boards").toAbsolutePath().toFile());
+    private final FileNameExtensionFilter boardFiles =
+            new FileNameExtensionFilter("Board files (.txt, .gizmo)", BOARD_EXTENSION, "gizmo");
 
     BoardFileCommands(GameWindow window, GameSession session, GameLoop loop) {
         this.window = window;
         this.session = session;
         this.loop = loop;
-        chooser.setFileFilter(new FileNameExtensionFilter("Board files (.txt, .gizmo)", "txt", "gizmo"));
+        chooser.setFileFilter(boardFiles);
+    }
+
+    /** The folder the file chooser opens in (the last one the player used, remembered between runs). */
+    void startIn(Path folder) {
+        chooser.setCurrentDirectory(folder.toFile());
     }
 
     void newBoard() {
@@ -51,39 +63,41 @@ final class BoardFileCommands {
         }
     }
 
+    /** Reload means "throw my changes away": asked as that, with Cancel the default, so Enter reverts nothing. */
     void reload() {
         session.file().ifPresentOrElse(file -> {
-            if (confirmDiscard("reload it from " + file.getFileName())) {
+            if (!session.isModified() || ask("Discard your changes to " + file.getFileName()
+                    + " and reload it from disk?", "Reload", RELOAD, CANCEL) == 0) {
                 open(file);
             }
         }, () -> window.statusLine().showMessage("This board has no file to reload from"));
     }
 
     /**
-     * Loads {@code file}. A file with bad lines opens the problems dialog: load without them, or keep the
-     * board shown now. Returns whether a board was loaded.
+     * Loads {@code file}. A file with bad lines opens the problems dialog: load without them (unless nothing
+     * would be left), or keep the board shown now. Returns whether a board was loaded.
      */
     boolean open(Path file) {
         String name = String.valueOf(file.getFileName());
+        LoadResult result;
         try {
-            try {
-                show(BoardFiles.load(file), file, "Loaded " + name);
-                return true;
-            } catch (BoardFileException e) {
-                if (!LoadProblemsDialog.askSkip(window, name, describe(e.errors()))) {
-                    window.statusLine().showMessage("Kept the current board; " + name + " has bad lines");
-                    return false;
-                }
-                LoadResult result = BoardFiles.loadSkippingBadLines(file);
-                int skipped = result.skippedLines().size();
-                show(result.board(), file, "Loaded " + name + " without its " + skipped
-                        + (skipped == 1 ? " bad line" : " bad lines"));
-                return true;
-            }
+            result = BoardFiles.loadSkippingBadLines(file);
         } catch (IOException e) {
-            error("Cannot read " + file + ": " + reason(e));
+            error(FileErrors.cannotRead(file, e));
             return false;
         }
+        List<BoardFileError> bad = result.skippedLines();
+        if (bad.isEmpty()) {
+            show(result.board(), file, 0, "Loaded " + name);
+            return true;
+        }
+        // A board empty because of skipping is not offered: one Save would write it over the whole file.
+        if (!LoadProblemsDialog.askSkip(window, name, describe(bad), !result.keptNothing())) {
+            window.statusLine().showMessage("Kept the current board; " + name + " has bad lines");
+            return false;
+        }
+        show(result.board(), file, bad.size(), "Loaded " + name + " without its " + lines(bad.size()));
+        return true;
     }
 
     /**
@@ -92,28 +106,58 @@ final class BoardFileCommands {
      */
     void openAtLaunch(Path file) {
         try {
-            show(BoardFiles.load(file), file, "Loaded " + file.getFileName());
+            show(BoardFiles.load(file), file, 0, "Loaded " + file.getFileName());
         } catch (BoardFileException | IOException e) {
             SwingUtilities.invokeLater(() -> open(file));
         }
     }
 
-    /** Saves to the board's file, or asks for one. Returns whether the board was saved. */
+    /**
+     * Saves to the board's file, or asks for one. A board loaded without some of its lines would remove them
+     * from its file: that is asked first, offering Save As. Returns whether the board was saved.
+     */
     boolean save() {
-        return session.file().map(this::saveTo).orElseGet(this::saveAs);
+        Optional<Path> file = session.file();
+        if (file.isEmpty()) {
+            return saveAs();
+        }
+        int lost = session.linesLostBySaving();
+        if (lost > 0) {
+            String name = String.valueOf(file.get().getFileName());
+            int choice = ask(name + " was loaded without " + lines(lost) + ". Saving over it removes "
+                    + (lost == 1 ? "that line" : "those " + lost + " lines") + " from the file.",
+                    "Save would lose lines", SAVE_AS, "Save and lose " + lines(lost), CANCEL);
+            return switch (choice) {
+                case 0 -> saveAs();
+                case 1 -> saveTo(file.get());
+                default -> false;
+            };
+        }
+        return saveTo(file.get());
     }
 
+    /**
+     * Asks for a file and saves there. A name without an extension gets .txt while the board-files filter is
+     * chosen; an existing file is replaced only if the player says so.
+     */
     boolean saveAs() {
         session.file().ifPresent(f -> chooser.setSelectedFile(f.toFile()));
         if (chooser.showSaveDialog(window) != JFileChooser.APPROVE_OPTION) {
             return false;
         }
-        Path file = chooser.getSelectedFile().toPath();
-        if (Files.exists(file) && JOptionPane.showConfirmDialog(window, file.getFileName() + " exists. Replace it?",
-                "Save As", JOptionPane.OK_CANCEL_OPTION, JOptionPane.WARNING_MESSAGE) != JOptionPane.OK_OPTION) {
+        Path file = withBoardExtension(chooser.getSelectedFile().toPath(), chooser.getFileFilter() == boardFiles);
+        if (Files.exists(file) && ask(file.getFileName() + " already exists. Replace it?", "Save As",
+                "Replace", CANCEL) != 0) {
             return false;
         }
         return saveTo(file);
+    }
+
+    /** {@code file} with ".txt" added if it has no extension and {@code boardFilter} (the chooser's) applies. */
+    static Path withBoardExtension(Path file, boolean boardFilter) {
+        String name = String.valueOf(file.getFileName());
+        boolean hasExtension = name.lastIndexOf('.') > 0;
+        return boardFilter && !hasExtension ? file.resolveSibling(name + "." + BOARD_EXTENSION) : file;
     }
 
     /**
@@ -142,18 +186,20 @@ final class BoardFileCommands {
             window.statusLine().showMessage("Saved " + file.getFileName());
             return true;
         } catch (IOException e) {
-            error("Cannot save " + file + ": " + reason(e) + ". The file on disk is unchanged.");
+            error(FileErrors.cannotSave(file, e) + (Files.exists(file) ? ". The file on disk is unchanged." : ""));
             return false;
         }
     }
 
-    private void show(Board board, Path file, String message) {
+    private void show(Board board, Path file, int skippedLines, String message) {
         loop.stop();
-        session.load(board, file);
+        session.loadWithout(board, file, skippedLines);
         window.statusLine().showMessage(message);
     }
 
-    private void error(String message) {
+    /** Shows a lower-case sentence of FileErrors (shared with the headless runner) as the player reads it. */
+    private void error(String sentence) {
+        String message = Character.toUpperCase(sentence.charAt(0)) + sentence.substring(1);
         window.statusLine().showMessage(message);
         JOptionPane.showMessageDialog(window, message, "Gizmoball", JOptionPane.ERROR_MESSAGE);
     }
@@ -162,13 +208,13 @@ final class BoardFileCommands {
         return errors.stream().map(e -> "line " + e.line() + ": " + e.text().strip() + "   <- " + e.reason()).toList();
     }
 
-    private static String reason(IOException e) {
-        if (e instanceof NoSuchFileException) {
-            return "no such file";
-        }
-        if (e instanceof AccessDeniedException) {
-            return "permission denied";
-        }
-        return e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+    /** A question with these buttons, the last (Cancel) the default; the index of the one chosen, -1 if closed. */
+    private int ask(String question, String title, String... choices) {
+        return JOptionPane.showOptionDialog(window, question, title, JOptionPane.DEFAULT_OPTION,
+                JOptionPane.WARNING_MESSAGE, null, choices, choices[choices.length - 1]);
+    }
+
+    private static String lines(int count) {
+        return count + (count == 1 ? " bad line" : " bad lines");
     }
 }

@@ -41,7 +41,12 @@ public final class BoardPainter {
     /** Thickness of the outer walls, drawn just outside the board. */
     static final int WALL_PIXELS = 3;
     /** How long (simulated seconds) a triggered gizmo stays lit, fading out. */
-    static final double HIGHLIGHT_SECONDS = 0.25;
+    static final double FLASH_SECONDS = 0.15;
+    /** At the trigger a gizmo's fill is this far from its colour towards white. */
+    private static final double FLASH_WHITENESS = 0.85;
+    /** Width in L of the glow drawn around a flashing gizmo's outline (half of it outside the gizmo). */
+    private static final float HALO_WIDTH = 0.35f;
+    private static final int HALO_ALPHA = 210;
 
     private BoardPainter() {
     }
@@ -91,11 +96,14 @@ public final class BoardPainter {
         try {
             float pixel = (float) (1 / t.scale());
             for (Gizmo gizmo : board.gizmos()) {
-                Color colour = colourOf(gizmo.kind());
-                Color fill = lit(colour, board.time() - gizmo.lastTriggeredAt());
+                double glow = flash(board.time() - gizmo.lastTriggeredAt());
+                Color fill = lit(colourOf(gizmo.kind()), glow);
+                if (glow > 0) {
+                    paintHalo(g, gizmo instanceof Flipper flipper ? outline(flipper) : shapeOf(gizmo), glow);
+                }
                 if (gizmo instanceof Flipper flipper) {
                     paintFlipper(g, flipper, fill, pixel);
-                } else if (!fill.equals(colour)) {
+                } else if (glow > 0) {
                     paintShape(g, shapeOf(gizmo), fill, pixel);
                 }
             }
@@ -169,13 +177,32 @@ public final class BoardPainter {
         g.fill(new Ellipse2D.Double(f.pivot().x() - hub, f.pivot().y() - hub, 2 * hub, 2 * hub));
     }
 
-    /** Mixes the colour towards white, fully at the trigger and fading to nothing over HIGHLIGHT_SECONDS. */
-    static Color lit(Color colour, double secondsSinceTrigger) {
-        if (!(secondsSinceTrigger >= 0 && secondsSinceTrigger < HIGHLIGHT_SECONDS)) {
-            return colour;
+    /** How brightly a gizmo triggered that long ago flashes: 1 at the trigger, fading linearly to 0 at FLASH_SECONDS. */
+    static double flash(double secondsSinceTrigger) {
+        if (!(secondsSinceTrigger >= 0 && secondsSinceTrigger < FLASH_SECONDS)) {
+            return 0;
         }
-        double w = 0.75 * (1 - secondsSinceTrigger / HIGHLIGHT_SECONDS);
+        return 1 - secondsSinceTrigger / FLASH_SECONDS;
+    }
+
+    /** The colour mixed towards white as far as the flash is bright. */
+    static Color lit(Color colour, double glow) {
+        double w = FLASH_WHITENESS * glow;
         return new Color(mix(colour.getRed(), w), mix(colour.getGreen(), w), mix(colour.getBlue(), w));
+    }
+
+    /** A white glow around the outline, so that a flash shows even on a small gizmo and on a light colour. */
+    private static void paintHalo(Graphics2D g, Shape shape, double glow) {
+        g.setColor(new Color(255, 255, 255, (int) Math.round(HALO_ALPHA * glow)));
+        g.setStroke(new BasicStroke(HALO_WIDTH, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+        g.draw(shape);
+    }
+
+    /** The flipper's outline: its bar with round ends, as wide as the flipper. */
+    private static Shape outline(Flipper f) {
+        Line2D bar = new Line2D.Double(f.pivot().toPoint2D(), f.tip().toPoint2D());
+        return new BasicStroke((float) (2 * f.radius()), BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND)
+                .createStrokedShape(bar);
     }
 
     private static int mix(int channel, double towardsWhite) {

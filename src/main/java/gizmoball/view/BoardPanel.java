@@ -30,6 +30,7 @@ public final class BoardPanel extends JComponent {
 
     private final transient Board board;
     private final transient List<BoardOverlay> overlays = new ArrayList<>();
+    private final transient List<BoardOverlay> underlays = new ArrayList<>();
     private final transient FpsMeter fps = new FpsMeter();
     private boolean gridVisible;
     /** Counts edits and loads (not ticks): the fixed image is redrawn when it moves on. */
@@ -64,6 +65,12 @@ public final class BoardPanel extends JComponent {
         repaint();
     }
 
+    /** Drawn over the fixed part of the board but under the flippers and balls (ball trails). */
+    public void addUnderlay(BoardOverlay underlay) {
+        underlays.add(underlay);
+        repaint();
+    }
+
     public void setGridVisible(boolean visible) {
         gridVisible = visible;
         repaint();
@@ -87,6 +94,9 @@ public final class BoardPanel extends JComponent {
             g.setRenderingHint(RenderingHints.KEY_RENDERING, RenderingHints.VALUE_RENDER_QUALITY);
             BoardTransform t = transform();
             g.drawImage(fixedImage(g, t), 0, 0, getWidth(), getHeight(), null);
+            for (BoardOverlay underlay : underlays) {
+                underlay.paint(g, t);
+            }
             BoardPainter.paintMoving(g, board, t);
             for (BoardOverlay overlay : overlays) {
                 overlay.paint(g, t);

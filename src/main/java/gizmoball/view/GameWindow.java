@@ -66,6 +66,10 @@ public final class GameWindow extends JFrame {
     private final Action play = action("Play", KeyEvent.VK_P, 0, () -> session.setMode(Mode.PLAY));
     private final Action build = action("Build", KeyEvent.VK_B, 0, () -> session.setMode(Mode.BUILD));
     private final Action keysHelp = action("Keys of this board...", KeyEvent.VK_K, 0, this::showKeys);
+    private final Action howToPlay = command(HelpPages.HOW_TO_PLAY + "...",
+            () -> HelpPages.show(this, HelpPages.HOW_TO_PLAY, HelpPages.howToPlay(menus, session.board())));
+    private final Action buildModeHelp = command(HelpPages.BUILD_MODE + "...",
+            () -> HelpPages.show(this, HelpPages.BUILD_MODE, HelpPages.buildMode()));
 
     private GameWindow() {
         super("Gizmoball");
@@ -106,8 +110,10 @@ public final class GameWindow extends JFrame {
         keys.install();
         statusRefresh.start();
         refreshControls();
+        ModalPause.install(this, loop);
         pack();
-        setLocationByPlatform(true);
+        // Centred on the screen; the window's remembered place, if any, is restored over this.
+        setLocationRelativeTo(null);
     }
 
     /**
@@ -149,6 +155,10 @@ public final class GameWindow extends JFrame {
 
     public GameSession session() {
         return session;
+    }
+
+    public GameLoop loop() {
+        return loop;
     }
 
     public StatusLine statusLine() {
@@ -202,6 +212,8 @@ public final class GameWindow extends JFrame {
         }
         JMenu help = new JMenu("Help");
         help.setMnemonic(KeyEvent.VK_H);
+        help.add(howToPlay);
+        help.add(buildModeHelp);
         help.add(keysHelp);
         menus.add(file);
         menus.add(game);
@@ -235,15 +247,20 @@ public final class GameWindow extends JFrame {
         return b;
     }
 
-    private static Action action(String name, int key, int extraModifiers, Runnable body) {
-        Action a = new AbstractAction(name) {
+    static Action action(String name, int key, int extraModifiers, Runnable body) {
+        Action a = command(name, body);
+        a.putValue(Action.ACCELERATOR_KEY, KeyStroke.getKeyStroke(key, InputEvent.CTRL_DOWN_MASK | extraModifiers));
+        return a;
+    }
+
+    /** A menu command without a shortcut. */
+    private static Action command(String name, Runnable body) {
+        return new AbstractAction(name) {
             @Override
             public void actionPerformed(ActionEvent e) {
                 body.run();
             }
         };
-        a.putValue(Action.ACCELERATOR_KEY, KeyStroke.getKeyStroke(key, InputEvent.CTRL_DOWN_MASK | extraModifiers));
-        return a;
     }
 
     private void modeChanged(Mode mode) {
@@ -279,18 +296,20 @@ public final class GameWindow extends JFrame {
         refreshStatus();
     }
 
-    private void refreshStatus() {
+    /** Brings the status line up to date now (the window also does so a few times a second). */
+    public void refreshStatus() {
         statusLine.show(session.boardName(), session.mode() == Mode.PLAY ? "Play" : "Build", loop.isRunning(),
-                session.board().time(), boardPanel.framesPerSecond());
+                loop.speed().label(), session.board().time(), boardPanel.framesPerSecond());
     }
 
     private void reset() {
         session.reset();
+        statusLine.showMessage("Reset: the board is back as loaded or built");
         refreshStatus();
     }
 
     private void showKeys() {
-        List<String> lines = KeyHelp.describe(session.board().keyBindings());
+        List<String> lines = KeyHelp.describe(session.board());
         JOptionPane.showMessageDialog(this, lines.isEmpty() ? "This board binds no keys." : String.join("\n", lines),
                 "Keys of " + session.boardName(), JOptionPane.INFORMATION_MESSAGE);
     }

@@ -1,26 +1,54 @@
 package gizmoball.view;
 
+import gizmoball.model.Board;
+import gizmoball.model.Gizmo;
+import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyBinding;
+import gizmoball.model.KeyEdge;
 import java.awt.event.KeyEvent;
-import java.util.ArrayList;
+import java.util.EnumSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Set;
 
-/** The player's view of a board's key bindings: one line per key and gizmo, e.g. "Z: LF (down, up)". */
+/**
+ * The player's view of a board's key bindings: one line per key and gizmo, saying what the gizmo is and how
+ * the key is used, e.g. "Z: left flipper LF (hold)" or "Space: absorber A (press)".
+ */
 final class KeyHelp {
     private KeyHelp() {
     }
 
-    static List<String> describe(List<KeyBinding> bindings) {
-        Map<String, List<String>> edges = new LinkedHashMap<>();
-        for (KeyBinding b : bindings) {
-            edges.computeIfAbsent(KeyEvent.getKeyText(b.keyCode()) + ": " + b.gizmo(), k -> new ArrayList<>())
-                    .add(b.edge().name().toLowerCase(Locale.ROOT));
+    private record KeyAndGizmo(int keyCode, String gizmo) {
+    }
+
+    static List<String> describe(Board board) {
+        Map<KeyAndGizmo, Set<KeyEdge>> edges = new LinkedHashMap<>();
+        for (KeyBinding b : board.keyBindings()) {
+            edges.computeIfAbsent(new KeyAndGizmo(b.keyCode(), b.gizmo()), k -> EnumSet.noneOf(KeyEdge.class))
+                    .add(b.edge());
         }
-        List<String> lines = new ArrayList<>();
-        edges.forEach((keyAndGizmo, e) -> lines.add(keyAndGizmo + " (" + String.join(", ", e) + ")"));
-        return lines;
+        return edges.entrySet().stream().map(e -> {
+            KeyAndGizmo k = e.getKey();
+            GizmoKind kind = board.gizmo(k.gizmo()).map(Gizmo::kind).orElse(null);
+            return KeyEvent.getKeyText(k.keyCode()) + ": " + kindName(kind) + k.gizmo()
+                    + " (" + use(kind, e.getValue()) + ")";
+        }).toList();
+    }
+
+    /** "left flipper " for LEFT_FLIPPER; nothing for a name the board does not hold. */
+    private static String kindName(GizmoKind kind) {
+        return kind == null ? "" : kind.name().toLowerCase(Locale.ROOT).replace('_', ' ') + " ";
+    }
+
+    /** A flipper driven by both edges stays up while the key is held; anything else acts on the edges. */
+    private static String use(GizmoKind kind, Set<KeyEdge> edges) {
+        boolean flipper = kind == GizmoKind.LEFT_FLIPPER || kind == GizmoKind.RIGHT_FLIPPER;
+        if (edges.size() == 2) {
+            return flipper ? "hold" : "press and release";
+        }
+        return edges.contains(KeyEdge.DOWN) ? "press" : "release";
     }
 }

@@ -4,6 +4,7 @@ import java.awt.BorderLayout;
 import java.awt.Component;
 import java.awt.FlowLayout;
 import java.awt.Font;
+import java.awt.Window;
 import java.util.List;
 import javax.swing.BorderFactory;
 import javax.swing.JButton;
@@ -24,10 +25,13 @@ public final class LoadProblemsDialog extends JDialog {
 
     private boolean skip;
 
-    private LoadProblemsDialog(Component parent, String fileName, List<String> problems) {
-        super(SwingUtilities.getWindowAncestor(parent), "Problems in " + fileName, ModalityType.APPLICATION_MODAL);
+    private LoadProblemsDialog(Component parent, String fileName, List<String> problems, boolean skippable) {
+        super(parent instanceof Window w ? w : SwingUtilities.getWindowAncestor(parent), "Problems in " + fileName,
+                ModalityType.APPLICATION_MODAL);
         setName("loadProblems");
-        JLabel heading = new JLabel(problems.size() == 1
+        JLabel heading = new JLabel(!skippable
+                ? "Nothing in " + fileName + " can be loaded:"
+                : problems.size() == 1
                 ? fileName + " has a line that cannot be loaded:"
                 : fileName + " has " + problems.size() + " lines that cannot be loaded:");
         heading.setBorder(BorderFactory.createEmptyBorder(8, 8, 8, 8));
@@ -40,7 +44,9 @@ public final class LoadProblemsDialog extends JDialog {
         JButton keepButton = new JButton(KEEP);
         keepButton.addActionListener(e -> close(false));
         JPanel buttons = new JPanel(new FlowLayout(FlowLayout.RIGHT));
-        buttons.add(skipButton);
+        if (skippable) {
+            buttons.add(skipButton);
+        }
         buttons.add(keepButton);
         add(heading, BorderLayout.NORTH);
         add(new JScrollPane(list), BorderLayout.CENTER);
@@ -52,9 +58,12 @@ public final class LoadProblemsDialog extends JDialog {
         setLocationRelativeTo(parent);
     }
 
-    /** Blocks (modal) until the player chooses; true to load skipping the lines. Closing the dialog keeps the board. */
-    public static boolean askSkip(Component parent, String fileName, List<String> problems) {
-        LoadProblemsDialog dialog = new LoadProblemsDialog(parent, fileName, problems);
+    /**
+     * Blocks (modal) until the player chooses; true to load skipping the lines. Closing the dialog keeps the
+     * board. Unless {@code skippable} (skipping would leave nothing), keeping the board is the only choice.
+     */
+    public static boolean askSkip(Component parent, String fileName, List<String> problems, boolean skippable) {
+        LoadProblemsDialog dialog = new LoadProblemsDialog(parent, fileName, problems, skippable);
         dialog.setVisible(true);
         return dialog.skip;
     }

@@ -4,9 +4,11 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.io.IOException;
+import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
 import java.util.List;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
@@ -63,5 +65,33 @@ class AtomicFileWriterTest {
         try (Stream<Path> files = Files.list(directory)) {
             return files.toList();
         }
+    }
+
+    @Test
+    void savingOverAFileKeepsItsPermissionBits() throws IOException {
+        for (String mode : List.of("rw-r--r--", "rw-r-----", "rw-------", "rwxrwxr-x")) {
+            Path target = directory.resolve("board-" + mode + ".txt");
+            Files.writeString(target, "old\n");
+            Files.setPosixFilePermissions(target, PosixFilePermissions.fromString(mode));
+
+            AtomicFileWriter.write(target, out -> out.write("new\n"));
+
+            assertThat(PosixFilePermissions.toString(Files.getPosixFilePermissions(target))).isEqualTo(mode);
+            assertThat(Files.readString(target)).isEqualTo("new\n");
+        }
+    }
+
+    @Test
+    void aNewFileGetsThePermissionsAnyOtherProgramWouldGiveIt() throws IOException {
+        // The JVM cannot read the umask; a file created the ordinary way shows what it gives.
+        Path ordinary = directory.resolve("ordinary.txt");
+        try (Writer w = Files.newBufferedWriter(ordinary)) {
+            w.write("x");
+        }
+        Path target = directory.resolve("board.txt");
+
+        AtomicFileWriter.write(target, out -> out.write("new\n"));
+
+        assertThat(Files.getPosixFilePermissions(target)).isEqualTo(Files.getPosixFilePermissions(ordinary));
     }
 }

@@ -132,4 +132,34 @@ class GameSessionTest {
         assertThat(session.file()).isEmpty();
         assertThat(session.isModified()).isFalse();
     }
+
+    @Test
+    void aBoardLoadedWithoutSomeOfItsLinesIsUnsavedAndSavingOverItsFileWouldLoseThem() {
+        Path file = Path.of("boards", "peer.txt");
+        session.loadWithout(fallingBall(), file, 5);
+
+        assertThat(session.isModified()).as("shown as unsaved (*)").isTrue();
+        assertThat(session.file()).contains(file);
+        assertThat(session.linesLostBySaving()).isEqualTo(5);
+    }
+
+    @Test
+    void theLostLinesAreForgottenOnceTheBoardIsSavedOrAnotherIsLoaded() {
+        session.loadWithout(fallingBall(), Path.of("peer.txt"), 5);
+        session.saved(Path.of("copy.txt"));
+        assertThat(session.linesLostBySaving()).isZero();
+        assertThat(session.isModified()).isFalse();
+
+        session.loadWithout(fallingBall(), Path.of("peer.txt"), 2);
+        session.load(fallingBall(), Path.of("clean.txt"));
+        assertThat(session.linesLostBySaving()).isZero();
+        assertThat(session.isModified()).isFalse();
+    }
+
+    @Test
+    void loadingWithoutNoLineIsAnOrdinaryLoad() {
+        session.loadWithout(fallingBall(), Path.of("clean.txt"), 0);
+        assertThat(session.isModified()).isFalse();
+        assertThat(session.linesLostBySaving()).isZero();
+    }
 }

@@ -97,7 +97,7 @@ class HeadlessRunnerTest {
     void aMissingBoardExitsTwo() {
         assertThat(run("--headless", "--ticks", "1", directory.resolve("none.txt").toString()))
                 .isEqualTo(HeadlessRunner.BAD_INPUT);
-        assertThat(stderr()).contains("cannot read " + directory.resolve("none.txt") + ": no such file or directory");
+        assertThat(stderr()).contains("cannot read " + directory.resolve("none.txt") + ": there is no such file");
     }
 
     @Test
@@ -114,7 +114,17 @@ class HeadlessRunnerTest {
         Files.writeString(result.resolve("keep"), "kept");
         assertThat(run("--headless", "--ticks", "1", "--out", result.toString(), file.toString()))
                 .isEqualTo(HeadlessRunner.WRITE_FAILED);
-        assertThat(stderr()).contains("cannot write " + result);
+        assertThat(stderr()).contains("cannot save " + result + ": it is a folder");
         assertThat(Files.readString(result.resolve("keep"))).isEqualTo("kept");
+    }
+
+    @Test
+    void writingIntoAMissingFolderSaysSoInTheWindowsWords() throws Exception {
+        Path file = board("Ball B 10 10 0 0\n");
+        Path result = directory.resolve("no-such-dir").resolve("after.txt");
+        assertThat(run("--headless", "--ticks", "1", "--out", result.toString(), file.toString()))
+                .isEqualTo(HeadlessRunner.WRITE_FAILED);
+        assertThat(stderr()).isEqualTo("gizmoball: cannot save " + result + ": the folder "
+                + directory.resolve("no-such-dir") + " does not exist" + System.lineSeparator());
     }
 }

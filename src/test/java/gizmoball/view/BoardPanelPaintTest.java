@@ -76,18 +76,33 @@ class BoardPanelPaintTest {
     }
 
     @Test
-    void aTriggeredGizmoIsLitBrieflyThenBackToItsColour() {
+    void aTriggeredGizmoFlashesNearlyWhiteWithAGlowAndFadesWithinAFifthOfASecond() {
+        Color square = BoardPainter.colourOf(GizmoKind.SQUARE);
         board.trigger("S");
-        Color lit = at(render(), 2.5, 2.5);
-        for (int i = 0; i < 30; i++) {   // half a second, twice the highlight
+        BufferedImage atTrigger = render();
+        ticks(5);   // 83 ms: half-way through the 150 ms fade
+        BufferedImage halfWay = render();
+        ticks(5);   // 167 ms: over
+        BufferedImage after = render();
+
+        Color lit = at(atTrigger, 2.5, 2.5);
+        for (int[] channel : new int[][] {{lit.getRed(), square.getRed()}, {lit.getGreen(), square.getGreen()},
+                {lit.getBlue(), square.getBlue()}}) {
+            assertThat(channel[0]).as("fill at the trigger, most of the way to white")
+                    .isGreaterThanOrEqualTo(channel[1] + (int) (0.8 * (255 - channel[1])));
+        }
+        Color glow = at(atTrigger, 2.5, 1.93);
+        assertThat(glow.getGreen()).as("the glow just outside the square").isGreaterThan(BoardPainter.FLOOR.getGreen() + 120);
+        Color fading = at(halfWay, 2.5, 2.5);
+        assertThat(fading.getGreen()).isStrictlyBetween(square.getGreen(), lit.getGreen());
+        assertThat(at(after, 2.5, 2.5)).isEqualTo(square);
+        assertThat(at(after, 2.5, 1.93)).isEqualTo(BoardPainter.FLOOR);
+    }
+
+    private void ticks(int n) {
+        for (int i = 0; i < n; i++) {
             board.tick(Board.DEFAULT_TICK);
         }
-        Color later = at(render(), 2.5, 2.5);
-
-        Color square = BoardPainter.colourOf(GizmoKind.SQUARE);
-        assertThat(lit.getGreen()).isGreaterThan(square.getGreen());
-        assertThat(lit.getBlue()).isGreaterThan(square.getBlue());
-        assertThat(later).isEqualTo(square);
     }
 
     @Test

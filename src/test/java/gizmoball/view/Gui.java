@@ -92,17 +92,31 @@ public final class Gui {
         onEdt(() -> menuItem(menus, text).doClick(0));
     }
 
+    /** The item with that text in any menu or submenu. */
     public static JMenuItem menuItem(JMenuBar menus, String text) {
         for (int i = 0; i < menus.getMenuCount(); i++) {
-            JMenu menu = menus.getMenu(i);
-            for (int j = 0; j < menu.getItemCount(); j++) {
-                JMenuItem item = menu.getItem(j);
-                if (item != null && text.equals(item.getText())) {
-                    return item;
-                }
+            Optional<JMenuItem> found = menuItem(menus.getMenu(i), text);
+            if (found.isPresent()) {
+                return found.get();
             }
         }
         throw new AssertionError("no menu item " + text);
+    }
+
+    private static Optional<JMenuItem> menuItem(JMenu menu, String text) {
+        for (int j = 0; j < menu.getItemCount(); j++) {
+            JMenuItem item = menu.getItem(j);
+            if (item != null && text.equals(item.getText())) {
+                return Optional.of(item);
+            }
+            if (item instanceof JMenu submenu) {
+                Optional<JMenuItem> found = menuItem(submenu, text);
+                if (found.isPresent()) {
+                    return found;
+                }
+            }
+        }
+        return Optional.empty();
     }
 
     public static Optional<Window> showingWindow(String name) {

@@ -2,29 +2,42 @@ package gizmoball.view;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gizmoball.model.KeyBinding;
+import gizmoball.model.Board;
+import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyEdge;
 import java.awt.event.KeyEvent;
-import java.util.List;
 import org.junit.jupiter.api.Test;
 
 class KeyHelpTest {
-    @Test
-    void oneLinePerKeyAndGizmoWithItsEdges() {
-        List<KeyBinding> bindings = List.of(
-                new KeyBinding(KeyEvent.VK_Z, KeyEdge.DOWN, "LF"),
-                new KeyBinding(KeyEvent.VK_SPACE, KeyEdge.DOWN, "A"),
-                new KeyBinding(KeyEvent.VK_Z, KeyEdge.UP, "LF"),
-                new KeyBinding(KeyEvent.VK_Z, KeyEdge.DOWN, "RF"));
+    private static String key(int code) {
+        return KeyEvent.getKeyText(code);
+    }
 
-        assertThat(KeyHelp.describe(bindings)).containsExactly(
-                KeyEvent.getKeyText(KeyEvent.VK_Z) + ": LF (down, up)",
-                KeyEvent.getKeyText(KeyEvent.VK_SPACE) + ": A (down)",
-                KeyEvent.getKeyText(KeyEvent.VK_Z) + ": RF (down)");
+    @Test
+    void oneLinePerKeyAndGizmoNamingWhatTheGizmoIsAndHowTheKeyIsUsed() {
+        Board board = new Board();
+        board.addGizmo(GizmoKind.LEFT_FLIPPER, "LF", 6, 16);
+        board.addGizmo(GizmoKind.RIGHT_FLIPPER, "RF", 12, 16);
+        board.addAbsorber("A", 0, 19, 20, 20);
+        board.addGizmo(GizmoKind.SQUARE, "S", 2, 2);
+        board.bindKey(KeyEvent.VK_Z, KeyEdge.DOWN, "LF");
+        board.bindKey(KeyEvent.VK_SPACE, KeyEdge.DOWN, "A");
+        board.bindKey(KeyEvent.VK_Z, KeyEdge.UP, "LF");
+        board.bindKey(KeyEvent.VK_Z, KeyEdge.DOWN, "RF");
+        board.bindKey(KeyEvent.VK_X, KeyEdge.UP, "S");
+        board.bindKey(KeyEvent.VK_Q, KeyEdge.DOWN, "S");
+        board.bindKey(KeyEvent.VK_Q, KeyEdge.UP, "S");
+
+        assertThat(KeyHelp.describe(board)).containsExactly(
+                key(KeyEvent.VK_Z) + ": left flipper LF (hold)",
+                key(KeyEvent.VK_SPACE) + ": absorber A (press)",
+                key(KeyEvent.VK_Z) + ": right flipper RF (press)",
+                key(KeyEvent.VK_X) + ": square S (release)",
+                key(KeyEvent.VK_Q) + ": square S (press and release)");
     }
 
     @Test
     void noBindingsNoLines() {
-        assertThat(KeyHelp.describe(List.of())).isEmpty();
+        assertThat(KeyHelp.describe(new Board())).isEmpty();
     }
 }

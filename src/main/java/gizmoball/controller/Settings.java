@@ -1,0 +1,150 @@
+package gizmoball.controller;
+
+import java.awt.Rectangle;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
+import java.util.Optional;
+import java.util.prefs.BackingStoreException;
+import java.util.prefs.Preferences;
+
+/**
+ * The player's settings that outlive a run: sound, overlay, trails, aim preview, speed, the last folder
+ * a board was opened from or saved to, and the window's place and size. Stored with java.util.prefs
+ * (on Linux under the user's home, never next to the program). A value that is missing or unreadable
+ * reads as its default.
+ * <p>
+ * The game uses the node {@value #DEFAULT_NODE}; the system property {@value #NODE_PROPERTY} names another
+ * one, which is how the tests keep their windows off the player's settings.
+ */
+public final class Settings {
+    public static final String NODE_PROPERTY = "gizmoball.prefs.node";
+    public static final String DEFAULT_NODE = "/gizmoball";
+
+    private static final String SOUND = "sound";
+    private static final String OVERLAY = "physicsOverlay";
+    private static final String TRAILS = "ballTrails";
+    private static final String AIM_PREVIEW = "aimPreview";
+    private static final String SPEED = "speed";
+    private static final String LAST_FOLDER = "lastFolder";
+    private static final String WINDOW = "window";
+
+    private final Preferences node;
+
+    public Settings(Preferences node) {
+        this.node = node;
+    }
+
+    /** The settings of this user (or of the node the system property names). */
+    public static Settings forUser() {
+        return new Settings(Preferences.userRoot().node(System.getProperty(NODE_PROPERTY, DEFAULT_NODE)));
+    }
+
+    public boolean sound() {
+        return node.getBoolean(SOUND, true);
+    }
+
+    public void setSound(boolean on) {
+        put(SOUND, Boolean.toString(on));
+    }
+
+    public boolean physicsOverlay() {
+        return node.getBoolean(OVERLAY, false);
+    }
+
+    public void setPhysicsOverlay(boolean on) {
+        put(OVERLAY, Boolean.toString(on));
+    }
+
+    public boolean ballTrails() {
+        return node.getBoolean(TRAILS, false);
+    }
+
+    public void setBallTrails(boolean on) {
+        put(TRAILS, Boolean.toString(on));
+    }
+
+    public boolean aimPreview() {
+        return node.getBoolean(AIM_PREVIEW, true);
+    }
+
+    public void setAimPreview(boolean on) {
+        put(AIM_PREVIEW, Boolean.toString(on));
+    }
+
+    public Speed speed() {
+        String name = node.get(SPEED, Speed.NORMAL.name());
+        for (Speed s : Speed.values()) {
+            if (s.name().equals(name)) {
+                return s;
+            }
+        }
+        return Speed.NORMAL;
+    }
+
+    public void setSpeed(Speed speed) {
+        put(SPEED, speed.name());
+    }
+
+    /** The folder last opened from or saved to, if it still exists. */
+    public Optional<Path> lastFolder() {
+        String text = node.get(LAST_FOLDER, null);
+        if (text == null) {
+            return Optional.empty();
+        }
+        try {
+            Path folder = Path.of(text);
+            return Files.isDirectory(folder) ? Optional.of(folder) : Optional.empty();
+        } catch (InvalidPathException e) {
+            return Optional.empty();
+        }
+    }
+
+    public void setLastFolder(Path folder) {
+        put(LAST_FOLDER, folder.toAbsolutePath().normalize().toString());
+    }
+
+    /** The window's last place and size on the screen: x, y, width and height, if known. */
+    public Optional<Rectangle> windowBounds() {
+        String[] parts = node.get(WINDOW, "").split(",");
+        if (parts.length != 4) {
+            return Optional.empty();
+        }
+        try {
+            int[] v = new int[4];
+            for (int i = 0; i < 4; i++) {
+                v[i] = Integer.parseInt(parts[i].trim());
+            }
+            return v[2] > 0 && v[3] > 0 ? Optional.of(new Rectangle(v[0], v[1], v[2], v[3])) : Optional.empty();
+        } catch (NumberFormatException e) {
+            return Optional.empty();
+        }
+    }
+
+    public void setWindowBounds(Rectangle r) {
+        put(WINDOW, r.x + "," + r.y + "," + r.width + "," + r.height);
+    }
+
+    /** Forgets every setting (back to the defaults). */
+    public void clear() {
+        try {
+            node.clear();
+            node.flush();
+        } catch (BackingStoreException e) {
+            // The store is unavailable: there is nothing remembered to forget either.
+        }
+    }
+
+    /**
+     * Written through at once, so a setting survives a crash. A store that cannot be written (read-only
+     * home) only means the setting is not remembered: the game goes on.
+     */
+    private void put(String key, String value) {
+        node.put(key, value);
+        try {
+            node.flush();
+        } catch (BackingStoreException e) {
+            // Not remembered this time; the value still holds for this run.
+        }
+    }
+}

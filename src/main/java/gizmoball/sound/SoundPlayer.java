@@ -1,0 +1,104 @@
+package gizmoball.sound;
+
+import java.awt.GraphicsEnvironment;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
+import javax.sound.sampled.AudioFormat;
+import javax.sound.sampled.AudioSystem;
+import javax.sound.sampled.LineUnavailableException;
+import javax.sound.sampled.SourceDataLine;
+
+/**
+ * Plays cues on a dedicated daemon thread. {@link #play} only offers the cue to a bounded queue and
+ * returns: the event thread and the game loop never wait for audio, and when the queue is full (the audio
+ * thread is behind) the cue is dropped. The audio thread synthesizes, mixes and writes to the device in
+ * blocks of a few milliseconds.
+ * <p>
+ * Without an audio device the player goes silent and says so once through its notice callback. It never
+ * opens a device in a headless JVM, nor when the system property {@value #DISABLE_PROPERTY} is
+ * {@code off} (the tests set it).
+ */
+public final class SoundPlayer implements AutoCloseable {
+    public static final String DISABLE_PROPERTY = "gizmoball.sound";
+    private static final int QUEUE_CAPACITY = 64;
+    private static final int BLOCK_FRAMES = 256;
+    /** The device's buffer: about 46 ms, enough to ride out a scheduling hiccup, short enough to feel immediate. */
+    private static final int LINE_BUFFER_FRAMES = 2048;
+    private static final AudioFormat FORMAT = new AudioFormat(Synth.SAMPLE_RATE, 16, 1, true, false);
+
+    private final BlockingQueue<Cue> queue = new ArrayBlockingQueue<>(QUEUE_CAPACITY);
+    private final Consumer<String> notice;
+    private final Thread thread;
+    private volatile boolean enabled;
+    private volatile boolean silent;
+
+    /** {@code notice} is told once, from the audio thread, if the sound cannot be played. */
+    public SoundPlayer(Consumer<String> notice) {
+        this.notice = notice;
+        silent = GraphicsEnvironment.isHeadless() || "off".equals(System.getProperty(DISABLE_PROPERTY));
+        thread = new Thread(this::run, "gizmoball-audio");
+        thread.setDaemon(true);
+    }
+
+    /** Sound on or off; the audio thread starts, and opens the device, the first time sound is turned on. */
+    public void setEnabled(boolean on) {
+        enabled = on;
+        if (on && !silent && thread.getState() == Thread.State.NEW) {
+            thread.start();
+        }
+        if (!on) {
+            queue.clear();
+        }
+    }
+
+    public boolean isEnabled() {
+        return enabled;
+    }
+
+    /** Never blocks. Ignored while off, silent, or when the audio thread is too far behind. */
+    public void play(Cue cue) {
+        if (enabled && !silent) {
+            queue.offer(cue);
+        }
+    }
+
+    @Override
+    public void close() {
+        silent = true;
+        thread.interrupt();
+    }
+
+    private void run() {
+        try (SourceDataLine line = AudioSystem.getSourceDataLine(FORMAT)) {
+            line.open(FORMAT, LINE_BUFFER_FRAMES * FORMAT.getFrameSize());
+            line.start();
+            mix(line);
+        } catch (LineUnavailableException | IllegalArgumentException | SecurityException e) {
+            silent = true;
+            queue.clear();
+            notice.accept("No audio device: playing without sound");
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    private void mix(SourceDataLine line) throws InterruptedException {
+        Mixer mixer = new Mixer();
+        float[] block = new float[BLOCK_FRAMES];
+        byte[] pcm = new byte[BLOCK_FRAMES * 2];
+        while (!silent) {
+            Cue cue = mixer.isIdle() ? queue.poll(1, TimeUnit.SECONDS) : queue.poll();
+            while (cue != null) {
+                mixer.add(Synth.render(cue));
+                cue = queue.poll();
+            }
+            if (!mixer.isIdle()) {
+                mixer.render(block);
+                Mixer.toPcm16(block, pcm);
+                line.write(pcm, 0, pcm.length);
+            }
+        }
+    }
+}

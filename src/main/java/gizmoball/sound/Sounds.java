@@ -1,0 +1,64 @@
+package gizmoball.sound;
+
+import gizmoball.model.GizmoKind;
+import java.util.Optional;
+
+/**
+ * What the game sounds like: the cue for each game event. A hit clicks at a pitch of its own for each kind of
+ * gizmo (walls lowest, balls highest) and as loud as the impact was fast; hits slower than
+ * {@link #QUIET_SPEED} (a ball settling, rolling contact) make no sound.
+ */
+public final class Sounds {
+    /** Impact speed (L/s) of the loudest click; faster hits are no louder. */
+    static final double FULL_SPEED = 40;
+    static final double QUIET_SPEED = 1;
+    private static final double WALL_HZ = 220;
+    private static final double BALL_HZ = 1320;
+    private static final double SWISH_GAIN = 0.45;
+    private static final double THUNK_GAIN = 0.9;
+    private static final double LAUNCH_GAIN = 0.7;
+
+    private Sounds() {
+    }
+
+    public static Optional<Cue> gizmoHit(GizmoKind kind, double impactSpeed) {
+        return click(pitchOf(kind), impactSpeed);
+    }
+
+    public static Optional<Cue> wallHit(double impactSpeed) {
+        return click(WALL_HZ, impactSpeed);
+    }
+
+    public static Optional<Cue> ballHit(double impactSpeed) {
+        return click(BALL_HZ, impactSpeed);
+    }
+
+    public static Cue flipperSwing() {
+        return new Cue(Cue.Kind.SWISH, 1, SWISH_GAIN);
+    }
+
+    public static Cue capture() {
+        return new Cue(Cue.Kind.THUNK, 1, THUNK_GAIN);
+    }
+
+    public static Cue fire() {
+        return new Cue(Cue.Kind.LAUNCH, 1, LAUNCH_GAIN);
+    }
+
+    static double pitchOf(GizmoKind kind) {
+        return switch (kind) {
+            case SQUARE -> 520;
+            case TRIANGLE -> 700;
+            case CIRCLE -> 880;
+            case LEFT_FLIPPER, RIGHT_FLIPPER -> 330;
+            case ABSORBER -> 160;
+        };
+    }
+
+    private static Optional<Cue> click(double hz, double impactSpeed) {
+        if (!(impactSpeed >= QUIET_SPEED)) {
+            return Optional.empty();
+        }
+        return Optional.of(new Cue(Cue.Kind.CLICK, hz, Math.min(1, impactSpeed / FULL_SPEED)));
+    }
+}

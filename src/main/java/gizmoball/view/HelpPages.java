@@ -1,0 +1,123 @@
+package gizmoball.view;
+
+import gizmoball.controller.editor.Tool;
+import gizmoball.model.Board;
+import java.awt.BorderLayout;
+import java.awt.Dimension;
+import java.awt.FlowLayout;
+import java.awt.Window;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
+import java.util.List;
+import java.util.Objects;
+import java.util.stream.IntStream;
+import javax.swing.JButton;
+import javax.swing.JComponent;
+import javax.swing.JDialog;
+import javax.swing.JEditorPane;
+import javax.swing.JMenu;
+import javax.swing.JMenuBar;
+import javax.swing.JMenuItem;
+import javax.swing.JPanel;
+import javax.swing.JScrollPane;
+import javax.swing.KeyStroke;
+import javax.swing.ScrollPaneConstants;
+
+/**
+ * Help > How to play and Help > Build mode. The lists in them (menus and their shortcuts, the board's keys,
+ * the build tools and their keys) are read from the window's own menus, the board and {@link Tool}, the
+ * same facts the README's tables state, so a page cannot name a shortcut the game does not have.
+ */
+final class HelpPages {
+    static final String HOW_TO_PLAY = "How to play";
+    static final String BUILD_MODE = "Build mode";
+
+    private HelpPages() {
+    }
+
+    static String howToPlay(JMenuBar menus, Board board) {
+        List<String> keys = KeyHelp.describe(board);
+        StringBuilder html = new StringBuilder("<html><body><h2>How to play</h2>")
+                .append("<p>Press <b>Start</b> (Ctrl+G) and play with the board's keys. Holding a key keeps a")
+                .append(" flipper up; keys reach the board while its window has the focus. <b>Stop</b> (Ctrl+H)")
+                .append(" pauses, <b>Tick</b> (Ctrl+T) steps once while stopped, <b>Reset</b> (Ctrl+Shift+R)")
+                .append(" puts the board back as loaded or built.</p><h3>Keys of this board</h3>");
+        if (keys.isEmpty()) {
+            html.append("<p>This board binds no keys.</p>");
+        } else {
+            html.append("<ul>");
+            keys.forEach(k -> html.append("<li>").append(escape(k)).append("</li>"));
+            html.append("</ul>");
+        }
+        html.append("<h3>Menus</h3><p>Every shortcut uses Ctrl, so no board key is shadowed.</p><table>");
+        for (int i = 0; i < menus.getMenuCount(); i++) {
+            JMenu menu = menus.getMenu(i);
+            html.append("<tr><td valign='top'><b>").append(escape(menu.getText())).append("</b></td><td>")
+                    .append(escape(String.join(", ", items(menu)))).append("</td></tr>");
+        }
+        html.append("</table><p>The title shows * while there are unsaved changes; New, Open, Reload and Quit")
+                .append(" ask first.</p></body></html>");
+        return html.toString();
+    }
+
+    static String buildMode() {
+        StringBuilder html = new StringBuilder("<html><body><h2>Build mode</h2>")
+                .append("<p>Switch with <b>Mode &gt; Build</b> (Ctrl+B). Pick a tool in the palette on the left")
+                .append(" or press its key over the board; the properties are on the right, hints and refusals")
+                .append(" in the status line. Green footprint: the gizmo would go there; red: refused.</p>")
+                .append("<table><tr><th align='left'>tool (key)</th><th align='left'>mouse</th></tr>");
+        for (Tool tool : Tool.values()) {
+            html.append("<tr><td valign='top'>").append(escape(tool.labelWithShortcut())).append("</td><td>")
+                    .append(escape(tool.hint())).append("</td></tr>");
+        }
+        html.append("</table><p><b>Delete</b> deletes the selection, the <b>arrow keys</b> move it,")
+                .append(" <b>Esc</b> or right-click cancels a half-done step; <b>Ctrl+Z</b> undo,")
+                .append(" <b>Ctrl+Y</b> redo. Every edit can be undone.</p></body></html>");
+        return html.toString();
+    }
+
+    /** "New (Ctrl+N)" for each item of the menu, submenus by name. */
+    static List<String> items(JMenu menu) {
+        return IntStream.range(0, menu.getItemCount()).mapToObj(menu::getItem)
+                .filter(Objects::nonNull)
+                .map(item -> item.getText() + shortcut(item)).toList();
+    }
+
+    private static String shortcut(JMenuItem item) {
+        KeyStroke key = item instanceof JMenu ? null : item.getAccelerator();
+        if (key == null) {
+            return "";
+        }
+        String modifiers = InputEvent.getModifiersExText(key.getModifiers());
+        return " (" + (modifiers.isEmpty() ? "" : modifiers + "+") + KeyEvent.getKeyText(key.getKeyCode()) + ")";
+    }
+
+    private static String escape(String text) {
+        return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;");
+    }
+
+    /** A modal page with a Close button (Esc closes it too). */
+    static void show(Window owner, String title, String html) {
+        JDialog dialog = new JDialog(owner, title, JDialog.ModalityType.APPLICATION_MODAL);
+        dialog.setName("help");
+        JEditorPane page = new JEditorPane("text/html", html);
+        page.setEditable(false);
+        page.setCaretPosition(0);
+        JScrollPane scroll = new JScrollPane(page, ScrollPaneConstants.VERTICAL_SCROLLBAR_AS_NEEDED,
+                ScrollPaneConstants.HORIZONTAL_SCROLLBAR_NEVER);
+        scroll.setPreferredSize(new Dimension(560, 480));
+        JButton close = new JButton("Close");
+        close.addActionListener(e -> dialog.dispose());
+        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.RIGHT));
+        buttons.add(close);
+        dialog.add(scroll, BorderLayout.CENTER);
+        dialog.add(buttons, BorderLayout.SOUTH);
+        dialog.getRootPane().setDefaultButton(close);
+        dialog.getRootPane().registerKeyboardAction(e -> dialog.dispose(), KeyStroke.getKeyStroke(KeyEvent.VK_ESCAPE, 0),
+                JComponent.WHEN_IN_FOCUSED_WINDOW);
+        dialog.setDefaultCloseOperation(JDialog.DISPOSE_ON_CLOSE);
+        dialog.pack();
+        dialog.setLocationRelativeTo(owner);
+        dialog.setVisible(true);
+    }
+}

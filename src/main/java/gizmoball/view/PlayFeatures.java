@@ -1,0 +1,150 @@
+package gizmoball.view;
+
+import gizmoball.controller.GameLoop;
+import gizmoball.controller.Settings;
+import gizmoball.controller.Speed;
+import java.awt.GraphicsConfiguration;
+import java.awt.GraphicsDevice;
+import java.awt.GraphicsEnvironment;
+import java.awt.Rectangle;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
+import java.awt.event.WindowAdapter;
+import java.awt.event.WindowEvent;
+import java.nio.file.Path;
+import java.util.function.Consumer;
+import javax.swing.Action;
+import javax.swing.ButtonGroup;
+import javax.swing.JCheckBoxMenuItem;
+import javax.swing.JMenu;
+import javax.swing.JMenuBar;
+import javax.swing.JRadioButtonMenuItem;
+import javax.swing.KeyStroke;
+
+/**
+ * Adds to a game window what makes the physics visible and the window remember itself: Game > Speed,
+ * View > Ball trails, and the settings that stick (speed, trails, last folder, window place and size).
+ * Every setting the player changes is written to {@link Settings} at once.
+ */
+public final class PlayFeatures {
+    private final GameWindow window;
+    private final Settings settings;
+    private final BallTrails trails;
+
+    private PlayFeatures(GameWindow window, Settings settings) {
+        this.window = window;
+        this.settings = settings;
+        this.trails = new BallTrails(window.session().board());
+    }
+
+    public static PlayFeatures install(GameWindow window, Settings settings) {
+        PlayFeatures features = new PlayFeatures(window, settings);
+        features.installSpeed();
+        features.installView();
+        features.rememberFolder();
+        features.rememberPlace();
+        return features;
+    }
+
+    public BallTrails trails() {
+        return trails;
+    }
+
+    private void installSpeed() {
+        GameLoop loop = window.loop();
+        JMenu speedMenu = new JMenu("Speed");
+        ButtonGroup group = new ButtonGroup();
+        Speed[] speeds = Speed.values();
+        for (int i = 0; i < speeds.length; i++) {
+            Speed speed = speeds[i];
+            // Ctrl+1 (slowest) to Ctrl+5 (fastest): Ctrl, like every shortcut, so no board key is shadowed.
+            Action a = GameWindow.action(speed.label(), KeyEvent.VK_1 + i, 0, () -> setSpeed(speed));
+            a.putValue(Action.SELECTED_KEY, speed == settings.speed());
+            JRadioButtonMenuItem item = new JRadioButtonMenuItem(a);
+            group.add(item);
+            speedMenu.add(item);
+        }
+        loop.setSpeed(settings.speed());
+        JMenu game = menu(window.menus(), "Game");
+        game.addSeparator();
+        game.add(speedMenu);
+        window.refreshStatus();
+    }
+
+    private void setSpeed(Speed speed) {
+        window.loop().setSpeed(speed);
+        settings.setSpeed(speed);
+        window.refreshStatus();
+        window.statusLine().showMessage("Speed " + speed.label());
+    }
+
+    private void installView() {
+        JMenu view = new JMenu("View");
+        view.setMnemonic(KeyEvent.VK_V);
+        view.add(toggle("Ball trails", KeyEvent.VK_T, settings.ballTrails(), on -> {
+            trails.setEnabled(on);
+            settings.setBallTrails(on);
+            window.boardPanel().repaint();
+        }));
+        trails.setEnabled(settings.ballTrails());
+        window.boardPanel().addUnderlay(trails);
+        JMenuBar menus = window.menus();
+        menus.add(view, Math.min(menus.getComponentIndex(menu(menus, "Mode")) + 1, menus.getMenuCount()));
+        menus.revalidate();
+    }
+
+    /** A check box item with a Ctrl+Shift shortcut. */
+    private static JCheckBoxMenuItem toggle(String name, int key, boolean initially, Consumer<Boolean> changed) {
+        JCheckBoxMenuItem item = new JCheckBoxMenuItem(name, initially);
+        item.setAccelerator(KeyStroke.getKeyStroke(key, InputEvent.CTRL_DOWN_MASK | InputEvent.SHIFT_DOWN_MASK));
+        item.addActionListener(e -> changed.accept(item.isSelected()));
+        return item;
+    }
+
+    /** The file chooser starts where the player last opened or saved a board, in this run or an earlier one. */
+    private void rememberFolder() {
+        settings.lastFolder().ifPresent(window.fileCommands()::startIn);
+        window.session().addStateListener(() -> window.session().file()
+                .map(f -> f.toAbsolutePath().getParent())
+                .ifPresent(this::folderUsed));
+    }
+
+    private void folderUsed(Path folder) {
+        if (!settings.lastFolder().map(folder::equals).orElse(false)) {
+            settings.setLastFolder(folder);
+        }
+    }
+
+    /** The window opens where it was closed, at the same size, if that place is still on a screen. */
+    private void rememberPlace() {
+        settings.windowBounds().filter(PlayFeatures::onSomeScreen).ifPresent(window::setBounds);
+        window.addWindowListener(new WindowAdapter() {
+            @Override
+            public void windowClosing(WindowEvent e) {
+                settings.setWindowBounds(window.getBounds());
+            }
+        });
+    }
+
+    /** True when the window's title bar would be on a screen: at least 100 x 40 pixels of its top. */
+    private static boolean onSomeScreen(Rectangle bounds) {
+        Rectangle top = new Rectangle(bounds.x, bounds.y, bounds.width, Math.min(bounds.height, 40));
+        for (GraphicsDevice device : GraphicsEnvironment.getLocalGraphicsEnvironment().getScreenDevices()) {
+            GraphicsConfiguration config = device.getDefaultConfiguration();
+            Rectangle visible = config.getBounds().intersection(top);
+            if (visible.width >= Math.min(100, bounds.width) && visible.height >= Math.min(40, bounds.height)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    static JMenu menu(JMenuBar menus, String text) {
+        for (int i = 0; i < menus.getMenuCount(); i++) {
+            if (text.equals(menus.getMenu(i).getText())) {
+                return menus.getMenu(i);
+            }
+        }
+        throw new IllegalStateException("the window has no " + text + " menu");
+    }
+}

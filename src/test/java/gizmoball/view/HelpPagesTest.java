@@ -1,0 +1,58 @@
+package gizmoball.view;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import gizmoball.controller.editor.Tool;
+import gizmoball.model.Board;
+import gizmoball.model.GizmoKind;
+import gizmoball.model.KeyEdge;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import javax.swing.JMenu;
+import javax.swing.JMenuBar;
+import javax.swing.JMenuItem;
+import javax.swing.KeyStroke;
+import org.junit.jupiter.api.Test;
+
+/** The help pages say what the game has, and the README says the same (no display needed). */
+class HelpPagesTest {
+    @Test
+    void theBuildModePageListsEveryToolWithItsKeyAsTheReadmeDoes() throws Exception {
+        String page = HelpPages.buildMode();
+        String readme = Files.readString(Path.of("README.md"));
+        for (Tool tool : Tool.values()) {
+            assertThat(page).contains(tool.labelWithShortcut(), tool.hint());
+            assertThat(readme).as("README's build-mode table").contains(tool.labelWithShortcut());
+        }
+    }
+
+    @Test
+    void howToPlayListsTheBoardsKeysAndEveryMenuItemWithItsShortcut() {
+        Board board = new Board();
+        board.addGizmo(GizmoKind.LEFT_FLIPPER, "LF", 6, 16);
+        board.bindKey(KeyEvent.VK_Z, KeyEdge.DOWN, "LF");
+        board.bindKey(KeyEvent.VK_Z, KeyEdge.UP, "LF");
+        JMenuBar menus = new JMenuBar();
+        JMenu game = new JMenu("Game");
+        JMenuItem start = new JMenuItem("Start");
+        start.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_G, InputEvent.CTRL_DOWN_MASK));
+        game.add(start);
+        JMenuItem reset = new JMenuItem("Reset");
+        reset.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_R, InputEvent.CTRL_DOWN_MASK | InputEvent.SHIFT_DOWN_MASK));
+        game.add(reset);
+        game.add(new JMenuItem("About"));
+        menus.add(game);
+
+        String page = HelpPages.howToPlay(menus, board);
+
+        assertThat(page).contains(KeyEvent.getKeyText(KeyEvent.VK_Z) + ": left flipper LF (hold)");
+        assertThat(page).contains("Start (Ctrl+G), Reset (Ctrl+Shift+R), About");
+    }
+
+    @Test
+    void aBoardWithoutKeysSaysSo() {
+        assertThat(HelpPages.howToPlay(new JMenuBar(), new Board())).contains("This board binds no keys.");
+    }
+}

@@ -1,0 +1,86 @@
+package gizmoball.view;
+
+import static gizmoball.view.Gui.await;
+import static gizmoball.view.Gui.clickMenu;
+import static gizmoball.view.Gui.onEdt;
+import static org.assertj.core.api.Assertions.assertThat;
+
+import gizmoball.controller.Settings;
+import gizmoball.controller.Speed;
+import java.awt.Rectangle;
+import java.awt.Window;
+import java.awt.event.WindowEvent;
+import java.nio.file.Path;
+import java.util.UUID;
+import java.util.prefs.Preferences;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+
+/** Game > Speed, View > Ball trails and the settings that a second window (the next run) finds again. */
+class PlayFeaturesGuiTest {
+    private final Preferences node = Preferences.userRoot().node("/gizmoball-test/" + UUID.randomUUID());
+    private final Settings settings = new Settings(node);
+
+    @BeforeEach
+    void display() {
+        Gui.assumeDisplay();
+    }
+
+    @AfterEach
+    void close() throws Exception {
+        for (Window w : Window.getWindows()) {
+            onEdt(w::dispose);
+        }
+        node.removeNode();
+    }
+
+    private PlayFeatures features;
+
+    private GameWindow open() {
+        GameWindow window = GameWindow.launch(null);
+        features = onEdt(() -> PlayFeatures.install(window, settings));
+        return window;
+    }
+
+    /** As the player closes it: the window hears windowClosing, then goes. */
+    private static void closeAsPlayer(GameWindow window) {
+        onEdt(() -> {
+            window.dispatchEvent(new WindowEvent(window, WindowEvent.WINDOW_CLOSING));
+            window.dispose();
+        });
+    }
+
+    @Test
+    void theSpeedMenuSetsTheLoopsSpeedShowsItAndIsRemembered() {
+        GameWindow window = open();
+        assertThat(onEdt(() -> window.statusLine().text())).contains("at 1x");
+        clickMenu(window.menus(), "1/4x");
+        assertThat(onEdt(() -> window.loop().speed())).isEqualTo(Speed.QUARTER);
+        await("the status line to show the speed", () -> window.statusLine().text().contains("Play - stopped at 1/4x"));
+        closeAsPlayer(window);
+
+        GameWindow next = open();
+        assertThat(onEdt(() -> next.loop().speed())).isEqualTo(Speed.QUARTER);
+        assertThat(onEdt(() -> Gui.menuItem(next.menus(), "1/4x").isSelected())).isTrue();
+        assertThat(onEdt(() -> next.statusLine().text())).contains("at 1/4x");
+    }
+
+    @Test
+    void trailsFolderAndWindowPlaceAreRemembered() {
+        GameWindow window = open();
+        clickMenu(window.menus(), "Ball trails");
+        assertThat(onEdt(() -> features.trails().isEnabled())).isTrue();
+        Path boards = Path.of("boards").toAbsolutePath();
+        onEdt(() -> window.fileCommands().open(boards.resolve("default.txt")));
+        Rectangle placed = new Rectangle(40, 60, 700, 720);
+        onEdt(() -> window.setBounds(placed));
+        await("the window to move", () -> window.getBounds().equals(placed));
+        closeAsPlayer(window);
+
+        assertThat(settings.lastFolder()).contains(boards.normalize());
+        GameWindow next = open();
+        assertThat(onEdt(() -> Gui.menuItem(next.menus(), "Ball trails").isSelected())).isTrue();
+        await("the window where it was", () -> next.getBounds().equals(placed));
+    }
+}
