@@ -149,9 +149,10 @@ final class CommandParser {
             colour = new Command.Colour(args.get(0), Rgb.of(Integer.parseInt(args.get(1).substring(1), 16)));
             notes.add("colour " + args.get(1) + " read as " + colour.toLine());
         } else if (args.size() == 2) {
-            double argb = number("colour", args.get(1));
+            OptionalDouble number = Decimals.parse(args.get(1));
+            double argb = number.orElse(Double.NaN);
             if (argb != Math.rint(argb) || argb < Integer.MIN_VALUE || argb > 0xffffffffL) {
-                throw new Refusal("colour " + args.get(1) + " is neither #rrggbb nor a 32-bit ARGB number");
+                throw new Refusal("colour '" + args.get(1) + "' is neither #rrggbb nor a 32-bit ARGB number");
             }
             colour = new Command.Colour(args.get(0), Rgb.of((int) (long) argb));
             notes.add("colour " + args.get(1) + " (ARGB) read as " + colour.toLine());

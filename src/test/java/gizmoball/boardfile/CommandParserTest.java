@@ -53,7 +53,8 @@ class CommandParserTest {
 
     static Stream<Arguments> malformedLines() {
         return Stream.of(
-                Arguments.of("Colour S1 #ff00", "colour '#ff00' is not a number"),
+                Arguments.of("Colour S1 #ff00", "colour '#ff00' is neither #rrggbb nor a 32-bit ARGB number"),
+                Arguments.of("Colour S1 1.5", "colour '1.5' is neither #rrggbb nor a 32-bit ARGB number"),
                 Arguments.of("Colour S1 256 0 0", "red 256 is not a colour channel 0..255"),
                 Arguments.of("Color S1 0 0", "wrong number of arguments: Colour takes <name> and"),
                 Arguments.of("Sink S 1 2", "Sink S: an extension of another implementation, not part of the format"),
