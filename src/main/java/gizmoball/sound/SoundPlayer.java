@@ -28,16 +28,30 @@ public final class SoundPlayer implements AutoCloseable {
     private static final int LINE_BUFFER_FRAMES = 2048;
     private static final AudioFormat FORMAT = new AudioFormat(Synth.SAMPLE_RATE, 16, 1, true, false);
 
+    /** Where the samples go: the system's default audio line, opened in {@link #FORMAT}. */
+    @FunctionalInterface
+    interface LineFactory {
+        SourceDataLine open(AudioFormat format, int bufferBytes) throws LineUnavailableException;
+    }
+
     private final BlockingQueue<Cue> queue = new ArrayBlockingQueue<>(QUEUE_CAPACITY);
     private final Consumer<String> notice;
+    private final LineFactory lines;
     private final Thread thread;
     private volatile boolean enabled;
     private volatile boolean silent;
 
     /** {@code notice} is told once, from the audio thread, if the sound cannot be played. */
     public SoundPlayer(Consumer<String> notice) {
+        this(notice, SoundPlayer::systemLine,
+                GraphicsEnvironment.isHeadless() || "off".equals(System.getProperty(DISABLE_PROPERTY)));
+    }
+
+    /** With another line (the tests: a machine whose audio fails); {@code silent}: never open one. */
+    SoundPlayer(Consumer<String> notice, LineFactory lines, boolean silent) {
         this.notice = notice;
-        silent = GraphicsEnvironment.isHeadless() || "off".equals(System.getProperty(DISABLE_PROPERTY));
+        this.lines = lines;
+        this.silent = silent;
         thread = new Thread(this::run, "gizmoball-audio");
         thread.setDaemon(true);
     }
@@ -70,15 +84,21 @@ public final class SoundPlayer implements AutoCloseable {
         thread.interrupt();
     }
 
+    private static SourceDataLine systemLine(AudioFormat format, int bufferBytes) throws LineUnavailableException {
+        SourceDataLine line = AudioSystem.getSourceDataLine(format);
+        line.open(format, bufferBytes);
+        return line;
+    }
+
     private void run() {
-        try (SourceDataLine line = AudioSystem.getSourceDataLine(FORMAT)) {
-            line.open(FORMAT, LINE_BUFFER_FRAMES * FORMAT.getFrameSize());
+        try (SourceDataLine line = lines.open(FORMAT, LINE_BUFFER_FRAMES * FORMAT.getFrameSize())) {
             line.start();
             mix(line);
-        } catch (LineUnavailableException | IllegalArgumentException | SecurityException e) {
+        } catch (LineUnavailableException | RuntimeException e) {
+            // No device, none in this format, no permission, or one that failed while playing: all mean silence.
             silent = true;
             queue.clear();
-            notice.accept("No audio device: playing without sound");
+            notice.accept("No audio device: sound off");
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }

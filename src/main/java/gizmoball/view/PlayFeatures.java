@@ -3,6 +3,7 @@ package gizmoball.view;
 import gizmoball.controller.GameLoop;
 import gizmoball.controller.Settings;
 import gizmoball.controller.Speed;
+import gizmoball.sound.SoundPlayer;
 import java.awt.GraphicsConfiguration;
 import java.awt.GraphicsDevice;
 import java.awt.GraphicsEnvironment;
@@ -20,26 +21,31 @@ import javax.swing.JMenu;
 import javax.swing.JMenuBar;
 import javax.swing.JRadioButtonMenuItem;
 import javax.swing.KeyStroke;
+import javax.swing.SwingUtilities;
 
 /**
- * Adds to a game window what makes the physics visible and the window remember itself: Game > Speed,
- * View > Ball trails, and the settings that stick (speed, trails, last folder, window place and size).
+ * Adds to a game window what makes the physics visible and audible and the window remember itself:
+ * Game > Speed and Sound, View > Ball trails, and the settings that stick (speed, sound, trails, last
+ * folder, window place and size).
  * Every setting the player changes is written to {@link Settings} at once.
  */
 public final class PlayFeatures {
     private final GameWindow window;
     private final Settings settings;
     private final BallTrails trails;
+    private final SoundPlayer sound;
 
     private PlayFeatures(GameWindow window, Settings settings) {
         this.window = window;
         this.settings = settings;
         this.trails = new BallTrails(window.session().board());
+        this.sound = new SoundPlayer(notice -> SwingUtilities.invokeLater(() -> window.statusLine().showMessage(notice)));
     }
 
     public static PlayFeatures install(GameWindow window, Settings settings) {
         PlayFeatures features = new PlayFeatures(window, settings);
         features.installSpeed();
+        features.installSound();
         features.installView();
         features.rememberFolder();
         features.rememberPlace();
@@ -78,10 +84,31 @@ public final class PlayFeatures {
         window.statusLine().showMessage("Speed " + speed.label());
     }
 
+    public SoundPlayer sound() {
+        return sound;
+    }
+
+    private void installSound() {
+        JMenu game = menu(window.menus(), "Game");
+        // Ctrl+M (mute), like every shortcut a Ctrl one, so no board key is shadowed.
+        game.add(toggle("Sound", KeyEvent.VK_M, 0, settings.sound(), on -> {
+            sound.setEnabled(on);
+            settings.setSound(on);
+            window.statusLine().showMessage(on ? "Sound on" : "Sound off");
+        }));
+        sound.setEnabled(settings.sound());
+        window.addWindowListener(new WindowAdapter() {
+            @Override
+            public void windowClosed(WindowEvent e) {
+                sound.close();
+            }
+        });
+    }
+
     private void installView() {
         JMenu view = new JMenu("View");
         view.setMnemonic(KeyEvent.VK_V);
-        view.add(toggle("Ball trails", KeyEvent.VK_T, settings.ballTrails(), on -> {
+        view.add(toggle("Ball trails", KeyEvent.VK_T, InputEvent.SHIFT_DOWN_MASK, settings.ballTrails(), on -> {
             trails.setEnabled(on);
             settings.setBallTrails(on);
             window.boardPanel().repaint();
@@ -93,10 +120,11 @@ public final class PlayFeatures {
         menus.revalidate();
     }
 
-    /** A check box item with a Ctrl+Shift shortcut. */
-    private static JCheckBoxMenuItem toggle(String name, int key, boolean initially, Consumer<Boolean> changed) {
+    /** A check box item with a Ctrl shortcut. */
+    private static JCheckBoxMenuItem toggle(String name, int key, int extraModifiers, boolean initially,
+                                            Consumer<Boolean> changed) {
         JCheckBoxMenuItem item = new JCheckBoxMenuItem(name, initially);
-        item.setAccelerator(KeyStroke.getKeyStroke(key, InputEvent.CTRL_DOWN_MASK | InputEvent.SHIFT_DOWN_MASK));
+        item.setAccelerator(KeyStroke.getKeyStroke(key, InputEvent.CTRL_DOWN_MASK | extraModifiers));
         item.addActionListener(e -> changed.accept(item.isSelected()));
         return item;
     }
