@@ -1,14 +1,10 @@
 package gizmoball;
 
-import gizmoball.controller.Settings;
+import gizmoball.app.Gizmoball;
 import gizmoball.headless.HeadlessRunner;
-import gizmoball.view.GameWindow;
-import gizmoball.view.PlayFeatures;
-import gizmoball.view.editor.BuildModeInstaller;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import javax.swing.SwingUtilities;
 
 /**
  * Entry point. {@code gizmoball [BOARD]} plays a board (default: boards/default.txt);
@@ -29,11 +25,7 @@ public final class Main {
             System.exit(HeadlessRunner.run(arguments, System.out, System.err));
         }
         Path board = arguments.isEmpty() ? defaultBoard() : Path.of(arguments.get(0));
-        GameWindow window = GameWindow.launch(board);
-        SwingUtilities.invokeLater(() -> {
-            BuildModeInstaller.install(window);
-            PlayFeatures.install(window, Settings.forUser());
-        });
+        Gizmoball.launch(board);
     }
 
     /** boards/default.txt of the installation if there is one, else of the working directory. */

@@ -1,18 +1,13 @@
 package gizmoball.view;
 
-import gizmoball.controller.GameLoop;
-import gizmoball.controller.GameSession;
-import gizmoball.controller.KeyForwarder;
-import gizmoball.controller.Mode;
-import gizmoball.model.Board;
+import gizmoball.session.GameSession;
+import gizmoball.session.Mode;
 import java.awt.BorderLayout;
 import java.awt.event.ActionEvent;
 import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
-import java.lang.reflect.InvocationTargetException;
-import java.nio.file.Path;
 import java.util.List;
 import javax.swing.AbstractAction;
 import javax.swing.AbstractButton;
@@ -30,22 +25,50 @@ import javax.swing.JRadioButtonMenuItem;
 import javax.swing.JToggleButton;
 import javax.swing.JToolBar;
 import javax.swing.KeyStroke;
-import javax.swing.SwingUtilities;
 import javax.swing.Timer;
 
 /**
  * The game's window: board view, menus, toolbar and status line around one {@link GameSession}.
- * Every shortcut uses Ctrl, so no board key binding (plain keys) is shadowed by a menu.
+ * Every shortcut uses Ctrl, so no board key binding (plain keys) is shadowed by a menu. What the menus do is
+ * given by the application ({@link Commands}, see gizmoball.app): the window only shows and asks.
  */
 public final class GameWindow extends JFrame {
     private static final int STATUS_REFRESH_MILLIS = 200;
 
-    private final GameSession session = new GameSession();
-    private final BoardPanel boardPanel = new BoardPanel(session.board());
+    /** What the menus and the toolbar do, and the one piece of state they show that the session does not hold. */
+    public interface Commands {
+        void newBoard();
+
+        void open();
+
+        void save();
+
+        void saveAs();
+
+        void reload();
+
+        void quit();
+
+        void start();
+
+        void stop();
+
+        void tick();
+
+        void reset();
+
+        void setMode(Mode mode);
+
+        boolean running();
+
+        /** The game's speed as the status line shows it ("1x"). */
+        String speed();
+    }
+
+    private final GameSession session;
+    private final Commands commands;
+    private final BoardPanel boardPanel;
     private final StatusLine statusLine = new StatusLine();
-    private final GameLoop loop = new GameLoop(session.board(), Board.DEFAULT_TICK);
-    private final BoardFileCommands files = new BoardFileCommands(this, session, loop);
-    private final KeyForwarder keys = new KeyForwarder(this, session.board(), () -> session.mode() == Mode.PLAY);
     private final Timer statusRefresh = new Timer(STATUS_REFRESH_MILLIS, e -> refreshStatus());
     private final JPanel centre = new JPanel(new BorderLayout());
     private final JMenuBar menus = new JMenuBar();
@@ -53,31 +76,71 @@ public final class GameWindow extends JFrame {
     private JComponent west;
     private JComponent east;
 
-    private final Action newBoard = action("New", KeyEvent.VK_N, 0, files::newBoard);
-    private final Action open = action("Open...", KeyEvent.VK_O, 0, files::open);
-    private final Action save = action("Save", KeyEvent.VK_S, 0, files::save);
-    private final Action saveAs = action("Save As...", KeyEvent.VK_S, InputEvent.SHIFT_DOWN_MASK, files::saveAs);
-    private final Action reload = action("Reload", KeyEvent.VK_R, 0, files::reload);
-    private final Action quit = action("Quit", KeyEvent.VK_Q, 0, this::quit);
-    private final Action start = action("Start", KeyEvent.VK_G, 0, loop::start);
-    private final Action stop = action("Stop", KeyEvent.VK_H, 0, loop::stop);
-    private final Action tick = action("Tick", KeyEvent.VK_T, 0, loop::step);
-    private final Action reset = action("Reset", KeyEvent.VK_R, InputEvent.SHIFT_DOWN_MASK, this::reset);
-    private final Action play = action("Play", KeyEvent.VK_P, 0, () -> session.setMode(Mode.PLAY));
-    private final Action build = action("Build", KeyEvent.VK_B, 0, () -> session.setMode(Mode.BUILD));
-    private final Action keysHelp = action("Keys of this board...", KeyEvent.VK_K, 0, this::showKeys);
-    private final Action howToPlay = command(HelpPages.HOW_TO_PLAY + "...",
-            () -> HelpPages.show(this, HelpPages.HOW_TO_PLAY, HelpPages.howToPlay(menus, session.board())));
-    private final Action buildModeHelp = command(HelpPages.BUILD_MODE + "...",
-            () -> HelpPages.show(this, HelpPages.BUILD_MODE, HelpPages.buildMode()));
+    private final Action newBoard;
+    private final Action open;
+    private final Action save;
+    private final Action saveAs;
+    private final Action reload;
+    private final Action quit;
+    private final Action start;
+    private final Action stop;
+    private final Action tick;
+    private final Action reset;
+    private final Action play;
+    private final Action build;
+    private final Action keysHelp;
+    private final Action howToPlay;
+    private final Action buildModeHelp;
 
-    private GameWindow() {
+    private GameWindow(GameSession session, Commands commands) {
         super("Gizmoball");
+        this.session = session;
+        this.commands = commands;
+        boardPanel = new BoardPanel(session.board());
+        newBoard = action("New", KeyEvent.VK_N, 0, commands::newBoard);
+        open = action("Open...", KeyEvent.VK_O, 0, commands::open);
+        save = action("Save", KeyEvent.VK_S, 0, commands::save);
+        saveAs = action("Save As...", KeyEvent.VK_S, InputEvent.SHIFT_DOWN_MASK, commands::saveAs);
+        reload = action("Reload", KeyEvent.VK_R, 0, commands::reload);
+        quit = action("Quit", KeyEvent.VK_Q, 0, commands::quit);
+        start = action("Start", KeyEvent.VK_G, 0, commands::start);
+        stop = action("Stop", KeyEvent.VK_H, 0, commands::stop);
+        tick = action("Tick", KeyEvent.VK_T, 0, commands::tick);
+        reset = action("Reset", KeyEvent.VK_R, InputEvent.SHIFT_DOWN_MASK, commands::reset);
+        play = action("Play", KeyEvent.VK_P, 0, () -> commands.setMode(Mode.PLAY));
+        build = action("Build", KeyEvent.VK_B, 0, () -> commands.setMode(Mode.BUILD));
+        keysHelp = action("Keys of this board...", KeyEvent.VK_K, 0, this::showKeys);
+        howToPlay = command(HelpPages.HOW_TO_PLAY + "...",
+                () -> HelpPages.show(this, HelpPages.HOW_TO_PLAY, HelpPages.howToPlay(menus, session.board())));
+        buildModeHelp = command(HelpPages.BUILD_MODE + "...",
+                () -> HelpPages.show(this, HelpPages.BUILD_MODE, HelpPages.buildMode()));
         setDefaultCloseOperation(DO_NOTHING_ON_CLOSE);
+        buildMenus();
+        buildToolBar();
+        centre.add(boardPanel, BorderLayout.CENTER);
+        add(toolBar, BorderLayout.NORTH);
+        add(centre, BorderLayout.CENTER);
+        add(statusLine, BorderLayout.SOUTH);
+        pack();
+        // Centred on the screen; the window's remembered place, if any, is restored over this.
+        setLocationRelativeTo(null);
+    }
+
+    /**
+     * A window on {@code session}, not shown yet, whose menus do {@code commands}. Listeners are registered
+     * here, after construction, so that no half-built window is ever handed to them.
+     */
+    public static GameWindow create(GameSession session, Commands commands) {
+        GameWindow window = new GameWindow(session, commands);
+        window.listen();
+        return window;
+    }
+
+    private void listen() {
         addWindowListener(new WindowAdapter() {
             @Override
             public void windowClosing(WindowEvent e) {
-                quit();
+                commands.quit();
             }
 
             @Override
@@ -85,60 +148,21 @@ public final class GameWindow extends JFrame {
                 boardPanel.requestFocusInWindow();
             }
 
-            /** However the window goes (Quit, or disposed by a test), its timers and key hook go with it. */
+            /** However the window goes (Quit, or disposed by a test), its timer goes with it. */
             @Override
             public void windowClosed(WindowEvent e) {
-                loop.stop();
                 statusRefresh.stop();
-                keys.uninstall();
             }
         });
-        buildMenus();
-        buildToolBar();
-        centre.add(boardPanel, BorderLayout.CENTER);
-        add(toolBar, BorderLayout.NORTH);
-        add(centre, BorderLayout.CENTER);
-        add(statusLine, BorderLayout.SOUTH);
-
         session.addModeListener(this::modeChanged);
         session.addStateListener(this::refreshControls);
-        loop.addRunningListener(this::refreshControls);
-        loop.setFailureHandler(e -> {
-            e.printStackTrace();
-            statusLine.showMessage("Simulation stopped by an internal error: " + e);
-        });
-        keys.install();
         statusRefresh.start();
         refreshControls();
-        ModalPause.install(this, loop);
-        pack();
-        // Centred on the screen; the window's remembered place, if any, is restored over this.
-        setLocationRelativeTo(null);
     }
 
-    /**
-     * Opens a window on {@code board}, or on an empty board if it is null (on the event dispatch thread,
-     * whichever thread calls this). A board that cannot be loaded is reported once the window shows.
-     */
-    public static GameWindow launch(Path board) {
-        if (SwingUtilities.isEventDispatchThread()) {
-            GameWindow window = new GameWindow();
-            if (board != null) {
-                window.files.openAtLaunch(board);
-            }
-            window.setVisible(true);
-            return window;
-        }
-        GameWindow[] window = new GameWindow[1];
-        try {
-            SwingUtilities.invokeAndWait(() -> window[0] = launch(board));
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new IllegalStateException("interrupted while opening the window", e);
-        } catch (InvocationTargetException e) {
-            throw new IllegalStateException("could not open the window", e.getCause());
-        }
-        return window[0];
+    /** Something the session does not announce changed (the loop started or stopped, a reset): show it. */
+    public void refresh() {
+        refreshControls();
     }
 
     public BoardPanel boardPanel() {
@@ -157,17 +181,8 @@ public final class GameWindow extends JFrame {
         return session;
     }
 
-    public GameLoop loop() {
-        return loop;
-    }
-
     public StatusLine statusLine() {
         return statusLine;
-    }
-
-    /** The File menu's commands (package-private: the tests open files without a file chooser). */
-    BoardFileCommands fileCommands() {
-        return files;
     }
 
     /** The build-mode side panels; shown while the session is in BUILD mode. Either may be null. */
@@ -212,9 +227,9 @@ public final class GameWindow extends JFrame {
         }
         JMenu help = new JMenu("Help");
         help.setMnemonic(KeyEvent.VK_H);
+        help.add(keysHelp);
         help.add(howToPlay);
         help.add(buildModeHelp);
-        help.add(keysHelp);
         menus.add(file);
         menus.add(game);
         menus.add(mode);
@@ -247,7 +262,8 @@ public final class GameWindow extends JFrame {
         return b;
     }
 
-    static Action action(String name, int key, int extraModifiers, Runnable body) {
+    /** A menu command with the shortcut Ctrl (+ {@code extraModifiers}) + {@code key}. */
+    public static Action action(String name, int key, int extraModifiers, Runnable body) {
         Action a = command(name, body);
         a.putValue(Action.ACCELERATOR_KEY, KeyStroke.getKeyStroke(key, InputEvent.CTRL_DOWN_MASK | extraModifiers));
         return a;
@@ -264,8 +280,6 @@ public final class GameWindow extends JFrame {
     }
 
     private void modeChanged(Mode mode) {
-        loop.stop();
-        keys.releaseAll();
         boardPanel.setGridVisible(mode == Mode.BUILD);
         showSidePanels(mode == Mode.BUILD);
         statusLine.showMessage(mode == Mode.PLAY ? "Play mode" : "Build mode");
@@ -284,7 +298,7 @@ public final class GameWindow extends JFrame {
 
     private void refreshControls() {
         boolean playing = session.mode() == Mode.PLAY;
-        boolean running = loop.isRunning();
+        boolean running = commands.running();
         start.setEnabled(playing && !running);
         stop.setEnabled(running);
         tick.setEnabled(playing && !running);
@@ -298,25 +312,13 @@ public final class GameWindow extends JFrame {
 
     /** Brings the status line up to date now (the window also does so a few times a second). */
     public void refreshStatus() {
-        statusLine.show(session.boardName(), session.mode() == Mode.PLAY ? "Play" : "Build", loop.isRunning(),
-                loop.speed().label(), session.board().time(), boardPanel.framesPerSecond());
-    }
-
-    private void reset() {
-        session.reset();
-        statusLine.showMessage("Reset: the board is back as loaded or built");
-        refreshStatus();
+        statusLine.show(session.boardName(), session.mode() == Mode.PLAY ? "Play" : "Build", commands.running(),
+                commands.speed(), session.board().time(), boardPanel.framesPerSecond());
     }
 
     private void showKeys() {
         List<String> lines = KeyHelp.describe(session.board());
         JOptionPane.showMessageDialog(this, lines.isEmpty() ? "This board binds no keys." : String.join("\n", lines),
                 "Keys of " + session.boardName(), JOptionPane.INFORMATION_MESSAGE);
-    }
-
-    private void quit() {
-        if (files.confirmDiscard("quit")) {
-            dispose();
-        }
     }
 }

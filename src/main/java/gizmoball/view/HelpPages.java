@@ -1,6 +1,6 @@
 package gizmoball.view;
 
-import gizmoball.controller.editor.Tool;
+import gizmoball.editor.Tool;
 import gizmoball.model.Board;
 import java.awt.BorderLayout;
 import java.awt.Dimension;

@@ -79,7 +79,18 @@ class SimultaneousCollisionTest {
             assertThat(momentum.y()).as("momentum y at tick " + tick).isCloseTo(0, within(1e-9));
             assertThat(b.energy()).as("energy at tick " + tick).isCloseTo(e0, within(1e-9 * e0));
         });
-        assertThat(board.balls().get(0).velocity().length()).as("the upper ball was struck").isGreaterThan(1);
-        assertThat(board.balls().get(1).velocity().length()).as("the lower ball was struck").isGreaterThan(1);
+        // Each struck ball leaves along its line of centres with the striker, 30 degrees off the striker's path
+        // (sin 30 = R / 2R). However the two same-instant contacts are resolved, one after the other or together,
+        // a struck ball gets at most the striker's whole normal part, 10 cos 30, and at least what the second of
+        // two sequential impacts passes on, 10 cos 30 / 2 (together: 10 * 2 sqrt 3 / 5 each, in between).
+        double most = 10 * Math.cos(Math.toRadians(30));
+        Vect upward = new Vect(Math.cos(Math.toRadians(30)), -Math.sin(Math.toRadians(30)));
+        Vect downward = new Vect(upward.x(), -upward.y());
+        Vect upper = board.balls().get(0).velocity();
+        Vect lower = board.balls().get(1).velocity();
+        assertThat(upper.length()).as("the upper ball was struck").isBetween(most / 2 - 1e-9, most + 1e-9);
+        assertThat(lower.length()).as("the lower ball was struck").isBetween(most / 2 - 1e-9, most + 1e-9);
+        assertThat(upper.unitSize().minus(upward).length()).as("upper along its line of centres").isLessThan(1e-9);
+        assertThat(lower.unitSize().minus(downward).length()).as("lower along its line of centres").isLessThan(1e-9);
     }
 }

@@ -4,6 +4,7 @@ import static gizmoball.view.Gui.await;
 import static gizmoball.view.Gui.onEdt;
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gizmoball.app.Gizmoball;
 import gizmoball.boardfile.BoardFiles;
 import gizmoball.model.Gizmo;
 import java.awt.Component;
@@ -40,6 +41,7 @@ class FileSafetyGuiTest {
 
     @TempDir
     Path dir;
+    private Gizmoball app;
     private GameWindow window;
 
     @BeforeEach
@@ -63,7 +65,7 @@ class FileSafetyGuiTest {
     }
 
     private void loadSkipping(Path file) {
-        SwingUtilities.invokeLater(() -> window.fileCommands().open(file));
+        SwingUtilities.invokeLater(() -> app.files().open(file));
         click(awaitDialog(d -> "loadProblems".equals(d.getName())), LoadProblemsDialog.SKIP);
         await("the good lines to load", () -> window.session().file().isPresent()
                 && window.session().file().get().equals(file));
@@ -71,7 +73,8 @@ class FileSafetyGuiTest {
 
     @Test
     void saveAfterLoadingSkippingBadLinesAsksFirstNamingHowManyLinesTheFileWouldLose() throws Exception {
-        window = GameWindow.launch(null);
+        app = Gizmoball.launch(null);
+        window = app.window();
         Path file = write("peer.txt", BAD);
         loadSkipping(file);
         assertThat(onEdt(window::getTitle)).as("a board without some of its file's lines is unsaved")
@@ -97,7 +100,8 @@ class FileSafetyGuiTest {
 
     @Test
     void theLossQuestionOffersSaveAsWhichLeavesTheFileWhole() throws Exception {
-        window = GameWindow.launch(null);
+        app = Gizmoball.launch(null);
+        window = app.window();
         Path file = write("peer.txt", BAD);
         loadSkipping(file);
 
@@ -113,10 +117,11 @@ class FileSafetyGuiTest {
 
     @Test
     void aFileWhoseEveryLineIsBadIsNotOfferedForLoadingSkippingThem() throws Exception {
-        window = GameWindow.launch(write("good.txt", GOOD));
+        app = Gizmoball.launch(write("good.txt", GOOD));
+        window = app.window();
         Path bad = write("all-bad.txt", "Bogus 1 2\nSquare S x 1\n");
 
-        SwingUtilities.invokeLater(() -> window.fileCommands().open(bad));
+        SwingUtilities.invokeLater(() -> app.files().open(bad));
         JDialog dialog = awaitDialog(d -> "loadProblems".equals(d.getName()));
         assertThat(buttons(dialog)).containsExactly(LoadProblemsDialog.KEEP);
         assertThat(text(dialog)).contains("Nothing in all-bad.txt can be loaded");
@@ -131,7 +136,8 @@ class FileSafetyGuiTest {
     void saveKeepsTheFilesPermissionBits() throws Exception {
         Path file = write("good.txt", GOOD);
         Files.setPosixFilePermissions(file, PosixFilePermissions.fromString("rw-r--r--"));
-        window = GameWindow.launch(file);
+        app = Gizmoball.launch(file);
+        window = app.window();
         onEdt(() -> window.session().markModified());
 
         Gui.clickMenu(window.menus(), "Save");
@@ -142,10 +148,11 @@ class FileSafetyGuiTest {
 
     @Test
     void saveIntoAMissingFolderSaysSo() throws Exception {
-        window = GameWindow.launch(write("good.txt", GOOD));
+        app = Gizmoball.launch(write("good.txt", GOOD));
+        window = app.window();
         Path missing = dir.resolve("no-such-dir");
 
-        SwingUtilities.invokeLater(() -> window.fileCommands().saveAs());
+        SwingUtilities.invokeLater(() -> app.files().saveAs());
         approve(awaitChooser(), missing.resolve("b.txt").toFile());
 
         await("the error", () -> window.statusLine().message().startsWith("Cannot save"));
@@ -157,9 +164,10 @@ class FileSafetyGuiTest {
 
     @Test
     void saveAsAddsTxtToANameWithoutExtension() throws Exception {
-        window = GameWindow.launch(write("good.txt", GOOD));
+        app = Gizmoball.launch(write("good.txt", GOOD));
+        window = app.window();
 
-        SwingUtilities.invokeLater(() -> window.fileCommands().saveAs());
+        SwingUtilities.invokeLater(() -> app.files().saveAs());
         approve(awaitChooser(), dir.resolve("my board").toFile());
 
         await("the save", () -> Files.exists(dir.resolve("my board.txt")));
@@ -169,10 +177,11 @@ class FileSafetyGuiTest {
 
     @Test
     void saveAsAsksBeforeReplacingTheFileTheAddedExtensionNames() throws Exception {
-        window = GameWindow.launch(write("good.txt", GOOD));
+        app = Gizmoball.launch(write("good.txt", GOOD));
+        window = app.window();
         Path existing = write("other.txt", "Square S9 9 9\n");
 
-        SwingUtilities.invokeLater(() -> window.fileCommands().saveAs());
+        SwingUtilities.invokeLater(() -> app.files().saveAs());
         approve(awaitChooser(), dir.resolve("other").toFile());
         JDialog question = awaitDialog(d -> "Save As".equals(d.getTitle()));
         assertThat(text(question)).contains("other.txt already exists");
@@ -185,7 +194,8 @@ class FileSafetyGuiTest {
     @Test
     void reloadAsksToDiscardTheChangesAndEnterCancels() throws Exception {
         Path file = write("good.txt", GOOD);
-        window = GameWindow.launch(file);
+        app = Gizmoball.launch(file);
+        window = app.window();
         onEdt(() -> window.session().board().delete("S1"));
         onEdt(() -> window.session().markModified());
 

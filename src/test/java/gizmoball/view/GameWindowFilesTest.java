@@ -4,6 +4,7 @@ import static gizmoball.view.Gui.await;
 import static gizmoball.view.Gui.onEdt;
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gizmoball.app.Gizmoball;
 import gizmoball.boardfile.BoardFiles;
 import gizmoball.model.Board;
 import gizmoball.model.Gizmo;
@@ -30,6 +31,7 @@ class GameWindowFilesTest {
 
     @TempDir
     Path dir;
+    private Gizmoball app;
     private GameWindow window;
 
     @BeforeEach
@@ -57,7 +59,8 @@ class GameWindowFilesTest {
 
     @Test
     void launchOpensTheWindowOnTheBoardFile() throws Exception {
-        window = GameWindow.launch(write("good.txt", GOOD));
+        app = Gizmoball.launch(write("good.txt", GOOD));
+        window = app.window();
 
         assertThat(gizmoNames()).containsExactly("S1", "C1");
         assertThat(onEdt(window::getTitle)).isEqualTo("Gizmoball - good.txt");
@@ -66,10 +69,11 @@ class GameWindowFilesTest {
 
     @Test
     void aBadFileShowsItsLineNumberedProblemsAndCanBeKeptOut() throws Exception {
-        window = GameWindow.launch(write("good.txt", GOOD));
+        app = Gizmoball.launch(write("good.txt", GOOD));
+        window = app.window();
         Path bad = write("bad.txt", BAD);
 
-        SwingUtilities.invokeLater(() -> window.fileCommands().open(bad));
+        SwingUtilities.invokeLater(() -> app.files().open(bad));
         JDialog dialog = awaitProblemsDialog();
         List<String> problems = problemsListed(dialog);
         assertThat(problems).hasSize(2);
@@ -86,10 +90,11 @@ class GameWindowFilesTest {
 
     @Test
     void aBadFileCanBeLoadedWithoutItsBadLines() throws Exception {
-        window = GameWindow.launch(null);
+        app = Gizmoball.launch(null);
+        window = app.window();
         Path bad = write("bad.txt", BAD);
 
-        SwingUtilities.invokeLater(() -> window.fileCommands().open(bad));
+        SwingUtilities.invokeLater(() -> app.files().open(bad));
         click(awaitProblemsDialog(), LoadProblemsDialog.SKIP);
 
         await("the good lines to load", () -> window.session().board().gizmos().size() == 2);
@@ -99,7 +104,8 @@ class GameWindowFilesTest {
 
     @Test
     void launchOnABadFileShowsTheProblemsOnceTheWindowIsUp() throws Exception {
-        window = GameWindow.launch(write("bad.txt", BAD));
+        app = Gizmoball.launch(write("bad.txt", BAD));
+        window = app.window();
 
         click(awaitProblemsDialog(), LoadProblemsDialog.KEEP);
 
@@ -110,7 +116,8 @@ class GameWindowFilesTest {
     @Test
     void saveWritesTheDesignThatLoadsBackTheSame() throws Exception {
         Path file = write("good.txt", GOOD);
-        window = GameWindow.launch(file);
+        app = Gizmoball.launch(file);
+        window = app.window();
         for (int i = 0; i < 30; i++) {
             Gui.clickMenu(window.menus(), "Tick");
         }
@@ -128,7 +135,8 @@ class GameWindowFilesTest {
     @Test
     void reloadReadsTheFileAgain() throws Exception {
         Path file = write("good.txt", GOOD);
-        window = GameWindow.launch(file);
+        app = Gizmoball.launch(file);
+        window = app.window();
         Files.writeString(file, "Square S9 9 9\n");
 
         Gui.clickMenu(window.menus(), "Reload");
@@ -138,9 +146,10 @@ class GameWindowFilesTest {
 
     @Test
     void aMissingFileIsReportedAndTheBoardKept() throws Exception {
-        window = GameWindow.launch(write("good.txt", GOOD));
+        app = Gizmoball.launch(write("good.txt", GOOD));
+        window = app.window();
 
-        SwingUtilities.invokeLater(() -> window.fileCommands().open(dir.resolve("missing.txt")));
+        SwingUtilities.invokeLater(() -> app.files().open(dir.resolve("missing.txt")));
         await("an error message", () -> window.statusLine().message().contains("missing.txt"));
         assertThat(onEdt(() -> window.statusLine().message())).contains("no such file");
         for (Window w : Window.getWindows()) {
@@ -153,7 +162,8 @@ class GameWindowFilesTest {
 
     @Test
     void newAsksBeforeDiscardingUnsavedChanges() throws Exception {
-        window = GameWindow.launch(write("good.txt", GOOD));
+        app = Gizmoball.launch(write("good.txt", GOOD));
+        window = app.window();
         onEdt(() -> window.session().markModified());
 
         SwingUtilities.invokeLater(() -> Gui.menuItem(window.menus(), "New").doClick(0));

@@ -6,7 +6,8 @@ import static gizmoball.view.Gui.onEdt;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
-import gizmoball.controller.Mode;
+import gizmoball.app.Gizmoball;
+import gizmoball.session.Mode;
 import gizmoball.model.Board;
 import gizmoball.model.Flipper;
 import gizmoball.model.GizmoKind;
@@ -26,12 +27,14 @@ class GameWindowTest {
     private static final double DT = Board.DEFAULT_TICK;
     private static final int FLIPPER_KEY = KeyEvent.VK_Z;
 
+    private Gizmoball app;
     private GameWindow window;
 
     @BeforeEach
     void open() {
         Gui.assumeDisplay();
-        window = GameWindow.launch(null);
+        app = Gizmoball.launch(null);
+        window = app.window();
         onEdt(() -> {
             Board board = new Board();
             board.addGizmo(GizmoKind.LEFT_FLIPPER, "LF", 6, 15);

@@ -27,9 +27,10 @@ public final class Gui {
     private Gui() {
     }
 
+    /** Skips the calling test, saying why, unless windows can really be opened here (see {@link DisplayCheck}). */
     public static void assumeDisplay() {
-        assumeFalse(GraphicsEnvironment.isHeadless(),
-                "GUI test skipped: no display (run under xvfb-run, as .ci/run does)");
+        assumeFalse(GraphicsEnvironment.isHeadless(), () -> "GUI test skipped: "
+                + DisplayCheck.reason().orElse("no display") + " (run under xvfb-run, as .ci/run does)");
     }
 
     public static <T> T onEdt(Callable<T> body) {

@@ -2,7 +2,7 @@ package gizmoball.view;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gizmoball.controller.editor.Tool;
+import gizmoball.editor.Tool;
 import gizmoball.model.Board;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyEdge;

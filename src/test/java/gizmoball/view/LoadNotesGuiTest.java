@@ -4,6 +4,7 @@ import static gizmoball.view.Gui.await;
 import static gizmoball.view.Gui.onEdt;
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gizmoball.app.Gizmoball;
 import gizmoball.model.Gizmo;
 import gizmoball.model.Rgb;
 import java.awt.Window;
@@ -29,6 +30,7 @@ class LoadNotesGuiTest {
 
     @TempDir
     Path dir;
+    private Gizmoball app;
     private GameWindow window;
 
     @BeforeEach
@@ -45,10 +47,11 @@ class LoadNotesGuiTest {
 
     @Test
     void aFileWithOnlyNotesLoadsAndThenListsThemWithLineNumbers() throws Exception {
-        window = GameWindow.launch(Files.writeString(dir.resolve("empty.txt"), ""));
+        app = Gizmoball.launch(Files.writeString(dir.resolve("empty.txt"), ""));
+        window = app.window();
         Path file = Files.writeString(dir.resolve("peer.txt"), NOTES_ONLY);
 
-        SwingUtilities.invokeLater(() -> window.fileCommands().open(file));
+        SwingUtilities.invokeLater(() -> app.files().open(file));
         JDialog dialog = awaitDialog();
         assertThat(onEdt(() -> window.session().board().gizmos().stream().map(Gizmo::colour).toList()))
                 .as("loaded before the notes show").containsExactly(Optional.of(new Rgb(0x99, 0xb3, 0xff)));
@@ -65,10 +68,11 @@ class LoadNotesGuiTest {
 
     @Test
     void errorsAndNotesShareTheDialogUnderTheirOwnHeadings() throws Exception {
-        window = GameWindow.launch(Files.writeString(dir.resolve("empty.txt"), ""));
+        app = Gizmoball.launch(Files.writeString(dir.resolve("empty.txt"), ""));
+        window = app.window();
         Path file = Files.writeString(dir.resolve("mixed.txt"), NOTES_AND_ERRORS);
 
-        SwingUtilities.invokeLater(() -> window.fileCommands().open(file));
+        SwingUtilities.invokeLater(() -> app.files().open(file));
         JDialog dialog = awaitDialog();
         assertThat(list(dialog, "loadProblems.list")).containsExactly(
                 "line 4: Spinner X 5 5   <- Spinner X: an extension of another implementation, not part of the format");

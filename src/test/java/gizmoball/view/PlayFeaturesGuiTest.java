@@ -5,6 +5,8 @@ import static gizmoball.view.Gui.clickMenu;
 import static gizmoball.view.Gui.onEdt;
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gizmoball.app.Gizmoball;
+import gizmoball.app.PlayFeatures;
 import gizmoball.controller.Settings;
 import gizmoball.controller.Speed;
 import java.awt.Rectangle;
@@ -37,10 +39,12 @@ class PlayFeaturesGuiTest {
 
     private PlayFeatures features;
 
+    private Gizmoball app;
+
     private GameWindow open() {
-        GameWindow window = GameWindow.launch(null);
-        features = onEdt(() -> PlayFeatures.install(window, settings));
-        return window;
+        app = Gizmoball.launch(null, settings);
+        features = app.playFeatures();
+        return app.window();
     }
 
     /** As the player closes it: the window hears windowClosing, then goes. */
@@ -56,12 +60,12 @@ class PlayFeaturesGuiTest {
         GameWindow window = open();
         assertThat(onEdt(() -> window.statusLine().text())).contains("at 1x");
         clickMenu(window.menus(), "1/4x");
-        assertThat(onEdt(() -> window.loop().speed())).isEqualTo(Speed.QUARTER);
+        assertThat(onEdt(() -> app.loop().speed())).isEqualTo(Speed.QUARTER);
         await("the status line to show the speed", () -> window.statusLine().text().contains("Play - stopped at 1/4x"));
         closeAsPlayer(window);
 
         GameWindow next = open();
-        assertThat(onEdt(() -> next.loop().speed())).isEqualTo(Speed.QUARTER);
+        assertThat(onEdt(() -> app.loop().speed())).isEqualTo(Speed.QUARTER);
         assertThat(onEdt(() -> Gui.menuItem(next.menus(), "1/4x").isSelected())).isTrue();
         assertThat(onEdt(() -> next.statusLine().text())).contains("at 1/4x");
     }
@@ -72,7 +76,7 @@ class PlayFeaturesGuiTest {
         clickMenu(window.menus(), "Ball trails");
         assertThat(onEdt(() -> features.trails().isEnabled())).isTrue();
         Path boards = Path.of("boards").toAbsolutePath();
-        onEdt(() -> window.fileCommands().open(boards.resolve("default.txt")));
+        onEdt(() -> app.files().open(boards.resolve("default.txt")));
         Rectangle placed = new Rectangle(40, 60, 700, 720);
         onEdt(() -> window.setBounds(placed));
         await("the window to move", () -> window.getBounds().equals(placed));

@@ -5,7 +5,8 @@ import static gizmoball.view.Gui.clickMenu;
 import static gizmoball.view.Gui.onEdt;
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gizmoball.controller.editor.Tool;
+import gizmoball.app.Gizmoball;
+import gizmoball.editor.Tool;
 import gizmoball.model.Board;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyEdge;
@@ -28,12 +29,14 @@ import org.junit.jupiter.api.Test;
 
 /** Issue 12, items 17-20: status line, window placement, modal pause and help (needs a display). */
 class PlayWindowGuiTest {
+    private Gizmoball app;
     private GameWindow window;
 
     @BeforeEach
     void open() {
         Gui.assumeDisplay();
-        window = GameWindow.launch(null);
+        app = Gizmoball.launch(null);
+        window = app.window();
         onEdt(() -> {
             Board board = new Board();
             board.addGizmo(GizmoKind.LEFT_FLIPPER, "LF", 6, 15);
@@ -128,10 +131,10 @@ class PlayWindowGuiTest {
         clickMenu(window.menus(), "Start");
         SwingUtilities.invokeLater(() -> Gui.menuItem(window.menus(), "Keys of this board...").doClick(0));
         JDialog keys = awaitDialog();
-        onEdt(() -> window.loop().stop());
+        onEdt(() -> app.loop().stop());
         onEdt(keys::dispose);
         Gui.sleep(200);
-        assertThat(onEdt(() -> window.loop().isRunning())).isFalse();
+        assertThat(onEdt(() -> app.loop().isRunning())).isFalse();
     }
 
     @Test

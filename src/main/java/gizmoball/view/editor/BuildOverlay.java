@@ -1,7 +1,7 @@
 package gizmoball.view.editor;
 
-import gizmoball.controller.editor.BuildController;
-import gizmoball.controller.editor.Preview;
+import gizmoball.editor.Editor;
+import gizmoball.editor.Preview;
 import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.Connection;
@@ -38,10 +38,10 @@ import java.util.stream.Collectors;
 public final class BuildOverlay implements BoardOverlay {
     private static final float LINE = 2.5f;
 
-    private final BuildController controller;
+    private final Editor controller;
     private final BooleanSupplier active;
 
-    public BuildOverlay(BuildController controller, BooleanSupplier active) {
+    public BuildOverlay(Editor controller, BooleanSupplier active) {
         this.controller = controller;
         this.active = active;
     }
@@ -133,7 +133,7 @@ public final class BuildOverlay implements BoardOverlay {
             return;
         }
         Point2D from = t.toScreen(x, y);
-        Point2D to = t.toScreen(x + vx / BuildController.VELOCITY_PER_DRAG, y + vy / BuildController.VELOCITY_PER_DRAG);
+        Point2D to = t.toScreen(x + vx / Editor.VELOCITY_PER_DRAG, y + vy / Editor.VELOCITY_PER_DRAG);
         g.setStroke(new BasicStroke(LINE));
         arrow(g, from, to, color);
         label(g, "(" + Numbers.brief(vx) + ", " + Numbers.brief(vy) + ") L/s", to.getX() + 6, to.getY(), color);

@@ -1,6 +1,6 @@
 package gizmoball.view.editor;
 
-import gizmoball.controller.editor.BuildController;
+import gizmoball.editor.Editor;
 import gizmoball.model.KeyEdge;
 import gizmoball.view.BoardPanel;
 
@@ -14,12 +14,12 @@ import java.awt.geom.Point2D;
  * Key Connect's last step: a popup next to the gizmo asks whether the binding acts on key down or key up.
  * The arrow keys answer too (the controller takes them); the popup closes whenever no answer is awaited.
  */
-final class EdgePopup {
-    private final BuildController controller;
+public final class EdgePopup {
+    private final Editor controller;
     private final BoardPanel panel;
     private final JPopupMenu popup = new JPopupMenu("Key edge");
 
-    EdgePopup(BuildController controller, BoardPanel panel) {
+    public EdgePopup(Editor controller, BoardPanel panel) {
         this.controller = controller;
         this.panel = panel;
         popup.add(item("On key down (press)  \u2193", "edge.down", KeyEdge.DOWN));
@@ -50,7 +50,7 @@ final class EdgePopup {
     }
 
     /** Shows the popup at the top-right corner of the selected gizmo (or mid-board). */
-    void show() {
+    public void show() {
         Point2D at = controller.selectedGizmo()
                 .map(g -> panel.transform().toScreen(g.x() + g.width(), g.y()))
                 .orElse(new Point2D.Double(panel.getWidth() / 2.0, panel.getHeight() / 2.0));

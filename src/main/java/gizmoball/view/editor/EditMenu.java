@@ -1,6 +1,6 @@
 package gizmoball.view.editor;
 
-import gizmoball.controller.editor.BuildController;
+import gizmoball.editor.Editor;
 
 import javax.swing.JMenu;
 import javax.swing.JMenuItem;
@@ -13,12 +13,12 @@ import java.util.function.BooleanSupplier;
 
 /** Edit menu of build mode: Undo, Redo, Rotate and Delete selection, Clear board (after confirmation). */
 public final class EditMenu extends JMenu {
-    private final BuildController controller;
+    private final Editor controller;
     private final BooleanSupplier building;
     private final JMenuItem undo;
     private final JMenuItem redo;
 
-    EditMenu(BuildController controller, Component parent, BooleanSupplier building) {
+    public EditMenu(Editor controller, Component parent, BooleanSupplier building) {
         super("Edit");
         this.controller = controller;
         this.building = building;
@@ -44,7 +44,7 @@ public final class EditMenu extends JMenu {
     }
 
     /** Enables the menu in build mode only, and Undo/Redo only when there is something to undo or redo. */
-    void update() {
+    public void update() {
         boolean on = building.getAsBoolean();
         setEnabled(on);
         undo.setEnabled(on && controller.history().canUndo());

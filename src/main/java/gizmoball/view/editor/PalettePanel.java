@@ -1,7 +1,7 @@
 package gizmoball.view.editor;
 
-import gizmoball.controller.editor.BuildController;
-import gizmoball.controller.editor.Tool;
+import gizmoball.editor.Editor;
+import gizmoball.editor.Tool;
 
 import javax.swing.AbstractButton;
 import javax.swing.BorderFactory;
@@ -22,7 +22,7 @@ import java.util.Map;
 public final class PalettePanel extends JPanel {
     private final Map<Tool, JToggleButton> buttons = new EnumMap<>(Tool.class);
 
-    public PalettePanel(BuildController controller) {
+    public PalettePanel(Editor controller) {
         super(new BorderLayout());
         setBorder(BorderFactory.createEmptyBorder(6, 6, 6, 6));
         // The buttons keep their natural height at the top however tall the window is.

@@ -1,6 +1,6 @@
 package gizmoball.view.editor;
 
-import gizmoball.controller.editor.BuildController;
+import gizmoball.editor.Editor;
 import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.BoardChange;
@@ -42,7 +42,7 @@ public final class PropertiesPanel extends JPanel {
         }
     }
 
-    private final BuildController controller;
+    private final Editor controller;
     private final JTextField gravity = field("gravity");
     private final JTextField mu = field("mu");
     private final JTextField mu2 = field("mu2");
@@ -58,7 +58,7 @@ public final class PropertiesPanel extends JPanel {
     private final JButton removeLink = new JButton("Remove");
     private String shownSelection;
 
-    public PropertiesPanel(BuildController controller) {
+    public PropertiesPanel(Editor controller) {
         this.controller = controller;
         setLayout(new BorderLayout());
         setBorder(BorderFactory.createEmptyBorder(6, 6, 6, 6));
@@ -116,7 +116,7 @@ public final class PropertiesPanel extends JPanel {
             }
             for (KeyBinding k : board.keyBindings()) {
                 if (k.gizmo().equals(name)) {
-                    links.addElement(new Link(BuildController.describe(k), () -> controller.unbind(k)));
+                    links.addElement(new Link(Editor.describe(k), () -> controller.unbind(k)));
                 }
             }
         }

@@ -1,6 +1,6 @@
 package gizmoball.view.editor;
 
-import gizmoball.controller.editor.Tool;
+import gizmoball.editor.Tool;
 import gizmoball.model.GizmoKind;
 import gizmoball.view.BoardPainter;
 

@@ -1,6 +1,6 @@
 package gizmoball.view.editor;
 
-import gizmoball.controller.Mode;
+import gizmoball.session.Mode;
 
 import javax.swing.JFrame;
 import java.awt.Dimension;
@@ -14,16 +14,16 @@ import java.awt.Toolkit;
  * properties would otherwise squeeze the board. Entering build mode widens the window to its preferred size
  * (within the screen); leaving it puts the old size back, unless the player resized the window meanwhile.
  */
-final class WindowFit {
+public final class WindowFit {
     private final JFrame window;
     private Dimension beforeBuild;
     private Dimension grownTo;
 
-    WindowFit(JFrame window) {
+    public WindowFit(JFrame window) {
         this.window = window;
     }
 
-    void modeChanged(Mode mode) {
+    public void modeChanged(Mode mode) {
         if (mode == Mode.BUILD) {
             Dimension now = window.getSize();
             Dimension wanted = window.getPreferredSize();

@@ -1,9 +1,9 @@
 package gizmoball.view.editor;
 
-import gizmoball.controller.GameSession;
-import gizmoball.controller.Mode;
-import gizmoball.controller.editor.Design;
-import gizmoball.controller.editor.Tool;
+import gizmoball.session.GameSession;
+import gizmoball.session.Mode;
+import gizmoball.editor.Design;
+import gizmoball.editor.Tool;
 import gizmoball.model.Board;
 import gizmoball.model.Connection;
 import gizmoball.model.Flipper;

@@ -1,8 +1,10 @@
 package gizmoball.view.editor;
 
-import gizmoball.controller.GameSession;
-import gizmoball.controller.Mode;
-import gizmoball.controller.editor.Tool;
+import gizmoball.app.BuildModeInstaller;
+import gizmoball.app.Gizmoball;
+import gizmoball.session.GameSession;
+import gizmoball.session.Mode;
+import gizmoball.editor.Tool;
 import gizmoball.model.Board;
 import gizmoball.view.BoardPanel;
 import gizmoball.view.GameWindow;
@@ -32,9 +34,10 @@ final class BuildWindow {
     final BoardPanel panel;
 
     private BuildWindow() {
-        window = GameWindow.launch(null);
-        build = onEdt(() -> BuildModeInstaller.install(window));
-        session = window.session();
+        Gizmoball app = Gizmoball.launch(null);
+        window = app.window();
+        build = app.build();
+        session = app.session();
         board = session.board();
         panel = window.boardPanel();
         onEdt(() -> session.setMode(Mode.BUILD));

@@ -1,9 +1,9 @@
 package gizmoball.view.editor;
 
 import gizmoball.boardfile.BoardFiles;
-import gizmoball.controller.Mode;
-import gizmoball.controller.editor.Design;
-import gizmoball.controller.editor.Tool;
+import gizmoball.session.Mode;
+import gizmoball.editor.Design;
+import gizmoball.editor.Tool;
 import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.Connection;

@@ -1,4 +1,4 @@
-package gizmoball.controller.editor;
+package gizmoball.editor;
 
 import gizmoball.model.Ball;
 import gizmoball.model.Board;
@@ -23,7 +23,7 @@ import java.util.function.Consumer;
  * the file loader uses) inside the {@link EditHistory}, so the editor can build only boards the loader accepts,
  * and every edit can be undone. A refusal never escapes as an exception: its message goes to the status line.
  */
-public final class BuildController {
+public final class Editor {
     /** Ball centres snap to quarter cells: positions stay readable in saved files and easy to hit again. */
     static final double BALL_SNAP = 0.25;
     /** Pixels are coarse: a ball (radius 0.25 L) is picked within this distance of its centre. */
@@ -59,7 +59,7 @@ public final class BuildController {
         record BallMove(Ball ball, double pressX, double pressY) implements Gesture { }
     }
 
-    public BuildController(Board board) {
+    public Editor(Board board) {
         this.board = board;
         this.history = new EditHistory(board);
         this.names = new NameGenerator(board);

@@ -1,5 +1,6 @@
-package gizmoball.controller.editor;
+package gizmoball.view.editor;
 
+import gizmoball.editor.Editor;
 import gizmoball.view.BoardPanel;
 import physics.Vect;
 
@@ -11,11 +12,11 @@ import java.awt.event.MouseEvent;
 import java.util.function.BooleanSupplier;
 
 /**
- * Turns mouse and key events on the board view into {@link BuildController} calls in board coordinates.
+ * Turns mouse and key events on the board view into {@link Editor} calls in board coordinates.
  * It listens all the time but acts only while {@code active} says so (build mode): play mode keeps the keys.
  */
 public final class BoardInput extends MouseAdapter implements KeyListener {
-    private final BuildController controller;
+    private final Editor controller;
     private final BoardPanel panel;
     private final BooleanSupplier active;
     private final Runnable chooseEdge;
@@ -23,14 +24,14 @@ public final class BoardInput extends MouseAdapter implements KeyListener {
     /**
      * @param chooseEdge asked to let the user pick down or up once Key Connect has its key (e.g. a popup menu)
      */
-    private BoardInput(BuildController controller, BoardPanel panel, BooleanSupplier active, Runnable chooseEdge) {
+    private BoardInput(Editor controller, BoardPanel panel, BooleanSupplier active, Runnable chooseEdge) {
         this.controller = controller;
         this.panel = panel;
         this.active = active;
         this.chooseEdge = chooseEdge;
     }
 
-    public static BoardInput attach(BuildController controller, BoardPanel panel, BooleanSupplier active,
+    public static BoardInput attach(Editor controller, BoardPanel panel, BooleanSupplier active,
                                     Runnable chooseEdge) {
         BoardInput input = new BoardInput(controller, panel, active, chooseEdge);
         panel.addMouseListener(input);

@@ -24,13 +24,13 @@ import org.junit.jupiter.api.Test;
 import physics.Vect;
 
 /**
- * What boards of other implementations write, one form per test, each on a fixture of src/test/resources/dialects:
+ * What boards of other implementations write, one form per test, each on a fixture of src/test/resources/peer-forms:
  * read as meant, with a note on its line where it is not our canonical form; notes never make a load fail.
  */
-class DialectsTest {
+class PeerFormsTest {
 
     static String fixture(String name) throws IOException {
-        try (InputStream in = DialectsTest.class.getResourceAsStream("/dialects/" + name)) {
+        try (InputStream in = PeerFormsTest.class.getResourceAsStream("/peer-forms/" + name)) {
             assertThat(in).as(name + " on the test class path").isNotNull();
             return new String(in.readAllBytes(), StandardCharsets.UTF_8);
         }

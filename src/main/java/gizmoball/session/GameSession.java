@@ -1,4 +1,4 @@
-package gizmoball.controller;
+package gizmoball.session;
 
 import gizmoball.model.Board;
 import java.nio.file.Path;

@@ -1,16 +1,18 @@
-package gizmoball.view;
+package gizmoball.controller;
 
 import gizmoball.boardfile.BoardFileError;
 import gizmoball.boardfile.BoardFiles;
 import gizmoball.boardfile.FileErrors;
 import gizmoball.boardfile.LoadResult;
-import gizmoball.controller.GameLoop;
-import gizmoball.controller.GameSession;
+import gizmoball.session.GameSession;
 import gizmoball.model.Board;
+import gizmoball.view.LoadProblemsDialog;
+import java.awt.Component;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.function.Consumer;
 import java.util.Optional;
 import javax.swing.JFileChooser;
 import javax.swing.JOptionPane;
@@ -22,8 +24,9 @@ import javax.swing.filechooser.FileNameExtensionFilter;
  * player before unsaved changes are lost. Every failure is shown to the player; a failed load leaves
  * the current board exactly as it was.
  */
-final class BoardFileCommands {
-    private final GameWindow window;
+public final class BoardFileCommands {
+    private final Component window;
+    private final Consumer<String> status;
     private final GameSession session;
     private final GameLoop loop;
     private static final String BOARD_EXTENSION = "txt";
@@ -35,27 +38,29 @@ final class BoardFileCommands {
     private final FileNameExtensionFilter boardFiles =
             new FileNameExtensionFilter("Board files (.txt, .gizmo)", BOARD_EXTENSION, "gizmo");
 
-    BoardFileCommands(GameWindow window, GameSession session, GameLoop loop) {
+    /** Dialogs open over {@code window}; outcomes are told to {@code status} (the status line). */
+    public BoardFileCommands(Component window, Consumer<String> status, GameSession session, GameLoop loop) {
         this.window = window;
+        this.status = status;
         this.session = session;
         this.loop = loop;
         chooser.setFileFilter(boardFiles);
     }
 
     /** The folder the file chooser opens in (the last one the player used, remembered between runs). */
-    void startIn(Path folder) {
+    public void startIn(Path folder) {
         chooser.setCurrentDirectory(folder.toFile());
     }
 
-    void newBoard() {
+    public void newBoard() {
         if (confirmDiscard("start a new board")) {
             loop.stop();
             session.newBoard();
-            window.statusLine().showMessage("New board");
+            status.accept("New board");
         }
     }
 
-    void open() {
+    public void open() {
         if (confirmDiscard("open another board")
                 && chooser.showOpenDialog(window) == JFileChooser.APPROVE_OPTION) {
             open(chooser.getSelectedFile().toPath());
@@ -63,20 +68,20 @@ final class BoardFileCommands {
     }
 
     /** Reload means "throw my changes away": asked as that, with Cancel the default, so Enter reverts nothing. */
-    void reload() {
+    public void reload() {
         session.file().ifPresentOrElse(file -> {
             if (!session.isModified() || ask("Discard your changes to " + file.getFileName()
                     + " and reload it from disk?", "Reload", RELOAD, CANCEL) == 0) {
                 open(file);
             }
-        }, () -> window.statusLine().showMessage("This board has no file to reload from"));
+        }, () -> status.accept("This board has no file to reload from"));
     }
 
     /**
      * Loads {@code file}. A file with bad lines opens the problems dialog: load without them (unless nothing
      * would be left), or keep the board shown now. Returns whether a board was loaded.
      */
-    boolean open(Path file) {
+    public boolean open(Path file) {
         String name = String.valueOf(file.getFileName());
         LoadResult result;
         try {
@@ -93,7 +98,7 @@ final class BoardFileCommands {
         }
         // A board empty because of skipping is not offered: one Save would write it over the whole file.
         if (!LoadProblemsDialog.askSkip(window, name, describe(bad), notes(result), !result.keptNothing())) {
-            window.statusLine().showMessage("Kept the current board; " + name + " has bad lines");
+            status.accept("Kept the current board; " + name + " has bad lines");
             return false;
         }
         show(result.board(), file, bad.size(), "Loaded " + name + " without its " + lines(bad.size()));
@@ -104,7 +109,7 @@ final class BoardFileCommands {
      * Loads the board the window opens on. A clean file is shown at once; a problem (and its dialog) waits
      * until the window is up, so that whoever opened the window is not blocked by a modal dialog.
      */
-    void openAtLaunch(Path file) {
+    public void openAtLaunch(Path file) {
         String name = String.valueOf(file.getFileName());
         try {
             LoadResult result = BoardFiles.loadSkippingBadLines(file);
@@ -130,7 +135,7 @@ final class BoardFileCommands {
      * Saves to the board's file, or asks for one. A board loaded without some of its lines would remove them
      * from its file: that is asked first, offering Save As. Returns whether the board was saved.
      */
-    boolean save() {
+    public boolean save() {
         Optional<Path> file = session.file();
         if (file.isEmpty()) {
             return saveAs();
@@ -154,7 +159,7 @@ final class BoardFileCommands {
      * Asks for a file and saves there. A name without an extension gets .txt while the board-files filter is
      * chosen; an existing file is replaced only if the player says so.
      */
-    boolean saveAs() {
+    public boolean saveAs() {
         session.file().ifPresent(f -> chooser.setSelectedFile(f.toFile()));
         if (chooser.showSaveDialog(window) != JFileChooser.APPROVE_OPTION) {
             return false;
@@ -177,7 +182,7 @@ final class BoardFileCommands {
     /**
      * True when nothing unsaved would be lost by {@code doing}, or the player saved it or agreed to lose it.
      */
-    boolean confirmDiscard(String doing) {
+    public boolean confirmDiscard(String doing) {
         if (!session.isModified()) {
             return true;
         }
@@ -197,7 +202,7 @@ final class BoardFileCommands {
         try {
             BoardFiles.save(session.boardToSave(), file);
             session.saved(file);
-            window.statusLine().showMessage("Saved " + file.getFileName());
+            status.accept("Saved " + file.getFileName());
             return true;
         } catch (IOException e) {
             error(FileErrors.cannotSave(file, e) + (Files.exists(file) ? ". The file on disk is unchanged." : ""));
@@ -208,13 +213,13 @@ final class BoardFileCommands {
     private void show(Board board, Path file, int skippedLines, String message) {
         loop.stop();
         session.loadWithout(board, file, skippedLines);
-        window.statusLine().showMessage(message);
+        status.accept(message);
     }
 
     /** Shows a lower-case sentence of FileErrors (shared with the headless runner) as the player reads it. */
     private void error(String sentence) {
         String message = Character.toUpperCase(sentence.charAt(0)) + sentence.substring(1);
-        window.statusLine().showMessage(message);
+        status.accept(message);
         JOptionPane.showMessageDialog(window, message, "Gizmoball", JOptionPane.ERROR_MESSAGE);
     }
 

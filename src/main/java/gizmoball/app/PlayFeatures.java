@@ -1,9 +1,13 @@
-package gizmoball.view;
+package gizmoball.app;
 
+import gizmoball.controller.BoardFileCommands;
 import gizmoball.controller.GameLoop;
 import gizmoball.controller.Settings;
 import gizmoball.controller.Speed;
+import gizmoball.session.GameSession;
 import gizmoball.sound.SoundPlayer;
+import gizmoball.view.BallTrails;
+import gizmoball.view.GameWindow;
 import java.awt.GraphicsConfiguration;
 import java.awt.GraphicsDevice;
 import java.awt.GraphicsEnvironment;
@@ -31,19 +35,27 @@ import javax.swing.SwingUtilities;
  */
 public final class PlayFeatures {
     private final GameWindow window;
+    private final GameSession session;
+    private final GameLoop loop;
+    private final BoardFileCommands files;
     private final Settings settings;
     private final BallTrails trails;
     private final SoundPlayer sound;
 
-    private PlayFeatures(GameWindow window, Settings settings) {
+    private PlayFeatures(GameWindow window, GameSession session, GameLoop loop, BoardFileCommands files,
+                         Settings settings) {
         this.window = window;
+        this.session = session;
+        this.loop = loop;
+        this.files = files;
         this.settings = settings;
-        this.trails = new BallTrails(window.session().board());
+        this.trails = new BallTrails(session.board());
         this.sound = new SoundPlayer(notice -> SwingUtilities.invokeLater(() -> window.statusLine().showMessage(notice)));
     }
 
-    public static PlayFeatures install(GameWindow window, Settings settings) {
-        PlayFeatures features = new PlayFeatures(window, settings);
+    public static PlayFeatures install(GameWindow window, GameSession session, GameLoop loop,
+                                       BoardFileCommands files, Settings settings) {
+        PlayFeatures features = new PlayFeatures(window, session, loop, files, settings);
         features.installSpeed();
         features.installSound();
         features.installView();
@@ -57,7 +69,6 @@ public final class PlayFeatures {
     }
 
     private void installSpeed() {
-        GameLoop loop = window.loop();
         JMenu speedMenu = new JMenu("Speed");
         ButtonGroup group = new ButtonGroup();
         Speed[] speeds = Speed.values();
@@ -78,7 +89,7 @@ public final class PlayFeatures {
     }
 
     private void setSpeed(Speed speed) {
-        window.loop().setSpeed(speed);
+        loop.setSpeed(speed);
         settings.setSpeed(speed);
         window.refreshStatus();
         window.statusLine().showMessage("Speed " + speed.label());
@@ -131,8 +142,8 @@ public final class PlayFeatures {
 
     /** The file chooser starts where the player last opened or saved a board, in this run or an earlier one. */
     private void rememberFolder() {
-        settings.lastFolder().ifPresent(window.fileCommands()::startIn);
-        window.session().addStateListener(() -> window.session().file()
+        settings.lastFolder().ifPresent(files::startIn);
+        session.addStateListener(() -> session.file()
                 .map(f -> f.toAbsolutePath().getParent())
                 .ifPresent(this::folderUsed));
     }

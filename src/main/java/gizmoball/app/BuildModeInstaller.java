@@ -1,12 +1,18 @@
-package gizmoball.view.editor;
+package gizmoball.app;
 
-import gizmoball.controller.GameSession;
-import gizmoball.controller.Mode;
-import gizmoball.controller.editor.BoardInput;
-import gizmoball.controller.editor.BuildController;
-import gizmoball.controller.editor.Tool;
+import gizmoball.session.GameSession;
+import gizmoball.session.Mode;
+import gizmoball.view.editor.BoardInput;
+import gizmoball.editor.Editor;
+import gizmoball.editor.Tool;
 import gizmoball.view.BoardPanel;
 import gizmoball.view.GameWindow;
+import gizmoball.view.editor.BuildOverlay;
+import gizmoball.view.editor.EdgePopup;
+import gizmoball.view.editor.EditMenu;
+import gizmoball.view.editor.PalettePanel;
+import gizmoball.view.editor.PropertiesPanel;
+import gizmoball.view.editor.WindowFit;
 
 import javax.swing.JMenuBar;
 import java.awt.Cursor;
@@ -21,15 +27,14 @@ public final class BuildModeInstaller {
     }
 
     /** The installed parts, for tests and for anyone who wants to drive the editor directly. */
-    public record BuildMode(BuildController controller, PalettePanel palette, PropertiesPanel properties,
+    public record BuildMode(Editor controller, PalettePanel palette, PropertiesPanel properties,
                             EditMenu editMenu) { }
 
-    public static BuildMode install(GameWindow window) {
-        GameSession session = window.session();
+    public static BuildMode install(GameWindow window, GameSession session) {
         BoardPanel panel = window.boardPanel();
         BooleanSupplier building = () -> session.mode() == Mode.BUILD;
 
-        BuildController controller = new BuildController(session.board());
+        Editor controller = new Editor(session.board());
         controller.setMessageSink(window.statusLine()::showMessage);
         controller.addEditListener(session::markModified);
         controller.addStateListener(panel::repaint);

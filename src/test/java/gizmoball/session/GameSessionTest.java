@@ -1,4 +1,4 @@
-package gizmoball.controller;
+package gizmoball.session;
 
 import static org.assertj.core.api.Assertions.assertThat;
 

@@ -1,6 +1,5 @@
-package gizmoball.view;
+package gizmoball.controller;
 
-import gizmoball.controller.GameLoop;
 import java.awt.AWTEvent;
 import java.awt.Dialog;
 import java.awt.Toolkit;
@@ -17,7 +16,7 @@ import java.util.Set;
  * the player cannot reach the board then, so the ball should not fly on behind the dialog. Play resumes
  * when the last such dialog closes, unless the game was stopped meanwhile (by loading a board, say).
  */
-final class ModalPause implements AWTEventListener {
+public final class ModalPause implements AWTEventListener {
     private static final long EVENTS = AWTEvent.WINDOW_EVENT_MASK | AWTEvent.COMPONENT_EVENT_MASK;
 
     private final Window window;
@@ -30,7 +29,7 @@ final class ModalPause implements AWTEventListener {
     }
 
     /** Watches the dialogs of {@code window} until the window is disposed. */
-    static void install(Window window, GameLoop loop) {
+    public static void install(Window window, GameLoop loop) {
         ModalPause pause = new ModalPause(window, loop);
         Toolkit.getDefaultToolkit().addAWTEventListener(pause, EVENTS);
         window.addWindowListener(new WindowAdapter() {

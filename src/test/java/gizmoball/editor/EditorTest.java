@@ -1,4 +1,4 @@
-package gizmoball.controller.editor;
+package gizmoball.editor;
 
 import gizmoball.model.Ball;
 import gizmoball.model.Board;
@@ -22,16 +22,16 @@ import java.util.Optional;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
-class BuildControllerTest {
+class EditorTest {
     private Board board;
-    private BuildController editor;
+    private Editor editor;
     private final List<String> messages = new ArrayList<>();
     private int edits;
 
     @BeforeEach
     void setUp() {
         board = new Board();
-        editor = new BuildController(board);
+        editor = new Editor(board);
         editor.setMessageSink(messages::add);
         editor.addEditListener(() -> edits++);
     }

@@ -1,4 +1,4 @@
-package gizmoball.view;
+package gizmoball.controller;
 
 import static org.assertj.core.api.Assertions.assertThat;
 

@@ -1,4 +1,4 @@
-package gizmoball.controller.editor;
+package gizmoball.editor;
 
 import gizmoball.model.Board;
 import gizmoball.model.GizmoKind;

@@ -1,4 +1,4 @@
-package gizmoball.controller;
+package gizmoball.session;
 
 /** What the window is doing with its board: playing it, or editing it. */
 public enum Mode { PLAY, BUILD }
