@@ -1,6 +1,7 @@
 package gizmoball.controller;
 
 import gizmoball.boardfile.BoardFileError;
+import gizmoball.boardfile.BoardFileException;
 import gizmoball.boardfile.BoardFiles;
 import gizmoball.boardfile.FileErrors;
 import gizmoball.boardfile.LoadResult;
