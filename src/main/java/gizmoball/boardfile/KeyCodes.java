@@ -1,5 +1,7 @@
 package gizmoball.boardfile;
 
+import gizmoball.model.KeyBinding;
+import gizmoball.model.KeyEdge;
 import java.awt.event.KeyEvent;
 import java.lang.reflect.Field;
 import java.lang.reflect.Modifier;
@@ -12,9 +14,10 @@ import java.util.Set;
 /**
  * The key codes a board file may bind: the values of {@link KeyEvent}'s {@code VK_} constants
  * (except {@code VK_UNDEFINED}). Read by reflection so the list is the running JDK's own.
- * Loading KeyEvent needs no display, so this works headless.
+ * Loading KeyEvent needs no display, so this works headless. Also the one place that names keys and key
+ * bindings to the player, so that the status line, the overlay and the help say them the same way.
  */
-final class KeyCodes {
+public final class KeyCodes {
     private static final String PREFIX = "VK_";
     private static final Map<String, Integer> BY_NAME = constants();
     private static final Set<Integer> CODES = Set.copyOf(BY_NAME.values());
@@ -31,6 +34,21 @@ final class KeyCodes {
         String upper = name.toUpperCase(Locale.ROOT);
         Integer code = BY_NAME.get(upper.startsWith(PREFIX) ? upper.substring(PREFIX.length()) : upper);
         return code == null ? OptionalInt.empty() : OptionalInt.of(code);
+    }
+
+    /** The key as the player knows it: "Z", "Space", "Slash". */
+    public static String name(int keyCode) {
+        return KeyEvent.getKeyText(keyCode);
+    }
+
+    /** "down", "up" or "change", as in the board file. */
+    public static String edge(KeyEdge edge) {
+        return edge.name().toLowerCase(Locale.ROOT);
+    }
+
+    /** "key Z down \u2192 LF". */
+    public static String describe(KeyBinding binding) {
+        return "key " + name(binding.keyCode()) + " " + edge(binding.edge()) + " \u2192 " + binding.gizmo();
     }
 
     /** Name without the prefix -> code. */
