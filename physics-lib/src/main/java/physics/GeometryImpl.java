@@ -21,11 +21,11 @@ public class GeometryImpl implements GeometryInterface {
     /** Default number of slices over which the rotating search computes its motion bounds. */
     static final int DEFAULT_SEARCH_SLICES = 16;
     /**
-     * A contact point closer than this (in L) to an end of a rotating segment is an end contact, which
-     * {@link #reflectRotatingWall} refuses: end contacts belong to {@link #reflectRotatingCircle} with a
-     * zero-radius circle at the end.
+     * How far (in L) a ball may be off a rotating segment's face, beyond an end or clear of its line, and still be
+     * reflected off it by {@link #reflectRotatingWall}: far above the rounding of any contact that
+     * {@link #timeUntilRotatingWallCollision} reports (within 1e-10 L of the face), far below anything visible.
      */
-    static final double END_CONTACT_TOLERANCE = 1e-9;
+    static final double OFF_FACE_TOLERANCE = 1e-6;
 
     private final double maximumForesight;
     private final int searchSlices;
@@ -184,7 +184,9 @@ public class GeometryImpl implements GeometryInterface {
      */
     @Override
     public double timeUntilCircleCollision(Circle circle, Circle ball, Vect velocity) {
-        return timeUntilCentresAt(ball.getCenter().minus(circle.getCenter()), velocity,
+        Vect c = circle.getCenter();
+        Vect b = ball.getCenter();
+        return timeUntilCentresAt(b.x() - c.x(), b.y() - c.y(), velocity.x(), velocity.y(),
                 circle.getRadius() + ball.getRadius());
     }
 
@@ -225,35 +227,39 @@ public class GeometryImpl implements GeometryInterface {
      */
     @Override
     public DoublePair timeUntilCircleCollision(Circle circle, Vect point, Vect velocity) {
-        Vect offset = point.minus(circle.getCenter());
+        double dx = point.x() - circle.getCenter().x();
+        double dy = point.y() - circle.getCenter().y();
         double speedSquared = velocity.dot(velocity);
-        double discriminant = quarterDiscriminant(offset, velocity, circle.getRadius());
+        double discriminant = quarterDiscriminant(dx, dy, velocity.x(), velocity.y(), circle.getRadius());
         if (speedSquared == 0 || discriminant < 0) {
             return Geometry.DOUBLE_PAIR_NAN;
         }
-        double along = offset.dot(velocity);
+        double along = dx * velocity.x() + dy * velocity.y();
         double q = -(along + Math.copySign(Math.sqrt(discriminant), along));
         if (q == 0) {
             return new DoublePair(0);
         }
         double r1 = q / speedSquared;
-        double r2 = excessSquared(offset, circle.getRadius()) / q;
+        double r2 = excessSquared(dx, dy, circle.getRadius()) / q;
         return new DoublePair(Math.min(r1, r2), Math.max(r1, r2));
     }
 
     /**
-     * Time until the ball touches the closed segment that turns about {@code center} at {@code angularVelocity}
-     * rad/s (positive turns +x toward +y) from its given position at time 0. Contacts anywhere on the segment,
-     * its ends included, are found; only times in [0, maximumForesight] are reported, so a caller whose
-     * rotation stops earlier uses an instance whose foresight is the remaining rotation time and then treats the
-     * segment as static at its stop angle. At the returned time the ball is within 1e-9 L of touching (never
-     * inside); touching and closing is 0. A ball at rest is found. See {@link RotatingContactSearch}.
+     * Time until the ball touches the face of the segment that turns about {@code center} at
+     * {@code angularVelocity} rad/s (positive turns +x toward +y) from its given position at time 0: what
+     * {@link #timeUntilWallCollision} means, turning. Contacts whose foot lies on the segment, ends included, are
+     * found; contacts beyond the ends are left to zero-radius circles there ({@link #timeUntilRotatingCircleCollision}),
+     * and at angular velocity 0 the answer is the static one. Only times in [0, maximumForesight] are reported, so
+     * a caller whose rotation stops earlier uses an instance whose foresight is the remaining rotation time and then
+     * treats the segment as static at its stop angle. At the returned time the ball is within 1e-10 L of touching
+     * the face (never inside it); touching or overlapping the face and closing is 0. A ball at rest is found. See
+     * {@link RotatingContactSearch}.
      */
     @Override
     public double timeUntilRotatingWallCollision(LineSegment line, Vect center, double angularVelocity, Circle ball,
                                                  Vect velocity) {
-        return RotatingContactSearch.firstContact(line.p1(), line.p2(), 0, center, angularVelocity, ball, velocity,
-                maximumForesight, searchSlices);
+        return RotatingContactSearch.firstFaceContact(line, center, angularVelocity, ball, velocity, maximumForesight,
+                searchSlices);
     }
 
     /** {@link #reflectRotatingWall(LineSegment, Vect, double, Circle, Vect, double)} with coefficient 1. */
@@ -264,31 +270,41 @@ public class GeometryImpl implements GeometryInterface {
     }
 
     /**
-     * The ball's velocity after it bounces off the segment (in its current position) that turns about
+     * The ball's velocity after it bounces off the face of the segment (in its current position) that turns about
      * {@code center} at {@code angularVelocity}: the velocity relative to the segment's surface at the contact
-     * point, w &times; (contact - center), is reflected off the segment's line with the coefficient, and the
-     * surface velocity is added back.
+     * point (the foot of the perpendicular from the ball's centre), w &times; (contact - center), is reflected off
+     * the segment's line with the coefficient, and the surface velocity is added back. Every contact that
+     * {@link #timeUntilRotatingWallCollision} reports is a face contact, ends included, so this succeeds for it.
      *
-     * @throws IllegalArgumentException if the ball touches the segment at one of its ends, i.e. the foot of the
-     *         perpendicular from the ball's centre falls off the segment or within {@link #END_CONTACT_TOLERANCE}
-     *         of an end. An end contact has its normal along the line of centres, not the segment's normal:
-     *         reflect it with {@link #reflectRotatingCircle} off {@code new Circle(end, 0)} instead.
+     * @throws IllegalArgumentException if the ball is plainly not on the face: its centre's foot lies more than
+     *         {@link #OFF_FACE_TOLERANCE} beyond an end (it touches the end, which belongs to
+     *         {@link #reflectRotatingCircle} with {@code new Circle(end, 0)}), or it is more than that clear of the
+     *         segment's line
      */
     @Override
     public Vect reflectRotatingWall(LineSegment line, Vect center, double angularVelocity, Circle ball, Vect velocity,
                                     double reflectionCoeff) {
         requireFinite(angularVelocity, "angular velocity");
         requireFinite(reflectionCoeff, "reflection coefficient");
-        Vect contact = perpendicularPoint(line, ball.getCenter());
-        if (contact == null || contact.distanceSquared(line.p1()) < END_CONTACT_TOLERANCE * END_CONTACT_TOLERANCE
-                || contact.distanceSquared(line.p2()) < END_CONTACT_TOLERANCE * END_CONTACT_TOLERANCE) {
-            throw new IllegalArgumentException("ball at " + ball.getCenter() + " touches " + line
-                    + " at an end, not its face: reflect off a zero-radius circle at that end with "
-                    + "reflectRotatingCircle");
-        }
         Vect dir = line.p2().minus(line.p1());
-        return reflectOffMovingSurface(new Vect(-dir.y(), dir.x()).unitSize(), contact, center, angularVelocity,
-                velocity, reflectionCoeff);
+        double length = line.length();
+        Vect unitAlong = dir.times(1 / length);
+        Vect fromP1 = ball.getCenter().minus(line.p1());
+        double along = fromP1.dot(unitAlong);
+        double beyond = Math.max(-along, along - length);
+        if (beyond > OFF_FACE_TOLERANCE) {
+            throw new IllegalArgumentException("ball at " + ball.getCenter() + " is " + beyond + " L beyond an end of "
+                    + line + ", not on its face: an end contact, reflect it off a zero-radius circle at that end "
+                    + "with reflectRotatingCircle");
+        }
+        Vect unitNormal = new Vect(-unitAlong.y(), unitAlong.x());
+        double clear = Math.abs(fromP1.dot(unitNormal)) - ball.getRadius();
+        if (clear > OFF_FACE_TOLERANCE) {
+            throw new IllegalArgumentException("ball at " + ball.getCenter() + " with radius " + ball.getRadius()
+                    + " is " + clear + " L clear of the face of " + line + ": it does not touch it");
+        }
+        Vect contact = line.p1().plus(unitAlong.times(along));
+        return reflectOffMovingSurface(unitNormal, contact, center, angularVelocity, velocity, reflectionCoeff);
     }
 
     /**
@@ -298,8 +314,8 @@ public class GeometryImpl implements GeometryInterface {
     @Override
     public double timeUntilRotatingCircleCollision(Circle circle, Vect center, double angularVelocity, Circle ball,
                                                    Vect velocity) {
-        return RotatingContactSearch.firstContact(circle.getCenter(), circle.getCenter(), circle.getRadius(), center,
-                angularVelocity, ball, velocity, maximumForesight, searchSlices);
+        return RotatingContactSearch.firstCircleContact(circle, center, angularVelocity, ball, velocity,
+                maximumForesight, searchSlices);
     }
 
     /** {@link #reflectRotatingCircle(Circle, Vect, double, Circle, Vect, double)} with coefficient 1. */
@@ -340,8 +356,10 @@ public class GeometryImpl implements GeometryInterface {
      */
     @Override
     public double timeUntilBallBallCollision(Circle ball1, Vect velocity1, Circle ball2, Vect velocity2) {
-        return timeUntilCentresAt(ball1.getCenter().minus(ball2.getCenter()), velocity1.minus(velocity2),
-                ball1.getRadius() + ball2.getRadius());
+        Vect c1 = ball1.getCenter();
+        Vect c2 = ball2.getCenter();
+        return timeUntilCentresAt(c1.x() - c2.x(), c1.y() - c2.y(), velocity1.x() - velocity2.x(),
+                velocity1.y() - velocity2.y(), ball1.getRadius() + ball2.getRadius());
     }
 
     /**
@@ -360,47 +378,70 @@ public class GeometryImpl implements GeometryInterface {
         if (Double.isInfinite(mass1) && Double.isInfinite(mass2)) {
             throw new IllegalArgumentException("at most one ball may have infinite mass");
         }
-        Vect normal = unitNormal(center1, center2);
-        double approach = velocity1.minus(velocity2).dot(normal);
+        // The unit normal from centre 1 to centre 2 and the exchange along it, on the components: no allocation
+        // but the result.
+        double nx = center2.x() - center1.x();
+        double ny = center2.y() - center1.y();
+        if (nx == 0 && ny == 0) {
+            throw new IllegalArgumentException("centres coincide at " + center1
+                    + ": the contact normal is undefined");
+        }
+        double inverseLength = 1 / norm(nx, ny);
+        nx *= inverseLength;
+        ny *= inverseLength;
+        double approach = (velocity1.x() - velocity2.x()) * nx + (velocity1.y() - velocity2.y()) * ny;
         // 2 m2 / (m1 + m2) and 2 m1 / (m1 + m2), written with mass ratios so that an infinite mass works.
-        double share1 = 2 / (1 + mass1 / mass2);
-        double share2 = 2 / (1 + mass2 / mass1);
-        return new VectPair(velocity1.minus(normal.times(share1 * approach)),
-                velocity2.plus(normal.times(share2 * approach)));
+        double change1 = 2 / (1 + mass1 / mass2) * approach;
+        double change2 = 2 / (1 + mass2 / mass1) * approach;
+        return new VectPair(new Vect(velocity1.x() - nx * change1, velocity1.y() - ny * change1),
+                new Vect(velocity2.x() + nx * change2, velocity2.y() + ny * change2));
     }
 
     /**
-     * Time until |offset + velocity t| first equals distance, for the closest-approach problems (circle-ball,
-     * ball-ball). Uses (|d| - S)(|d| + S) for |d|&sup2; - S&sup2; and Lagrange's identity for the discriminant,
-     * and picks the root form without cancellation, so far-away contacts keep their digits.
+     * Time until |d + u t| first equals distance, for the closest-approach problems (circle-ball, ball-ball), on
+     * the components of the offset d and the velocity u so that nothing is allocated. Uses (|d| - S)(|d| + S) for
+     * |d|&sup2; - S&sup2; and Lagrange's identity for the discriminant, and picks the root form without
+     * cancellation, so far-away contacts keep their digits.
      */
-    private static double timeUntilCentresAt(Vect offset, Vect velocity, double distance) {
-        double excess = excessSquared(offset, distance);
-        double along = offset.dot(velocity);
+    private static double timeUntilCentresAt(double dx, double dy, double ux, double uy, double distance) {
+        double along = dx * ux + dy * uy;
+        if (!(along < 0)) {
+            return Double.POSITIVE_INFINITY; // not closing: never, whether apart, touching or overlapping
+        }
+        double excess = excessSquared(dx, dy, distance);
         if (excess <= 0) {
-            return along < 0 ? 0 : Double.POSITIVE_INFINITY;
+            return 0;
         }
-        if (along >= 0) {
-            return Double.POSITIVE_INFINITY;
-        }
-        double discriminant = quarterDiscriminant(offset, velocity, distance);
+        double discriminant = quarterDiscriminant(dx, dy, ux, uy, distance);
         if (discriminant < 0) {
             return Double.POSITIVE_INFINITY;
         }
         return excess / (-along + Math.sqrt(discriminant));
     }
 
-    /** |offset|&sup2; - radius&sup2;, as a product of sum and difference. */
-    private static double excessSquared(Vect offset, double radius) {
-        double length = offset.length();
+    /** |d|&sup2; - radius&sup2;, as a product of sum and difference. */
+    private static double excessSquared(double dx, double dy, double radius) {
+        double length = norm(dx, dy);
         return (length - radius) * (length + radius);
     }
 
-    /** (offset.v)&sup2; - |v|&sup2;(|offset|&sup2; - r&sup2;) = |v|&sup2;r&sup2; - (offset x v)&sup2;, factored. */
-    private static double quarterDiscriminant(Vect offset, Vect velocity, double radius) {
-        double cross = Math.abs(offset.x() * velocity.y() - offset.y() * velocity.x());
-        double reach = velocity.length() * radius;
+    /** (d.u)&sup2; - |u|&sup2;(|d|&sup2; - r&sup2;) = |u|&sup2;r&sup2; - (d x u)&sup2;, factored. */
+    private static double quarterDiscriminant(double dx, double dy, double ux, double uy, double radius) {
+        double cross = Math.abs(dx * uy - dy * ux);
+        double reach = norm(ux, uy) * radius;
         return (reach - cross) * (reach + cross);
+    }
+
+    /**
+     * |(x, y)|: the square root of the sum of squares, within an ulp like {@link Math#hypot} at a fraction of its
+     * cost; hypot only where the squares would underflow or overflow.
+     */
+    private static double norm(double x, double y) {
+        double sumOfSquares = x * x + y * y;
+        if (sumOfSquares < Double.MIN_NORMAL || sumOfSquares == Double.POSITIVE_INFINITY) {
+            return Math.hypot(x, y);
+        }
+        return Math.sqrt(sumOfSquares);
     }
 
     /** v with its part along the unit normal replaced by -coeff times that part. */

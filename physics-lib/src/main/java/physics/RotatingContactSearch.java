@@ -1,13 +1,19 @@
 package physics;
 
 /**
- * Earliest contact of a moving ball with an obstacle turning about a pivot: a closed segment [a, b] thickened by
- * a radius (a = b is a circle). Written from the following mathematics.
+ * Earliest contact of a moving ball with an obstacle turning about a pivot: the face of a segment [a, b] (the
+ * meaning of {@link GeometryImpl#timeUntilWallCollision}, turning), or a circle. Written from the following
+ * mathematics.
  * <p>
- * <b>Frame.</b> The obstacle at time t is the initial one turned by w t about the pivot p, so the distance from
- * the ball centre c0 + v t to it equals the distance from q(t) = p + R(-w t) u(t), u(t) = c0 + v t - p, to the
- * initial obstacle. In that frame the obstacle is still and only q moves. The gap is
- * g(t) = dist(q(t), [a, b]) - (obstacle radius + ball radius).
+ * <b>Frame.</b> The obstacle at time t is the initial one turned by w t about the pivot p, so the ball centre
+ * c0 + v t meets it exactly when q(t) = p + R(-w t) u(t), u(t) = c0 + v t - p, meets the initial obstacle. In that
+ * frame the obstacle is still and only q moves.
+ * <p>
+ * <b>Where the centre may not go.</b> For a circle of radius R and ball radius r: the disc of radius R + r. For a
+ * segment's face: the rectangle F of the points whose foot lies on the segment and whose distance x from its line
+ * is at most r. The ball touches the face when q enters F through one of its long sides (|x| = r, ends included);
+ * q entering F through a short side is the ball running into an end, which belongs to a zero-radius circle there.
+ * The gap g(t) is the distance from q(t) to the disc or to F; both are convex sets.
  * <p>
  * <b>Bounds.</b> q'(t) = R(-wt) v - w J R(-wt) u and q''(t) = -2 w J R(-wt) v - w&sup2; R(-wt) u (J: quarter
  * turn), so |q'| &le; |v| + |w| |u| and |q''| &le; 2 |w| |v| + w&sup2; |u|. |u(t)| is convex in t, so on a slice of
@@ -15,14 +21,18 @@ package physics;
  * <p>
  * <b>Safe steps.</b> The distance to a convex set is convex with a unit gradient n, so
  * g(s) &ge; g(t) + n&middot;(q(s) - q(t)) &ge; g(t) + g'(t)(s - t) - M (s - t)&sup2;/2, and also g(s) &ge; g(t) - L (s - t).
- * Stepping to the first zero of the larger of these lower bounds can never step over a contact, wherever on
- * the segment (ends included) it happens, and near a contact the step is a Newton step on a bound from below,
- * so it converges fast and from the safe side. The search stops when the gap is within
- * {@link #CONTACT_TOLERANCE} while closing (g' &lt; 0).
+ * Stepping to the first zero of the larger of these lower bounds can never step over a contact, and near a
+ * contact the step is a Newton step on a bound from below, so it converges fast and from the safe side. The
+ * search stops when the gap is within {@link #CONTACT_TOLERANCE} while closing.
  * <p>
- * <b>Already in contact.</b> Touching or overlapping and closing is time 0. While the ball touches or overlaps
- * without closing, the search moves on by steps over which the gap cannot drop by more than
- * {@link #CONTACT_TOLERANCE}, until the ball is clear again or starts closing.
+ * <b>Through an end.</b> After q has come to F's short side, the ball overlaps the end, and no face contact can
+ * happen while |x| &lt; r: a face contact needs |x| to come down through r. The search moves on by steps over
+ * which |x| cannot reach r: x is linear in q, so &plusmn;x(s) &le; &plusmn;(x(t) + x'(t)(s - t)) + M (s - t)&sup2;/2
+ * and |x(s)| &le; |x(t)| + L (s - t). Once |x| is back at r it carries on as above.
+ * <p>
+ * <b>Already in contact.</b> Touching or overlapping the face (or the circle) and closing is time 0. While the
+ * ball touches or overlaps it without closing, the search moves on by steps over which the gap cannot drop by
+ * more than {@link #CONTACT_TOLERANCE}, until the ball is clear again or starts closing.
  */
 final class RotatingContactSearch {
     /** The reported contact has a gap in [0, CONTACT_TOLERANCE] (in L) unless it is already closing at 0. */
@@ -33,27 +43,53 @@ final class RotatingContactSearch {
      */
     private static final int MAX_STEPS = 200_000;
 
-    private final Vect a;
-    private final Vect ab;
-    private final double abLengthSquared;
+    /** Where q is, for the search: what may happen next and how far it may step. */
+    private enum Region {
+        /** More than the tolerance away from the forbidden set: safe steps. */
+        CLEAR,
+        /** Touching or overlapping the face or circle: a contact if closing. */
+        TOUCHING,
+        /** A wall only: in the band |x| &lt; r, come in over an end: no face contact until |x| is back at r. */
+        THROUGH_END
+    }
+
+    private final boolean wall;
+    private final double ax;
+    private final double ay;
+    /** Wall: unit vector from a to b, and the segment's length. */
+    private final double alongX;
+    private final double alongY;
+    private final double length;
+    /** Wall: the ball's radius; circle: the sum of the radii. */
     private final double contactDistance;
     private final Vect pivot;
     private final double w;
     private final Vect c0MinusPivot;
     private final Vect v;
 
+    /** Distance from q to the forbidden set (0 inside it) and its rate. */
     private double gap;
     private double gapRate;
+    /** Wall: |x| - r; circle: the gap (negative when overlapping). And its rate; a centre on the line moves away. */
+    private double faceGap;
+    private double faceRate;
+    /** Wall: the signed distance x of q from the line, its rate, and how far q's foot lies beyond the segment. */
+    private double offset;
+    private double offsetRate;
+    private double beyond;
 
-    private RotatingContactSearch(Vect a, Vect b, double obstacleRadius, Vect pivot, double angularVelocity,
-                                  Circle ball, Vect velocity) {
+    private RotatingContactSearch(boolean wall, Vect a, Vect b, double contactDistance, Vect pivot,
+                                  double angularVelocity, Circle ball, Vect velocity) {
         if (!Double.isFinite(angularVelocity)) {
             throw new IllegalArgumentException("angular velocity must be finite, got " + angularVelocity);
         }
-        this.a = a;
-        this.ab = b.minus(a);
-        this.abLengthSquared = ab.dot(ab);
-        this.contactDistance = obstacleRadius + ball.getRadius();
+        this.wall = wall;
+        this.ax = a.x();
+        this.ay = a.y();
+        this.length = Math.sqrt(a.distanceSquared(b));
+        this.alongX = wall ? (b.x() - a.x()) / length : 0;
+        this.alongY = wall ? (b.y() - a.y()) / length : 0;
+        this.contactDistance = contactDistance;
         this.pivot = pivot;
         this.w = angularVelocity;
         this.c0MinusPivot = ball.getCenter().minus(pivot);
@@ -61,16 +97,22 @@ final class RotatingContactSearch {
     }
 
     /**
-     * The earliest time in [0, foresight] at which the ball touches the obstacle while closing, or infinity.
-     *
-     * @param a              one end of the obstacle's core segment at time 0
-     * @param b              the other end (equal to a for a circle)
-     * @param obstacleRadius the thickness around the core segment (the circle's radius; 0 for a wall)
+     * The earliest time in [0, foresight] at which the ball touches the face of the segment [a, b] while closing,
+     * or infinity. Contacts with the segment beyond its ends are not face contacts.
      */
-    static double firstContact(Vect a, Vect b, double obstacleRadius, Vect pivot, double angularVelocity,
-                               Circle ball, Vect velocity, double foresight, int slices) {
-        return new RotatingContactSearch(a, b, obstacleRadius, pivot, angularVelocity, ball, velocity)
-                .search(foresight, slices, Math.max(pivot.distanceSquared(a), pivot.distanceSquared(b)));
+    static double firstFaceContact(LineSegment segment, Vect pivot, double angularVelocity, Circle ball,
+                                   Vect velocity, double foresight, int slices) {
+        return new RotatingContactSearch(true, segment.p1(), segment.p2(), ball.getRadius(), pivot, angularVelocity,
+                ball, velocity).search(foresight, slices,
+                Math.max(pivot.distanceSquared(segment.p1()), pivot.distanceSquared(segment.p2())));
+    }
+
+    /** The earliest time in [0, foresight] at which the ball touches the circle while closing, or infinity. */
+    static double firstCircleContact(Circle circle, Vect pivot, double angularVelocity, Circle ball, Vect velocity,
+                                     double foresight, int slices) {
+        Vect centre = circle.getCenter();
+        return new RotatingContactSearch(false, centre, centre, circle.getRadius() + ball.getRadius(), pivot,
+                angularVelocity, ball, velocity).search(foresight, slices, pivot.distanceSquared(centre));
     }
 
     private double search(double foresight, int slices, double farthestCoreSquared) {
@@ -82,42 +124,81 @@ final class RotatingContactSearch {
         double spin = Math.abs(w);
         double t = 0;
         evaluate(t);
+        Region region = classify(null, 0);
         for (int slice = 0, steps = 0; slice < slices; slice++) {
             double sliceEnd = slice == slices - 1 ? foresight : foresight * (slice + 1) / slices;
             double farthest = Math.max(u(t).length(), u(sliceEnd).length());
             double lipschitz = speed + spin * farthest;
             double curvature = 2 * spin * speed + w * w * farthest;
-            while (t < sliceEnd) {
+            while (true) {
+                if (region == Region.TOUCHING && faceRate < 0) {
+                    return t;
+                }
+                if (t >= sliceEnd) {
+                    break;
+                }
                 if (++steps > MAX_STEPS) {
                     return t;
                 }
-                double step;
-                if (gap <= CONTACT_TOLERANCE) {
-                    if (gapRate < 0) {
-                        return t;
-                    }
-                    if (curvature == 0) {
-                        return Double.POSITIVE_INFINITY; // straight motion, not closing: the convex gap only grows
-                    }
-                    // Where gap + gapRate h - curvature h^2 / 2 is CONTACT_TOLERANCE below the current gap.
-                    step = (gapRate + Math.sqrt(gapRate * gapRate + 2 * curvature * CONTACT_TOLERANCE)) / curvature;
-                } else {
-                    step = Math.max(gap / lipschitz, quadraticBoundStep(curvature));
+                if (region == Region.TOUCHING && curvature == 0) {
+                    return Double.POSITIVE_INFINITY; // straight motion, not closing: the convex gap only grows
                 }
-                t = Math.min(t + step, sliceEnd);
+                t = Math.min(t + step(region, lipschitz, curvature), sliceEnd);
+                double beyondBefore = beyond;
                 evaluate(t);
+                region = classify(region, beyondBefore);
             }
         }
-        return gap <= CONTACT_TOLERANCE && gapRate < 0 ? t : Double.POSITIVE_INFINITY;
+        return Double.POSITIVE_INFINITY;
     }
 
-    /** The first positive zero of gap + gapRate h - curvature h&sup2;/2, in a form without cancellation. */
-    private double quadraticBoundStep(double curvature) {
-        double root = Math.sqrt(gapRate * gapRate + 2 * curvature * gap);
-        if (gapRate < 0) {
-            return 2 * gap / (root - gapRate);
+    /** A step over which nothing can happen that the region does not allow for (see the class comment). */
+    private double step(Region region, double lipschitz, double curvature) {
+        return switch (region) {
+            case CLEAR -> Math.max(gap / lipschitz, firstZero(gap, gapRate, curvature));
+            // Where faceGap + faceRate h - curvature h^2 / 2 is CONTACT_TOLERANCE below faceGap.
+            case TOUCHING -> (faceRate + Math.sqrt(faceRate * faceRate + 2 * curvature * CONTACT_TOLERANCE))
+                    / curvature;
+            case THROUGH_END -> Math.max(-faceGap / lipschitz,
+                    Math.min(firstZero(contactDistance - offset, -offsetRate, curvature),
+                            firstZero(contactDistance + offset, offsetRate, curvature)));
+        };
+    }
+
+    /**
+     * The region q is in now, given the region it was in at the previous evaluation (null at time 0) and how far
+     * its foot was beyond the ends then. Overlapping the face counts as touching it only if the ball got there
+     * over the face or was there at time 0. A safe step from clear lands on the boundary of the face rectangle,
+     * so it came in over an end only if its foot was beyond one before; judging by that, rounding that puts the
+     * landing point a little inside cannot turn a face contact into an end one.
+     */
+    private Region classify(Region previous, double beyondBefore) {
+        if (gap > CONTACT_TOLERANCE) {
+            return Region.CLEAR;
         }
-        return curvature == 0 ? Double.POSITIVE_INFINITY : (gapRate + root) / curvature;
+        if (!wall || faceGap >= -CONTACT_TOLERANCE) {
+            return Region.TOUCHING;
+        }
+        if (previous == null) {
+            return beyond > 0 ? Region.THROUGH_END : Region.TOUCHING;
+        }
+        return switch (previous) {
+            case CLEAR -> beyondBefore > CONTACT_TOLERANCE ? Region.THROUGH_END : Region.TOUCHING;
+            case TOUCHING -> beyond > 0 ? Region.THROUGH_END : Region.TOUCHING;
+            case THROUGH_END -> Region.THROUGH_END;
+        };
+    }
+
+    /**
+     * The first positive zero of value + rate h - curvature h&sup2;/2 for value &ge; 0, in a form without
+     * cancellation; infinity if there is none.
+     */
+    private static double firstZero(double value, double rate, double curvature) {
+        double root = Math.sqrt(rate * rate + 2 * curvature * value);
+        if (rate < 0) {
+            return 2 * value / (root - rate);
+        }
+        return curvature == 0 ? Double.POSITIVE_INFINITY : (rate + root) / curvature;
     }
 
     /** min over [0, foresight] of |c0 + v t - pivot|, the ball centre's distance from the pivot (frame-free). */
@@ -131,7 +212,7 @@ final class RotatingContactSearch {
         return c0MinusPivot.plus(v.times(t));
     }
 
-    /** Sets gap and gapRate to g(t) and g'(t) in the obstacle's frame (plain arithmetic: this is the hot loop). */
+    /** Sets the gaps and rates at time t in the obstacle's frame (plain arithmetic: this is the hot loop). */
     private void evaluate(double t) {
         double cos = Math.cos(w * t);
         double sin = -Math.sin(w * t); // R(-w t)
@@ -139,18 +220,44 @@ final class RotatingContactSearch {
         double uy = c0MinusPivot.y() + v.y() * t;
         double turnedX = ux * cos - uy * sin;
         double turnedY = ux * sin + uy * cos;
-        double qx = pivot.x() + turnedX;
-        double qy = pivot.y() + turnedY;
+        double relX = pivot.x() + turnedX - ax;
+        double relY = pivot.y() + turnedY - ay;
         // q' = R(-wt) v - w J R(-wt) u, with J (x, y) = (-y, x)
         double rateX = v.x() * cos - v.y() * sin + w * turnedY;
         double rateY = v.x() * sin + v.y() * cos - w * turnedX;
-        double s = abLengthSquared == 0 ? 0
-                : Math.max(0, Math.min(1, ((qx - a.x()) * ab.x() + (qy - a.y()) * ab.y()) / abLengthSquared));
-        double offsetX = qx - a.x() - s * ab.x();
-        double offsetY = qy - a.y() - s * ab.y();
-        double distance = Math.hypot(offsetX, offsetY);
-        gap = distance - contactDistance;
-        // On the core itself the direction is undefined; treating it as "not closing" lets the search move on.
-        gapRate = distance == 0 ? 0 : (offsetX * rateX + offsetY * rateY) / distance;
+        if (wall) {
+            evaluateFace(relX, relY, rateX, rateY);
+        } else {
+            double distance = Math.hypot(relX, relY);
+            gap = distance - contactDistance;
+            // At the centre itself the direction is undefined; treating it as "not closing" lets the search move on.
+            gapRate = distance == 0 ? 0 : (relX * rateX + relY * rateY) / distance;
+            faceGap = gap;
+            faceRate = gapRate;
+        }
+    }
+
+    /** The face's gaps from q - a and q'. */
+    private void evaluateFace(double relX, double relY, double rateX, double rateY) {
+        double along = relX * alongX + relY * alongY;
+        double alongRate = rateX * alongX + rateY * alongY;
+        offset = relY * alongX - relX * alongY; // along the normal (-alongY, alongX)
+        offsetRate = rateY * alongX - rateX * alongY;
+        double beyondRate;
+        if (along < 0) {
+            beyond = -along;
+            beyondRate = -alongRate;
+        } else if (along > length) {
+            beyond = along - length;
+            beyondRate = alongRate;
+        } else {
+            beyond = 0;
+            beyondRate = 0;
+        }
+        faceGap = Math.abs(offset) - contactDistance;
+        faceRate = offset == 0 ? Math.abs(offsetRate) : Math.signum(offset) * offsetRate;
+        double out = Math.max(faceGap, 0);
+        gap = Math.hypot(beyond, out);
+        gapRate = gap == 0 ? 0 : (beyond * beyondRate + out * faceRate) / gap;
     }
 }

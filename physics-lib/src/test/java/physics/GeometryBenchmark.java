@@ -1,55 +1,157 @@
 package physics;
 
-import java.util.function.DoubleSupplier;
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Random;
+import java.util.function.IntToDoubleFunction;
 
 /**
- * A plain micro-benchmark, not a test: {@code gradle :physics-lib:benchmark} prints nanoseconds per call of the
- * main collision and reflection methods on fixed flipper-sized scenes. Numbers depend on the machine and load.
+ * A plain micro-benchmark, not a test: {@code gradle :physics-lib:benchmark} prints nanoseconds per call of every
+ * public collision and reflection method of {@link Geometry}, then the ratio of each rotating method to its static
+ * counterpart on the same scenes. Numbers depend on the machine and its load.
+ * <p>
+ * Each method runs over the same {@value #SCENES} flipper-sized scenes (fixed seed), so the branch predictor
+ * cannot learn one answer. Each figure is the median of {@value #ROUNDS} timed rounds after a warm-up, timed in
+ * the thread's CPU time, so that other processes on a shared machine inflate it less than wall-clock time.
  */
 public final class GeometryBenchmark {
-    private static final int WARM_UP = 200_000;
-    private static final int MEASURED = 1_000_000;
+    private static final int SCENES = 256;
+    private static final long SEED = 20261201L;
+    private static final int ROUNDS = 7;
+    /** Calls per round for the closed forms; the rotating searches get a twentieth of that. */
+    private static final int CALLS = 400_000;
+    private static final double FLIPPER_SPEED = Math.toRadians(1080);
+    private static final ThreadMXBean CPU = ManagementFactory.getThreadMXBean();
     private static double sink;
 
     private GeometryBenchmark() {
     }
 
+    /** One scene: a flipper-like segment and circle turning about the pivot, a ball near them, a second ball. */
+    private record Scene(Vect pivot, LineSegment segment, Circle circle, Circle ball, Vect velocity,
+                         Circle touchingFace, Circle touchingCircle, Circle other, Vect otherVelocity) {
+    }
+
     public static void main(String[] args) {
-        LineSegment flipper = new LineSegment(0, 0, 2, 0);
-        Circle ball = new Circle(1, 1.5, 0.25);
-        Circle far = new Circle(15, 15, 0.25);
-        Vect v = new Vect(0.3, -4);
-        Circle bumper = new Circle(1, -1, 0.5);
-        double w = Math.toRadians(1080);
-        report("timeUntilWallCollision", () -> Geometry.timeUntilWallCollision(flipper, ball, v));
-        report("timeUntilCircleCollision", () -> Geometry.timeUntilCircleCollision(bumper, ball, v));
-        report("timeUntilBallBallCollision", () -> Geometry.timeUntilBallBallCollision(ball, v, bumper, Vect.ZERO));
-        report("reflectWall", () -> Geometry.reflectWall(flipper, v, 0.95).x());
-        report("reflectCircle", () -> Geometry.reflectCircle(bumper.getCenter(), ball.getCenter(), v, 0.95).x());
-        report("reflectBalls", () -> Geometry.reflectBalls(ball.getCenter(), 1, v, bumper.getCenter(), 2,
-                Vect.ZERO).v1.x());
-        report("timeUntilRotatingWallCollision (hit)",
-                () -> Geometry.timeUntilRotatingWallCollision(flipper, Vect.ZERO, w, ball, v));
-        report("timeUntilRotatingWallCollision (out of reach)",
-                () -> Geometry.timeUntilRotatingWallCollision(flipper, Vect.ZERO, w, far, v));
-        report("timeUntilRotatingWallCollision (ball at rest)",
-                () -> Geometry.timeUntilRotatingWallCollision(flipper, Vect.ZERO, w, ball, Vect.ZERO));
-        report("timeUntilRotatingCircleCollision (hit)",
-                () -> Geometry.timeUntilRotatingCircleCollision(new Circle(2, 0, 0.25), Vect.ZERO, w, ball, v));
-        report("reflectRotatingWall", () -> Geometry.reflectRotatingWall(flipper, Vect.ZERO, w,
-                new Circle(1, 0.25, 0.25), v, 0.95).y());
+        List<Scene> scenes = scenes();
+        Scene[] s = scenes.toArray(new Scene[0]);
+        Map<String, Double> ns = new LinkedHashMap<>();
+        double w = FLIPPER_SPEED;
+        // The floor under every figure: the loop, the scene lookup and the call through the lambda.
+        measure(ns, "(loop overhead: one field read)", 1, i -> s[i].velocity.x());
+        measure(ns, "timeUntilWallCollision", 1, i -> Geometry.timeUntilWallCollision(s[i].segment, s[i].ball,
+                s[i].velocity));
+        measure(ns, "timeUntilRotatingWallCollision", 20, i -> Geometry.timeUntilRotatingWallCollision(s[i].segment,
+                s[i].pivot, w, s[i].ball, s[i].velocity));
+        measure(ns, "timeUntilCircleCollision", 1, i -> Geometry.timeUntilCircleCollision(s[i].circle, s[i].ball,
+                s[i].velocity));
+        measure(ns, "timeUntilRotatingCircleCollision", 20, i -> Geometry.timeUntilRotatingCircleCollision(
+                s[i].circle, s[i].pivot, w, s[i].ball, s[i].velocity));
+        measure(ns, "timeUntilCircleCollision (point, roots)", 1, i -> Geometry.timeUntilCircleCollision(
+                s[i].circle, s[i].ball.getCenter(), s[i].velocity).d1);
+        measure(ns, "timeUntilBallBallCollision", 1, i -> Geometry.timeUntilBallBallCollision(s[i].ball,
+                s[i].velocity, s[i].other, s[i].otherVelocity));
+        measure(ns, "reflectWall", 1, i -> Geometry.reflectWall(s[i].segment, s[i].velocity).x());
+        measure(ns, "reflectWall (coefficient)", 1, i -> Geometry.reflectWall(s[i].segment, s[i].velocity, 0.95).x());
+        measure(ns, "reflectRotatingWall", 1, i -> Geometry.reflectRotatingWall(s[i].segment, s[i].pivot, w,
+                s[i].touchingFace, s[i].velocity).x());
+        measure(ns, "reflectRotatingWall (coefficient)", 1, i -> Geometry.reflectRotatingWall(s[i].segment,
+                s[i].pivot, w, s[i].touchingFace, s[i].velocity, 0.95).x());
+        measure(ns, "reflectCircle", 1, i -> Geometry.reflectCircle(s[i].circle.getCenter(),
+                s[i].touchingCircle.getCenter(), s[i].velocity).x());
+        measure(ns, "reflectCircle (coefficient)", 1, i -> Geometry.reflectCircle(s[i].circle.getCenter(),
+                s[i].touchingCircle.getCenter(), s[i].velocity, 0.95).x());
+        measure(ns, "reflectRotatingCircle", 1, i -> Geometry.reflectRotatingCircle(s[i].circle, s[i].pivot, w,
+                s[i].touchingCircle, s[i].velocity).x());
+        measure(ns, "reflectRotatingCircle (coefficient)", 1, i -> Geometry.reflectRotatingCircle(s[i].circle,
+                s[i].pivot, w, s[i].touchingCircle, s[i].velocity, 0.95).x());
+        measure(ns, "reflectBalls", 1, i -> Geometry.reflectBalls(s[i].ball.getCenter(), 1, s[i].velocity,
+                s[i].other.getCenter(), 2, s[i].otherVelocity).v1.x());
+        measure(ns, "applyReflectionCoeff", 1, i -> Geometry.applyReflectionCoeff(s[i].velocity,
+                s[i].otherVelocity, 0.95).x());
+
+        System.out.println();
+        System.out.printf("%-40s %12s%n", "rotating / static", "ratio");
+        ratio(ns, "timeUntilRotatingWallCollision", "timeUntilWallCollision");
+        ratio(ns, "timeUntilRotatingCircleCollision", "timeUntilCircleCollision");
+        ratio(ns, "reflectRotatingWall (coefficient)", "reflectWall (coefficient)");
+        ratio(ns, "reflectRotatingCircle (coefficient)", "reflectCircle (coefficient)");
         System.out.println("(sink " + sink + ")");
     }
 
-    private static void report(String name, DoubleSupplier call) {
-        for (int i = 0; i < WARM_UP; i++) {
-            sink += call.getAsDouble();
+    /**
+     * Balls within reach of a flipper of length 1.5-2.5 L with its pivot at an end, moving at up to 20 L/s
+     * (some at rest); about half of the rotating queries hit within the default foresight.
+     */
+    private static List<Scene> scenes() {
+        Random random = new Random(SEED);
+        List<Scene> scenes = new ArrayList<>();
+        while (scenes.size() < SCENES) {
+            Vect pivot = new Vect(between(random, 0, 20), between(random, 0, 20));
+            Vect along = new Vect(new Angle(between(random, 0, 2 * Math.PI)), between(random, 1.5, 2.5));
+            LineSegment segment = new LineSegment(pivot, pivot.plus(along));
+            Circle circle = new Circle(segment.p2(), 0.25);
+            double radius = 0.25;
+            Vect centre = pivot.plus(new Vect(new Angle(between(random, 0, 2 * Math.PI)), between(random, 0.8, 3)));
+            Circle ball = new Circle(centre, radius);
+            if (segmentDistance(segment, centre) <= radius || centre.distanceSquared(circle.getCenter()) <= 0.25) {
+                continue; // a ball that starts clear of both
+            }
+            Vect velocity = random.nextInt(8) == 0 ? Vect.ZERO
+                    : new Vect(new Angle(between(random, 0, 2 * Math.PI)), between(random, 1, 20));
+            Vect foot = pivot.plus(along.times(between(random, 0.1, 0.9)));
+            Vect normal = new Vect(-along.y(), along.x()).unitSize().times(random.nextBoolean() ? radius : -radius);
+            Circle touchingFace = new Circle(foot.plus(normal), radius);
+            Vect outward = new Vect(new Angle(between(random, 0, 2 * Math.PI)));
+            Circle touchingCircle = new Circle(circle.getCenter().plus(outward.times(0.5)), radius);
+            Circle other = new Circle(centre.plus(new Vect(new Angle(between(random, 0, 2 * Math.PI)),
+                    between(random, 0.5, 6))), radius);
+            Vect otherVelocity = new Vect(new Angle(between(random, 0, 2 * Math.PI)), between(random, 0, 20));
+            scenes.add(new Scene(pivot, segment, circle, ball, velocity, touchingFace, touchingCircle, other,
+                    otherVelocity));
         }
-        int calls = name.contains("Rotating") && name.contains("time") ? MEASURED / 20 : MEASURED;
-        long start = System.nanoTime();
+        return scenes;
+    }
+
+    private static double segmentDistance(LineSegment segment, Vect point) {
+        Vect dir = segment.p2().minus(segment.p1());
+        double s = Math.max(0, Math.min(1, point.minus(segment.p1()).dot(dir) / dir.dot(dir)));
+        return Math.sqrt(point.distanceSquared(segment.p1().plus(dir.times(s))));
+    }
+
+    private static double between(Random random, double low, double high) {
+        return low + (high - low) * random.nextDouble();
+    }
+
+    private static void measure(Map<String, Double> ns, String name, int slowdown, IntToDoubleFunction call) {
+        int calls = CALLS / slowdown;
+        double[] rounds = new double[ROUNDS];
+        run(call, calls); // warm-up
+        for (int round = 0; round < ROUNDS; round++) {
+            long start = CPU.getCurrentThreadCpuTime();
+            run(call, calls);
+            rounds[round] = (CPU.getCurrentThreadCpuTime() - start) / (double) calls;
+        }
+        Arrays.sort(rounds);
+        double median = rounds[ROUNDS / 2];
+        ns.put(name, median);
+        System.out.printf("%-40s %9.1f ns/call%n", name, median);
+    }
+
+    private static void run(IntToDoubleFunction call, int calls) {
+        double sum = 0;
         for (int i = 0; i < calls; i++) {
-            sink += call.getAsDouble();
+            sum += call.applyAsDouble(i & (SCENES - 1));
         }
-        System.out.printf("%-48s %10.1f ns/call%n", name, (System.nanoTime() - start) / (double) calls);
+        sink += sum;
+    }
+
+    private static void ratio(Map<String, Double> ns, String rotating, String fixed) {
+        System.out.printf("%-40s %11.1fx%n", rotating, ns.get(rotating) / ns.get(fixed));
     }
 }

@@ -43,15 +43,23 @@ class PitfallTest {
                         radius);
                 gap = WorldGap.wall(FLIPPER, Vect.ZERO, FLIPPER_SPEED, ball, velocity);
             } while (gap.at(0) <= 0);
-            double t = Geometry.timeUntilRotatingWallCollision(FLIPPER, Vect.ZERO, FLIPPER_SPEED, ball, velocity);
+            // The face and a zero-radius circle at the tip together: the segment as a flipper is built.
+            double t = Math.min(
+                    Geometry.timeUntilRotatingWallCollision(FLIPPER, Vect.ZERO, FLIPPER_SPEED, ball, velocity),
+                    Geometry.timeUntilRotatingCircleCollision(new Circle(FLIPPER.p2(), 0), Vect.ZERO, FLIPPER_SPEED,
+                            ball, velocity));
             RotatingOracleTest.assertAgreesWithOracle(seed, gap, t);
         }
 
         @Test
         void tipContactWithTheFootOffTheSegment() {
+            // The foot is off the segment at contact: not the face's (as for the static face), the tip circle's.
             double angle = Math.atan2(1, 2.2) - Math.acos((5.84 + 4 - 0.25) / (4 * Math.sqrt(5.84)));
-            double t = Geometry.timeUntilRotatingWallCollision(FLIPPER, Vect.ZERO, FLIPPER_SPEED,
-                    new Circle(2.2, 1, 0.5), Vect.ZERO);
+            Circle ball = new Circle(2.2, 1, 0.5);
+            assertThat(Geometry.timeUntilRotatingWallCollision(FLIPPER, Vect.ZERO, FLIPPER_SPEED, ball, Vect.ZERO))
+                    .isEqualTo(INF);
+            double t = Geometry.timeUntilRotatingCircleCollision(new Circle(2, 0, 0), Vect.ZERO, FLIPPER_SPEED, ball,
+                    Vect.ZERO);
             assertThat(t).isCloseTo(angle / FLIPPER_SPEED, within(1e-10));
         }
     }
@@ -345,18 +353,32 @@ class PitfallTest {
     class Pitfall09ReflectOffARotatingSegmentAtItsEnd {
         @Test
         void endContactIsAnErrorThatNamesTheCircleMethod() {
-            // Ball touching the tip (2, 0) from beyond it: the foot of the perpendicular is off the segment.
+            // Ball touching the tip (2, 0) from beyond it: the foot of the perpendicular is 0.3 L off the segment.
             Circle atTip = new Circle(2.3, 0.4, 0.5);
             assertThatThrownBy(() -> Geometry.reflectRotatingWall(FLIPPER, Vect.ZERO, FLIPPER_SPEED, atTip, Vect.ZERO))
-                    .isInstanceOf(IllegalArgumentException.class).hasMessageContaining("end")
+                    .isInstanceOf(IllegalArgumentException.class).hasMessageContaining("beyond an end")
                     .hasMessageContaining("reflectRotatingCircle");
-            // Foot exactly at the end, or within 1e-9 of it: still an end contact.
-            assertThatThrownBy(() -> Geometry.reflectRotatingWall(FLIPPER, Vect.ZERO, 1, new Circle(2, 0.5, 0.5),
+            assertThatThrownBy(() -> Geometry.reflectRotatingWall(FLIPPER, Vect.ZERO, 1, new Circle(2 + 1e-5, 0.5, 0.5),
                     Vect.ZERO)).isInstanceOf(IllegalArgumentException.class);
-            assertThatThrownBy(() -> Geometry.reflectRotatingWall(FLIPPER, Vect.ZERO, 1,
-                    new Circle(2 - 5e-10, 0.5, 0.5), Vect.ZERO)).isInstanceOf(IllegalArgumentException.class);
-            assertThatThrownBy(() -> Geometry.reflectRotatingWall(FLIPPER, Vect.ZERO, 1, new Circle(0, 0.5, 0.5),
+            assertThatThrownBy(() -> Geometry.reflectRotatingWall(FLIPPER, Vect.ZERO, 1, new Circle(-1e-5, 0.5, 0.5),
                     Vect.ZERO)).isInstanceOf(IllegalArgumentException.class);
+        }
+
+        @Test
+        void aBallClearOfTheFaceIsAnErrorThatSaysSo() {
+            assertThatThrownBy(() -> Geometry.reflectRotatingWall(FLIPPER, Vect.ZERO, 1, new Circle(1, 0.6, 0.5),
+                    Vect.ZERO)).isInstanceOf(IllegalArgumentException.class).hasMessageContaining("clear of the face");
+        }
+
+        @Test
+        void aFaceContactAtOrWithinRoundingOfAnEndIsReflectedOffTheFace() {
+            // The face includes its ends, as timeUntilWallCollision's does: the surface at (x, 0) moves at
+            // 1 x (x, 0) = (0, x), so a ball at rest leaves at (0, 2x).
+            for (double x : new double[] {2, 2 - 5e-10, 2 + 5e-10, 2 + 1e-7, 0, -1e-7}) {
+                Vect out = Geometry.reflectRotatingWall(FLIPPER, Vect.ZERO, 1, new Circle(x, 0.5, 0.5), Vect.ZERO);
+                assertThat(out.x()).as("x = %s", x).isCloseTo(0, within(1e-12));
+                assertThat(out.y()).as("x = %s", x).isCloseTo(2 * x, within(1e-12));
+            }
         }
 
         @Test

@@ -56,10 +56,13 @@ class RotatingGeometryTest {
         @Test
         void glancingBlowFromAMovingBall() {
             // Still segment, ball falling on x = 2.3, beyond the end: it touches the end (2, 0) when
-            // 0.3^2 + y^2 = 0.5^2, at y = 0.4, after falling 2.6 L at 4 L/s.
-            double t = Geometry.timeUntilRotatingWallCollision(flipper, Vect.ZERO, 0, new Circle(2.3, 3, 0.5),
-                    new Vect(0, -4));
-            assertThat(t).isCloseTo(0.65, within(TIME));
+            // 0.3^2 + y^2 = 0.5^2, at y = 0.4, after falling 2.6 L at 4 L/s. That is the end circle's contact;
+            // the face is never touched (as for timeUntilWallCollision).
+            Circle ball = new Circle(2.3, 3, 0.5);
+            Vect down = new Vect(0, -4);
+            assertThat(Geometry.timeUntilRotatingWallCollision(flipper, Vect.ZERO, 0, ball, down)).isEqualTo(INF);
+            assertThat(Geometry.timeUntilRotatingCircleCollision(new Circle(2, 0, 0), Vect.ZERO, 0, ball, down))
+                    .isCloseTo(0.65, within(TIME));
         }
 
         @Test
@@ -91,9 +94,24 @@ class RotatingGeometryTest {
             // The tip (2 cos a, 2 sin a) reaches distance 0.5 from (2.2, 1) when cos(a - atan2(1, 2.2)) =
             // (5.84 + 4 - 0.25) / (4 sqrt(5.84)); the foot of the perpendicular is then off the segment.
             double angle = Math.atan2(1, 2.2) - Math.acos((5.84 + 4 - 0.25) / (4 * Math.sqrt(5.84)));
-            double t = Geometry.timeUntilRotatingWallCollision(flipper, Vect.ZERO, QUARTER_TURN_PER_SECOND,
-                    new Circle(2.2, 1, 0.5), Vect.ZERO);
+            Circle ball = new Circle(2.2, 1, 0.5);
+            assertThat(Geometry.timeUntilRotatingWallCollision(flipper, Vect.ZERO, QUARTER_TURN_PER_SECOND, ball,
+                    Vect.ZERO)).as("the face: the foot is off it").isEqualTo(INF);
+            double t = Geometry.timeUntilRotatingCircleCollision(new Circle(2, 0, 0), Vect.ZERO,
+                    QUARTER_TURN_PER_SECOND, ball, Vect.ZERO);
             assertThat(t).isCloseTo(angle / QUARTER_TURN_PER_SECOND, within(TIME));
+        }
+
+        @Test
+        void aBallRunningInOverTheTipMeetsTheFaceOnlyWhenItComesDownOntoIt() {
+            // Still segment; the ball moves along y = 0.3 (< its radius 0.5) from beyond the tip: it runs into the
+            // tip, never onto the face (static: the same). Moving down from (1, 3) it meets the face at y = 0.5.
+            assertThat(Geometry.timeUntilRotatingWallCollision(flipper, Vect.ZERO, 0, new Circle(4, 0.3, 0.5),
+                    new Vect(-2, 0))).isEqualTo(INF);
+            assertThat(Geometry.timeUntilRotatingWallCollision(flipper, Vect.ZERO, 1e-3, new Circle(4, 0.3, 0.5),
+                    new Vect(-2, 0))).as("turning slowly").isEqualTo(INF);
+            assertThat(Geometry.timeUntilRotatingWallCollision(flipper, Vect.ZERO, 0, new Circle(1, 3, 0.5),
+                    new Vect(0, -5))).isCloseTo(0.5, within(TIME));
         }
     }
 

@@ -30,24 +30,95 @@ class RotatingOracleTest {
         return r.between(0, 1) < 0.2 ? Vect.ZERO : r.vector(0, 30);
     }
 
+    /** A flipper-like segment turning about a pivot at or near one end, and a ball that starts clear of it. */
+    private record WallScene(LineSegment segment, Vect pivot, double w, Circle ball, Vect velocity, WorldGap gap) {
+        static WallScene random(RandomScene r) {
+            Vect pivot = r.point(5);
+            Vect p1 = r.coin() ? pivot : pivot.plus(r.vector(0, 0.5));
+            LineSegment segment = new LineSegment(p1, p1.plus(r.vector(1, 2.5)));
+            double w = angularVelocity(r);
+            Vect velocity = ballVelocity(r);
+            WorldGap gap;
+            Circle ball;
+            do { // a ball that starts clear of the segment
+                ball = new Circle(pivot.plus(r.vector(0.3, 3.5)), r.between(0.1, 0.5));
+                gap = WorldGap.wall(segment, pivot, w, ball, velocity);
+            } while (gap.at(0) <= 0);
+            return new WallScene(segment, pivot, w, ball, velocity, gap);
+        }
+
+        double face() {
+            return Geometry.timeUntilRotatingWallCollision(segment, pivot, w, ball, velocity);
+        }
+
+        double end(Vect end) {
+            return Geometry.timeUntilRotatingCircleCollision(new Circle(end, 0), pivot, w, ball, velocity);
+        }
+    }
+
+    /** The face and the zero-radius circles at the ends together find every contact of the closed segment. */
     @ParameterizedTest(name = "seed {0}")
     @MethodSource("seeds")
     void rotatingWallContactIsNeverLaterThanTheOracleAndIsExact(long seed) {
-        RandomScene r = new RandomScene(seed);
-        Vect pivot = r.point(5);
-        Vect p1 = r.coin() ? pivot : pivot.plus(r.vector(0, 0.5));
-        LineSegment segment = new LineSegment(p1, p1.plus(r.vector(1, 2.5)));
-        double w = angularVelocity(r);
-        Vect velocity = ballVelocity(r);
-        WorldGap gap;
-        Circle ball;
-        do { // a ball that starts clear of the segment
-            ball = new Circle(pivot.plus(r.vector(0.3, 3.5)), r.between(0.1, 0.5));
-            gap = WorldGap.wall(segment, pivot, w, ball, velocity);
-        } while (gap.at(0) <= 0);
+        WallScene scene = WallScene.random(new RandomScene(seed));
+        double t = Math.min(scene.face(), Math.min(scene.end(scene.segment.p1()), scene.end(scene.segment.p2())));
+        assertAgreesWithOracle(seed, scene.gap, t);
+    }
 
-        double t = Geometry.timeUntilRotatingWallCollision(segment, pivot, w, ball, velocity);
-        assertAgreesWithOracle(seed, gap, t);
+    /** The face alone: its contacts are the oracle's face contacts, never later, and lie on the face. */
+    @ParameterizedTest(name = "seed {0}")
+    @MethodSource("seeds")
+    void rotatingWallFindsTheFaceContactsOfTheOracleAndOnlyThose(long seed) {
+        WallScene scene = WallScene.random(new RandomScene(seed));
+        double t = scene.face();
+        double oracle = scene.gap.firstFaceContact(FORESIGHT);
+        if (oracle < Double.POSITIVE_INFINITY) {
+            assertThat(t).as("seed %d: oracle face contact at %s must not be missed or reported late", seed, oracle)
+                    .isLessThanOrEqualTo(oracle + CONTACT);
+        }
+        if (t < Double.POSITIVE_INFINITY) {
+            assertThat(t).as("seed %d: inside the foresight window", seed).isBetween(0.0, FORESIGHT);
+            assertThat(Math.abs(scene.gap.faceGap(t))).as("seed %d: face gap at the reported time %s", seed, t)
+                    .isLessThanOrEqualTo(CONTACT);
+            assertThat(scene.gap.footBeyond(t)).as("seed %d: foot beyond the ends at %s", seed, t)
+                    .isLessThanOrEqualTo(CONTACT);
+        }
+    }
+
+    static LongStream manySeeds() {
+        return RandomScene.seeds(1000);
+    }
+
+    /**
+     * Time, then reflect, as a program written for the API does: every contact the face method reports is one that
+     * reflectRotatingWall reflects, also when it lies within rounding of an end. Half the balls start near an end,
+     * where such contacts are. The reflected velocity leaves the face, relative to its moving surface.
+     */
+    @ParameterizedTest(name = "seed {0}")
+    @MethodSource("manySeeds")
+    void everyReportedFaceContactReflects(long seed) {
+        RandomScene r = new RandomScene(seed);
+        WallScene scene = WallScene.random(r);
+        Circle ball = scene.ball;
+        if (r.coin()) { // near an end instead
+            Vect end = r.coin() ? scene.segment.p1() : scene.segment.p2();
+            do {
+                ball = new Circle(end.plus(r.vector(ball.getRadius(), ball.getRadius() + 0.5)), ball.getRadius());
+            } while (WorldGap.wall(scene.segment, scene.pivot, scene.w, ball, scene.velocity).at(0) <= 0);
+        }
+        double t = Geometry.timeUntilRotatingWallCollision(scene.segment, scene.pivot, scene.w, ball, scene.velocity);
+        if (t == Double.POSITIVE_INFINITY) {
+            return;
+        }
+        LineSegment then = Geometry.rotateAround(scene.segment, scene.pivot, new Angle(scene.w * t));
+        Circle ballThen = new Circle(ball.getCenter().plus(scene.velocity.times(t)), ball.getRadius());
+        Vect out = Geometry.reflectRotatingWall(then, scene.pivot, scene.w, ballThen, scene.velocity);
+        Vect foot = Geometry.perpendicularPointWholeLine(then, ballThen.getCenter());
+        Vect arm = foot.minus(scene.pivot);
+        Vect surface = new Vect(-arm.y(), arm.x()).times(scene.w);
+        Vect away = ballThen.getCenter().minus(foot);
+        assertThat(out.minus(surface).dot(away)).as("seed %d: leaves the face at %s", seed, t)
+                .isGreaterThanOrEqualTo(-1e-12 * (1 + scene.velocity.length() + surface.length()));
     }
 
     @ParameterizedTest(name = "seed {0}")

@@ -57,6 +57,74 @@ final class WorldGap {
         return Math.hypot(cx - ax - s * dx, cy - ay - s * dy) - ball.getRadius();
     }
 
+    /**
+     * For a wall: how far the foot of the perpendicular from the ball's centre lies beyond the nearer end of the
+     * turned segment at time t (0 when it lies on the segment), and, in {@link #faceGap}, the ball's distance from
+     * the segment's line minus its radius.
+     */
+    double footBeyond(double t) {
+        return face(t)[0];
+    }
+
+    double faceGap(double t) {
+        return face(t)[1];
+    }
+
+    private double[] face(double t) {
+        double cos = Math.cos(w * t);
+        double sin = Math.sin(w * t);
+        double cx = ball.getCenter().x() + velocity.x() * t;
+        double cy = ball.getCenter().y() + velocity.y() * t;
+        double ax = turnedX(segment.p1(), cos, sin);
+        double ay = turnedY(segment.p1(), cos, sin);
+        double dx = turnedX(segment.p2(), cos, sin) - ax;
+        double dy = turnedY(segment.p2(), cos, sin) - ay;
+        double length = Math.hypot(dx, dy);
+        double along = ((cx - ax) * dx + (cy - ay) * dy) / length;
+        double across = ((cy - ay) * dx - (cx - ax) * dy) / length;
+        return new double[] {Math.max(0, Math.max(-along, along - length)), Math.abs(across) - ball.getRadius()};
+    }
+
+    /** Whether the ball's centre is where a face contact leads: foot on the segment, within r of its line. */
+    private boolean onFace(double t) {
+        double[] face = face(t);
+        return face[0] == 0 && face[1] <= 0;
+    }
+
+    /**
+     * The first face contact in [0, horizon], the meaning of timeUntilWallCollision turning: the first sampled
+     * time at which the centre has come onto the face region over its long side (not over an end, which is an
+     * end contact), refined by bisection; infinity if none. The ball must start off the face region.
+     */
+    double firstFaceContact(double horizon) {
+        double previous = 0;
+        for (int i = 1; i <= SAMPLES; i++) {
+            double t = horizon * i / SAMPLES;
+            if (onFace(t)) {
+                double lo = previous;
+                double hi = t;
+                for (int k = 0; k < 60; k++) {
+                    double mid = 0.5 * (lo + hi);
+                    if (onFace(mid)) {
+                        hi = mid;
+                    } else {
+                        lo = mid;
+                    }
+                }
+                if (faceGap(lo) > 0) {
+                    return hi; // came in over the long side
+                }
+                // Came in over an end: skip the samples it stays on the face region.
+                while (i < SAMPLES && onFace(horizon * (i + 1) / SAMPLES)) {
+                    i++;
+                }
+                t = horizon * i / SAMPLES;
+            }
+            previous = t;
+        }
+        return Double.POSITIVE_INFINITY;
+    }
+
     private double turnedX(Vect p, double cos, double sin) {
         return pivot.x() + (p.x() - pivot.x()) * cos - (p.y() - pivot.y()) * sin;
     }

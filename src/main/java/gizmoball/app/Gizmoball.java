@@ -204,6 +204,11 @@ public final class Gizmoball {
         }
 
         @Override
+        public void openSample(String name) {
+            files.openSample(name);
+        }
+
+        @Override
         public boolean running() {
             return loop.isRunning();
         }

@@ -5,6 +5,7 @@ import gizmoball.boardfile.BoardFileException;
 import gizmoball.boardfile.BoardFiles;
 import gizmoball.boardfile.FileErrors;
 import gizmoball.boardfile.LoadResult;
+import gizmoball.boardfile.SampleBoards;
 import gizmoball.session.GameSession;
 import gizmoball.model.Board;
 import gizmoball.view.LoadProblemsDialog;
@@ -103,6 +104,29 @@ public final class BoardFileCommands {
         }
         show(result.board(), file, bad.size(), "Loaded " + name + " without its " + lines(bad.size()));
         return true;
+    }
+
+    /**
+     * Opens one of the sample boards inside the game as a new, untitled board: it has no file of its own,
+     * so Save asks where to put it. Unsaved changes are asked about first.
+     */
+    public boolean openSample(String name) {
+        if (!confirmDiscard("open the sample board " + name)) {
+            return false;
+        }
+        Optional<String> text = SampleBoards.text(name);
+        if (text.isEmpty()) {
+            error("there is no sample board " + name + " inside this build of the game");
+            return false;
+        }
+        try {
+            show(BoardFiles.load(name, text.get()), null, 0, "Opened the sample board " + name
+                    + "; Save As keeps a copy");
+            return true;
+        } catch (BoardFileException e) {
+            error("the sample board " + name + " does not load: " + e.getMessage());
+            return false;
+        }
     }
 
     /**

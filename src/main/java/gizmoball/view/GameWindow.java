@@ -1,5 +1,6 @@
 package gizmoball.view;
 
+import gizmoball.boardfile.SampleBoards;
 import gizmoball.session.GameSession;
 import gizmoball.session.Mode;
 import java.awt.BorderLayout;
@@ -58,6 +59,9 @@ public final class GameWindow extends JFrame {
         void reset();
 
         void setMode(Mode mode);
+
+        /** Opens a sample board inside the game (File > Sample boards). */
+        void openSample(String name);
 
         boolean running();
 
@@ -121,6 +125,7 @@ public final class GameWindow extends JFrame {
         add(toolBar, BorderLayout.NORTH);
         add(centre, BorderLayout.CENTER);
         add(statusLine, BorderLayout.SOUTH);
+        setIconImages(AppIcon.windowImages());
         pack();
         // Centred on the screen; the window's remembered place, if any, is restored over this.
         setLocationRelativeTo(null);
@@ -210,6 +215,7 @@ public final class GameWindow extends JFrame {
         for (Action a : new Action[] {newBoard, open, save, saveAs, reload}) {
             file.add(a);
         }
+        file.add(samplesMenu());
         file.addSeparator();
         file.add(quit);
         JMenu game = new JMenu("Game");
@@ -235,6 +241,16 @@ public final class GameWindow extends JFrame {
         menus.add(mode);
         menus.add(help);
         setJMenuBar(menus);
+    }
+
+    /** File > Sample boards: the boards that ship inside the game, for a player with no boards/ folder near. */
+    private JMenu samplesMenu() {
+        JMenu samples = new JMenu("Sample boards");
+        for (String name : SampleBoards.names()) {
+            samples.add(command(name, () -> commands.openSample(name)));
+        }
+        samples.setEnabled(samples.getItemCount() > 0);
+        return samples;
     }
 
     private void buildToolBar() {
