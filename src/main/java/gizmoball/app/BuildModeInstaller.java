@@ -34,7 +34,7 @@ public final class BuildModeInstaller {
         BoardPanel panel = window.boardPanel();
         BooleanSupplier building = () -> session.mode() == Mode.BUILD;
 
-        Editor controller = new Editor(session.board());
+        Editor controller = Editor.of(session.board());
         controller.setMessageSink(window.statusLine()::showMessage);
         controller.addEditListener(session::markModified);
         controller.addStateListener(panel::repaint);
@@ -43,7 +43,7 @@ public final class BuildModeInstaller {
         controller.addStateListener(cursor);
 
         PalettePanel palette = new PalettePanel(controller);
-        PropertiesPanel properties = new PropertiesPanel(controller);
+        PropertiesPanel properties = new PropertiesPanel(controller, panel::requestFocusInWindow);
         window.setSidePanels(palette, properties);
 
         EditMenu editMenu = new EditMenu(controller, window, building);

@@ -5,7 +5,7 @@ import java.util.OptionalDouble;
 import java.util.regex.Pattern;
 
 /** Reads and writes the numbers of a board file. */
-final class Decimals {
+public final class Decimals {
     /*
      * Plain decimal notation with an optional exponent. Double.parseDouble alone would also take "NaN",
      * "Infinity", hexadecimal and a trailing 'd' or 'f', none of which another implementation could read back.
@@ -17,7 +17,7 @@ final class Decimals {
     }
 
     /** The finite value of a decimal word, or empty if the word is not one. */
-    static OptionalDouble parse(String word) {
+    public static OptionalDouble parse(String word) {
         if (!DECIMAL.matcher(word).matches()) {
             return OptionalDouble.empty();
         }

@@ -1,5 +1,6 @@
 package gizmoball.editor;
 
+import gizmoball.boardfile.KeyCodes;
 import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
@@ -7,19 +8,20 @@ import gizmoball.model.Gizmo;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
-import physics.Vect;
-
 import java.awt.event.KeyEvent;
 import java.util.ArrayList;
 import java.util.Comparator;
+import java.util.EnumMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
-import java.util.OptionalDouble;
 import java.util.function.Consumer;
+import physics.Vect;
 
 /**
  * The board editor without Swing: pointer and key events in board coordinates (L) come in, board editing
- * operations go out. Every change of the board goes through {@link Board}'s editing operations (the same ones
+ * operations go out. Each tool's handling is its own {@link ToolHandler}; what a tool has half done is one
+ * {@link PendingStep}. Every change of the board goes through {@link Board}'s editing operations (the same ones
  * the file loader uses) inside the {@link EditHistory}, so the editor can build only boards the loader accepts,
  * and every edit can be undone. A refusal never escapes as an exception: its message goes to the status line.
  */
@@ -32,42 +34,38 @@ public final class Editor {
     static final double WALL_BAND = 0.25;
     /** Dragging 1 L while placing a ball gives it 10 L/s: a board-wide drag is about the launch speed. */
     public static final double VELOCITY_PER_DRAG = 10;
-    /** A Select press that moves less than this is a click, not a move. */
+    /** A press that moves less than this is a click, not a drag. */
     static final double DRAG_THRESHOLD = 0.1;
 
     private final Board board;
     private final EditHistory history;
     private final NameGenerator names;
+    private final Map<Tool, ToolHandler> handlers = new EnumMap<>(Tool.class);
     private final List<Runnable> stateListeners = new ArrayList<>();
     private final List<Runnable> editListeners = new ArrayList<>();
     private Consumer<String> messages = message -> { };
 
     private Tool tool = Tool.SELECT;
     private String selected;
+    private PendingStep step = PendingStep.NONE;
     private Preview preview;
-    private Gesture gesture;
-    private String connectSource;
-    private String keyGizmo;
-    private Integer pendingKey;
     private Vect pointer;
 
-    /** A press that is not finished yet: what the following drags and the release act on. */
-    private sealed interface Gesture {
-        record AbsorberDrag(int x0, int y0) implements Gesture { }
-        record BallDrag(double x, double y, double pressX, double pressY) implements Gesture { }
-        record GizmoMove(Gizmo gizmo, int grabDx, int grabDy) implements Gesture { }
-        record BallMove(Ball ball, double pressX, double pressY) implements Gesture { }
-    }
-
-    public Editor(Board board) {
+    private Editor(Board board) {
         this.board = board;
         this.history = new EditHistory(board);
         this.names = new NameGenerator(board);
+    }
+
+    /** An editor of {@code board}, with nothing selected and the Select tool. */
+    public static Editor of(Board board) {
+        Editor editor = new Editor(board);
         // Another board was opened: half-done steps and the selection belonged to the old one.
-        history.addResetListener(() -> {
-            selected = null;
-            cancel();
+        editor.history.addResetListener(() -> {
+            editor.selected = null;
+            editor.cancel();
         });
+        return editor;
     }
 
     public Board board() {
@@ -76,6 +74,11 @@ public final class Editor {
 
     public EditHistory history() {
         return history;
+    }
+
+    /** Tells the player something about the editing (a view's own refusal, e.g. a field that is no number). */
+    public void tell(String message) {
+        say(message);
     }
 
     /** Where refusals and hints go (the status line). */
@@ -88,7 +91,7 @@ public final class Editor {
         editListeners.add(listener);
     }
 
-    /** Called whenever tool, selection, preview or a pending step changes (to repaint overlays and panels). */
+    /** Called whenever tool, selection, preview or the pending step changes (to repaint overlays and panels). */
     public void addStateListener(Runnable listener) {
         stateListeners.add(listener);
     }
@@ -97,6 +100,11 @@ public final class Editor {
 
     public Tool tool() {
         return tool;
+    }
+
+    /** What the current tool has half done. */
+    public PendingStep step() {
+        return step;
     }
 
     /** Name of the selected gizmo or ball, or {@link Board#OUTER_WALLS}; empty if nothing (still) exists. */
@@ -123,7 +131,7 @@ public final class Editor {
 
     /** The source chosen by the first click of Connect or Disconnect, waiting for the target. */
     public Optional<String> connectSource() {
-        return Optional.ofNullable(connectSource);
+        return step instanceof PendingStep.ConnectingFrom c ? Optional.of(c.source()) : Optional.empty();
     }
 
     /** Where the pointer is over the board view, in L; empty when it is outside the view. */
@@ -136,35 +144,27 @@ public final class Editor {
      * the view can highlight it before the click; empty for the placing tools or over nothing.
      */
     public Optional<String> target() {
-        if (pointer == null || gesture != null) {
+        if (pointer == null || step.isGesture()) {
             return Optional.empty();
         }
-        double x = pointer.x();
-        double y = pointer.y();
-        Optional<String> gizmo = gizmoAt(x, y).map(Gizmo::name);
-        return switch (tool) {
-            case SELECT, DELETE -> ballNear(x, y).map(Ball::name).or(() -> gizmo);
-            case ROTATE, KEY_CONNECT, KEY_DISCONNECT -> gizmo;
-            case CONNECT, DISCONNECT -> gizmo.or(() -> isWall(x, y) ? Optional.of(Board.OUTER_WALLS)
-                    : Optional.empty());
-            default -> Optional.empty();
-        };
+        return handler().target(pointer.x(), pointer.y());
     }
 
     /** The gizmo Key Connect or Key Disconnect has, while it waits for a key to be pressed. */
     public Optional<String> awaitingKeyFor() {
-        return pendingKey == null ? Optional.ofNullable(keyGizmo) : Optional.empty();
+        return step instanceof PendingStep.AwaitingKey k ? Optional.of(k.gizmo()) : Optional.empty();
     }
 
-    /** True after Key Connect has its gizmo and key and waits for {@link #chooseEdge}. */
+    /** True after Key Connect has its gizmo and key and waits for {@link #chooseEdges}. */
     public boolean awaitingEdge() {
-        return pendingKey != null;
+        return step instanceof PendingStep.AwaitingEdge;
     }
 
     // ---- commands ----
 
     public void setTool(Tool newTool) {
-        resetSteps();
+        step = PendingStep.NONE;
+        preview = null;
         tool = newTool;
         say(newTool.label() + ": " + newTool.hint());
         stateChanged();
@@ -172,7 +172,8 @@ public final class Editor {
 
     /** Drops a half-done gesture or two-step command (Escape, switching to play). */
     public void cancel() {
-        resetSteps();
+        step = PendingStep.NONE;
+        preview = null;
         stateChanged();
     }
 
@@ -182,7 +183,7 @@ public final class Editor {
     }
 
     public boolean undo() {
-        resetSteps();
+        cancelQuietly();
         Optional<String> what = history.undoable();
         if (!history.undo()) {
             say("Nothing to undo");
@@ -194,7 +195,7 @@ public final class Editor {
     }
 
     public boolean redo() {
-        resetSteps();
+        cancelQuietly();
         Optional<String> what = history.redoable();
         if (!history.redo()) {
             say("Nothing to redo");
@@ -207,7 +208,7 @@ public final class Editor {
 
     /** Empties the board and resets gravity and friction; undoable (the view asks for confirmation first). */
     public boolean clearBoard() {
-        resetSteps();
+        cancelQuietly();
         selected = null;
         return edit("Board cleared", Board::clear);
     }
@@ -227,60 +228,39 @@ public final class Editor {
             say("Select a gizmo to rotate");
             return false;
         }
-        return edit("Rotated " + gizmo.get().name(), b -> b.rotate(gizmo.get().name()));
+        return rotate(gizmo.get());
     }
 
-    /** Sets gravity and friction together from text fields (one undo step); unchanged values are no edit. */
-    public boolean setConstants(String gravityText, String muText, String mu2Text) {
-        OptionalDouble g = number("Gravity", gravityText);
-        OptionalDouble mu = g.isPresent() ? number("mu", muText) : OptionalDouble.empty();
-        OptionalDouble mu2 = mu.isPresent() ? number("mu2", mu2Text) : OptionalDouble.empty();
-        if (mu2.isEmpty()) {
-            return false;
-        }
-        double gv = g.getAsDouble();
-        double muv = mu.getAsDouble();
-        double mu2v = mu2.getAsDouble();
-        if (gv == board.gravity() && muv == board.mu() && mu2v == board.mu2()) {
+    /** Sets gravity and friction together (one undo step); unchanged values are no edit. */
+    public boolean setConstants(double gravity, double mu, double mu2) {
+        if (gravity == board.gravity() && mu == board.mu() && mu2 == board.mu2()) {
             return true;
         }
-        return edit("Gravity " + gv + " L/s\u00b2, friction mu " + muv + "/s, mu2 " + mu2v + "/L", b -> {
-            b.setGravity(gv);
-            b.setFriction(muv, mu2v);
+        return edit("Gravity " + gravity + " L/s\u00b2, friction mu " + mu + "/s, mu2 " + mu2 + "/L", b -> {
+            b.setGravity(gravity);
+            b.setFriction(mu, mu2);
         });
     }
 
-    /**
-     * Sets the selected ball's centre and velocity from text fields. The board has no "set velocity" operation,
-     * so a velocity change re-adds the ball under the same name; the history makes the pair atomic.
-     */
-    public boolean setBall(String name, String xText, String yText, String vxText, String vyText) {
+    /** Sets a ball's centre and velocity (one undo step); the ball keeps its place in the board's order. */
+    public boolean setBall(String name, double x, double y, double vx, double vy) {
         Optional<Ball> ball = board.ball(name);
         if (ball.isEmpty()) {
             say("No ball named " + name);
             return false;
         }
-        double[] v = new double[4];
-        String[] labels = {"x", "y", "vx", "vy"};
-        String[] texts = {xText, yText, vxText, vyText};
-        for (int i = 0; i < v.length; i++) {
-            OptionalDouble d = number(labels[i], texts[i]);
-            if (d.isEmpty()) {
-                return false;
-            }
-            v[i] = d.getAsDouble();
-        }
         Ball b0 = ball.get();
-        boolean sameVelocity = b0.velocity().x() == v[2] && b0.velocity().y() == v[3];
-        if (sameVelocity && b0.position().x() == v[0] && b0.position().y() == v[1]) {
+        boolean samePlace = b0.position().x() == x && b0.position().y() == y;
+        boolean sameVelocity = b0.velocity().x() == vx && b0.velocity().y() == vy;
+        if (samePlace && sameVelocity) {
             return true;
         }
         return edit("Ball " + name + " updated", b -> {
-            if (sameVelocity) {
-                b.moveBall(name, v[0], v[1]);
-            } else {
-                b.delete(name);
-                b.addBall(name, v[0], v[1], v[2], v[3]);
+            if (!samePlace) {
+                b.moveBall(name, x, y);
+            }
+            if (!sameVelocity) {
+                b.setBallVelocity(name, vx, vy);
             }
         });
     }
@@ -292,8 +272,30 @@ public final class Editor {
 
     /** Removes one key binding (from the properties panel's list). */
     public boolean unbind(KeyBinding binding) {
-        return edit("Removed " + describe(binding),
+        return edit("Removed " + KeyCodes.describe(binding),
                 b -> b.unbindKey(binding.keyCode(), binding.edge(), binding.gizmo()));
+    }
+
+    /** Completes Key Connect: binds the pending key's chosen edges to the gizmo (one undo step). */
+    public boolean chooseEdges(EdgeChoice choice) {
+        if (!(step instanceof PendingStep.AwaitingEdge pending)) {
+            say("Key Connect: click a gizmo and press a key first");
+            return false;
+        }
+        List<KeyBinding> bindings = choice.edges().stream()
+                .map(edge -> new KeyBinding(pending.keyCode(), edge, pending.gizmo())).toList();
+        step = PendingStep.NONE;
+        String what = bindings.size() == 1 ? KeyCodes.describe(bindings.get(0))
+                : "key " + KeyCodes.name(pending.keyCode()) + " down and up \u2192 " + pending.gizmo();
+        boolean done = edit("Bound " + what,
+                b -> bindings.forEach(k -> b.bindKey(k.keyCode(), k.edge(), k.gizmo())));
+        stateChanged();
+        return done;
+    }
+
+    /** {@link #chooseEdges} with one edge. */
+    public boolean chooseEdge(KeyEdge edge) {
+        return chooseEdges(edge == KeyEdge.DOWN ? EdgeChoice.DOWN : EdgeChoice.UP);
     }
 
     // ---- pointer, in board coordinates ----
@@ -301,128 +303,46 @@ public final class Editor {
     /** The pointer moved with no button down: update the placement preview. */
     public void hover(double x, double y) {
         pointer = new Vect(x, y);
-        if (gesture != null) {
-            return;
+        if (!step.isGesture()) {
+            setPreview(handler().hover(x, y), true);
         }
-        setPreview(switch (tool) {
-            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER -> footprint(tool.kind().orElseThrow(),
-                    cell(x), cell(y));
-            case ABSORBER -> absorberFootprint(cell(x), cell(y), cell(x), cell(y));
-            case BALL -> ballPlacement(snap(x), snap(y), 0, 0);
-            default -> null;
-        }, true);
     }
 
     /** The pointer left the board view. */
     public void exit() {
         pointer = null;
-        if (gesture == null) {
-            setPreview(null, false);
+        if (!step.isGesture()) {
+            preview = null;
         }
         stateChanged();
     }
 
     public void press(double x, double y) {
-        switch (tool) {
-            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER ->
-                    placeGizmo(tool.kind().orElseThrow(), cell(x), cell(y));
-            case ABSORBER -> {
-                gesture = new Gesture.AbsorberDrag(cell(x), cell(y));
-                drag(x, y);
-            }
-            case BALL -> {
-                gesture = new Gesture.BallDrag(snap(x), snap(y), x, y);
-                drag(x, y);
-            }
-            case SELECT -> pressSelect(x, y);
-            case ROTATE -> gizmoAt(x, y).ifPresentOrElse(g -> {
-                selected = g.name();
-                edit("Rotated " + g.name(), b -> b.rotate(g.name()));
-            }, () -> say("No gizmo here to rotate"));
-            case DELETE -> {
-                Optional<String> name = ballNear(x, y).map(Ball::name).or(() -> gizmoAt(x, y).map(Gizmo::name));
-                name.ifPresentOrElse(this::delete, () -> say("Nothing here to delete"));
-            }
-            case CONNECT, DISCONNECT -> pressConnect(x, y);
-            case KEY_CONNECT, KEY_DISCONNECT -> gizmoAt(x, y).ifPresentOrElse(g -> {
-                keyGizmo = g.name();
-                pendingKey = null;
-                selected = g.name();
-                say(tool.label() + ": now press the key for " + g.name());
-                stateChanged();
-            }, () -> say("Click a gizmo first"));
-        }
+        handler().press(x, y);
+        stateChanged();
     }
 
     public void drag(double x, double y) {
         pointer = new Vect(x, y);
-        if (gesture instanceof Gesture.AbsorberDrag a) {
-            setPreview(absorberFootprint(a.x0(), a.y0(), cell(x), cell(y)), true);
-        } else if (gesture instanceof Gesture.BallDrag b) {
-            // Measured from where the button went down, not from the snapped centre: a click is no velocity.
-            boolean still = Math.hypot(x - b.pressX(), y - b.pressY()) < DRAG_THRESHOLD;
-            setPreview(still ? ballPlacement(b.x(), b.y(), 0, 0)
-                    : ballPlacement(b.x(), b.y(), velocity(x - b.pressX()), velocity(y - b.pressY())), true);
-        } else if (gesture instanceof Gesture.GizmoMove m) {
-            Gizmo g = m.gizmo();
-            int tx = cell(x) - m.grabDx();
-            int ty = cell(y) - m.grabDy();
-            setPreview(new Preview.Footprint(tx, ty, g.width(), g.height(),
-                    board.placementProblem(g.kind(), tx, ty, g.width(), g.height(), g.name())), true);
-        } else if (gesture instanceof Gesture.BallMove m) {
-            if (!isDrag(m, x, y)) {
-                setPreview(null, false);
-                return;
-            }
-            double tx = ballMoveTarget(m.ball().position().x(), m.pressX(), x);
-            double ty = ballMoveTarget(m.ball().position().y(), m.pressY(), y);
-            String name = m.ball().name();
-            setPreview(new Preview.BallPlacement(tx, ty, m.ball().velocity().x(), m.ball().velocity().y(),
-                    dryRun(b -> b.moveBall(name, tx, ty))), true);
+        if (step.isGesture()) {
+            handler().drag(x, y);
         }
     }
 
     public void release(double x, double y) {
-        if (gesture == null) {
-            return;
+        if (step.isGesture()) {
+            handler().release(x, y);
+            stateChanged();
         }
-        drag(x, y);
-        Gesture finished = gesture;
-        Preview last = preview;
-        gesture = null;
-        preview = null;
-        if (finished instanceof Gesture.AbsorberDrag && last instanceof Preview.Footprint f) {
-            String name = names.nextGizmoName(GizmoKind.ABSORBER);
-            if (edit("Placed absorber " + name, b -> b.addAbsorber(name, f.x(), f.y(),
-                    f.x() + f.width(), f.y() + f.height()))) {
-                selected = name;
-            }
-        } else if (finished instanceof Gesture.BallDrag && last instanceof Preview.BallPlacement p) {
-            String name = names.nextBallName();
-            if (edit("Placed ball " + name + " moving at (" + p.vx() + ", " + p.vy() + ") L/s",
-                    b -> b.addBall(name, p.x(), p.y(), p.vx(), p.vy()))) {
-                selected = name;
-            }
-        } else if (finished instanceof Gesture.GizmoMove m && last instanceof Preview.Footprint f) {
-            Gizmo g = m.gizmo();
-            if (f.x() != g.x() || f.y() != g.y()) {
-                edit("Moved " + g.name() + " to (" + f.x() + "," + f.y() + ")",
-                        b -> b.moveGizmo(g.name(), f.x(), f.y()));
-            }
-        } else if (finished instanceof Gesture.BallMove m && last instanceof Preview.BallPlacement p) {
-            edit("Moved " + m.ball().name() + " to (" + p.x() + ", " + p.y() + ")",
-                    b -> b.moveBall(m.ball().name(), p.x(), p.y()));
-        }
-        stateChanged();
     }
 
     // ---- keys ----
 
     /**
-     * A key pressed over the board in build mode. Key Connect / Key Disconnect waiting for a key take any key
-     * but Escape (which cancels) and Ctrl/Alt/Meta combinations (which belong to the menus, e.g. Ctrl+Z while
-     * waiting). Otherwise Delete removes the selection, the arrow keys nudge it and the tool shortcuts switch
-     * tools.
+     * A key pressed over the board in build mode. A step waiting for a key (Key Connect, Key Disconnect) takes
+     * any key but Escape (which cancels) and Ctrl/Alt/Meta combinations (which belong to the menus, e.g. Ctrl+Z
+     * while waiting). Otherwise Delete removes the selection, the arrow keys nudge it and the tool shortcuts
+     * switch tools.
      *
      * @return whether the key was used
      */
@@ -435,22 +355,8 @@ public final class Editor {
         if (commandModifier) {
             return false;
         }
-        if (pendingKey != null) {
-            // Waiting for down or up: the arrow keys answer; other keys must not start something else meanwhile.
-            if (keyCode == KeyEvent.VK_DOWN || keyCode == KeyEvent.VK_UP) {
-                chooseEdge(keyCode == KeyEvent.VK_DOWN ? KeyEdge.DOWN : KeyEdge.UP);
-            }
-            return true;
-        }
-        if (keyGizmo != null) {
-            if (tool == Tool.KEY_CONNECT) {
-                pendingKey = keyCode;
-                say("Key " + KeyEvent.getKeyText(keyCode) + " for " + keyGizmo
-                        + ": choose down (on press) or up (on release), or press the Down or Up arrow");
-                stateChanged();
-            } else {
-                unbindKey(keyGizmo, keyCode);
-            }
+        if (handler().key(keyCode)) {
+            stateChanged();
             return true;
         }
         switch (keyCode) {
@@ -488,105 +394,49 @@ public final class Editor {
         return false;
     }
 
-    /** Completes Key Connect: binds the pending key's down or up edge to the gizmo. */
-    public boolean chooseEdge(KeyEdge edge) {
-        if (pendingKey == null || keyGizmo == null) {
-            say("Key Connect: click a gizmo and press a key first");
+    // ---- for the tool handlers ----
+
+    NameGenerator names() {
+        return names;
+    }
+
+    void setStep(PendingStep next) {
+        step = next;
+    }
+
+    /** The press of a gesture is over: its step and its preview go. */
+    void finishGesture() {
+        step = PendingStep.NONE;
+        preview = null;
+    }
+
+    /** Selects without telling the listeners yet (the handler's caller does, once the step is done). */
+    void selectQuietly(String name) {
+        selected = name;
+    }
+
+    /**
+     * Turns a gizmo 90 degrees clockwise. A circle and an absorber look the same turned: that is refused with
+     * a message and leaves no undo step, rather than "rotating" with nothing to see.
+     */
+    boolean rotate(Gizmo gizmo) {
+        if (gizmo.kind() == GizmoKind.CIRCLE || gizmo.kind() == GizmoKind.ABSORBER) {
+            say(gizmo.name() + " is " + Wording.aKind(gizmo.kind())
+                    + ": it looks the same turned, so it cannot be rotated");
+            stateChanged();
             return false;
         }
-        KeyBinding binding = new KeyBinding(pendingKey, edge, keyGizmo);
-        resetSteps();
-        boolean done = edit("Bound " + describe(binding),
-                b -> b.bindKey(binding.keyCode(), binding.edge(), binding.gizmo()));
-        stateChanged();
-        return done;
+        return edit("Rotated " + gizmo.name(), b -> b.rotate(gizmo.name()));
     }
 
-    public static String describe(KeyBinding binding) {
-        return "key " + KeyEvent.getKeyText(binding.keyCode()) + " " + binding.edge().name().toLowerCase()
-                + " \u2192 " + binding.gizmo();
-    }
-
-    // ---- the tools' steps ----
-
-    private void placeGizmo(GizmoKind kind, int x, int y) {
-        String name = names.nextGizmoName(kind);
-        if (edit("Placed " + name + " at (" + x + "," + y + ")", b -> b.addGizmo(kind, name, x, y))) {
-            selected = name;
-        }
-        // The cell is now taken: refresh the preview without announcing the overlap over the success message.
-        setPreview(footprint(kind, x, y), false);
-    }
-
-    private void pressSelect(double x, double y) {
-        Optional<Ball> ball = ballNear(x, y);
-        Optional<Gizmo> gizmo = gizmoAt(x, y);
-        if (ball.isPresent()) {
-            selected = ball.get().name();
-            gesture = new Gesture.BallMove(ball.get(), x, y);
-        } else if (gizmo.isPresent()) {
-            Gizmo g = gizmo.get();
-            selected = g.name();
-            gesture = new Gesture.GizmoMove(g, cell(x) - g.x(), cell(y) - g.y());
-        } else {
-            selected = isWall(x, y) ? Board.OUTER_WALLS : null;
-        }
-        stateChanged();
-    }
-
-    private void pressConnect(double x, double y) {
-        Optional<String> end = gizmoAt(x, y).map(Gizmo::name)
-                .or(() -> isWall(x, y) ? Optional.of(Board.OUTER_WALLS) : Optional.empty());
-        if (end.isEmpty()) {
-            say("Click a gizmo, or outside the board for the outer walls");
-            return;
-        }
-        String name = end.get();
-        if (connectSource == null) {
-            connectSource = name;
-            selected = name;
-            say(tool.label() + ": source " + name + "; now click the gizmo it "
-                    + (tool == Tool.CONNECT ? "should trigger" : "triggers"));
-            stateChanged();
-            return;
-        }
-        if (name.equals(Board.OUTER_WALLS)) {
-            say("The outer walls can only be a trigger source: click a gizmo");
-            return;
-        }
-        String source = connectSource;
-        connectSource = null;
-        if (tool == Tool.CONNECT) {
-            edit("Connected " + source + " -> " + name, b -> b.connect(source, name));
-        } else {
-            disconnect(source, name);
-        }
-        stateChanged();
-    }
-
-    private void unbindKey(String gizmo, int keyCode) {
-        List<KeyBinding> bindings = board.keyBindings().stream()
-                .filter(k -> k.gizmo().equals(gizmo) && k.keyCode() == keyCode).toList();
-        resetSteps();
-        if (bindings.isEmpty()) {
-            say(gizmo + " has no binding for key " + KeyEvent.getKeyText(keyCode));
-        } else {
-            edit("Unbound key " + KeyEvent.getKeyText(keyCode) + " from " + gizmo,
-                    b -> bindings.forEach(k -> b.unbindKey(k.keyCode(), k.edge(), k.gizmo())));
-        }
-        stateChanged();
-    }
-
-    private boolean delete(String name) {
+    boolean delete(String name) {
         if (name.equals(selected)) {
             selected = null;
         }
         return edit("Deleted " + name, b -> b.delete(name));
     }
 
-    // ---- helpers ----
-
-    private boolean edit(String success, Consumer<Board> operation) {
+    boolean edit(String success, Consumer<Board> operation) {
         try {
             history.perform(success, operation);
         } catch (BoardEditException refused) {
@@ -599,26 +449,12 @@ public final class Editor {
         return true;
     }
 
-    private Preview footprint(GizmoKind kind, int x, int y) {
-        return new Preview.Footprint(x, y, kind.width(), kind.height(),
-                board.placementProblem(kind, x, y, kind.width(), kind.height(), null));
-    }
-
-    private Preview absorberFootprint(int x0, int y0, int x1, int y1) {
-        int x = Math.min(x0, x1);
-        int y = Math.min(y0, y1);
-        int w = Math.abs(x1 - x0) + 1;
-        int h = Math.abs(y1 - y0) + 1;
-        return new Preview.Footprint(x, y, w, h, board.placementProblem(GizmoKind.ABSORBER, x, y, w, h, null));
-    }
-
-    private Preview ballPlacement(double x, double y, double vx, double vy) {
-        String name = names.nextBallName();
-        return new Preview.BallPlacement(x, y, vx, vy, dryRun(b -> b.addBall(name, x, y, vx, vy)));
+    Preview.Footprint footprint(GizmoKind kind, int x, int y, int width, int height) {
+        return new Preview.Footprint(x, y, width, height, board.placementProblem(kind, x, y, width, height, null));
     }
 
     /** Asks the board itself (on a throw-away copy) whether an operation would be accepted. */
-    private Optional<String> dryRun(Consumer<Board> operation) {
+    Optional<String> dryRun(Consumer<Board> operation) {
         try {
             operation.accept(board.copy());
             return Optional.empty();
@@ -627,7 +463,7 @@ public final class Editor {
         }
     }
 
-    private void setPreview(Preview next, boolean announce) {
+    void setPreview(Preview next, boolean announce) {
         if (announce && next != null && next.problem().isPresent()
                 && (preview == null || !next.problem().equals(preview.problem()))) {
             say(next.problem().get());
@@ -636,28 +472,24 @@ public final class Editor {
         stateChanged();
     }
 
-    private Optional<Gizmo> gizmoAt(double x, double y) {
+    Optional<Gizmo> gizmoAt(double x, double y) {
         return board.gizmoAt(cell(x), cell(y));
     }
 
-    private Optional<Ball> ballNear(double x, double y) {
+    Optional<Ball> ballNear(double x, double y) {
         return board.balls().stream()
                 .filter(b -> Math.hypot(b.position().x() - x, b.position().y() - y) <= BALL_PICK_DISTANCE)
                 .min(Comparator.comparingDouble(b -> Math.hypot(b.position().x() - x, b.position().y() - y)));
     }
 
-    private boolean isWall(double x, double y) {
+    boolean isWall(double x, double y) {
         boolean outside = x < 0 || y < 0 || x >= Board.SIZE || y >= Board.SIZE;
         boolean nearEdge = x < WALL_BAND || y < WALL_BAND || x > Board.SIZE - WALL_BAND || y > Board.SIZE - WALL_BAND;
         return outside || (nearEdge && gizmoAt(x, y).isEmpty());
     }
 
-    private static boolean isDrag(Gesture.BallMove m, double x, double y) {
-        return Math.hypot(x - m.pressX(), y - m.pressY()) >= DRAG_THRESHOLD;
-    }
-
-    private static double ballMoveTarget(double start, double press, double now) {
-        return snap(start + now - press);
+    void say(String message) {
+        messages.accept(message);
     }
 
     static int cell(double v) {
@@ -668,30 +500,30 @@ public final class Editor {
         return Math.round(v / BALL_SNAP) * BALL_SNAP;
     }
 
-    private static double velocity(double drag) {
-        // Whole L/s: typed-looking numbers in the properties panel and in saved files.
-        return Math.round(drag * VELOCITY_PER_DRAG);
+    // ---- internals ----
+
+    private ToolHandler handler() {
+        return handlers.computeIfAbsent(tool, this::newHandler);
     }
 
-    private OptionalDouble number(String label, String text) {
-        try {
-            return OptionalDouble.of(Double.parseDouble(text.trim()));
-        } catch (NumberFormatException notANumber) {
-            say(label + ": \"" + text.trim() + "\" is not a number");
-            return OptionalDouble.empty();
-        }
+    private ToolHandler newHandler(Tool t) {
+        return switch (t) {
+            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER -> new PlaceGizmoTool(this, t.kind().orElseThrow());
+            case ABSORBER -> new PlaceAbsorberTool(this);
+            case BALL -> new PlaceBallTool(this);
+            case SELECT -> new SelectTool(this);
+            case ROTATE -> new RotateTool(this);
+            case DELETE -> new DeleteTool(this);
+            case CONNECT -> new ConnectTool(this, true);
+            case DISCONNECT -> new ConnectTool(this, false);
+            case KEY_CONNECT -> new KeyConnectTool(this, true);
+            case KEY_DISCONNECT -> new KeyConnectTool(this, false);
+        };
     }
 
-    private void resetSteps() {
-        gesture = null;
+    private void cancelQuietly() {
+        step = PendingStep.NONE;
         preview = null;
-        connectSource = null;
-        keyGizmo = null;
-        pendingKey = null;
-    }
-
-    private void say(String message) {
-        messages.accept(message);
     }
 
     private void edited() {

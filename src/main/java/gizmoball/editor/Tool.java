@@ -1,5 +1,6 @@
 package gizmoball.editor;
 
+import gizmoball.boardfile.KeyCodes;
 import gizmoball.model.GizmoKind;
 
 import java.awt.event.KeyEvent;
@@ -56,7 +57,7 @@ public enum Tool {
 
     /** "Square (S)" style text for tooltips and the status line. */
     public String labelWithShortcut() {
-        return label + " (" + KeyEvent.getKeyText(shortcut) + ")";
+        return label + " (" + KeyCodes.name(shortcut) + ")";
     }
 
     public static Optional<Tool> forShortcut(int keyCode) {

@@ -208,6 +208,29 @@ public final class Board {
         notifyObservers(BoardChange.EDIT);
     }
 
+    /**
+     * Gives a ball a new velocity where it is, keeping its place in the board's order of balls (so a saved file
+     * keeps its order). A ball held by an absorber has no velocity of its own: only zero is accepted for it.
+     */
+    public void setBallVelocity(String ball, double vx, double vy) {
+        Ball target = balls.get(ball);
+        if (target == null) {
+            throw new BoardEditException("cannot set the velocity of " + ball + ": no ball named " + ball);
+        }
+        if (!Double.isFinite(vx) || !Double.isFinite(vy)) {
+            throw new BoardEditException("ball " + ball + ": velocity (" + vx + ", " + vy + ") is not finite");
+        }
+        Vect velocity = new Vect(vx, vy);
+        if (target.isCaptured()) {
+            if (!velocity.equals(Vect.ZERO)) {
+                throw new BoardEditException(ball + " is held by an absorber: it cannot be given a velocity");
+            }
+            return;
+        }
+        target.setVelocity(velocity);
+        notifyObservers(BoardChange.EDIT);
+    }
+
     /** Whenever source (a gizmo or OUTER_WALLS) is hit, target performs its action. Self-connections allowed. */
     public void connect(String source, String target) {
         requireSource(source);

@@ -1,5 +1,6 @@
 package gizmoball.view;
 
+import gizmoball.boardfile.KeyCodes;
 import gizmoball.editor.Tool;
 import gizmoball.model.Board;
 import java.awt.BorderLayout;
@@ -89,7 +90,7 @@ final class HelpPages {
             return "";
         }
         String modifiers = InputEvent.getModifiersExText(key.getModifiers());
-        return " (" + (modifiers.isEmpty() ? "" : modifiers + "+") + KeyEvent.getKeyText(key.getKeyCode()) + ")";
+        return " (" + (modifiers.isEmpty() ? "" : modifiers + "+") + KeyCodes.name(key.getKeyCode()) + ")";
     }
 
     private static String escape(String text) {

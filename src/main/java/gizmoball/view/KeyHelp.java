@@ -1,15 +1,15 @@
 package gizmoball.view;
 
+import gizmoball.editor.Wording;
+import gizmoball.boardfile.KeyCodes;
 import gizmoball.model.Board;
 import gizmoball.model.Gizmo;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
-import java.awt.event.KeyEvent;
 import java.util.EnumSet;
 import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 
@@ -33,14 +33,14 @@ final class KeyHelp {
         return edges.entrySet().stream().map(e -> {
             KeyAndGizmo k = e.getKey();
             GizmoKind kind = board.gizmo(k.gizmo()).map(Gizmo::kind).orElse(null);
-            return KeyEvent.getKeyText(k.keyCode()) + ": " + kindName(kind) + k.gizmo()
+            return KeyCodes.name(k.keyCode()) + ": " + kindName(kind) + k.gizmo()
                     + " (" + use(kind, e.getValue()) + ")";
         }).toList();
     }
 
     /** "left flipper " for LEFT_FLIPPER; nothing for a name the board does not hold. */
     private static String kindName(GizmoKind kind) {
-        return kind == null ? "" : kind.name().toLowerCase(Locale.ROOT).replace('_', ' ') + " ";
+        return kind == null ? "" : Wording.kind(kind) + " ";
     }
 
     /** A flipper driven by both edges stays up while the key is held; anything else acts on the edges. */

@@ -9,6 +9,7 @@ import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
 import org.junit.jupiter.api.BeforeEach;
+import physics.Vect;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
@@ -31,7 +32,7 @@ class EditorTest {
     @BeforeEach
     void setUp() {
         board = new Board();
-        editor = new Editor(board);
+        editor = Editor.of(board);
         editor.setMessageSink(messages::add);
         editor.addEditListener(() -> edits++);
     }
@@ -441,15 +442,11 @@ class EditorTest {
 
     @Test
     void constantsAreValidatedAndSetAsOneUndoStep() {
-        assertThat(editor.setConstants("12.5", "abc", "0.1")).isFalse();
-        assertThat(lastMessage()).isEqualTo("mu: \"abc\" is not a number");
-        assertThat(board.gravity()).isEqualTo(Board.DEFAULT_GRAVITY);
-
-        assertThat(editor.setConstants("12.5", "0.5", "-1")).isFalse();
+        assertThat(editor.setConstants(12.5, 0.5, -1)).isFalse();
         assertThat(board.gravity()).isEqualTo(Board.DEFAULT_GRAVITY);
         assertThat(board.mu()).isEqualTo(Board.DEFAULT_MU);
 
-        assertThat(editor.setConstants(" 12.5 ", "0.5", "0.1")).isTrue();
+        assertThat(editor.setConstants(12.5, 0.5, 0.1)).isTrue();
         assertThat(List.of(board.gravity(), board.mu(), board.mu2())).containsExactly(12.5, 0.5, 0.1);
         editor.undo();
         assertThat(List.of(board.gravity(), board.mu(), board.mu2()))
@@ -460,17 +457,44 @@ class EditorTest {
     @Test
     void theSelectedBallsPositionAndVelocityCanBeTypedIn() {
         board.addBall("B1", 3, 3, 0, 0);
-        assertThat(editor.setBall("B1", "4.5", "6", "-3", "7.25")).isTrue();
+        assertThat(editor.setBall("B1", 4.5, 6, -3, 7.25)).isTrue();
         Ball b = board.ball("B1").orElseThrow();
         assertThat(List.of(b.position().x(), b.position().y(), b.velocity().x(), b.velocity().y()))
                 .containsExactly(4.5, 6.0, -3.0, 7.25);
 
         Design before = Design.of(board);
-        assertThat(editor.setBall("B1", "25", "6", "1", "1")).isFalse();
+        assertThat(editor.setBall("B1", 25, 6, 1, 1)).isFalse();
         assertThat(Design.of(board)).isEqualTo(before);
-        assertThat(editor.setBall("B1", "4.5", "6", "x", "1")).isFalse();
-        assertThat(lastMessage()).isEqualTo("vx: \"x\" is not a number");
-        assertThat(Design.of(board)).isEqualTo(before);
+        editor.undo();
+        // One step took back both the move and the new velocity.
+        assertThat(board.ball("B1").orElseThrow().position()).isEqualTo(new Vect(3, 3));
+        assertThat(board.ball("B1").orElseThrow().velocity()).isEqualTo(Vect.ZERO);
+    }
+
+    /** Issue 14: a velocity change used to delete and re-add the ball, so B1, B2 were saved as B2, B1. */
+    @Test
+    void changingABallsVelocityKeepsTheOrderOfTheBalls() {
+        board.addBall("B1", 3, 3, 0, 0);
+        board.addBall("B2", 6, 6, 0, 0);
+        assertThat(editor.setBall("B1", 3, 3, 5, -5)).isTrue();
+        assertThat(board.balls()).extracting(Ball::name).containsExactly("B1", "B2");
+        assertThat(board.ball("B1").orElseThrow().velocity()).isEqualTo(new Vect(5, -5));
+    }
+
+    /** Issue 12 item 11: a circle and an absorber look the same turned. */
+    @Test
+    void rotatingACircleOrAnAbsorberIsRefusedWithoutAnUndoStep() {
+        board.addGizmo(GizmoKind.CIRCLE, "C1", 2, 2);
+        board.addAbsorber("A", 0, 18, 20, 20);
+        Optional<String> lastStep = editor.history().undoable();
+        click(Tool.ROTATE, 2, 2);
+        assertThat(lastMessage()).isEqualTo("C1 is a circle: it looks the same turned, so it cannot be rotated");
+        editor.select("A");
+        assertThat(editor.rotateSelected()).isFalse();
+        assertThat(lastMessage()).isEqualTo("A is an absorber: it looks the same turned, so it cannot be rotated");
+        assertThat(board.gizmo("C1").orElseThrow().rotation()).isZero();
+        assertThat(editor.history().undoable()).isEqualTo(lastStep);
+        assertThat(edits).isZero();
     }
 
     @Test
@@ -478,7 +502,7 @@ class EditorTest {
         click(Tool.SQUARE, 1, 1);
         click(Tool.LEFT_FLIPPER, 4, 4);
         board.connect("S1", "LF1");
-        editor.setConstants("10", "0", "0");
+        editor.setConstants(10, 0, 0);
         Design full = Design.of(board);
 
         editor.clearBoard();

@@ -142,6 +142,26 @@ class BoardEditingTest {
     }
 
     @Test
+    void settingABallsVelocityKeepsItWhereItIsAndWhereItIsInTheOrderOfBalls() {
+        Board board = sample();
+        board.addBall("B3", 10.5, 6.5, 0, 0);
+        board.setBallVelocity("B1", -7, 2.5);
+        assertThat(board.balls()).extracting(Ball::name).containsExactly("B1", "B2", "B3");
+        Ball ball = board.ball("B1").orElseThrow();
+        assertThat(ball.position()).isEqualTo(new Vect(1.5, 1.5));
+        assertThat(ball.velocity()).isEqualTo(new Vect(-7, 2.5));
+        // B2 is held by the absorber: zero is its only velocity.
+        board.setBallVelocity("B2", 0, 0);
+        assertThatThrownBy(() -> board.setBallVelocity("B2", 0, -50)).isInstanceOf(BoardEditException.class)
+                .hasMessageContaining("held by an absorber");
+        assertThatThrownBy(() -> board.setBallVelocity("B1", Double.POSITIVE_INFINITY, 0))
+                .isInstanceOf(BoardEditException.class).hasMessageContaining("not finite");
+        assertThatThrownBy(() -> board.setBallVelocity("Nope", 1, 1)).isInstanceOf(BoardEditException.class)
+                .hasMessageContaining("no ball named Nope");
+        assertThat(board.ball("B1").orElseThrow().velocity()).isEqualTo(new Vect(-7, 2.5));
+    }
+
+    @Test
     void movingAnAbsorberCarriesItsBallsAndMovingABallOutReleasesIt() {
         Board board = sample();
         board.moveGizmo("A", 0, 17);

@@ -1,5 +1,6 @@
 package gizmoball.view.editor;
 
+import gizmoball.boardfile.KeyCodes;
 import gizmoball.editor.Editor;
 import gizmoball.editor.Preview;
 import gizmoball.model.Ball;
@@ -17,7 +18,6 @@ import java.awt.Font;
 import java.awt.FontMetrics;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
-import java.awt.event.KeyEvent;
 import java.awt.geom.CubicCurve2D;
 import java.awt.geom.Ellipse2D;
 import java.awt.geom.Line2D;
@@ -200,7 +200,7 @@ public final class BuildOverlay implements BoardOverlay {
 
     private static void keyLabel(Graphics2D g, BoardTransform t, Gizmo gizmo, List<KeyBinding> bindings) {
         String keys = bindings.stream().filter(k -> k.gizmo().equals(gizmo.name()))
-                .map(k -> KeyEvent.getKeyText(k.keyCode()) + " " + k.edge().name().toLowerCase())
+                .map(k -> KeyCodes.name(k.keyCode()) + " " + KeyCodes.edge(k.edge()))
                 .collect(Collectors.joining(", "));
         if (keys.isEmpty()) {
             return;

@@ -1,7 +1,7 @@
 package gizmoball.view.editor;
 
+import gizmoball.editor.EdgeChoice;
 import gizmoball.editor.Editor;
-import gizmoball.model.KeyEdge;
 import gizmoball.view.BoardPanel;
 
 import javax.swing.JMenuItem;
@@ -22,8 +22,9 @@ public final class EdgePopup {
     public EdgePopup(Editor controller, BoardPanel panel) {
         this.controller = controller;
         this.panel = panel;
-        popup.add(item("On key down (press)  \u2193", "edge.down", KeyEdge.DOWN));
-        popup.add(item("On key up (release)  \u2191", "edge.up", KeyEdge.UP));
+        popup.add(item("On key down and up (hold)", "edge.both", EdgeChoice.DOWN_AND_UP));
+        popup.add(item("On key down (press)  \u2193", "edge.down", EdgeChoice.DOWN));
+        popup.add(item("On key up (release)  \u2191", "edge.up", EdgeChoice.UP));
         popup.addPopupMenuListener(new PopupMenuListener() {
             @Override
             public void popupMenuWillBecomeVisible(PopupMenuEvent e) {
@@ -59,10 +60,10 @@ public final class EdgePopup {
         panel.requestFocusInWindow();
     }
 
-    private JMenuItem item(String text, String name, KeyEdge edge) {
+    private JMenuItem item(String text, String name, EdgeChoice edge) {
         JMenuItem item = new JMenuItem(text);
         item.setName(name);
-        item.addActionListener(e -> controller.chooseEdge(edge));
+        item.addActionListener(e -> controller.chooseEdges(edge));
         return item;
     }
 }

@@ -1,5 +1,6 @@
 package gizmoball.view.editor;
 
+import gizmoball.boardfile.KeyCodes;
 import gizmoball.editor.Editor;
 import gizmoball.editor.Tool;
 
@@ -11,7 +12,6 @@ import javax.swing.JToggleButton;
 import javax.swing.SwingConstants;
 import java.awt.BorderLayout;
 import java.awt.GridLayout;
-import java.awt.event.KeyEvent;
 import java.util.EnumMap;
 import java.util.Map;
 
@@ -32,7 +32,7 @@ public final class PalettePanel extends JPanel {
         for (Tool tool : Tool.values()) {
             // The shortcut key, greyed after the label, so the keys are learnt by looking at the palette.
             JToggleButton button = new JToggleButton("<html>" + tool.label() + " <font color=gray>"
-                    + KeyEvent.getKeyText(tool.shortcut()) + "</font></html>", new ToolIcon(tool));
+                    + KeyCodes.name(tool.shortcut()) + "</font></html>", new ToolIcon(tool));
             button.setName("tool." + tool.name());
             button.setHorizontalAlignment(SwingConstants.LEADING);
             button.setIconTextGap(8);

@@ -1,6 +1,8 @@
 package gizmoball.view.editor;
 
+import gizmoball.boardfile.KeyCodes;
 import gizmoball.editor.Editor;
+import gizmoball.editor.Wording;
 import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.BoardChange;
@@ -18,7 +20,6 @@ import javax.swing.JLabel;
 import javax.swing.JList;
 import javax.swing.JPanel;
 import javax.swing.JScrollPane;
-import javax.swing.JTextField;
 import javax.swing.ListSelectionModel;
 import java.awt.BorderLayout;
 import java.awt.Dimension;
@@ -26,12 +27,19 @@ import java.awt.GridBagConstraints;
 import java.awt.GridBagLayout;
 import java.awt.Insets;
 import java.util.Objects;
+import java.awt.event.ActionEvent;
+import java.awt.event.KeyEvent;
 import java.util.Optional;
+import java.util.OptionalDouble;
+import javax.swing.AbstractAction;
+import javax.swing.KeyStroke;
 
 /**
  * Build mode's east panel: the board's gravity and friction, and the selection: its name and place, a ball's
- * position and velocity, a gizmo's connections and key bindings (each removable). Input is handed to the
- * controller as text; it validates and reports problems on the status line, so nothing here throws.
+ * position and velocity, a gizmo's connections and key bindings (each removable). Numbers are read here, with
+ * the board file's grammar ({@link NumberField}); the editor applies them or reports why not. Enter or Apply
+ * applies a group of fields, Esc puts back the board's values; both hand the keyboard back to the board, so the
+ * next key is a tool key again, not more text.
  */
 public final class PropertiesPanel extends JPanel {
     /** One line of the links list, with what removing it means. */
@@ -43,14 +51,15 @@ public final class PropertiesPanel extends JPanel {
     }
 
     private final Editor controller;
-    private final JTextField gravity = field("gravity");
-    private final JTextField mu = field("mu");
-    private final JTextField mu2 = field("mu2");
+    private final Runnable focusBoard;
+    private final NumberField gravity = new NumberField("gravity");
+    private final NumberField mu = new NumberField("mu");
+    private final NumberField mu2 = new NumberField("mu2");
     private final JLabel selection = new JLabel();
-    private final JTextField ballX = field("ball.x");
-    private final JTextField ballY = field("ball.y");
-    private final JTextField ballVx = field("ball.vx");
-    private final JTextField ballVy = field("ball.vy");
+    private final NumberField ballX = new NumberField("ball.x");
+    private final NumberField ballY = new NumberField("ball.y");
+    private final NumberField ballVx = new NumberField("ball.vx");
+    private final NumberField ballVy = new NumberField("ball.vy");
     private final JButton applyBall = new JButton("Apply");
     private final JPanel ballRows = new JPanel(new GridBagLayout());
     private final DefaultListModel<Link> links = new DefaultListModel<>();
@@ -58,8 +67,10 @@ public final class PropertiesPanel extends JPanel {
     private final JButton removeLink = new JButton("Remove");
     private String shownSelection;
 
-    public PropertiesPanel(Editor controller) {
+    /** @param focusBoard gives the keyboard back to the board view (after Enter, Apply or Esc in a field) */
+    public PropertiesPanel(Editor controller, Runnable focusBoard) {
         this.controller = controller;
+        this.focusBoard = focusBoard;
         setLayout(new BorderLayout());
         setBorder(BorderFactory.createEmptyBorder(6, 6, 6, 6));
         // A fixed width: the board view must not jump when the selection shows more or fewer rows.
@@ -89,9 +100,9 @@ public final class PropertiesPanel extends JPanel {
     /** Shows the board's current values; called on edits and selection changes, not on every pointer move. */
     public void refresh() {
         Board board = controller.board();
-        gravity.setText(Numbers.exact(board.gravity()));
-        mu.setText(Numbers.exact(board.mu()));
-        mu2.setText(Numbers.exact(board.mu2()));
+        gravity.show(board.gravity());
+        mu.show(board.mu());
+        mu2.show(board.mu2());
 
         shownSelection = controller.selected().orElse(null);
         Optional<Gizmo> gizmo = controller.selectedGizmo();
@@ -99,10 +110,10 @@ public final class PropertiesPanel extends JPanel {
         selection.setText(describe(gizmo, ball));
         ballRows.setVisible(ball.isPresent());
         ball.ifPresent(b -> {
-            ballX.setText(Numbers.exact(b.position().x()));
-            ballY.setText(Numbers.exact(b.position().y()));
-            ballVx.setText(Numbers.exact(b.velocity().x()));
-            ballVy.setText(Numbers.exact(b.velocity().y()));
+            ballX.show(b.position().x());
+            ballY.show(b.position().y());
+            ballVx.show(b.velocity().x());
+            ballVy.show(b.velocity().y());
         });
 
         links.clear();
@@ -116,7 +127,7 @@ public final class PropertiesPanel extends JPanel {
             }
             for (KeyBinding k : board.keyBindings()) {
                 if (k.gizmo().equals(name)) {
-                    links.addElement(new Link(Editor.describe(k), () -> controller.unbind(k)));
+                    links.addElement(new Link(KeyCodes.describe(k), () -> controller.unbind(k)));
                 }
             }
         }
@@ -131,8 +142,9 @@ public final class PropertiesPanel extends JPanel {
         JButton apply = new JButton("Apply");
         apply.setName("board.apply");
         apply.addActionListener(e -> applyBoard());
-        for (JTextField f : new JTextField[]{gravity, mu, mu2}) {
+        for (NumberField f : new NumberField[]{gravity, mu, mu2}) {
             f.addActionListener(e -> applyBoard());
+            restoreOnEscape(f);
         }
         p.add(apply, constraints(1, 3));
         return p;
@@ -150,8 +162,9 @@ public final class PropertiesPanel extends JPanel {
         row(ballRows, 3, "vy (L/s)", ballVy);
         applyBall.setName("ball.apply");
         applyBall.addActionListener(e -> applyBall());
-        for (JTextField f : new JTextField[]{ballX, ballY, ballVx, ballVy}) {
+        for (NumberField f : new NumberField[]{ballX, ballY, ballVx, ballVy}) {
             f.addActionListener(e -> applyBall());
+            restoreOnEscape(f);
         }
         ballRows.add(applyBall, constraints(1, 4));
         GridBagConstraints b = constraints(0, 1);
@@ -183,19 +196,58 @@ public final class PropertiesPanel extends JPanel {
     }
 
     private void applyBoard() {
-        controller.setConstants(gravity.getText(), mu.getText(), mu2.getText());
+        Optional<double[]> v = values(gravity, mu, mu2);
+        if (v.isPresent() && controller.setConstants(v.get()[0], v.get()[1], v.get()[2])) {
+            focusBoard.run();
+        }
     }
 
     private void applyBall() {
-        controller.selectedBall().ifPresent(b -> controller.setBall(b.name(), ballX.getText(), ballY.getText(),
-                ballVx.getText(), ballVy.getText()));
+        Optional<Ball> ball = controller.selectedBall();
+        Optional<double[]> v = values(ballX, ballY, ballVx, ballVy);
+        if (ball.isPresent() && v.isPresent()
+                && controller.setBall(ball.get().name(), v.get()[0], v.get()[1], v.get()[2], v.get()[3])) {
+            focusBoard.run();
+        }
+    }
+
+    /** The numbers of a group of fields; empty, with every bad field marked and the first reported, if any is bad. */
+    private Optional<double[]> values(NumberField... fields) {
+        double[] values = new double[fields.length];
+        NumberField firstBad = null;
+        for (int i = 0; i < fields.length; i++) {
+            OptionalDouble v = fields[i].value();
+            if (v.isPresent()) {
+                values[i] = v.getAsDouble();
+            } else if (firstBad == null) {
+                firstBad = fields[i];
+            }
+        }
+        if (firstBad != null) {
+            controller.tell(firstBad.getToolTipText());
+            firstBad.requestFocusInWindow();
+            return Optional.empty();
+        }
+        return Optional.of(values);
+    }
+
+    /** Esc in a field puts the board's values back (dropping marks) and returns the keyboard to the board. */
+    private void restoreOnEscape(NumberField field) {
+        field.getInputMap(JComponent.WHEN_FOCUSED).put(KeyStroke.getKeyStroke(KeyEvent.VK_ESCAPE, 0), "restore");
+        field.getActionMap().put("restore", new AbstractAction() {
+            @Override
+            public void actionPerformed(ActionEvent e) {
+                refresh();
+                focusBoard.run();
+            }
+        });
     }
 
     private String describe(Optional<Gizmo> gizmo, Optional<Ball> ball) {
         if (gizmo.isPresent()) {
             Gizmo g = gizmo.get();
             String size = g.width() + "x" + g.height();
-            return "<html><b>" + g.name() + "</b>: " + g.kind().name().toLowerCase().replace('_', ' ') + " " + size
+            return "<html><b>" + g.name() + "</b>: " + Wording.kind(g.kind()) + " " + size
                     + " at (" + g.x() + "," + g.y() + ")" + (g.rotation() == 0 ? "" : ", " + g.rotation() * 90
                     + "\u00b0") + "</html>";
         }
@@ -207,12 +259,6 @@ public final class PropertiesPanel extends JPanel {
         return controller.selected().filter(Board.OUTER_WALLS::equals).isPresent()
                 ? "<html><b>" + Board.OUTER_WALLS + "</b>: the walls around the board</html>"
                 : "Nothing selected";
-    }
-
-    private static JTextField field(String name) {
-        JTextField f = new JTextField(7);
-        f.setName(name);
-        return f;
     }
 
     private static JComponent section(String title, JComponent content) {

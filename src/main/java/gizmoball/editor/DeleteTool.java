@@ -1,0 +1,24 @@
+package gizmoball.editor;
+
+import gizmoball.model.Ball;
+import gizmoball.model.Gizmo;
+import java.util.Optional;
+
+/** Delete: a click removes a ball or gizmo (a ball first: it may sit on a gizmo's cell). */
+final class DeleteTool implements ToolHandler {
+    private final Editor editor;
+
+    DeleteTool(Editor editor) {
+        this.editor = editor;
+    }
+
+    @Override
+    public Optional<String> target(double x, double y) {
+        return editor.ballNear(x, y).map(Ball::name).or(() -> editor.gizmoAt(x, y).map(Gizmo::name));
+    }
+
+    @Override
+    public void press(double x, double y) {
+        target(x, y).ifPresentOrElse(editor::delete, () -> editor.say("Nothing here to delete"));
+    }
+}

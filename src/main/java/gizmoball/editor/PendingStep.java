@@ -1,0 +1,42 @@
+package gizmoball.editor;
+
+import gizmoball.model.Ball;
+import gizmoball.model.Gizmo;
+
+/**
+ * The half-done step of a tool: what the next pointer or key event completes. Exactly one is pending at a time
+ * ({@link #NONE} when nothing is), so the editor's state is this value, not a combination of nullable fields.
+ */
+public sealed interface PendingStep {
+    PendingStep NONE = new None();
+
+    /** Nothing half-done: the next press starts something. */
+    record None() implements PendingStep { }
+
+    /** Absorber: the button went down on cell (x0, y0); the release gives the opposite corner. */
+    record DraggingAbsorber(int x0, int y0) implements PendingStep { }
+
+    /** Ball: its centre is (x, y) (snapped); the drag from (pressX, pressY) gives its velocity. */
+    record PlacingBall(double x, double y, double pressX, double pressY) implements PendingStep { }
+
+    /** Select: dragging a gizmo grabbed (grabDx, grabDy) cells from its top-left cell. */
+    record MovingGizmo(Gizmo gizmo, int grabDx, int grabDy) implements PendingStep { }
+
+    /** Select: dragging a ball grabbed at (pressX, pressY). */
+    record MovingBall(Ball ball, double pressX, double pressY) implements PendingStep { }
+
+    /** Connect or Disconnect: the source (a gizmo or the outer walls) is chosen, the target is next. */
+    record ConnectingFrom(String source) implements PendingStep { }
+
+    /** Key Connect or Key Disconnect: the gizmo is chosen, the key is next. */
+    record AwaitingKey(String gizmo) implements PendingStep { }
+
+    /** Key Connect: gizmo and key are chosen; on key down, key up, or both, is next. */
+    record AwaitingEdge(String gizmo, int keyCode) implements PendingStep { }
+
+    /** True for the steps of a press that is still held: the pointer's moves are drags of it. */
+    default boolean isGesture() {
+        return this instanceof DraggingAbsorber || this instanceof PlacingBall || this instanceof MovingGizmo
+                || this instanceof MovingBall;
+    }
+}

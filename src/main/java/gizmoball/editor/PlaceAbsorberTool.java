@@ -1,0 +1,49 @@
+package gizmoball.editor;
+
+import gizmoball.model.GizmoKind;
+
+/** Absorber: press on one corner cell, drag to the opposite one, release to place it. */
+final class PlaceAbsorberTool implements ToolHandler {
+    private final Editor editor;
+
+    PlaceAbsorberTool(Editor editor) {
+        this.editor = editor;
+    }
+
+    @Override
+    public Preview hover(double x, double y) {
+        return footprint(Editor.cell(x), Editor.cell(y), Editor.cell(x), Editor.cell(y));
+    }
+
+    @Override
+    public void press(double x, double y) {
+        editor.setStep(new PendingStep.DraggingAbsorber(Editor.cell(x), Editor.cell(y)));
+        drag(x, y);
+    }
+
+    @Override
+    public void drag(double x, double y) {
+        if (editor.step() instanceof PendingStep.DraggingAbsorber a) {
+            editor.setPreview(footprint(a.x0(), a.y0(), Editor.cell(x), Editor.cell(y)), true);
+        }
+    }
+
+    @Override
+    public void release(double x, double y) {
+        if (!(editor.step() instanceof PendingStep.DraggingAbsorber a)) {
+            return;
+        }
+        Preview.Footprint f = footprint(a.x0(), a.y0(), Editor.cell(x), Editor.cell(y));
+        editor.finishGesture();
+        String name = editor.names().nextGizmoName(GizmoKind.ABSORBER);
+        if (editor.edit("Placed absorber " + name, b -> b.addAbsorber(name, f.x(), f.y(),
+                f.x() + f.width(), f.y() + f.height()))) {
+            editor.selectQuietly(name);
+        }
+    }
+
+    private Preview.Footprint footprint(int x0, int y0, int x1, int y1) {
+        return editor.footprint(GizmoKind.ABSORBER, Math.min(x0, x1), Math.min(y0, y1), Math.abs(x1 - x0) + 1,
+                Math.abs(y1 - y0) + 1);
+    }
+}

@@ -1,0 +1,31 @@
+package gizmoball.editor;
+
+import gizmoball.model.GizmoKind;
+
+/** Square, Circle, Triangle, Left and Right Flipper: a click places one with its top-left cell there. */
+final class PlaceGizmoTool implements ToolHandler {
+    private final Editor editor;
+    private final GizmoKind kind;
+
+    PlaceGizmoTool(Editor editor, GizmoKind kind) {
+        this.editor = editor;
+        this.kind = kind;
+    }
+
+    @Override
+    public Preview hover(double x, double y) {
+        return editor.footprint(kind, Editor.cell(x), Editor.cell(y), kind.width(), kind.height());
+    }
+
+    @Override
+    public void press(double x, double y) {
+        int cx = Editor.cell(x);
+        int cy = Editor.cell(y);
+        String name = editor.names().nextGizmoName(kind);
+        if (editor.edit("Placed " + name + " at (" + cx + "," + cy + ")", b -> b.addGizmo(kind, name, cx, cy))) {
+            editor.selectQuietly(name);
+        }
+        // The cell is now taken: refresh the preview without announcing the overlap over the success message.
+        editor.setPreview(hover(x, y), false);
+    }
+}

@@ -1,0 +1,34 @@
+package gizmoball.editor;
+
+import java.util.Optional;
+
+/**
+ * What one tool does with the pointer and the keys. Handlers keep no state of their own: the half-done step
+ * is the editor's {@link PendingStep}, so switching tools or cancelling needs nothing from them.
+ */
+interface ToolHandler {
+    /** The preview under the pointer with no button down, or null for none. */
+    default Preview hover(double x, double y) {
+        return null;
+    }
+
+    void press(double x, double y);
+
+    /** The pointer moved with the button down (only while a gesture of this tool is pending). */
+    default void drag(double x, double y) {
+    }
+
+    /** The button went up (only while a gesture of this tool is pending). */
+    default void release(double x, double y) {
+    }
+
+    /** A key (not a command shortcut) while this tool's step waits for one; true if used. */
+    default boolean key(int keyCode) {
+        return false;
+    }
+
+    /** What a click at (x, y) would act on, for the view to highlight. */
+    default Optional<String> target(double x, double y) {
+        return Optional.empty();
+    }
+}

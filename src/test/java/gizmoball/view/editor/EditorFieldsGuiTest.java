@@ -1,0 +1,134 @@
+package gizmoball.view.editor;
+
+import static gizmoball.view.Gui.await;
+import static gizmoball.view.Gui.onEdt;
+import static org.assertj.core.api.Assertions.assertThat;
+
+import gizmoball.editor.Tool;
+import gizmoball.model.Board;
+import gizmoball.model.GizmoKind;
+import gizmoball.model.KeyBinding;
+import gizmoball.model.KeyEdge;
+import gizmoball.view.Gui;
+import java.awt.Window;
+import java.awt.event.KeyEvent;
+import java.util.Optional;
+import javax.swing.JMenuItem;
+import javax.swing.JTextField;
+import javax.swing.border.LineBorder;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+
+/** Issue 12, items 7, 8, 11 and 14: the properties fields, rotating what cannot turn, binding down and up at once. */
+class EditorFieldsGuiTest {
+    private BuildWindow w;
+
+    @BeforeEach
+    void open() {
+        w = BuildWindow.open();
+    }
+
+    @AfterEach
+    void close() {
+        if (w != null) {
+            w.close();
+        }
+    }
+
+    private JTextField field(String name) {
+        return onEdt(() -> EditorGui.find(w.build.properties(), JTextField.class, name));
+    }
+
+    private static boolean markedRed(JTextField f) {
+        return f.getBorder() instanceof LineBorder line && line.getLineColor().equals(NumberField.MARK);
+    }
+
+    @Test
+    void aBadNumberIsMarkedWithItsReasonAndNothingIsApplied() {
+        JTextField gravity = field("gravity");
+        JTextField mu = field("mu");
+        onEdt(() -> {
+            gravity.setText("abc");
+            mu.setText("1e400");
+            gravity.postActionEvent();
+        });
+        assertThat(onEdt(() -> markedRed(gravity))).isTrue();
+        assertThat(onEdt(() -> markedRed(mu))).as("1e400 is beyond a double: no board-file number").isTrue();
+        assertThat(onEdt(() -> gravity.getToolTipText())).contains("\"abc\" is not a number");
+        assertThat(w.status()).contains("\"abc\" is not a number");
+        assertThat(w.board.gravity()).isEqualTo(Board.DEFAULT_GRAVITY);
+        assertThat(w.board.mu()).isEqualTo(Board.DEFAULT_MU);
+
+        onEdt(() -> {
+            gravity.setText("20");
+            mu.setText("0.03");
+            mu.postActionEvent();
+        });
+        assertThat(w.board.gravity()).isEqualTo(20.0);
+        assertThat(w.board.mu()).isEqualTo(0.03);
+        assertThat(onEdt(() -> markedRed(gravity) || markedRed(mu))).isFalse();
+    }
+
+    @Test
+    void enterAndEscapeInAFieldGiveTheKeyboardBackToTheBoard() {
+        JTextField gravity = field("gravity");
+        onEdt(() -> {
+            w.window.toFront();
+            gravity.requestFocusInWindow();
+        });
+        await("the gravity field has the keyboard", gravity::isFocusOwner);
+        onEdt(() -> {
+            gravity.setText("20");
+            gravity.postActionEvent();
+        });
+        await("the board has the keyboard after Enter", w.panel::isFocusOwner);
+
+        onEdt(() -> gravity.requestFocusInWindow());
+        await("the gravity field has the keyboard again", gravity::isFocusOwner);
+        onEdt(() -> {
+            gravity.setText("abc");
+            gravity.dispatchEvent(new KeyEvent(gravity, KeyEvent.KEY_PRESSED, System.currentTimeMillis(), 0,
+                    KeyEvent.VK_ESCAPE, KeyEvent.CHAR_UNDEFINED));
+        });
+        await("the board has the keyboard after Esc", w.panel::isFocusOwner);
+        assertThat(onEdt(() -> gravity.getText())).as("Esc puts the board's value back").isEqualTo("20");
+        assertThat(onEdt(() -> markedRed(gravity))).isFalse();
+    }
+
+    @Test
+    void rotatingACircleIsRefusedAndLeavesTheBoardUnchanged() {
+        w.clickTool(Tool.CIRCLE);
+        w.clickCell(4, 4);
+        onEdt(() -> w.session.saved(java.nio.file.Path.of("unchanged.txt")));
+        w.clickTool(Tool.ROTATE);
+        w.clickCell(4, 4);
+        assertThat(w.status()).isEqualTo("C1 is a circle: it looks the same turned, so it cannot be rotated");
+        assertThat(onEdt(() -> w.session.isModified())).isFalse();
+        assertThat(onEdt(() -> w.build.controller().history().undoable())).contains("Placed C1 at (4,4)");
+    }
+
+    @Test
+    void keyConnectBindsDownAndUpInOnePass() {
+        onEdt(() -> w.board.addGizmo(GizmoKind.LEFT_FLIPPER, "LF", 3, 15));
+        w.clickTool(Tool.KEY_CONNECT);
+        w.clickCell(3, 15);
+        w.key(KeyEvent.VK_Z);
+        await("the edge popup", () -> popupItem("edge.both").isPresent());
+        onEdt(() -> popupItem("edge.both").orElseThrow().doClick(0));
+        assertThat(onEdt(() -> w.board.keyBindings())).containsExactlyInAnyOrder(
+                new KeyBinding(KeyEvent.VK_Z, KeyEdge.DOWN, "LF"), new KeyBinding(KeyEvent.VK_Z, KeyEdge.UP, "LF"));
+        onEdt(() -> w.build.controller().undo());
+        assertThat(onEdt(() -> w.board.keyBindings())).as("one undo step for both").isEmpty();
+    }
+
+    private static Optional<JMenuItem> popupItem(String name) {
+        for (Window window : Window.getWindows()) {
+            Optional<JMenuItem> item = Gui.find(window, JMenuItem.class, i -> name.equals(i.getName()) && i.isShowing());
+            if (item.isPresent()) {
+                return item;
+            }
+        }
+        return Optional.empty();
+    }
+}
