@@ -124,12 +124,29 @@ public final class Board {
      * overlap another free ball or a gizmo other than an absorber; one placed overlapping an absorber is captured.
      */
     public void addBall(String name, double x, double y, double vx, double vy) {
+        placeBall(name, x, y, vx, vy, false);
+    }
+
+    /**
+     * As {@link #addBall}, except that other free balls in the way do not refuse it (board files of other
+     * implementations place balls on each other; the loop lets such a pair pass through until it separates).
+     * Every other check stays. Returns the free balls it overlaps, in board order (none if it is captured).
+     */
+    public List<String> addBallOverlappingBalls(String name, double x, double y, double vx, double vy) {
+        Ball ball = placeBall(name, x, y, vx, vy, true);
+        return ball.isCaptured() ? List.of() : balls.values().stream()
+                .filter(other -> other != ball && !other.isCaptured() && overlap(other.position(), ball.position()))
+                .map(Ball::name)
+                .toList();
+    }
+
+    private Ball placeBall(String name, double x, double y, double vx, double vy, boolean ballsMayOverlap) {
         requireFreshName(name);
         if (!Double.isFinite(vx) || !Double.isFinite(vy)) {
             throw new BoardEditException("ball " + name + ": velocity (" + vx + "," + vy + ") must be finite");
         }
         Vect position = new Vect(requireFinite(x, name), requireFinite(y, name));
-        Absorber captor = ballPlacementCaptor(name, position, null);
+        Absorber captor = ballPlacementCaptor(name, position, null, ballsMayOverlap);
         Ball ball = new Ball(name, position, Vect.ZERO);
         ball.setVelocity(new Vect(vx, vy));
         balls.put(name, ball);
@@ -137,6 +154,7 @@ public final class Board {
             capture(ball, captor);
         }
         edited();
+        return ball;
     }
 
     /** Turns a gizmo 90 degrees clockwise within its footprint; circles and absorbers stay as they are. */
@@ -198,7 +216,7 @@ public final class Board {
             throw new BoardEditException("cannot move " + ball + ": no ball named " + ball);
         }
         Vect position = new Vect(requireFinite(x, ball), requireFinite(y, ball));
-        Absorber captor = ballPlacementCaptor(ball, position, ball);
+        Absorber captor = ballPlacementCaptor(ball, position, ball, false);
         if (target.isCaptured()) {
             releaseFromAbsorber(ball);
             target.release(position, Vect.ZERO);
@@ -231,7 +249,7 @@ public final class Board {
             return;
         }
         target.setVelocity(velocity);
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     /** Whenever source (a gizmo or OUTER_WALLS) is hit, target performs its action. Self-connections allowed. */
@@ -273,6 +291,15 @@ public final class Board {
         if (!keyBindings.remove(new KeyBinding(keyCode, edge, gizmo))) {
             throw new BoardEditException("key " + keyCode + " " + edgeName(edge) + " is not bound to " + gizmo);
         }
+        edited();
+    }
+
+    /** Gives a gizmo its own colour, or with empty back the colour of its kind. */
+    public void setColour(String gizmo, Optional<Rgb> colour) {
+        if (colour == null) {
+            throw new BoardEditException("colour of " + gizmo + " must be a colour or empty, not null");
+        }
+        requireGizmo(gizmo).setColour(colour);
         edited();
     }
 
@@ -374,7 +401,7 @@ public final class Board {
      * Checks a ball position (for the ball named {@code name}, ignoring ball {@code ignoring}) and returns the
      * absorber that would capture it there, or null.
      */
-    private Absorber ballPlacementCaptor(String name, Vect position, String ignoring) {
+    private Absorber ballPlacementCaptor(String name, Vect position, String ignoring, boolean ballsMayOverlap) {
         String what = "ball " + name + " at (" + position.x() + "," + position.y() + ")";
         if (!insideBoard(position)) {
             throw new BoardEditException(what + " is outside the board (its centre must be at least " + BALL_RADIUS
@@ -392,15 +419,19 @@ public final class Board {
                 }
             }
         }
-        if (captor == null) {
+        if (captor == null && !ballsMayOverlap) {
             for (Ball other : balls.values()) {
-                if (!other.isCaptured() && !other.name().equals(ignoring)
-                        && Math.sqrt(other.position().distanceSquared(position)) < 2 * BALL_RADIUS - Tolerances.PLACEMENT) {
+                if (!other.isCaptured() && !other.name().equals(ignoring) && overlap(other.position(), position)) {
                     throw new BoardEditException(what + " would overlap ball " + other.name());
                 }
             }
         }
         return captor;
+    }
+
+    /** Whether balls centred there overlap by more than touching. */
+    private static boolean overlap(Vect a, Vect b) {
+        return Math.sqrt(a.distanceSquared(b)) < 2 * BALL_RADIUS - Tolerances.PLACEMENT;
     }
 
     static boolean insideBoard(Vect position) {
@@ -594,7 +625,10 @@ public final class Board {
         return sleepers;
     }
 
-    /** Performs the actions bound to (keyCode, DOWN): flippers swing up, others perform their action. */
+    /**
+     * Performs the actions bound to (keyCode, DOWN): flippers swing up, others perform their action; and those
+     * bound to (keyCode, CHANGE): every gizmo performs its action (a flipper toggles).
+     */
     public void keyDown(int keyCode) {
         keyAction(keyCode, KeyEdge.DOWN);
     }
@@ -606,7 +640,9 @@ public final class Board {
 
     private void keyAction(int keyCode, KeyEdge edge) {
         for (KeyBinding binding : List.copyOf(keyBindings)) {
-            if (binding.keyCode() == keyCode && binding.edge() == edge) {
+            if (binding.keyCode() == keyCode && binding.edge() == KeyEdge.CHANGE && edge == KeyEdge.DOWN) {
+                performAction(gizmos.get(binding.gizmo()), time);
+            } else if (binding.keyCode() == keyCode && binding.edge() == edge) {
                 GizmoBase gizmo = gizmos.get(binding.gizmo());
                 if (gizmo instanceof Flipper flipper) {
                     flipper.markTriggered(time);
@@ -701,7 +737,7 @@ public final class Board {
     /** After every successful edit: the board changed under the balls, which forget their contacts and wake. */
     private void edited() {
         sleepers.disturbAll();
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     void notifyObservers(BoardChange change) {
