@@ -737,7 +737,7 @@ public final class Board {
     /** After every successful edit: the board changed under the balls, which forget their contacts and wake. */
     private void edited() {
         sleepers.disturbAll();
-        edited();
+        notifyObservers(BoardChange.EDIT);
     }
 
     void notifyObservers(BoardChange change) {
