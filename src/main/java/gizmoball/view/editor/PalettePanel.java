@@ -21,18 +21,17 @@ import java.util.Map;
  */
 public final class PalettePanel extends JPanel {
     private final Map<Tool, JToggleButton> buttons = new EnumMap<>(Tool.class);
+    private final JPanel column = new JPanel(new GridLayout(0, 1, 0, 2));
+    private boolean compact;
 
     public PalettePanel(Editor controller) {
         super(new BorderLayout());
         setBorder(BorderFactory.createEmptyBorder(6, 6, 6, 6));
         // The buttons keep their natural height at the top however tall the window is.
-        JPanel column = new JPanel(new GridLayout(0, 1, 0, 2));
         add(column, BorderLayout.NORTH);
         ButtonGroup group = new ButtonGroup();
         for (Tool tool : Tool.values()) {
-            // The shortcut key, greyed after the label, so the keys are learnt by looking at the palette.
-            JToggleButton button = new JToggleButton("<html>" + tool.label() + " <font color=gray>"
-                    + KeyCodes.name(tool.shortcut()) + "</font></html>", new ToolIcon(tool));
+            JToggleButton button = new JToggleButton(label(tool), new ToolIcon(tool));
             button.setName("tool." + tool.name());
             button.setHorizontalAlignment(SwingConstants.LEADING);
             button.setIconTextGap(8);
@@ -45,6 +44,30 @@ public final class PalettePanel extends JPanel {
         }
         controller.addStateListener(() -> buttons.get(controller.tool()).setSelected(true));
         buttons.get(controller.tool()).setSelected(true);
+    }
+
+    /**
+     * A compact palette is a grid of icons, two to a row (each button's tooltip still names the tool and its key),
+     * for windows too narrow to give the board its room beside the labelled column.
+     */
+    public void setCompact(boolean compact) {
+        if (compact == this.compact) {
+            return;
+        }
+        this.compact = compact;
+        column.setLayout(new GridLayout(0, compact ? 2 : 1, 2, 2));
+        buttons.forEach((tool, button) -> button.setText(compact ? null : label(tool)));
+        revalidate();
+        repaint();
+    }
+
+    public boolean isCompact() {
+        return compact;
+    }
+
+    /** The tool's name, then its shortcut key greyed, so the keys are learnt by looking at the palette. */
+    private static String label(Tool tool) {
+        return "<html>" + tool.label() + " <font color=gray>" + KeyCodes.name(tool.shortcut()) + "</font></html>";
     }
 
     /** The button of a tool (for tests and for the installer's focus handling). */

@@ -21,6 +21,7 @@ import javax.swing.JList;
 import javax.swing.JPanel;
 import javax.swing.JScrollPane;
 import javax.swing.ListSelectionModel;
+import javax.swing.SwingConstants;
 import java.awt.BorderLayout;
 import java.awt.Dimension;
 import java.awt.GridBagConstraints;
@@ -50,6 +51,9 @@ public final class PropertiesPanel extends JPanel {
         }
     }
 
+    private static final int WIDTH = 250;
+    private static final int SELECTION_WIDTH = 226;
+
     private final Editor controller;
     private final Runnable focusBoard;
     private final NumberField gravity = new NumberField("gravity");
@@ -73,8 +77,6 @@ public final class PropertiesPanel extends JPanel {
         this.focusBoard = focusBoard;
         setLayout(new BorderLayout());
         setBorder(BorderFactory.createEmptyBorder(6, 6, 6, 6));
-        // A fixed width: the board view must not jump when the selection shows more or fewer rows.
-        setPreferredSize(new Dimension(250, 10));
         // Stacked at the top at their natural heights, however tall the window is.
         JPanel stack = new JPanel();
         stack.setLayout(new BoxLayout(stack, BoxLayout.Y_AXIS));
@@ -97,6 +99,12 @@ public final class PropertiesPanel extends JPanel {
         refresh();
     }
 
+    /** A fixed width: the board view must not jump when the selection shows more or fewer rows. */
+    @Override
+    public Dimension getPreferredSize() {
+        return new Dimension(WIDTH, super.getPreferredSize().height);
+    }
+
     /** Shows the board's current values; called on edits and selection changes, not on every pointer move. */
     public void refresh() {
         Board board = controller.board();
@@ -108,7 +116,14 @@ public final class PropertiesPanel extends JPanel {
         Optional<Gizmo> gizmo = controller.selectedGizmo();
         Optional<Ball> ball = controller.selectedBall();
         selection.setText(describe(gizmo, ball));
-        ballRows.setVisible(ball.isPresent());
+        // The ball's rows keep their room when no ball is selected, so that nothing below them jumps.
+        for (NumberField f : new NumberField[]{ballX, ballY, ballVx, ballVy}) {
+            f.setEnabled(ball.isPresent());
+            if (ball.isEmpty()) {
+                f.setText("");
+            }
+        }
+        applyBall.setEnabled(ball.isPresent());
         ball.ifPresent(b -> {
             ballX.show(b.position().x());
             ballY.show(b.position().y());
@@ -153,6 +168,11 @@ public final class PropertiesPanel extends JPanel {
     private JComponent selectionSection() {
         JPanel p = new JPanel(new GridBagLayout());
         selection.setName("selection");
+        // Two lines' room whatever is selected: a longer description must not push the rows below it down.
+        selection.setVerticalAlignment(SwingConstants.TOP);
+        Dimension twoLines = new Dimension(SELECTION_WIDTH, 2 * selection.getFontMetrics(selection.getFont()).getHeight() + 4);
+        selection.setPreferredSize(twoLines);
+        selection.setMinimumSize(twoLines);
         GridBagConstraints c = constraints(0, 0);
         c.gridwidth = 2;
         p.add(selection, c);
@@ -179,6 +199,8 @@ public final class PropertiesPanel extends JPanel {
         linkList.setVisibleRowCount(6);
         JScrollPane scroll = new JScrollPane(linkList);
         scroll.setPreferredSize(new Dimension(200, 150));
+        // Never squeezed to a row: the panel scrolls instead (see gizmoball.app.BuildModeInstaller).
+        scroll.setMinimumSize(scroll.getPreferredSize());
         GridBagConstraints s = constraints(0, 7);
         s.gridwidth = 2;
         s.fill = GridBagConstraints.BOTH;
@@ -246,20 +268,24 @@ public final class PropertiesPanel extends JPanel {
     private String describe(Optional<Gizmo> gizmo, Optional<Ball> ball) {
         if (gizmo.isPresent()) {
             Gizmo g = gizmo.get();
-            String size = g.width() + "x" + g.height();
-            return "<html><b>" + g.name() + "</b>: " + Wording.kind(g.kind()) + " " + size
-                    + " at (" + g.x() + "," + g.y() + ")" + (g.rotation() == 0 ? "" : ", " + g.rotation() * 90
-                    + "\u00b0") + "</html>";
+            return named(g.name(), Wording.kind(g.kind()) + " " + g.width() + "x" + g.height() + " at (" + g.x()
+                    + "," + g.y() + ")" + (g.rotation() == 0 ? "" : ", " + g.rotation() * 90 + "\u00b0"));
         }
         if (ball.isPresent()) {
             Ball b = ball.get();
-            return "<html><b>" + b.name() + "</b>: ball" + (b.isCaptured() ? " (held by an absorber)" : "")
-                    + "</html>";
+            return named(b.name(), "ball" + (b.isCaptured() ? " (held by an absorber)" : ""));
         }
         return controller.selected().filter(Board.OUTER_WALLS::equals).isPresent()
-                ? "<html><b>" + Board.OUTER_WALLS + "</b>: the walls around the board</html>"
+                ? named(Board.OUTER_WALLS, "the walls around the board")
                 : "Nothing selected";
     }
+
+    /** "<b>name</b>: what", wrapped within the label's width. */
+    private static String named(String name, String what) {
+        return "<html><body style='width: " + (SELECTION_WIDTH - 10) + "px'><b>" + name + "</b>: " + what
+                + "</body></html>";
+    }
+
 
     private static JComponent section(String title, JComponent content) {
         content.setBorder(BorderFactory.createTitledBorder(title));
