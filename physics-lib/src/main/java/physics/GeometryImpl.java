@@ -248,8 +248,8 @@ public class GeometryImpl implements GeometryInterface {
      * Time until the ball touches the face of the segment that turns about {@code center} at
      * {@code angularVelocity} rad/s (positive turns +x toward +y) from its given position at time 0: what
      * {@link #timeUntilWallCollision} means, turning. Contacts whose foot lies on the segment, ends included, are
-     * found; contacts beyond the ends are left to zero-radius circles there ({@link #timeUntilRotatingCircleCollision}),
-     * and at angular velocity 0 the answer is the static one. Only times in [0, maximumForesight] are reported, so
+     * found; contacts beyond the ends are left to zero-radius circles there
+     * ({@link #timeUntilRotatingCircleCollision}), and at angular velocity 0 the answer is the static one. Only times in [0, maximumForesight] are reported, so
      * a caller whose rotation stops earlier uses an instance whose foresight is the remaining rotation time and then
      * treats the segment as static at its stop angle. At the returned time the ball is within 1e-10 L of touching
      * the face (never inside it); touching or overlapping the face and closing is 0. A ball at rest is found. See
@@ -378,23 +378,27 @@ public class GeometryImpl implements GeometryInterface {
         if (Double.isInfinite(mass1) && Double.isInfinite(mass2)) {
             throw new IllegalArgumentException("at most one ball may have infinite mass");
         }
-        // The unit normal from centre 1 to centre 2 and the exchange along it, on the components: no allocation
-        // but the result.
-        double nx = center2.x() - center1.x();
-        double ny = center2.y() - center1.y();
-        if (nx == 0 && ny == 0) {
+        // Along d = centre 2 - centre 1 the normal part of u = v1 - v2 is d (u.d) / (d.d): no square root and no
+        // allocation but the result. d may be scaled freely, which keeps d.d normal for any distance.
+        double dx = center2.x() - center1.x();
+        double dy = center2.y() - center1.y();
+        if (dx == 0 && dy == 0) {
             throw new IllegalArgumentException("centres coincide at " + center1
                     + ": the contact normal is undefined");
         }
-        double inverseLength = 1 / norm(nx, ny);
-        nx *= inverseLength;
-        ny *= inverseLength;
-        double approach = (velocity1.x() - velocity2.x()) * nx + (velocity1.y() - velocity2.y()) * ny;
+        double dd = dx * dx + dy * dy;
+        if (dd < Double.MIN_NORMAL || dd == Double.POSITIVE_INFINITY) {
+            double scale = Math.max(Math.abs(dx), Math.abs(dy));
+            dx /= scale;
+            dy /= scale;
+            dd = dx * dx + dy * dy;
+        }
+        double approach = ((velocity1.x() - velocity2.x()) * dx + (velocity1.y() - velocity2.y()) * dy) / dd;
         // 2 m2 / (m1 + m2) and 2 m1 / (m1 + m2), written with mass ratios so that an infinite mass works.
         double change1 = 2 / (1 + mass1 / mass2) * approach;
         double change2 = 2 / (1 + mass2 / mass1) * approach;
-        return new VectPair(new Vect(velocity1.x() - nx * change1, velocity1.y() - ny * change1),
-                new Vect(velocity2.x() + nx * change2, velocity2.y() + ny * change2));
+        return new VectPair(new Vect(velocity1.x() - dx * change1, velocity1.y() - dy * change1),
+                new Vect(velocity2.x() + dx * change2, velocity2.y() + dy * change2));
     }
 
     /**

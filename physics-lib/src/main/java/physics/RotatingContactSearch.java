@@ -20,7 +20,8 @@ package physics;
  * the window its maximum is at a slice end: that gives per-slice constants L and M.
  * <p>
  * <b>Safe steps.</b> The distance to a convex set is convex with a unit gradient n, so
- * g(s) &ge; g(t) + n&middot;(q(s) - q(t)) &ge; g(t) + g'(t)(s - t) - M (s - t)&sup2;/2, and also g(s) &ge; g(t) - L (s - t).
+ * g(s) &ge; g(t) + n&middot;(q(s) - q(t)) &ge; g(t) + g'(t)(s - t) - M (s - t)&sup2;/2, and also
+ * g(s) &ge; g(t) - L (s - t).
  * Stepping to the first zero of the larger of these lower bounds can never step over a contact, and near a
  * contact the step is a Newton step on a bound from below, so it converges fast and from the safe side. The
  * search stops when the gap is within {@link #CONTACT_TOLERANCE} while closing.

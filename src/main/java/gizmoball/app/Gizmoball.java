@@ -99,7 +99,7 @@ public final class Gizmoball {
         });
         ModalPause.install(window, loop);
         BuildModeInstaller.BuildMode build = BuildModeInstaller.install(window, session);
-        PlayFeatures play = PlayFeatures.install(window, session, loop, files, settings);
+        PlayFeatures play = PlayFeatures.install(window, session, loop, files, build.controller(), settings);
         return new Gizmoball(session, loop, window, files, build, play);
     }
 

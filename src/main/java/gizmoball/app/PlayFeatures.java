@@ -4,10 +4,15 @@ import gizmoball.controller.BoardFileCommands;
 import gizmoball.controller.GameLoop;
 import gizmoball.controller.Settings;
 import gizmoball.controller.Speed;
+import gizmoball.editor.Editor;
+import gizmoball.preview.AimPreview;
+import gizmoball.preview.Predictor;
 import gizmoball.session.GameSession;
+import gizmoball.session.Mode;
 import gizmoball.sound.SoundPlayer;
 import gizmoball.view.BallTrails;
 import gizmoball.view.GameWindow;
+import gizmoball.view.editor.AimPreviewOverlay;
 import java.awt.GraphicsConfiguration;
 import java.awt.GraphicsDevice;
 import java.awt.GraphicsEnvironment;
@@ -29,8 +34,8 @@ import javax.swing.SwingUtilities;
 
 /**
  * Adds to a game window what makes the physics visible and audible and the window remember itself:
- * Game > Speed and Sound, View > Ball trails, and the settings that stick (speed, sound, trails, last
- * folder, window place and size).
+ * Game > Speed and Sound, View > Ball trails and Aim preview, and the settings that stick (speed, sound,
+ * trails, aim preview, last folder, window place and size).
  * Every setting the player changes is written to {@link Settings} at once.
  */
 public final class PlayFeatures {
@@ -41,9 +46,10 @@ public final class PlayFeatures {
     private final Settings settings;
     private final BallTrails trails;
     private final SoundPlayer sound;
+    private final AimPreview aim;
 
     private PlayFeatures(GameWindow window, GameSession session, GameLoop loop, BoardFileCommands files,
-                         Settings settings) {
+                         Editor editor, Settings settings) {
         this.window = window;
         this.session = session;
         this.loop = loop;
@@ -51,11 +57,15 @@ public final class PlayFeatures {
         this.settings = settings;
         this.trails = new BallTrails(session.board());
         this.sound = new SoundPlayer(notice -> SwingUtilities.invokeLater(() -> window.statusLine().showMessage(notice)));
+        this.aim = new AimPreview(session.board(),
+                () -> new AimPreview.Inputs(editor.tool(), editor.preview(), editor.selected()), new Predictor(),
+                SwingUtilities::invokeLater);
+        editor.addStateListener(aim::refresh);
     }
 
     public static PlayFeatures install(GameWindow window, GameSession session, GameLoop loop,
-                                       BoardFileCommands files, Settings settings) {
-        PlayFeatures features = new PlayFeatures(window, session, loop, files, settings);
+                                       BoardFileCommands files, Editor editor, Settings settings) {
+        PlayFeatures features = new PlayFeatures(window, session, loop, files, editor, settings);
         features.installSpeed();
         features.installSound();
         features.installView();
@@ -66,6 +76,10 @@ public final class PlayFeatures {
 
     public BallTrails trails() {
         return trails;
+    }
+
+    public AimPreview aimPreview() {
+        return aim;
     }
 
     private void installSpeed() {
@@ -126,9 +140,22 @@ public final class PlayFeatures {
         }));
         trails.setEnabled(settings.ballTrails());
         window.boardPanel().addUnderlay(trails);
+        view.add(toggle("Aim preview", KeyEvent.VK_A, InputEvent.SHIFT_DOWN_MASK, settings.aimPreview(), on -> {
+            settings.setAimPreview(on);
+            aimPreviewShown();
+        }));
+        aimPreviewShown();
+        session.addModeListener(mode -> aimPreviewShown());
+        aim.addListener(window.boardPanel()::repaint);
+        window.boardPanel().addOverlay(new AimPreviewOverlay(aim::current));
         JMenuBar menus = window.menus();
         menus.add(view, Math.min(menus.getComponentIndex(menu(menus, "Mode")) + 1, menus.getMenuCount()));
         menus.revalidate();
+    }
+
+    /** Build mode only: the path of the ball the player is placing, moving or has selected. */
+    private void aimPreviewShown() {
+        aim.setEnabled(settings.aimPreview() && session.mode() == Mode.BUILD);
     }
 
     /** A check box item with a Ctrl shortcut. */

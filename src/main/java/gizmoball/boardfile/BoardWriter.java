@@ -12,8 +12,9 @@ import java.util.List;
 import java.util.stream.Collectors;
 
 /**
- * The canonical form of a board: one command per line, gizmos (in the board's order), then rotations, balls,
- * connections, key bindings, gravity and friction. Reading it back gives an equal board.
+ * The canonical form of a board: one command per line, gizmos (in the board's order), then rotations, the
+ * colours of gizmos that have their own, balls, connections, key bindings, gravity and friction. Reading it back
+ * gives an equal board.
  */
 final class BoardWriter {
 
@@ -34,6 +35,9 @@ final class BoardWriter {
         }
         for (Gizmo gizmo : board.gizmos()) {
             commands.addAll(Collections.nCopies(gizmo.rotation(), new Command.Rotate(gizmo.name())));
+        }
+        for (Gizmo gizmo : board.gizmos()) {
+            gizmo.colour().ifPresent(colour -> commands.add(new Command.Colour(gizmo.name(), colour)));
         }
         for (Ball ball : board.balls()) {
             // A captured ball sits at its absorber's corner with no velocity; written there, it is captured again.

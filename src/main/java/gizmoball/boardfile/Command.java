@@ -6,7 +6,10 @@ import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.Rgb;
+import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 
 /**
  * One parsed board-file command: {@link #applyTo} performs it on a board through the board's own editing
@@ -19,6 +22,16 @@ public sealed interface Command {
 
     String toLine();
 
+    /** The names of gizmos or balls that must exist for the command to apply (never OuterWalls). */
+    default List<String> references() {
+        return List.of();
+    }
+
+    /** The name of the gizmo or ball the command adds, if it adds one. */
+    default Optional<String> defines() {
+        return Optional.empty();
+    }
+
     /** Square, Circle, Triangle, LeftFlipper or RightFlipper with the top-left cell of its footprint. */
     record AddGizmo(GizmoKind kind, String name, int x, int y) implements Command {
         public void applyTo(Board board) {
@@ -27,6 +40,10 @@ public sealed interface Command {
 
         public String toLine() {
             return CommandWord.of(kind).spelling() + " " + name + " " + x + " " + y;
+        }
+
+        public Optional<String> defines() {
+            return Optional.of(name);
         }
     }
 
@@ -39,6 +56,10 @@ public sealed interface Command {
         public String toLine() {
             return CommandWord.ABSORBER.spelling() + " " + name + " " + x1 + " " + y1 + " " + x2 + " " + y2;
         }
+
+        public Optional<String> defines() {
+            return Optional.of(name);
+        }
     }
 
     record AddBall(String name, double x, double y, double vx, double vy) implements Command {
@@ -50,6 +71,15 @@ public sealed interface Command {
             return CommandWord.BALL.spelling() + " " + name + " " + format(x) + " " + format(y)
                     + " " + format(vx) + " " + format(vy);
         }
+
+        public Optional<String> defines() {
+            return Optional.of(name);
+        }
+
+        /** The same ball under another name (for a name another ball of the file already has). */
+        AddBall named(String newName) {
+            return new AddBall(newName, x, y, vx, vy);
+        }
     }
 
     record Rotate(String name) implements Command {
@@ -60,6 +90,10 @@ public sealed interface Command {
         public String toLine() {
             return CommandWord.ROTATE.spelling() + " " + name;
         }
+
+        public List<String> references() {
+            return List.of(name);
+        }
     }
 
     record Delete(String name) implements Command {
@@ -69,6 +103,10 @@ public sealed interface Command {
 
         public String toLine() {
             return CommandWord.DELETE.spelling() + " " + name;
+        }
+
+        public List<String> references() {
+            return List.of(name);
         }
     }
 
@@ -92,6 +130,10 @@ public sealed interface Command {
         public String toLine() {
             return CommandWord.MOVE.spelling() + " " + name + " " + format(x) + " " + format(y);
         }
+
+        public List<String> references() {
+            return List.of(name);
+        }
     }
 
     record Connect(String source, String target) implements Command {
@@ -101,6 +143,10 @@ public sealed interface Command {
 
         public String toLine() {
             return CommandWord.CONNECT.spelling() + " " + source + " " + target;
+        }
+
+        public List<String> references() {
+            return Board.OUTER_WALLS.equals(source) ? List.of(target) : List.of(source, target);
         }
     }
 
@@ -112,6 +158,26 @@ public sealed interface Command {
         public String toLine() {
             return CommandWord.KEY_CONNECT.spelling() + " key " + keyCode + " " + edge.name().toLowerCase(Locale.ROOT)
                     + " " + gizmo;
+        }
+
+        public List<String> references() {
+            return List.of(gizmo);
+        }
+    }
+
+    /** A gizmo's own colour, written {@code Colour <name> <red> <green> <blue>} (the spelling of two peers). */
+    record Colour(String name, Rgb colour) implements Command {
+        public void applyTo(Board board) {
+            board.setColour(name, Optional.of(colour));
+        }
+
+        public String toLine() {
+            return CommandWord.COLOUR.spelling() + " " + name + " " + colour.red() + " " + colour.green() + " "
+                    + colour.blue();
+        }
+
+        public List<String> references() {
+            return List.of(name);
         }
     }
 

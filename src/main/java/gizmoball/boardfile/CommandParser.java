@@ -1,14 +1,33 @@
 package gizmoball.boardfile;
 
+import gizmoball.model.Board;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.Rgb;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.OptionalDouble;
+import java.util.OptionalInt;
+import java.util.Set;
+import java.util.regex.Pattern;
 
-/** Turns one command line into a {@link Command}, or says precisely why it cannot. */
+/**
+ * Turns one command line into a {@link Command}, or says precisely why it cannot. Besides the canonical form it
+ * reads the spellings other implementations write (two-word and generic flippers, colours, key names, ondown,
+ * reversed absorber corners, balls without velocity...), each with a note saying how it was understood.
+ */
 final class CommandParser {
     /** Far beyond the board, yet safe to turn into an int: larger whole numbers are refused as outside. */
     private static final double COORDINATE_LIMIT = 1_000_000;
+    /** A coordinate this far out is no off-by-one: the writer counted pixels, not cells. */
+    private static final double PIXEL_COORDINATES_FROM = 2 * Board.SIZE;
+    private static final String NOT_THE_FORMAT = ", not part of the format";
+    private static final String EXTENSION = "an extension of another implementation" + NOT_THE_FORMAT;
+    /** Gizmos of the MIT 6.170 3-D variant: name, x y z and a size. */
+    private static final Set<String> MIT_3D_GIZMOS = Set.of("trianglea", "cube", "wall");
+    private static final Pattern AXES = Pattern.compile("[XYZ]{2}", Pattern.CASE_INSENSITIVE);
+    private static final Pattern WORD = Pattern.compile("[A-Za-z][A-Za-z0-9_]*");
+    private static final Pattern HEX_COLOUR = Pattern.compile("#[0-9a-fA-F]{6}");
 
     private CommandParser() {
     }
@@ -22,11 +41,53 @@ final class CommandParser {
         }
     }
 
-    static Command parse(String line) throws Refusal {
+    /**
+     * A command and how its line was understood where it was not written canonically.
+     *
+     * @param notes empty for a canonical line
+     */
+    record Parsed(Command command, List<String> notes) {
+        Parsed {
+            notes = List.copyOf(notes);
+        }
+    }
+
+    static Parsed parse(String line) throws Refusal {
+        List<String> notes = new ArrayList<>();
         List<String> words = BoardFileLexer.words(line);
-        CommandWord word = CommandWord.lookup(words.get(0))
-                .orElseThrow(() -> new Refusal("unknown command '" + words.get(0) + "'"));
-        List<String> args = words.subList(1, words.size());
+        String first = words.get(0).toLowerCase(Locale.ROOT);
+        if ((first.equals("left") || first.equals("right")) && words.size() > 1
+                && words.get(1).equalsIgnoreCase("flipper")) {
+            CommandWord word = first.equals("left") ? CommandWord.LEFT_FLIPPER : CommandWord.RIGHT_FLIPPER;
+            notes.add("'" + words.get(0) + " " + words.get(1) + "' read as " + word.spelling());
+            return new Parsed(parse(word, words.subList(2, words.size()), notes), notes);
+        }
+        if (first.equals("flipper")) {
+            return new Parsed(parse(genericFlipper(words.subList(1, words.size()), notes),
+                    words.subList(1, words.size()), notes), notes);
+        }
+        if (first.equals("color")) {
+            notes.add("'" + words.get(0) + "' read as " + CommandWord.COLOUR.spelling());
+        }
+        CommandWord word = first.equals("color") ? CommandWord.COLOUR : CommandWord.lookup(words.get(0))
+                .orElseThrow(() -> unknownCommand(words));
+        return new Parsed(parse(word, words.subList(1, words.size()), notes), notes);
+    }
+
+    private static Command parse(CommandWord word, List<String> given, List<String> notes) throws Refusal {
+        refuseMit3d(word, given);
+        List<String> args = given;
+        if (word == CommandWord.COLOUR) {
+            return colour(args, notes);
+        }
+        if (word == CommandWord.BALL && args.size() == 3) {
+            notes.add("no velocity given: the ball starts at rest");
+            args = List.of(args.get(0), args.get(1), args.get(2), "0", "0");
+        }
+        if (word == CommandWord.KEY_CONNECT && args.size() == 5 && args.get(3).equals(args.get(4))) {
+            notes.add("target " + args.get(4) + " written twice: read once");
+            args = args.subList(0, 4);
+        }
         if (args.size() != word.argumentCount()) {
             throw new Refusal("wrong number of arguments: " + word.spelling() + " takes " + word.argumentCount()
                     + " (" + word.usage() + "), found " + args.size());
@@ -34,46 +95,189 @@ final class CommandParser {
         return switch (word) {
             case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER -> new Command.AddGizmo(word.kind(),
                     args.get(0), cell("x", args.get(1)), cell("y", args.get(2)));
-            case ABSORBER -> new Command.AddAbsorber(args.get(0), cell("x1", args.get(1)), cell("y1", args.get(2)),
-                    cell("x2", args.get(3)), cell("y2", args.get(4)));
-            case BALL -> new Command.AddBall(args.get(0), number("x", args.get(1)), number("y", args.get(2)),
-                    number("vx", args.get(3)), number("vy", args.get(4)));
+            case ABSORBER -> absorber(args, notes);
+            case BALL -> new Command.AddBall(args.get(0), ballCoordinate("x", args.get(1)),
+                    ballCoordinate("y", args.get(2)), number("vx", args.get(3)), number("vy", args.get(4)));
             case ROTATE -> new Command.Rotate(args.get(0));
             case DELETE -> new Command.Delete(args.get(0));
             case MOVE -> new Command.Move(args.get(0), number("x", args.get(1)), number("y", args.get(2)));
             case CONNECT -> new Command.Connect(args.get(0), args.get(1));
-            case KEY_CONNECT -> keyConnect(args);
+            case KEY_CONNECT -> keyConnect(args, notes);
             case GRAVITY -> new Command.Gravity(number("gravity", args.get(0)));
             case FRICTION -> new Command.Friction(number("mu", args.get(0)), number("mu2", args.get(1)));
+            case COLOUR -> throw new IllegalStateException("colours are read above");
         };
     }
 
-    private static Command keyConnect(List<String> args) throws Refusal {
+    /** {@code Flipper <name> <x> <y>}: the side is in the name, LF... or RF... */
+    private static CommandWord genericFlipper(List<String> args, List<String> notes) throws Refusal {
+        String name = args.isEmpty() ? "" : args.get(0).toUpperCase(Locale.ROOT);
+        CommandWord word;
+        if (name.startsWith("LF")) {
+            word = CommandWord.LEFT_FLIPPER;
+        } else if (name.startsWith("RF")) {
+            word = CommandWord.RIGHT_FLIPPER;
+        } else {
+            throw new Refusal("a Flipper of no known side: read only when its name starts with LF (left) or RF"
+                    + " (right)");
+        }
+        notes.add("Flipper " + args.get(0) + " read as " + word.spelling() + " (from its name)");
+        return word;
+    }
+
+    /** The corners in any order: each axis from its smaller to its larger number. */
+    private static Command absorber(List<String> args, List<String> notes) throws Refusal {
+        int x1 = cell("x1", args.get(1));
+        int y1 = cell("y1", args.get(2));
+        int x2 = cell("x2", args.get(3));
+        int y2 = cell("y2", args.get(4));
+        Command.AddAbsorber absorber = new Command.AddAbsorber(args.get(0), Math.min(x1, x2), Math.min(y1, y2),
+                Math.max(x1, x2), Math.max(y1, y2));
+        if (x2 < x1 || y2 < y1) {
+            notes.add("corners given in reverse order: read as " + absorber.toLine());
+        }
+        return absorber;
+    }
+
+    /** Colour name r g b, name #rrggbb, or name and a signed Java ARGB int (alpha ignored). */
+    private static Command colour(List<String> args, List<String> notes) throws Refusal {
+        Command.Colour colour;
+        if (args.size() == 4) {
+            colour = new Command.Colour(args.get(0), new Rgb(channel("red", args.get(1)),
+                    channel("green", args.get(2)), channel("blue", args.get(3))));
+        } else if (args.size() == 2 && HEX_COLOUR.matcher(args.get(1)).matches()) {
+            colour = new Command.Colour(args.get(0), Rgb.of(Integer.parseInt(args.get(1).substring(1), 16)));
+            notes.add("colour " + args.get(1) + " read as " + colour.toLine());
+        } else if (args.size() == 2) {
+            OptionalDouble number = Decimals.parse(args.get(1));
+            double argb = number.orElse(Double.NaN);
+            if (argb != Math.rint(argb) || argb < Integer.MIN_VALUE || argb > 0xffffffffL) {
+                throw new Refusal("colour '" + args.get(1) + "' is neither #rrggbb nor a 32-bit ARGB number");
+            }
+            colour = new Command.Colour(args.get(0), Rgb.of((int) (long) argb));
+            notes.add("colour " + args.get(1) + " (ARGB) read as " + colour.toLine());
+        } else {
+            throw new Refusal("wrong number of arguments: " + CommandWord.COLOUR.spelling() + " takes <name> and"
+                    + " <red> <green> <blue>, #rrggbb or an ARGB number; found " + args.size() + " arguments");
+        }
+        return colour;
+    }
+
+    private static int channel(String what, String word) throws Refusal {
+        int value = wholeNumber(what, word);
+        if (value < 0 || value > 255) {
+            throw new Refusal(what + " " + word + " is not a colour channel 0..255");
+        }
+        return value;
+    }
+
+    private static Command keyConnect(List<String> args, List<String> notes) throws Refusal {
         if (!args.get(0).equalsIgnoreCase("key")) {
             throw new Refusal("expected the word 'key' after KeyConnect, found '" + args.get(0) + "'");
         }
-        int keyCode = wholeNumber("key code", args.get(1));
+        int keyCode = keyCode(args.get(1), notes);
+        String direction = args.get(2).toLowerCase(Locale.ROOT);
+        KeyEdge edge = switch (direction) {
+            case "down", "ondown" -> KeyEdge.DOWN;
+            case "up", "onup" -> KeyEdge.UP;
+            case "change" -> KeyEdge.CHANGE;
+            default -> throw new Refusal("bad direction '" + args.get(2) + "': expected down, up or change");
+        };
+        if (direction.startsWith("on")) {
+            notes.add("'" + args.get(2) + "' read as " + edge.name().toLowerCase(Locale.ROOT));
+        }
+        return new Command.KeyConnect(keyCode, edge, args.get(3));
+    }
+
+    /** A KeyEvent code, or a KeyEvent key name (Space, "Left", q), quoted or not. */
+    private static int keyCode(String word, List<String> notes) throws Refusal {
+        String unquoted = word.length() >= 2 && (word.startsWith("\"") && word.endsWith("\"")
+                || word.startsWith("'") && word.endsWith("'")) ? word.substring(1, word.length() - 1) : word;
+        if (Decimals.parse(unquoted).isEmpty()) {
+            OptionalInt named = KeyCodes.named(unquoted);
+            if (named.isEmpty()) {
+                throw new Refusal("unknown key " + word + ": neither a key code nor a java.awt.event.KeyEvent key"
+                        + " name (VK_ without the prefix, such as Space or Q)");
+            }
+            notes.add("key " + word + " read as key code " + named.getAsInt());
+            return named.getAsInt();
+        }
+        int keyCode = wholeNumber("key code", unquoted);
         if (!KeyCodes.isKnown(keyCode)) {
             throw new Refusal("unknown key code " + keyCode + " (not a java.awt.event.KeyEvent VK_ code)");
         }
-        KeyEdge edge = switch (args.get(2).toLowerCase(Locale.ROOT)) {
-            case "down" -> KeyEdge.DOWN;
-            case "up" -> KeyEdge.UP;
-            default -> throw new Refusal("bad direction '" + args.get(2) + "': expected down or up");
+        return keyCode;
+    }
+
+    /** The MIT 6.170 3-D variant: corners and positions with a z, rotations about two axes, a gravity vector. */
+    private static void refuseMit3d(CommandWord word, List<String> args) throws Refusal {
+        String form = switch (word) {
+            case ABSORBER -> args.size() == 7 && allNumbers(args.subList(1, 7)) ? "an absorber with x y z corners" : null;
+            case BALL -> args.size() == 8 && allNumbers(args.subList(1, 8)) ? "a ball with x y z and its velocity" : null;
+            case ROTATE -> args.size() == 2 && AXES.matcher(args.get(1)).matches() ? "a rotation in a plane of axes"
+                    : null;
+            case GRAVITY -> args.size() == 3 && allNumbers(args) ? "a gravity vector" : null;
+            default -> null;
         };
-        return new Command.KeyConnect(keyCode, edge, args.get(3));
+        if (form != null) {
+            throw mit3d(form);
+        }
+    }
+
+    private static Refusal mit3d(String form) {
+        return new Refusal("an MIT 6.170 3-D form (" + form + ")" + NOT_THE_FORMAT);
+    }
+
+    /**
+     * Why a first word is not known: a gizmo or command of another implementation's extension, an MIT 3-D gizmo,
+     * or simply unknown.
+     */
+    private static Refusal unknownCommand(List<String> words) {
+        String word = words.get(0);
+        List<String> args = words.subList(1, words.size());
+        if (MIT_3D_GIZMOS.contains(word.toLowerCase(Locale.ROOT)) && args.size() == 5
+                && allNumbers(args.subList(1, 5))) {
+            return mit3d("a gizmo with x y z and a size");
+        }
+        if (WORD.matcher(word).matches() && word.toLowerCase(Locale.ROOT).endsWith("connect")) {
+            return new Refusal(word + ": " + EXTENSION);
+        }
+        if (WORD.matcher(word).matches() && !args.isEmpty() && Decimals.parse(args.get(0)).isEmpty()
+                && allNumbers(args.subList(1, args.size()))) {
+            return new Refusal(word + " " + args.get(0) + ": " + EXTENSION);
+        }
+        return new Refusal("unknown command '" + word + "'");
+    }
+
+    private static boolean allNumbers(List<String> words) {
+        return words.stream().allMatch(w -> Decimals.parse(w).isPresent());
     }
 
     /** A gizmo coordinate: a whole number of cells, also when written as a decimal such as 7.0. */
     private static int cell(String what, String word) throws Refusal {
         double value = number(what, word);
         if (value != Math.rint(value)) {
-            throw new Refusal(what + " coordinate " + word + " is not a whole cell");
+            throw new Refusal(what + " coordinate " + word + " is not a whole cell: gizmos sit on whole cells, the"
+                    + " format has no fractional cells");
         }
         if (Math.abs(value) > COORDINATE_LIMIT) {
             throw new Refusal(what + " coordinate " + word + " is outside the board");
         }
+        refusePixels(what, word, value);
         return (int) value;
+    }
+
+    private static double ballCoordinate(String what, String word) throws Refusal {
+        double value = number(what, word);
+        refusePixels(what, word, value);
+        return value;
+    }
+
+    private static void refusePixels(String what, String word, double value) throws Refusal {
+        if (Math.abs(value) >= PIXEL_COORDINATES_FROM && Math.abs(value) <= COORDINATE_LIMIT) {
+            throw new Refusal(what + " coordinate " + word + " is far outside the " + Board.SIZE + "x" + Board.SIZE
+                    + " board: pixel coordinates, it seems, but the format counts in L (cells)");
+        }
     }
 
     private static int wholeNumber(String what, String word) throws Refusal {

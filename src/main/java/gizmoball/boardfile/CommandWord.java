@@ -21,7 +21,8 @@ enum CommandWord {
     DELETE("Delete", null, "<name>"),
     MOVE("Move", null, "<name> <x> <y>"),
     CONNECT("Connect", null, "<name1> <name2>"),
-    KEY_CONNECT("KeyConnect", null, "key <keycode> down|up <name>"),
+    KEY_CONNECT("KeyConnect", null, "key <keycode> down|up|change <name>"),
+    COLOUR("Colour", null, "<name> <red> <green> <blue>"),
     GRAVITY("Gravity", null, "<g>"),
     FRICTION("Friction", null, "<mu> <mu2>");
 

@@ -5,8 +5,10 @@ import gizmoball.model.KeyEdge;
 import java.awt.event.KeyEvent;
 import java.lang.reflect.Field;
 import java.lang.reflect.Modifier;
-import java.util.HashSet;
+import java.util.HashMap;
 import java.util.Locale;
+import java.util.Map;
+import java.util.OptionalInt;
 import java.util.Set;
 
 /**
@@ -16,7 +18,9 @@ import java.util.Set;
  * bindings to the player, so that the status line, the overlay and the help say them the same way.
  */
 public final class KeyCodes {
-    private static final Set<Integer> CODES = constantValues();
+    private static final String PREFIX = "VK_";
+    private static final Map<String, Integer> BY_NAME = constants();
+    private static final Set<Integer> CODES = Set.copyOf(BY_NAME.values());
 
     private KeyCodes() {
     }
@@ -25,12 +29,19 @@ public final class KeyCodes {
         return CODES.contains(keyCode);
     }
 
+    /** The code of a KeyEvent key name in any letter case, with or without its VK_ prefix: Space, q, vk_left. */
+    static OptionalInt named(String name) {
+        String upper = name.toUpperCase(Locale.ROOT);
+        Integer code = BY_NAME.get(upper.startsWith(PREFIX) ? upper.substring(PREFIX.length()) : upper);
+        return code == null ? OptionalInt.empty() : OptionalInt.of(code);
+    }
+
     /** The key as the player knows it: "Z", "Space", "Slash". */
     public static String name(int keyCode) {
         return KeyEvent.getKeyText(keyCode);
     }
 
-    /** "down" or "up", as in the board file. */
+    /** "down", "up" or "change", as in the board file. */
     public static String edge(KeyEdge edge) {
         return edge.name().toLowerCase(Locale.ROOT);
     }
@@ -40,19 +51,20 @@ public final class KeyCodes {
         return "key " + name(binding.keyCode()) + " " + edge(binding.edge()) + " \u2192 " + binding.gizmo();
     }
 
-    private static Set<Integer> constantValues() {
-        Set<Integer> codes = new HashSet<>();
+    /** Name without the prefix -> code. */
+    private static Map<String, Integer> constants() {
+        Map<String, Integer> codes = new HashMap<>();
         for (Field field : KeyEvent.class.getFields()) {
             int modifiers = field.getModifiers();
-            if (field.getName().startsWith("VK_") && !field.getName().equals("VK_UNDEFINED")
+            if (field.getName().startsWith(PREFIX) && !field.getName().equals("VK_UNDEFINED")
                     && Modifier.isStatic(modifiers) && field.getType() == int.class) {
                 try {
-                    codes.add(field.getInt(null));
+                    codes.put(field.getName().substring(PREFIX.length()), field.getInt(null));
                 } catch (IllegalAccessException e) {
                     throw new IllegalStateException("public constant " + field + " is not readable", e);
                 }
             }
         }
-        return Set.copyOf(codes);
+        return Map.copyOf(codes);
     }
 }

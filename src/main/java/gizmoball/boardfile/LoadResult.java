@@ -8,10 +8,12 @@ import java.util.List;
  *
  * @param board        a new board holding every command of the file that could be applied
  * @param skippedLines exactly the lines left out, and why, in line order; empty when the file was clean
+ * @param notes        how lines written in another implementation's way were understood, in line order
  */
-public record LoadResult(Board board, List<BoardFileError> skippedLines) {
+public record LoadResult(Board board, List<BoardFileError> skippedLines, List<BoardFileNote> notes) {
     public LoadResult {
         skippedLines = List.copyOf(skippedLines);
+        notes = List.copyOf(notes);
     }
 
     /** Nothing of the file made it in: the board is exactly a new, empty one (its settings included). */

@@ -9,8 +9,14 @@ import java.util.List;
  */
 record ParsedFile(List<Line> commands, List<BoardFileError> errors) {
 
-    /** A well-formed command and the line it came from, so that later refusals by the model name the line. */
-    record Line(SourceLine line, Command command) {
+    /**
+     * A well-formed command and the line it came from, so that later refusals by the model name the line, with
+     * how the line was understood if it was not written canonically.
+     */
+    record Line(SourceLine line, Command command, List<String> notes) {
+        Line {
+            notes = List.copyOf(notes);
+        }
     }
 
     ParsedFile {
@@ -24,7 +30,8 @@ record ParsedFile(List<Line> commands, List<BoardFileError> errors) {
         List<BoardFileError> errors = new ArrayList<>();
         for (SourceLine line : BoardFileLexer.commandLines(content)) {
             try {
-                commands.add(new Line(line, CommandParser.parse(line.text())));
+                CommandParser.Parsed parsed = CommandParser.parse(line.text());
+                commands.add(new Line(line, parsed.command(), parsed.notes()));
             } catch (CommandParser.Refusal refusal) {
                 errors.add(BoardFileError.at(source, line, refusal.getMessage()));
             }

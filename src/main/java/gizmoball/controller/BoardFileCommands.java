@@ -95,10 +95,11 @@ public final class BoardFileCommands {
         List<BoardFileError> bad = result.skippedLines();
         if (bad.isEmpty()) {
             show(result.board(), file, 0, "Loaded " + name);
+            showNotes(name, result);
             return true;
         }
         // A board empty because of skipping is not offered: one Save would write it over the whole file.
-        if (!LoadProblemsDialog.askSkip(window, name, describe(bad), !result.keptNothing())) {
+        if (!LoadProblemsDialog.askSkip(window, name, describe(bad), notes(result), !result.keptNothing())) {
             status.accept("Kept the current board; " + name + " has bad lines");
             return false;
         }
@@ -134,10 +135,24 @@ public final class BoardFileCommands {
      * until the window is up, so that whoever opened the window is not blocked by a modal dialog.
      */
     public void openAtLaunch(Path file) {
+        String name = String.valueOf(file.getFileName());
         try {
-            show(BoardFiles.load(file), file, 0, "Loaded " + file.getFileName());
-        } catch (BoardFileException | IOException e) {
-            SwingUtilities.invokeLater(() -> open(file));
+            LoadResult result = BoardFiles.loadSkippingBadLines(file);
+            if (result.skippedLines().isEmpty()) {
+                show(result.board(), file, 0, "Loaded " + name);
+                SwingUtilities.invokeLater(() -> showNotes(name, result));
+                return;
+            }
+        } catch (IOException e) {
+            // reported by open, once the window is up
+        }
+        SwingUtilities.invokeLater(() -> open(file));
+    }
+
+    /** A file that loaded as it is may still have notes: they are shown, after the board. */
+    private void showNotes(String name, LoadResult result) {
+        if (!result.notes().isEmpty()) {
+            LoadProblemsDialog.showNotes(window, name, notes(result));
         }
     }
 
@@ -235,6 +250,11 @@ public final class BoardFileCommands {
 
     private static List<String> describe(List<BoardFileError> errors) {
         return errors.stream().map(e -> "line " + e.line() + ": " + e.text().strip() + "   <- " + e.reason()).toList();
+    }
+
+    private static List<String> notes(LoadResult result) {
+        return result.notes().stream().map(n -> "line " + n.line() + ": " + n.text().strip() + "   <- " + n.note())
+                .toList();
     }
 
     /** A question with these buttons, the last (Cancel) the default; the index of the one chosen, -1 if closed. */

@@ -8,14 +8,17 @@ import gizmoball.model.Gizmo;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.Rgb;
 import java.awt.event.KeyEvent;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.EnumMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.function.Consumer;
+import java.util.regex.Pattern;
 import physics.Vect;
 
 /**
@@ -34,6 +37,7 @@ public final class Editor {
     static final double WALL_BAND = 0.25;
     /** Dragging 1 L while placing a ball gives it 10 L/s: a board-wide drag is about the launch speed. */
     public static final double VELOCITY_PER_DRAG = 10;
+    private static final Pattern HEX_COLOUR = Pattern.compile("[0-9a-fA-F]{6}");
     /** A press that moves less than this is a click, not a drag. */
     static final double DRAG_THRESHOLD = 0.1;
 
@@ -263,6 +267,40 @@ public final class Editor {
                 b.setBallVelocity(name, vx, vy);
             }
         });
+    }
+
+    /**
+     * Gives a gizmo its own colour from text: {@code #rrggbb} (the # optional), or empty for its kind's colour.
+     * One undo step; the same colour again is no edit.
+     */
+    public boolean setColour(String gizmo, String text) {
+        Optional<Gizmo> target = board.gizmo(gizmo);
+        if (target.isEmpty()) {
+            say("No gizmo named " + gizmo);
+            return false;
+        }
+        String hex = text.strip();
+        hex = hex.startsWith("#") ? hex.substring(1) : hex;
+        Optional<Rgb> colour;
+        if (hex.isEmpty()) {
+            colour = Optional.empty();
+        } else if (HEX_COLOUR.matcher(hex).matches()) {
+            colour = Optional.of(Rgb.of(Integer.parseInt(hex, 16)));
+        } else {
+            say("Colour '" + text.strip() + "' is not #rrggbb (such as #99b3ff); leave it empty for the "
+                    + "colour of the kind");
+            return false;
+        }
+        if (colour.equals(target.get().colour())) {
+            return true;
+        }
+        return edit(colour.map(c -> gizmo + " coloured " + hex(c)).orElse(gizmo + " back to the colour of its kind"),
+                b -> b.setColour(gizmo, colour));
+    }
+
+    /** {@code #rrggbb}, as the properties panel shows a colour. */
+    public static String hex(Rgb colour) {
+        return String.format(Locale.ROOT, "#%06x", colour.packed());
     }
 
     /** Removes one connection (from the properties panel's list). */

@@ -40,7 +40,8 @@ public record HeadlessOptions(Path board, long ticks, Optional<Double> dt, boole
                 case "--skip-bad-lines" -> skipBadLines = true;
                 case "--out" -> out = Optional.of(path(valueOf(args, ++i, arg)));
                 default -> {
-                    if (arg.startsWith("--")) {
+                    // "-" alone would be a file name; anything else with a dash is an option, never a board.
+                    if (arg.startsWith("-") && arg.length() > 1) {
                         throw new BadArguments("unknown option " + arg);
                     }
                     if (board != null) {

@@ -121,12 +121,29 @@ public final class Board {
      * overlap another free ball or a gizmo other than an absorber; one placed overlapping an absorber is captured.
      */
     public void addBall(String name, double x, double y, double vx, double vy) {
+        placeBall(name, x, y, vx, vy, false);
+    }
+
+    /**
+     * As {@link #addBall}, except that other free balls in the way do not refuse it (board files of other
+     * implementations place balls on each other; the loop lets such a pair pass through until it separates).
+     * Every other check stays. Returns the free balls it overlaps, in board order (none if it is captured).
+     */
+    public List<String> addBallOverlappingBalls(String name, double x, double y, double vx, double vy) {
+        Ball ball = placeBall(name, x, y, vx, vy, true);
+        return ball.isCaptured() ? List.of() : balls.values().stream()
+                .filter(other -> other != ball && !other.isCaptured() && overlap(other.position(), ball.position()))
+                .map(Ball::name)
+                .toList();
+    }
+
+    private Ball placeBall(String name, double x, double y, double vx, double vy, boolean ballsMayOverlap) {
         requireFreshName(name);
         if (!Double.isFinite(vx) || !Double.isFinite(vy)) {
             throw new BoardEditException("ball " + name + ": velocity (" + vx + "," + vy + ") must be finite");
         }
         Vect position = new Vect(requireFinite(x, name), requireFinite(y, name));
-        Absorber captor = ballPlacementCaptor(name, position, null);
+        Absorber captor = ballPlacementCaptor(name, position, null, ballsMayOverlap);
         Ball ball = new Ball(name, position, Vect.ZERO);
         ball.setVelocity(new Vect(vx, vy));
         balls.put(name, ball);
@@ -134,6 +151,7 @@ public final class Board {
             capture(ball, captor);
         }
         notifyObservers(BoardChange.EDIT);
+        return ball;
     }
 
     /** Turns a gizmo 90 degrees clockwise within its footprint; circles and absorbers stay as they are. */
@@ -195,7 +213,7 @@ public final class Board {
             throw new BoardEditException("cannot move " + ball + ": no ball named " + ball);
         }
         Vect position = new Vect(requireFinite(x, ball), requireFinite(y, ball));
-        Absorber captor = ballPlacementCaptor(ball, position, ball);
+        Absorber captor = ballPlacementCaptor(ball, position, ball, false);
         if (target.isCaptured()) {
             releaseFromAbsorber(ball);
             target.release(position, Vect.ZERO);
@@ -270,6 +288,15 @@ public final class Board {
         if (!keyBindings.remove(new KeyBinding(keyCode, edge, gizmo))) {
             throw new BoardEditException("key " + keyCode + " " + edgeName(edge) + " is not bound to " + gizmo);
         }
+        notifyObservers(BoardChange.EDIT);
+    }
+
+    /** Gives a gizmo its own colour, or with empty back the colour of its kind. */
+    public void setColour(String gizmo, Optional<Rgb> colour) {
+        if (colour == null) {
+            throw new BoardEditException("colour of " + gizmo + " must be a colour or empty, not null");
+        }
+        requireGizmo(gizmo).setColour(colour);
         notifyObservers(BoardChange.EDIT);
     }
 
@@ -371,7 +398,7 @@ public final class Board {
      * Checks a ball position (for the ball named {@code name}, ignoring ball {@code ignoring}) and returns the
      * absorber that would capture it there, or null.
      */
-    private Absorber ballPlacementCaptor(String name, Vect position, String ignoring) {
+    private Absorber ballPlacementCaptor(String name, Vect position, String ignoring, boolean ballsMayOverlap) {
         String what = "ball " + name + " at (" + position.x() + "," + position.y() + ")";
         if (!insideBoard(position)) {
             throw new BoardEditException(what + " is outside the board (its centre must be at least " + BALL_RADIUS
@@ -389,15 +416,19 @@ public final class Board {
                 }
             }
         }
-        if (captor == null) {
+        if (captor == null && !ballsMayOverlap) {
             for (Ball other : balls.values()) {
-                if (!other.isCaptured() && !other.name().equals(ignoring)
-                        && Math.sqrt(other.position().distanceSquared(position)) < 2 * BALL_RADIUS - TOUCH_TOLERANCE) {
+                if (!other.isCaptured() && !other.name().equals(ignoring) && overlap(other.position(), position)) {
                     throw new BoardEditException(what + " would overlap ball " + other.name());
                 }
             }
         }
         return captor;
+    }
+
+    /** Whether balls centred there overlap by more than touching. */
+    private static boolean overlap(Vect a, Vect b) {
+        return Math.sqrt(a.distanceSquared(b)) < 2 * BALL_RADIUS - TOUCH_TOLERANCE;
     }
 
     static boolean insideBoard(Vect position) {
@@ -543,7 +574,10 @@ public final class Board {
         new TickRun(this, dt).run();
     }
 
-    /** Performs the actions bound to (keyCode, DOWN): flippers swing up, others perform their action. */
+    /**
+     * Performs the actions bound to (keyCode, DOWN): flippers swing up, others perform their action; and those
+     * bound to (keyCode, CHANGE): every gizmo performs its action (a flipper toggles).
+     */
     public void keyDown(int keyCode) {
         keyAction(keyCode, KeyEdge.DOWN);
     }
@@ -555,7 +589,9 @@ public final class Board {
 
     private void keyAction(int keyCode, KeyEdge edge) {
         for (KeyBinding binding : List.copyOf(keyBindings)) {
-            if (binding.keyCode() == keyCode && binding.edge() == edge) {
+            if (binding.keyCode() == keyCode && binding.edge() == KeyEdge.CHANGE && edge == KeyEdge.DOWN) {
+                performAction(gizmos.get(binding.gizmo()), time);
+            } else if (binding.keyCode() == keyCode && binding.edge() == edge) {
                 GizmoBase gizmo = gizmos.get(binding.gizmo());
                 if (gizmo instanceof Flipper flipper) {
                     flipper.markTriggered(time);

@@ -1,5 +1,7 @@
 package gizmoball.model;
 
+import java.util.Optional;
+
 /** A gizmo on the board. Coordinates are whole cells; the footprint is the rectangle x..x+width, y..y+height. */
 public sealed interface Gizmo permits Bumper, Flipper, Absorber {
     String name();
@@ -22,4 +24,7 @@ public sealed interface Gizmo permits Bumper, Flipper, Absorber {
 
     /** Board time of the last trigger or hit, NEGATIVE_INFINITY if never. */
     double lastTriggeredAt();
+
+    /** Its own colour, or empty for the kind's colour (see {@link Rgb}). */
+    Optional<Rgb> colour();
 }

@@ -1,5 +1,7 @@
 package gizmoball.model;
 
+import java.util.Optional;
+
 import physics.Vect;
 
 /**
@@ -15,6 +17,7 @@ abstract sealed class GizmoBase permits Bumper, Flipper, Absorber {
     private int rotation;
     private double lastTriggeredAt = Double.NEGATIVE_INFINITY;
     private Shape shape;
+    private Rgb colour;
 
     GizmoBase(String name, GizmoKind kind, int x, int y) {
         this.name = name;
@@ -29,6 +32,7 @@ abstract sealed class GizmoBase permits Bumper, Flipper, Absorber {
         this.rotation = other.rotation;
         this.lastTriggeredAt = other.lastTriggeredAt;
         this.shape = other.shape;
+        this.colour = other.colour;
     }
 
     public String name() {
@@ -64,6 +68,14 @@ abstract sealed class GizmoBase permits Bumper, Flipper, Absorber {
     }
 
     public abstract double reflectionCoefficient();
+
+    public Optional<Rgb> colour() {
+        return Optional.ofNullable(colour);
+    }
+
+    void setColour(Optional<Rgb> newColour) {
+        colour = newColour.orElse(null);
+    }
 
     /** The shape the collision detection uses now (for a flipper: at its current angle). */
     Shape shape() {

@@ -60,6 +60,11 @@ public final class BoardPainter {
         };
     }
 
+    /** The fill colour of a gizmo at rest: its own colour if it has one, otherwise its kind's. */
+    public static Color colourOf(Gizmo gizmo) {
+        return gizmo.colour().map(rgb -> new Color(rgb.packed())).orElseGet(() -> colourOf(gizmo.kind()));
+    }
+
     /**
      * Paints into {@code screen}, whose coordinates are the component's pixels, the part of the board that
      * only an edit changes: floor, grid, walls and every gizmo but the flippers,
@@ -76,7 +81,7 @@ public final class BoardPainter {
             }
             for (Gizmo gizmo : board.gizmos()) {
                 if (!(gizmo instanceof Flipper)) {
-                    paintShape(g, shapeOf(gizmo), colourOf(gizmo.kind()), pixel);
+                    paintShape(g, shapeOf(gizmo), colourOf(gizmo), pixel);
                 }
             }
             g.setColor(WALLS);
@@ -95,7 +100,7 @@ public final class BoardPainter {
             float pixel = (float) (1 / t.scale());
             for (Gizmo gizmo : board.gizmos()) {
                 double glow = flash(board.time() - gizmo.lastTriggeredAt());
-                Color fill = lit(colourOf(gizmo.kind()), glow);
+                Color fill = lit(colourOf(gizmo), glow);
                 if (glow > 0) {
                     paintHalo(g, gizmo instanceof Flipper flipper ? outline(flipper) : shapeOf(gizmo), glow);
                 }

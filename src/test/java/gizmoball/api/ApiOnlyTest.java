@@ -29,11 +29,11 @@ import gizmoball.Main;
 /**
  * The game uses package {@code physics} only through the members that {@code docs/physics-api.txt} lists, so
  * that it builds unchanged against the MIT physics package. (That file is the repository's copy of the product's
- * {@code ../shared/physics-api.txt}; a test keeps the two equal where the original is there.) Reads the constant pool of every compiled class of
- * {@code src/main/java}, which holds all its symbolic references.
+ * {@code ../shared/physics-api.txt}; a test keeps the two equal where the original is there.) Reads the constant
+ * pool of every compiled class of {@code src/main/java}, which holds all its symbolic references.
  * <p>
  * javac copies the value of a primitive or String constant into the class that uses it, leaving no reference
- * behind; physics-lib's own test of its public surface keeps such extras out of the game's reach.
+ * behind; the test of physics-lib's public surface below keeps such extras out of the game's reach.
  */
 class ApiOnlyTest {
     private static final Path API_LIST = Path.of("docs", "physics-api.txt");

@@ -17,7 +17,8 @@ import java.util.regex.Pattern;
 final class PhysicsApi {
     private static final Pattern TYPE_HEADER =
             Pattern.compile("public (?:(?:final|abstract) )*(?:class|interface) ([\\w.$]+)\\b.*\\{");
-    private static final Pattern MODIFIERS = Pattern.compile("^public ((?:static|final|abstract|synchronized|native) )*");
+    private static final Pattern MODIFIERS =
+            Pattern.compile("^public ((?:static|final|abstract|synchronized|native) )*");
     private static final Map<String, String> PRIMITIVES = Map.of("void", "V", "boolean", "Z", "byte", "B", "char", "C",
             "short", "S", "int", "I", "long", "J", "float", "F", "double", "D");
 

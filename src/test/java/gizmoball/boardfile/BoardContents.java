@@ -6,15 +6,18 @@ import gizmoball.model.Connection;
 import gizmoball.model.Gizmo;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyBinding;
+import gizmoball.model.Rgb;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
+import java.util.Optional;
 
 /** Everything a board file records about a board, as a value, so two boards can be compared with equals. */
 record BoardContents(List<GizmoState> gizmos, List<BallState> balls, List<Connection> connections,
                      List<KeyBinding> keyBindings, double gravity, double mu, double mu2) {
 
-    record GizmoState(String name, GizmoKind kind, int x, int y, int width, int height, int rotation) {
+    record GizmoState(String name, GizmoKind kind, int x, int y, int width, int height, int rotation,
+                      Optional<Rgb> colour) {
     }
 
     /** Doubles compared exactly (records use Double.compare semantics), so a lost bit shows. */
@@ -51,7 +54,7 @@ record BoardContents(List<GizmoState> gizmos, List<BallState> balls, List<Connec
     }
 
     private static GizmoState state(Gizmo g) {
-        return new GizmoState(g.name(), g.kind(), g.x(), g.y(), g.width(), g.height(), g.rotation());
+        return new GizmoState(g.name(), g.kind(), g.x(), g.y(), g.width(), g.height(), g.rotation(), g.colour());
     }
 
     private static BallState state(Ball b) {

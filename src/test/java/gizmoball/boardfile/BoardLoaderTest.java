@@ -105,17 +105,18 @@ class BoardLoaderTest {
                 "Circle C 4.5 4", "Circle C 4 4");
         BoardFileException refused = catchThrowableOfType(() -> BoardFiles.load("f", text), BoardFileException.class);
         assertThat(refused.errors()).extracting(BoardFileError::line).containsExactly(2, 3, 4, 5);
-        assertThat(refused.errors().get(1).reason()).isEqualTo("unknown command 'Bumper'");
+        assertThat(refused.errors().get(1).reason())
+                .isEqualTo("Bumper X: an extension of another implementation, not part of the format");
     }
 
     @Test
     void skippingBadLinesLoadsTheRestAndSaysExactlyWhichLinesWereLeftOut() throws BoardFileException {
-        String text = String.join("\n", "Square S 1 1", "Color S #ff0000", "Circle C 1 1", "Ball B 5.5 5.5 0 0",
+        String text = String.join("\n", "Square S 1 1", "Sink K 3 3", "Circle C 1 1", "Ball B 5.5 5.5 0 0",
                 "Connect S C", "KeyConnect key 32 down S");
         LoadResult result = BoardFiles.loadSkippingBadLines("f", text);
 
         assertThat(result.skippedLines()).extracting(BoardFileError::line, BoardFileError::text).containsExactly(
-                tuple(2, "Color S #ff0000"),
+                tuple(2, "Sink K 3 3"),
                 tuple(3, "Circle C 1 1"),
                 tuple(5, "Connect S C"));
         String withoutSkipped = String.join("\n", "Square S 1 1", "Ball B 5.5 5.5 0 0", "KeyConnect key 32 down S");

@@ -13,11 +13,12 @@ class ParsedFileTest {
 
         assertThat(parsed.commands()).extracting(line -> line.line().number()).containsExactly(1, 6);
         assertThat(parsed.errors()).containsExactly(
-                new BoardFileError("board.txt", 3, "Bumper B 1 2", "unknown command 'Bumper'"),
+                new BoardFileError("board.txt", 3, "Bumper B 1 2",
+                        "Bumper B: an extension of another implementation, not part of the format"),
                 new BoardFileError("board.txt", 5, "Circle C x 3", "x 'x' is not a number"),
                 new BoardFileError("board.txt", 7, "Gravity",
                         "wrong number of arguments: Gravity takes 1 (Gravity <g>), found 0"));
-        assertThat(parsed.errors().get(0)).hasToString("board.txt:3: unknown command 'Bumper': Bumper B 1 2");
+        assertThat(parsed.errors().get(1)).hasToString("board.txt:5: x 'x' is not a number: Circle C x 3");
     }
 
     @Test

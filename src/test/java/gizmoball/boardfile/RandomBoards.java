@@ -4,7 +4,9 @@ import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.Rgb;
 import java.util.List;
+import java.util.Optional;
 import java.util.Random;
 
 /** Random boards built through the board's own editing operations, for property tests. */
@@ -34,6 +36,9 @@ final class RandomBoards {
             for (int t = 0; t < turns; t++) {
                 attempt(() -> board.rotate(name));
             }
+            if (random.nextInt(3) == 0) {
+                board.setColour(name, Optional.of(Rgb.of(random.nextInt(1 << 24))));
+            }
         }
         int balls = random.nextInt(12);
         for (int i = 0; i < balls; i++) {
@@ -49,7 +54,7 @@ final class RandomBoards {
             int bindings = random.nextInt(8);
             for (int i = 0; i < bindings; i++) {
                 attempt(() -> board.bindKey(KEY_CODES[random.nextInt(KEY_CODES.length)],
-                        random.nextBoolean() ? KeyEdge.DOWN : KeyEdge.UP, pick(names)));
+                        KeyEdge.values()[random.nextInt(KeyEdge.values().length)], pick(names)));
             }
         }
         if (random.nextBoolean()) {

@@ -8,6 +8,7 @@ import gizmoball.model.Gizmo;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.Rgb;
 import org.junit.jupiter.api.BeforeEach;
 import physics.Vect;
 import org.junit.jupiter.api.Test;
@@ -622,5 +623,26 @@ class EditorTest {
 
         assertThat(board.keyBindings()).containsExactly(new KeyBinding(KeyEvent.VK_SLASH, KeyEdge.UP, "RF1"));
         assertThat(editor.awaitingEdge()).isFalse();
+    }
+
+    @Test
+    void aColourTypedAsHexIsOneUndoableEditAndBadTextIsRefusedWithAReason() {
+        board.addGizmo(GizmoKind.CIRCLE, "C", 4, 4);
+        assertThat(editor.setColour("C", " 99b3ff ")).isTrue();
+        assertThat(gizmo("C").colour()).contains(new Rgb(0x99, 0xb3, 0xff));
+        assertThat(lastMessage()).isEqualTo("C coloured #99b3ff");
+        int before = edits;
+        assertThat(editor.setColour("C", "#99B3FF")).as("the same colour").isTrue();
+        assertThat(edits).as("is no edit").isEqualTo(before);
+        assertThat(editor.setColour("C", "#12345")).isFalse();
+        assertThat(lastMessage()).contains("'#12345' is not #rrggbb");
+        assertThat(editor.setColour("Nope", "#123456")).isFalse();
+        assertThat(editor.setColour("C", "")).isTrue();
+        assertThat(gizmo("C").colour()).isEmpty();
+        editor.undo();
+        assertThat(gizmo("C").colour()).contains(new Rgb(0x99, 0xb3, 0xff));
+        editor.undo();
+        assertThat(gizmo("C").colour()).isEmpty();
+        assertThat(Editor.hex(new Rgb(0, 10, 255))).isEqualTo("#000aff");
     }
 }

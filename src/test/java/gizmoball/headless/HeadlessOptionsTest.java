@@ -36,6 +36,7 @@ class HeadlessOptionsTest {
             "--headless --ticks 5 --dt 0 b.txt | --dt needs a number of seconds > 0, not '0'",
             "--headless --ticks 5 --dt NaN b.txt | --dt needs a number of seconds > 0, not 'NaN'",
             "--headless --ticks 5 --fast b.txt | unknown option --fast",
+            "--headless --ticks 5 -x b.txt | unknown option -x",
             "--headless --ticks 5 a.txt b.txt | more than one board file: a.txt and b.txt",
             "--headless --ticks 5 b.txt --out | --out needs a value"})
     void refusesBadCommandLinesSayingWhy(String commandLine, String message) {

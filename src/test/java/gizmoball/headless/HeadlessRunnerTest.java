@@ -81,15 +81,15 @@ class HeadlessRunnerTest {
         assertThat(run("--headless", "--ticks", "10", file.toString())).isEqualTo(HeadlessRunner.BAD_INPUT);
         assertThat(stdout()).isEmpty();
         assertThat(stderr()).contains(file + ":2: name S is already used: Square S 2 2",
-                file + ":3: unknown command 'Bumper': Bumper X 1 1");
+                file + ":3: Bumper X: an extension of another implementation, not part of the format: Bumper X 1 1");
     }
 
     @Test
     void skippingBadLinesRunsTheRestAndReportsWhatWasSkipped() throws Exception {
         Path file = board("Square S 1 1\nColor S red\nCircle C 5 5\n");
         assertThat(run("--headless", "--skip-bad-lines", "--ticks", "1", file.toString())).isZero();
-        assertThat(stderr()).isEqualTo("skipped " + file + ":2: unknown command 'Color': Color S red"
-                + System.lineSeparator());
+        assertThat(stderr()).isEqualTo("skipped " + file
+                + ":2: colour 'red' is neither #rrggbb nor a 32-bit ARGB number: Color S red" + System.lineSeparator());
         assertThat(stdout()).startsWith("Square S 1 1\nCircle C 5 5\n");
     }
 

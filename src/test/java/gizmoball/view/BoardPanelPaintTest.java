@@ -5,10 +5,12 @@ import static org.assertj.core.api.Assertions.assertThat;
 import gizmoball.model.Board;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.Rgb;
 import java.awt.Color;
 import java.awt.Graphics2D;
 import java.awt.geom.Point2D;
 import java.awt.image.BufferedImage;
+import java.util.Optional;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
@@ -97,6 +99,25 @@ class BoardPanelPaintTest {
         assertThat(fading.getGreen()).isStrictlyBetween(square.getGreen(), lit.getGreen());
         assertThat(at(after, 2.5, 2.5)).isEqualTo(square);
         assertThat(at(after, 2.5, 1.93)).isEqualTo(BoardPainter.FLOOR);
+    }
+
+    @Test
+    void aGizmoWithItsOwnColourIsPaintedInItAndFlashesFromIt() {
+        Color own = new Color(0x20, 0x40, 0x60);
+        board.setColour("S", Optional.of(new Rgb(0x20, 0x40, 0x60)));
+        board.setColour("LF", Optional.of(new Rgb(0x99, 0xb3, 0xff)));
+        BufferedImage image = render();
+        assertThat(at(image, 2.5, 2.5)).isEqualTo(own);
+        assertThat(at(image, 6.25, 16.5)).as("the flipper at rest, along its left side").isEqualTo(new Color(0x99b3ff));
+        assertThat(at(image, 5.5, 5.5)).as("no colour of its own").isEqualTo(BoardPainter.colourOf(GizmoKind.CIRCLE));
+
+        board.trigger("S");
+        Color lit = at(render(), 2.5, 2.5);
+        assertThat(lit.getRed()).as("brighter than its own colour").isGreaterThan(own.getRed() + 100);
+        assertThat(lit.getBlue()).isGreaterThan(own.getBlue() + 100);
+        ticks(10);
+        board.setColour("S", Optional.empty());
+        assertThat(at(render(), 2.5, 2.5)).isEqualTo(BoardPainter.colourOf(GizmoKind.SQUARE));
     }
 
     private void ticks(int n) {

@@ -9,6 +9,9 @@ import gizmoball.app.Gizmoball;
 import gizmoball.app.PlayFeatures;
 import gizmoball.controller.Settings;
 import gizmoball.controller.Speed;
+import gizmoball.model.GizmoKind;
+import gizmoball.preview.AimPreview;
+import gizmoball.preview.Prediction;
 import java.awt.Rectangle;
 import java.awt.Window;
 import java.awt.event.WindowEvent;
@@ -86,5 +89,27 @@ class PlayFeaturesGuiTest {
         GameWindow next = open();
         assertThat(onEdt(() -> Gui.menuItem(next.menus(), "Ball trails").isSelected())).isTrue();
         await("the window where it was", () -> next.getBounds().equals(placed));
+    }
+
+    @Test
+    void inBuildModeTheSelectedBallsPathIsPredictedAndFollowsEdits() {
+        app = Gizmoball.launch(Path.of("boards", "default.txt"), settings);
+        AimPreview aim = app.playFeatures().aimPreview();
+        assertThat(onEdt(aim::current)).as("play mode shows no preview").isEmpty();
+        clickMenu(app.window().menus(), "Build");
+        onEdt(() -> app.build().controller().select("B"));
+        onEdt(aim::refresh);
+        Prediction first = onEdt(() -> aim.current().orElseThrow());
+        assertThat(first.ball()).isEqualTo("B");
+        assertThat(first.ticks()).isPositive();
+
+        // The ball drops from (19.75, 17.5) into the absorber: a square under it (cell 19, 18) changes the path at once.
+        onEdt(() -> app.session().board().addGizmo(GizmoKind.SQUARE, "InTheWay", 19, 18));
+        Prediction after = onEdt(() -> aim.current().orElseThrow());
+        assertThat(after.path()).isNotEqualTo(first.path());
+
+        clickMenu(app.window().menus(), "Aim preview");
+        assertThat(onEdt(aim::current)).as("View > Aim preview off").isEmpty();
+        assertThat(settings.aimPreview()).isFalse();
     }
 }

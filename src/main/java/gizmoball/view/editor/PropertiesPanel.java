@@ -9,21 +9,29 @@ import gizmoball.model.BoardChange;
 import gizmoball.model.Connection;
 import gizmoball.model.Gizmo;
 import gizmoball.model.KeyBinding;
+import gizmoball.model.Rgb;
+import gizmoball.view.BoardPainter;
 
 import javax.swing.BorderFactory;
 import javax.swing.Box;
 import javax.swing.BoxLayout;
 import javax.swing.DefaultListModel;
 import javax.swing.JButton;
+import javax.swing.JColorChooser;
 import javax.swing.JComponent;
 import javax.swing.JLabel;
 import javax.swing.JList;
 import javax.swing.JPanel;
 import javax.swing.JScrollPane;
+import javax.swing.JTextField;
 import javax.swing.ListSelectionModel;
 import javax.swing.SwingConstants;
 import java.awt.BorderLayout;
+import java.awt.Component;
+import java.awt.Container;
+import java.awt.Color;
 import java.awt.Dimension;
+import java.awt.FlowLayout;
 import java.awt.GridBagConstraints;
 import java.awt.GridBagLayout;
 import java.awt.Insets;
@@ -37,10 +45,10 @@ import javax.swing.KeyStroke;
 
 /**
  * Build mode's east panel: the board's gravity and friction, and the selection: its name and place, a ball's
- * position and velocity, a gizmo's connections and key bindings (each removable). Numbers are read here, with
- * the board file's grammar ({@link NumberField}); the editor applies them or reports why not. Enter or Apply
- * applies a group of fields, Esc puts back the board's values; both hand the keyboard back to the board, so the
- * next key is a tool key again, not more text.
+ * position and velocity, a gizmo's colour, connections and key bindings (each removable). Numbers are read here,
+ * with the board file's grammar ({@link NumberField}); the editor applies them or reports why not, and reads a
+ * colour's #rrggbb itself. Enter or Apply applies a group of fields, Esc puts back the board's values; both hand
+ * the keyboard back to the board, so the next key is a tool key again, not more text.
  */
 public final class PropertiesPanel extends JPanel {
     /** One line of the links list, with what removing it means. */
@@ -66,6 +74,9 @@ public final class PropertiesPanel extends JPanel {
     private final NumberField ballVy = new NumberField("ball.vy");
     private final JButton applyBall = new JButton("Apply");
     private final JPanel ballRows = new JPanel(new GridBagLayout());
+    private final JTextField colour = new JTextField(6);
+    private final JLabel swatch = new JLabel();
+    private final JPanel colourRows = new JPanel(new GridBagLayout());
     private final DefaultListModel<Link> links = new DefaultListModel<>();
     private final JList<Link> linkList = new JList<>(links);
     private final JButton removeLink = new JButton("Remove");
@@ -116,7 +127,7 @@ public final class PropertiesPanel extends JPanel {
         Optional<Gizmo> gizmo = controller.selectedGizmo();
         Optional<Ball> ball = controller.selectedBall();
         selection.setText(describe(gizmo, ball));
-        // The ball's rows keep their room when no ball is selected, so that nothing below them jumps.
+        // The ball's and the colour's rows keep their room when they do not apply, so that nothing below jumps.
         for (NumberField f : new NumberField[]{ballX, ballY, ballVx, ballVy}) {
             f.setEnabled(ball.isPresent());
             if (ball.isEmpty()) {
@@ -124,6 +135,13 @@ public final class PropertiesPanel extends JPanel {
             }
         }
         applyBall.setEnabled(ball.isPresent());
+        enableAll(colourRows, gizmo.isPresent());
+        colour.setText("");
+        swatch.setBackground(colourRows.getBackground());
+        gizmo.ifPresent(g -> {
+            colour.setText(g.colour().map(Editor::hex).orElse(""));
+            swatch.setBackground(BoardPainter.colourOf(g));
+        });
         ball.ifPresent(b -> {
             ballX.show(b.position().x());
             ballY.show(b.position().y());
@@ -191,6 +209,8 @@ public final class PropertiesPanel extends JPanel {
         b.gridwidth = 2;
         p.add(ballRows, b);
 
+        p.add(colourRows(), wide(constraints(0, 2)));
+
         GridBagConstraints l = constraints(0, 6);
         l.gridwidth = 2;
         p.add(new JLabel("Connections and keys"), l);
@@ -215,6 +235,53 @@ public final class PropertiesPanel extends JPanel {
         });
         p.add(removeLink, constraints(1, 8));
         return p;
+    }
+
+    /** The selected gizmo's own colour as #rrggbb (empty: its kind's), a swatch, a chooser and a reset. */
+    private JComponent colourRows() {
+        colour.setName("gizmo.colour");
+        colour.setToolTipText("#rrggbb, or empty for the colour of the kind");
+        colour.addActionListener(e -> applyColour(colour.getText()));
+        swatch.setName("gizmo.colour.swatch");
+        swatch.setOpaque(true);
+        swatch.setPreferredSize(new Dimension(18, 18));
+        swatch.setBorder(BorderFactory.createLineBorder(Color.DARK_GRAY));
+        JPanel value = new JPanel(new BorderLayout(4, 0));
+        value.add(swatch, BorderLayout.WEST);
+        value.add(colour, BorderLayout.CENTER);
+        row(colourRows, 0, "Colour", value);
+        JButton choose = new JButton("Choose...");
+        choose.setName("gizmo.colour.choose");
+        choose.addActionListener(e -> {
+            Color chosen = JColorChooser.showDialog(this, "Colour of " + shownSelection,
+                    swatch.getBackground());
+            if (chosen != null) {
+                applyColour(Editor.hex(Rgb.of(chosen.getRGB())));
+            }
+        });
+        JButton reset = new JButton("Kind's");
+        reset.setName("gizmo.colour.reset");
+        reset.setToolTipText("Back to the colour of the gizmo's kind");
+        reset.addActionListener(e -> applyColour(""));
+        // Under both columns: beside the label column they would not fit the panel's fixed width.
+        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.RIGHT, 4, 0));
+        buttons.add(choose);
+        buttons.add(reset);
+        colourRows.add(buttons, wide(constraints(0, 1)));
+        return colourRows;
+    }
+
+    private void applyColour(String text) {
+        controller.selectedGizmo().ifPresent(g -> {
+            if (controller.setColour(g.name(), text)) {
+                focusBoard.run();
+            }
+        });
+    }
+
+    private static GridBagConstraints wide(GridBagConstraints c) {
+        c.gridwidth = 2;
+        return c;
     }
 
     private void applyBoard() {
@@ -278,6 +345,15 @@ public final class PropertiesPanel extends JPanel {
         return controller.selected().filter(Board.OUTER_WALLS::equals).isPresent()
                 ? named(Board.OUTER_WALLS, "the walls around the board")
                 : "Nothing selected";
+    }
+
+    private static void enableAll(Container rows, boolean enabled) {
+        for (Component c : rows.getComponents()) {
+            c.setEnabled(enabled);
+            if (c instanceof Container inner) {
+                enableAll(inner, enabled);
+            }
+        }
     }
 
     /** "<b>name</b>: what", wrapped within the label's width. */

@@ -11,16 +11,21 @@ import gizmoball.model.Gizmo;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.Rgb;
+import gizmoball.view.BoardPainter;
 import gizmoball.view.Gui;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
+import javax.swing.JButton;
+import javax.swing.JLabel;
 import javax.swing.JList;
 import javax.swing.JMenuBar;
 import javax.swing.JMenuItem;
 import javax.swing.JTextField;
 import javax.swing.KeyStroke;
+import java.awt.Color;
 import java.awt.Dimension;
 import java.awt.Point;
 import java.awt.Robot;
@@ -217,6 +222,40 @@ class BuildModeGuiTest {
             gravity.postActionEvent();
         });
         assertThat(board.gravity()).isEqualTo(10);
+    }
+
+    @Test
+    void aGizmosColourIsChosenInThePropertiesShownInTheSwatchAndUndone() {
+        w.clickTool(Tool.SQUARE);
+        w.clickCell(3, 3);
+        w.clickTool(Tool.SELECT);
+        w.clickCell(3, 3);
+        JTextField colour = onEdt(() -> EditorGui.find(w.build.properties(), JTextField.class, "gizmo.colour"));
+        JLabel swatch = onEdt(() -> EditorGui.find(w.build.properties(), JLabel.class, "gizmo.colour.swatch"));
+        assertThat(onEdt(() -> colour.getText())).as("no colour of its own").isEmpty();
+        assertThat(onEdt(() -> swatch.getBackground())).isEqualTo(BoardPainter.colourOf(GizmoKind.SQUARE));
+
+        onEdt(() -> {
+            colour.setText("#99B3FF");
+            colour.postActionEvent();
+        });
+        assertThat(board.gizmos().get(0).colour()).contains(new Rgb(0x99, 0xb3, 0xff));
+        assertThat(onEdt(() -> colour.getText())).isEqualTo("#99b3ff");
+        assertThat(onEdt(() -> swatch.getBackground())).isEqualTo(new Color(0x99b3ff));
+
+        onEdt(() -> {
+            colour.setText("pink");
+            colour.postActionEvent();
+        });
+        assertThat(w.status()).contains("not #rrggbb");
+        assertThat(board.gizmos().get(0).colour()).contains(new Rgb(0x99, 0xb3, 0xff));
+
+        onEdt(() -> EditorGui.find(w.build.properties(), JButton.class, "gizmo.colour.reset").doClick(0));
+        assertThat(board.gizmos().get(0).colour()).isEmpty();
+        onEdt(() -> w.build.controller().undo());
+        assertThat(board.gizmos().get(0).colour()).contains(new Rgb(0x99, 0xb3, 0xff));
+        onEdt(() -> w.build.controller().undo());
+        assertThat(board.gizmos().get(0).colour()).isEmpty();
     }
 
     @Test

@@ -1,0 +1,157 @@
+package gizmoball.preview;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
+
+import gizmoball.boardfile.BoardFiles;
+import gizmoball.controller.GameLoop;
+import gizmoball.editor.Preview;
+import gizmoball.editor.Tool;
+import gizmoball.model.Ball;
+import gizmoball.model.Board;
+import gizmoball.model.GizmoKind;
+import gizmoball.session.GameSession;
+import gizmoball.session.Mode;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Optional;
+import java.util.stream.Stream;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.junit.jupiter.api.Test;
+import physics.Vect;
+
+/** The aim preview's prediction against what the game then plays. */
+class PredictorTest {
+    private static final double DT = Board.DEFAULT_TICK;
+    private static final int TICKS = 180;
+    /** A predictor whose budget never runs out: the clock stands still. */
+    private final Predictor unhurried = new Predictor(() -> 0L);
+
+    static Stream<String> sampleBoardBalls() throws Exception {
+        return Stream.of("default.txt", "multiball.txt", "rube-goldberg.txt", "stress.txt").flatMap(file -> {
+            try {
+                return BoardFiles.load(Path.of("boards", file)).balls().stream().map(b -> file + " " + b.name());
+            } catch (Exception e) {
+                throw new IllegalStateException(e);
+            }
+        });
+    }
+
+    @ParameterizedTest
+    @MethodSource("sampleBoardBalls")
+    void thePredictedPathIsThePathTheBallTakesInPlay(String boardAndBall) throws Exception {
+        String[] parts = boardAndBall.split(" ");
+        GameSession session = new GameSession();
+        session.setMode(Mode.BUILD);
+        session.load(BoardFiles.load(Path.of("boards", parts[0])), Path.of("boards", parts[0]));
+        String ball = parts[1];
+        Prediction p = unhurried.predict(session.board(), ball, Predictor.HORIZON_SECONDS, DT, Predictor.BUDGET_NANOS);
+        assertThat(p.ticks()).isEqualTo(TICKS);
+        assertThat(p.shortened()).isFalse();
+        assertThat(p.seconds()).isCloseTo(3, within(1e-9));
+
+        // Play, as the window does: switch to play mode and let the loop step, no key pressed.
+        session.setMode(Mode.PLAY);
+        GameLoop loop = new GameLoop(session.board(), DT);
+        assertThat(position(session.board(), ball)).isEqualTo(p.path().get(0).at());
+        for (int i = 1; i <= TICKS; i++) {
+            loop.step();
+            Vect played = position(session.board(), ball);
+            Vect predicted = p.path().get(i).at();
+            assertThat(played.minus(predicted).length()).as("tick %d", i).isLessThanOrEqualTo(1e-9);
+            assertThat(p.path().get(i).free()).isEqualTo(!session.board().ball(ball).orElseThrow().isCaptured());
+        }
+    }
+
+    @Test
+    void predictingLeavesTheBoardAsItWas() throws Exception {
+        Board board = BoardFiles.load(Path.of("boards", "multiball.txt"));
+        String before = BoardFiles.toText(board);
+        unhurried.predict(board, "B1", 3, DT, Long.MAX_VALUE);
+        assertThat(BoardFiles.toText(board)).isEqualTo(before);
+        assertThat(board.time()).isZero();
+    }
+
+    /** A ball dropped from (10.5, 2) falls freely down x = 10.5; a square in cell (10, 10) stops it at y = 9.75. */
+    @Test
+    void aGizmoPlacedAcrossThePathChangesIt() {
+        Board board = new Board();
+        board.setFriction(0, 0);
+        board.addBall("B", 10.5, 2, 0, 0);
+        Prediction free = unhurried.predict(board, "B", 3, DT, Long.MAX_VALUE);
+        double lowest = free.path().stream().mapToDouble(pt -> pt.at().y()).max().orElseThrow();
+        assertThat(lowest).as("falls to the floor").isCloseTo(19.75, within(1e-6));
+
+        // While the square is being placed (the editor's footprint under the pointer), and once it is placed.
+        Optional<AimScenario> placing = AimScenario.of(board, Tool.SQUARE,
+                Optional.of(new Preview.Footprint(10, 10, 1, 1, Optional.empty())), Optional.of("B"));
+        Prediction whilePlacing = unhurried.predict(placing.orElseThrow().board(), "B", 3, DT, Long.MAX_VALUE);
+        board.addGizmo(GizmoKind.SQUARE, "S", 10, 10);
+        Prediction placed = unhurried.predict(board, "B", 3, DT, Long.MAX_VALUE);
+
+        for (Prediction p : List.of(whilePlacing, placed)) {
+            assertThat(p.path().stream().mapToDouble(pt -> pt.at().y()).max().orElseThrow())
+                    .as("never below the square's top less a radius").isLessThanOrEqualTo(9.75 + 1e-9);
+            assertThat(p.path()).isNotEqualTo(free.path());
+        }
+        assertThat(whilePlacing.path()).isEqualTo(placed.path());
+    }
+
+    @Test
+    void aBallBeingPlacedIsPredictedWithTheVelocityDraggedOut() {
+        Board board = new Board();
+        board.setGravity(0);
+        board.setFriction(0, 0);
+        AimScenario s = AimScenario.of(board, Tool.BALL,
+                Optional.of(new Preview.BallPlacement(5, 5, 10, 0, Optional.empty())), Optional.empty()).orElseThrow();
+        Prediction p = unhurried.predict(s.board(), s.ball(), 1, DT, Long.MAX_VALUE);
+        // 10 L/s to the right without forces: 10/60 L per tick until the right wall at 19.75 (after 1.475 s).
+        assertThat(p.path().get(30).at().x()).isCloseTo(5 + 30 * 10 * DT, within(1e-9));
+        assertThat(board.balls()).as("the design gets no ball").isEmpty();
+    }
+
+    @Test
+    void withoutABallThereIsNothingToPredict() {
+        Board board = new Board();
+        board.addGizmo(GizmoKind.CIRCLE, "C", 3, 3);
+        assertThat(AimScenario.of(board, Tool.SELECT, Optional.empty(), Optional.of("C"))).isEmpty();
+        assertThat(AimScenario.of(board, Tool.SELECT, Optional.empty(), Optional.empty())).isEmpty();
+    }
+
+    @Test
+    void whenTheBudgetRunsOutTheHorizonIsShortened() {
+        long[] now = {0};
+        // Every reading of the clock is 1 ms later: each tick appears to cost 1 ms.
+        Predictor slow = new Predictor(() -> now[0] += 1_000_000);
+        Board board = new Board();
+        board.addBall("B", 10.5, 2, 0, 0);
+        Prediction p = slow.predict(board, "B", 3, DT, Predictor.BUDGET_NANOS);
+        assertThat(p.shortened()).isTrue();
+        assertThat(p.ticks()).isBetween(1, 8);
+        assertThat(p.seconds()).isEqualTo(p.ticks() * DT);
+        Vect fallen = p.path().get(p.ticks()).at();
+        assertThat(fallen.y()).isGreaterThan(2);
+    }
+
+    @Test
+    void aPredictionMadeInSlicesIsTheWholePrediction() throws Exception {
+        long[] now = {0};
+        Predictor slow = new Predictor(() -> now[0] += 1_000_000);
+        Board board = BoardFiles.load(Path.of("boards", "multiball.txt"));
+        Predictor.Run run = slow.start(board, "B3", 3, DT);
+        int slices = 0;
+        Prediction p;
+        do {
+            p = run.advance(Predictor.BUDGET_NANOS);
+            slices++;
+        } while (!run.isDone());
+        assertThat(slices).isGreaterThan(20);
+        assertThat(p.shortened()).isFalse();
+        assertThat(p.path()).isEqualTo(unhurried.predict(board, "B3", 3, DT, Long.MAX_VALUE).path());
+    }
+
+    private static Vect position(Board board, String ball) {
+        return board.ball(ball).map(Ball::position).orElseThrow();
+    }
+}
