@@ -76,10 +76,6 @@ public final class BoardPanel extends JComponent {
         repaint();
     }
 
-    public boolean isGridVisible() {
-        return gridVisible;
-    }
-
     /** Frames painted in the last second. */
     public int framesPerSecond() {
         return fps.fps(System.nanoTime());

@@ -1,8 +1,8 @@
 package gizmoball.view.editor;
 
+import gizmoball.boardfile.BoardContents;
 import gizmoball.session.GameSession;
 import gizmoball.session.Mode;
-import gizmoball.editor.Design;
 import gizmoball.editor.Tool;
 import gizmoball.model.Board;
 import gizmoball.model.Connection;
@@ -199,11 +199,11 @@ class BuildModeGuiTest {
     void aRefusedOverlapLeavesTheBoardAsItWasAndSaysWhyOnTheStatusLine() {
         w.clickTool(Tool.SQUARE);
         w.clickCell(5, 5);
-        Design before = onEdt(() -> Design.of(board));
+        BoardContents before = onEdt(() -> BoardContents.of(board));
         w.clickTool(Tool.RIGHT_FLIPPER);
         w.clickCell(4, 4);
 
-        assertThat(onEdt(() -> Design.of(board))).isEqualTo(before);
+        assertThat(onEdt(() -> BoardContents.of(board))).isEqualTo(before);
         assertThat(w.status()).contains("overlap").contains("S1");
     }
 
