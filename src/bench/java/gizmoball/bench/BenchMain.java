@@ -81,6 +81,11 @@ public final class BenchMain {
         Report.printHeadline(stdout, rows, scaling);
         Report.writeSoak(out.resolve("soak.csv"), soak);
 
+        stdout.println("aim preview");
+        List<PreviewCost.Row> preview = PreviewCost.run(boards, effort.samples());
+        PreviewCost.print(stdout, preview);
+        PreviewCost.write(out.resolve("preview.csv"), preview);
+
         stdout.printf(Locale.ROOT, "%nwrote CSV and charts to %s in %.0f s wall time%n", out.toAbsolutePath(),
                 (System.nanoTime() - wallStart) / 1e9);
     }

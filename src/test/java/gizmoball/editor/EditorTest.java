@@ -646,4 +646,15 @@ class EditorTest {
         assertThat(gizmo("C").colour()).isEmpty();
         assertThat(Editor.hex(new Rgb(0, 10, 255))).isEqualTo("#000aff");
     }
+
+    @Test
+    void aBallIsNeverPlacedOnAnotherEvenWhereAFileLoadedBallsOnEachOther() {
+        board.addBall("A", 5.1, 5.1, 0, 0);
+        board.addBallOverlappingBalls("A2", 5.2, 5.1, 0, 0);   // as the loader places balls a file put on each other
+        editor.setTool(Tool.BALL);
+        // Snapped to (5.5, 5.0): 0.41 L from A's centre, less than the two radii.
+        drag(5.6, 4.9, 5.6, 4.9);
+        assertThat(board.balls()).extracting(Ball::name).containsExactly("A", "A2");
+        assertThat(lastMessage()).contains("would overlap ball A");
+    }
 }
