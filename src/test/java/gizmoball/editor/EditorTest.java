@@ -483,6 +483,21 @@ class EditorTest {
         assertThat(board.ball("B1").orElseThrow().velocity()).isEqualTo(new Vect(5, -5));
     }
 
+    /** Issue 12 item 12: hovering and clicking word a refusal the same way, naming no gizmo that is not there. */
+    @Test
+    void aRefusedPlacementIsWordedAlikeOnHoverAndOnClick() {
+        board.addGizmo(GizmoKind.SQUARE, "S1", 2, 4);
+        editor.setTool(Tool.SQUARE);
+        editor.hover(2.5, 4.5);
+        String onHover = lastMessage();
+        assertThat(onHover).startsWith("a square at (2,4) would overlap").contains("S1");
+        editor.press(2.5, 4.5);
+        editor.release(2.5, 4.5);
+        assertThat(lastMessage()).isEqualTo(onHover);
+        assertThat(messages).noneMatch(m -> m.contains("S2"));
+        assertThat(board.gizmos()).hasSize(1);
+    }
+
     /** Issue 12 item 11: a circle and an absorber look the same turned. */
     @Test
     void rotatingACircleOrAnAbsorberIsRefusedWithoutAnUndoStep() {

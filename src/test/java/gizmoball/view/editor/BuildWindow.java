@@ -69,6 +69,15 @@ final class BuildWindow {
         });
     }
 
+    /** The pointer moves over the board to (x, y) with no button down. */
+    void hover(double x, double y) {
+        onEdt(() -> {
+            Point2D p = panel.transform().toScreen(x, y);
+            panel.dispatchEvent(new MouseEvent(panel, MouseEvent.MOUSE_MOVED, System.currentTimeMillis(), 0,
+                    (int) Math.round(p.getX()), (int) Math.round(p.getY()), 0, false, MouseEvent.NOBUTTON));
+        });
+    }
+
     void dragCells(int x0, int y0, int x1, int y1) {
         drag(x0 + 0.5, y0 + 0.5, x1 + 0.5, y1 + 0.5);
     }

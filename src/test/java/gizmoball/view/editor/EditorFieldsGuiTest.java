@@ -122,6 +122,20 @@ class EditorFieldsGuiTest {
         assertThat(onEdt(() -> w.board.keyBindings())).as("one undo step for both").isEmpty();
     }
 
+    /** Issue 12 item 12: the refusal reads the same on hover and on click, and names no would-be gizmo. */
+    @Test
+    void aRefusedPlacementSaysTheSameOnHoverAndOnClick() {
+        w.clickTool(Tool.SQUARE);
+        w.clickCell(2, 4);
+        w.clickTool(Tool.TRIANGLE);
+        w.hover(2.5, 4.5);
+        String onHover = w.status();
+        assertThat(onHover).startsWith("a triangle at (2,4) would overlap").contains("S1");
+        w.clickCell(2, 4);
+        assertThat(w.status()).isEqualTo(onHover);
+        assertThat(onEdt(() -> w.board.gizmos())).hasSize(1);
+    }
+
     /** Issue 12 item 13. */
     @Test
     void theEditMenuSaysWhatUndoTakesBackAndOffersRotateAndDeleteOnlyForASelection() {
