@@ -51,8 +51,8 @@ public final class BuildModeInstaller {
                 : Cursor.getDefaultCursor());
         controller.addStateListener(cursor);
 
-        PalettePanel palette = new PalettePanel(controller);
-        PropertiesPanel properties = new PropertiesPanel(controller, panel::requestFocusInWindow);
+        PalettePanel palette = PalettePanel.of(controller);
+        PropertiesPanel properties = PropertiesPanel.of(controller, panel::requestFocusInWindow);
         // Each side scrolls when the window is too short for it, so that a small window keeps every tool and
         // field in reach; the window itself is never resized for build mode (the player chose its size).
         JScrollPane west = SidePane.scrolling(palette);
@@ -76,7 +76,7 @@ public final class BuildModeInstaller {
         menus.revalidate();
 
         panel.addOverlay(new BuildOverlay(controller, building));
-        EdgePopup edgePopup = new EdgePopup(controller, panel);
+        EdgePopup edgePopup = EdgePopup.of(controller, panel);
         BoardInput.attach(controller, panel, building, edgePopup::show);
 
         session.addModeListener(mode -> {

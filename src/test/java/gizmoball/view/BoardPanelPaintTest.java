@@ -31,7 +31,7 @@ class BoardPanelPaintTest {
         board.addAbsorber("A", 0, 19, 20, 20);
         board.addBall("B", 10.5, 10.5, 0, 0);
         board.bindKey(Z, KeyEdge.DOWN, "LF");
-        panel = new BoardPanel(board);
+        panel = BoardPanel.of(board);
         panel.setSize(SIZE, SIZE);
     }
 
@@ -131,7 +131,7 @@ class BoardPanelPaintTest {
         Board held = new Board();
         held.addAbsorber("A", 0, 18, 20, 20);
         held.addBall("B1", 5, 18.5, 0, 0);
-        panel = new BoardPanel(held);
+        panel = BoardPanel.of(held);
         panel.setSize(SIZE, SIZE);
         assertThat(darkPixelsOnBall(render(), 19.75, 19.75)).as("one ball: no label").isZero();
 
@@ -150,7 +150,7 @@ class BoardPanelPaintTest {
         for (int i = 0; i < 3; i++) {
             held.addBall("B" + i, 5 + 2 * i, 18.5, 0, 0);
         }
-        panel = new BoardPanel(held);
+        panel = BoardPanel.of(held);
         panel.setSize(SIZE, SIZE);
         BufferedImage image = render();
         Point2D centre = panel.transform().toScreen(19.75, 19.75);

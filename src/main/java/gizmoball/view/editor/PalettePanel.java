@@ -24,7 +24,7 @@ public final class PalettePanel extends JPanel {
     private final JPanel column = new JPanel(new GridLayout(0, 1, 0, 2));
     private boolean compact;
 
-    public PalettePanel(Editor controller) {
+    private PalettePanel(Editor controller) {
         super(new BorderLayout());
         setBorder(BorderFactory.createEmptyBorder(6, 6, 6, 6));
         // The buttons keep their natural height at the top however tall the window is.
@@ -42,8 +42,14 @@ public final class PalettePanel extends JPanel {
             column.add(button);
             buttons.put(tool, button);
         }
-        controller.addStateListener(() -> buttons.get(controller.tool()).setSelected(true));
         buttons.get(controller.tool()).setSelected(true);
+    }
+
+    /** The palette of {@code controller}'s tools, its buttons following the tool chosen (by key or click). */
+    public static PalettePanel of(Editor controller) {
+        PalettePanel palette = new PalettePanel(controller);
+        controller.addStateListener(() -> palette.buttons.get(controller.tool()).setSelected(true));
+        return palette;
     }
 
     /**

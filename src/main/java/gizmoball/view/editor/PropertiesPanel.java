@@ -82,8 +82,7 @@ public final class PropertiesPanel extends JPanel {
     private final JButton removeLink = new JButton("Remove");
     private String shownSelection;
 
-    /** @param focusBoard gives the keyboard back to the board view (after Enter, Apply or Esc in a field) */
-    public PropertiesPanel(Editor controller, Runnable focusBoard) {
+    private PropertiesPanel(Editor controller, Runnable focusBoard) {
         this.controller = controller;
         this.focusBoard = focusBoard;
         setLayout(new BorderLayout());
@@ -96,18 +95,27 @@ public final class PropertiesPanel extends JPanel {
         stack.add(section("Selection", selectionSection()));
         add(stack, BorderLayout.NORTH);
 
+        refresh();
+    }
+
+    /**
+     * The panel of {@code controller}'s board and selection, following its edits and selection.
+     *
+     * @param focusBoard gives the keyboard back to the board view (after Enter, Apply or Esc in a field)
+     */
+    public static PropertiesPanel of(Editor controller, Runnable focusBoard) {
+        PropertiesPanel panel = new PropertiesPanel(controller, focusBoard);
         controller.board().addObserver((board, change) -> {
             if (change != BoardChange.TICK) {
-                refresh();
+                panel.refresh();
             }
         });
         controller.addStateListener(() -> {
-            String now = controller.selected().orElse(null);
-            if (!Objects.equals(now, shownSelection)) {
-                refresh();
+            if (!Objects.equals(controller.selected().orElse(null), panel.shownSelection)) {
+                panel.refresh();
             }
         });
-        refresh();
+        return panel;
     }
 
     /** A fixed width: the board view must not jump when the selection shows more or fewer rows. */

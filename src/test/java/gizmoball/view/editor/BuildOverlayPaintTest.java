@@ -32,7 +32,7 @@ class BuildOverlayPaintTest {
     }
 
     private BoardPanel panel() {
-        BoardPanel panel = new BoardPanel(board);
+        BoardPanel panel = BoardPanel.of(board);
         panel.setSize(SIZE, SIZE);
         panel.addOverlay(new BuildOverlay(editor, () -> true));
         return panel;
