@@ -4,7 +4,6 @@ import gizmoball.boardfile.KeyCodes;
 import gizmoball.editor.Editor;
 import gizmoball.editor.Tool;
 
-import javax.swing.AbstractButton;
 import javax.swing.BorderFactory;
 import javax.swing.ButtonGroup;
 import javax.swing.JPanel;
@@ -67,17 +66,8 @@ public final class PalettePanel extends JPanel {
         repaint();
     }
 
-    public boolean isCompact() {
-        return compact;
-    }
-
     /** The tool's name, then its shortcut key greyed, so the keys are learnt by looking at the palette. */
     private static String label(Tool tool) {
         return "<html>" + tool.label() + " <font color=gray>" + KeyCodes.name(tool.shortcut()) + "</font></html>";
-    }
-
-    /** The button of a tool (for tests and for the installer's focus handling). */
-    public AbstractButton button(Tool tool) {
-        return buttons.get(tool);
     }
 }

@@ -78,7 +78,7 @@ class BuildModeGuiTest {
         Robot robot = new Robot();
         robot.setAutoDelay(20);
         robot.waitForIdle();
-        Point button = BuildWindow.centreOnScreen(w.build.palette().button(Tool.SQUARE));
+        Point button = BuildWindow.centreOnScreen(w.toolButton(Tool.SQUARE));
         Point cell = w.cellOnScreen(6, 9);
         robot.mouseMove(button.x, button.y);
         robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
@@ -301,7 +301,7 @@ class BuildModeGuiTest {
         assertThat(onEdt(() -> w.window.getSize())).isEqualTo(small);
         List<JComponent> controls = new ArrayList<>();
         for (Tool tool : Tool.values()) {
-            controls.add(w.build.palette().button(tool));
+            controls.add(w.toolButton(tool));
         }
         controls.add(onEdt(() -> EditorGui.find(w.build.properties(), JButton.class, "board.apply")));
         controls.add(onEdt(() -> EditorGui.find(w.build.properties(), JButton.class, "links.remove")));
