@@ -66,20 +66,16 @@ final class CommandParser {
             return new Parsed(parse(genericFlipper(words.subList(1, words.size()), notes),
                     words.subList(1, words.size()), notes), notes);
         }
-        if (first.equals("color")) {
-            notes.add("'" + words.get(0) + "' read as " + CommandWord.COLOUR.spelling());
+        if (first.equals("color") || first.equals("colour")) {
+            return new Parsed(colour(words, notes), notes);
         }
-        CommandWord word = first.equals("color") ? CommandWord.COLOUR : CommandWord.lookup(words.get(0))
-                .orElseThrow(() -> unknownCommand(words));
+        CommandWord word = CommandWord.lookup(words.get(0)).orElseThrow(() -> unknownCommand(words));
         return new Parsed(parse(word, words.subList(1, words.size()), notes), notes);
     }
 
     private static Command parse(CommandWord word, List<String> given, List<String> notes) throws Refusal {
         refuseMit3d(word, given);
         List<String> args = given;
-        if (word == CommandWord.COLOUR) {
-            return colour(args, notes);
-        }
         if (word == CommandWord.BALL && args.size() == 3) {
             notes.add("no velocity given: the ball starts at rest");
             args = List.of(args.get(0), args.get(1), args.get(2), "0", "0");
@@ -105,7 +101,7 @@ final class CommandParser {
             case KEY_CONNECT -> keyConnect(args, notes);
             case GRAVITY -> new Command.Gravity(number("gravity", args.get(0)));
             case FRICTION -> new Command.Friction(number("mu", args.get(0)), number("mu2", args.get(1)));
-            case COLOUR -> throw new IllegalStateException("colours are read above");
+            case COLOUR -> throw new IllegalStateException("colours are read by colour(), in any spelling");
         };
     }
 
@@ -139,26 +135,30 @@ final class CommandParser {
         return absorber;
     }
 
-    /** Colour name r g b, name #rrggbb, or name and a signed Java ARGB int (alpha ignored). */
-    private static Command colour(List<String> args, List<String> notes) throws Refusal {
+    /**
+     * Colour or Color (any case) with name r g b, name #rrggbb, or name and a signed Java ARGB int (alpha
+     * ignored); a note for every spelling but our own, Colour name r g b.
+     */
+    private static Command colour(List<String> words, List<String> notes) throws Refusal {
+        List<String> args = words.subList(1, words.size());
         Command.Colour colour;
         if (args.size() == 4) {
             colour = new Command.Colour(args.get(0), new Rgb(channel("red", args.get(1)),
                     channel("green", args.get(2)), channel("blue", args.get(3))));
         } else if (args.size() == 2 && HEX_COLOUR.matcher(args.get(1)).matches()) {
             colour = new Command.Colour(args.get(0), Rgb.of(Integer.parseInt(args.get(1).substring(1), 16)));
-            notes.add("colour " + args.get(1) + " read as " + colour.toLine());
         } else if (args.size() == 2) {
-            OptionalDouble number = Decimals.parse(args.get(1));
-            double argb = number.orElse(Double.NaN);
+            double argb = Decimals.parse(args.get(1)).orElse(Double.NaN);
             if (argb != Math.rint(argb) || argb < Integer.MIN_VALUE || argb > 0xffffffffL) {
                 throw new Refusal("colour '" + args.get(1) + "' is neither #rrggbb nor a 32-bit ARGB number");
             }
             colour = new Command.Colour(args.get(0), Rgb.of((int) (long) argb));
-            notes.add("colour " + args.get(1) + " (ARGB) read as " + colour.toLine());
         } else {
             throw new Refusal("wrong number of arguments: " + CommandWord.COLOUR.spelling() + " takes <name> and"
                     + " <red> <green> <blue>, #rrggbb or an ARGB number; found " + args.size() + " arguments");
+        }
+        if (args.size() != 4 || words.get(0).equalsIgnoreCase("color")) {
+            notes.add("read as " + colour.toLine());
         }
         return colour;
     }

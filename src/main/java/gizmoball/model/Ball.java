@@ -1,9 +1,16 @@
 package gizmoball.model;
 
+import java.util.ArrayList;
+import java.util.List;
+
 import physics.Circle;
 import physics.Vect;
 
-/** A ball: centre and velocity in L and L/s, radius {@link Board#BALL_RADIUS}; captured while an absorber holds it. */
+/**
+ * A ball: centre and velocity in L and L/s, radius {@link Board#BALL_RADIUS}; captured while an absorber holds it.
+ * A free ball also carries its loop bookkeeping: the surfaces it is in persistent contact with, how many ticks it
+ * has been still on them, and whether it sleeps (docs/design.md, "Sleeping").
+ */
 public final class Ball {
     /**
      * L/s: components below this are rounding debris. Far below anything meaningful (resting-contact projections
@@ -15,6 +22,9 @@ public final class Ball {
     private Vect position;
     private Vect velocity;
     private boolean captured;
+    private final List<ContactRef> contacts = new ArrayList<>();
+    private int stillTicks;
+    private boolean asleep;
 
     Ball(String name, Vect position, Vect velocity) {
         this.name = name;
@@ -25,6 +35,9 @@ public final class Ball {
     Ball copy() {
         Ball copy = new Ball(name, position, velocity);
         copy.captured = captured;
+        copy.contacts.addAll(contacts);
+        copy.stillTicks = stillTicks;
+        copy.asleep = asleep;
         return copy;
     }
 
@@ -46,6 +59,45 @@ public final class Ball {
 
     public boolean isCaptured() {
         return captured;
+    }
+
+    /** True while the ball lies still in contact and the loop leaves it alone until something can reach it. */
+    public boolean isAsleep() {
+        return asleep;
+    }
+
+    /** How many surfaces (walls, gizmo parts, balls) the ball is in persistent contact with. */
+    public int contactCount() {
+        return contacts.size();
+    }
+
+    List<ContactRef> contacts() {
+        return contacts;
+    }
+
+    int stillTicks() {
+        return stillTicks;
+    }
+
+    void setStillTicks(int ticks) {
+        stillTicks = ticks;
+    }
+
+    void fallAsleep() {
+        asleep = true;
+        velocity = Vect.ZERO;
+    }
+
+    /** Awake again, contacts kept (the loop checks them at the next tick), stillness counted from zero. */
+    void wake() {
+        asleep = false;
+        stillTicks = 0;
+    }
+
+    /** Forgets every contact and wakes: the board changed under the ball. */
+    void disturb() {
+        contacts.clear();
+        wake();
     }
 
     Circle circle() {
@@ -78,12 +130,14 @@ public final class Ball {
     }
 
     void capture(Vect holdingPosition) {
+        disturb();
         captured = true;
         position = holdingPosition;
         velocity = Vect.ZERO;
     }
 
     void release(Vect launchPosition, Vect launchVelocity) {
+        disturb();
         captured = false;
         position = launchPosition;
         setVelocity(launchVelocity);
@@ -91,6 +145,7 @@ public final class Ball {
 
     @Override
     public String toString() {
-        return "ball " + name + " at " + position + " moving " + velocity + (captured ? " (captured)" : "");
+        return "ball " + name + " at " + position + " moving " + velocity + (captured ? " (captured)" : "")
+                + (asleep ? " (asleep)" : "");
     }
 }

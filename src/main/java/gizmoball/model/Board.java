@@ -28,9 +28,6 @@ public final class Board {
     public static final double ABSORBER_LAUNCH_SPEED = 50;
     public static final String OUTER_WALLS = "OuterWalls";
 
-    /** Overlap below this is touching, which placements allow (two balls may touch, a ball may rest on a gizmo). */
-    static final double TOUCH_TOLERANCE = 1e-9;
-
     private final Map<String, GizmoBase> gizmos = new LinkedHashMap<>();
     private final Map<String, Ball> balls = new LinkedHashMap<>();
     private final List<Connection> connections = new ArrayList<>();
@@ -40,9 +37,15 @@ public final class Board {
     private double mu = DEFAULT_MU;
     private double mu2 = DEFAULT_MU2;
     private double time;
-    private LoopMode loopMode = LoopMode.CONTINUOUS;
     private boolean spatialIndexEnabled = true;
+    private LoopMode loopMode = LoopMode.CONTINUOUS;
     private final List<BoardObserver> observers = new CopyOnWriteArrayList<>();
+    private final Sleepers sleepers = new Sleepers(balls.values());
+    private final List<PlayEvent> pendingEvents = new ArrayList<>();
+    private TickReport lastTick = TickReport.NONE;
+    private GuardCounts guardsFired = GuardCounts.NONE;
+    private long lastRedrawNanos;
+    private double nextCollisionLookAhead;
 
     /** An empty board with default gravity and friction at time 0. */
     public Board() {
@@ -99,7 +102,7 @@ public final class Board {
         };
         refuseIfPresent(problemFor(candidate, null));
         insert(candidate);
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     /** Adds an absorber covering the cells from (x1, y1) to the exclusive corner (x2, y2). */
@@ -113,7 +116,7 @@ public final class Board {
         refuseIfPresent(problemFor(candidate, null));
         insert(candidate);
         captureFreeBallsIn(candidate);
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     /**
@@ -150,7 +153,7 @@ public final class Board {
         if (captor != null) {
             capture(ball, captor);
         }
-        notifyObservers(BoardChange.EDIT);
+        edited();
         return ball;
     }
 
@@ -164,7 +167,7 @@ public final class Board {
                     + ball));
             target.rotateClockwise();
         }
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     /**
@@ -187,7 +190,7 @@ public final class Board {
         } else {
             throw new BoardEditException("cannot delete " + name + ": no gizmo or ball named " + name);
         }
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     /** Moves a gizmo to a new top-left cell, with the same checks as adding it there. */
@@ -203,7 +206,7 @@ public final class Board {
             absorber.held().forEach(held -> balls.get(held).capture(absorber.holdingPosition()));
             captureFreeBallsIn(absorber);
         }
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     /** Moves a ball's centre, with the same checks as adding it there; its velocity is kept unless captured. */
@@ -223,7 +226,7 @@ public final class Board {
         if (captor != null) {
             capture(target, captor);
         }
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     /**
@@ -246,7 +249,7 @@ public final class Board {
             return;
         }
         target.setVelocity(velocity);
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     /** Whenever source (a gizmo or OUTER_WALLS) is hit, target performs its action. Self-connections allowed. */
@@ -258,14 +261,14 @@ public final class Board {
             throw new BoardEditException("connection " + source + " -> " + target + " already exists");
         }
         connections.add(connection);
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     public void disconnect(String source, String target) {
         if (!connections.remove(new Connection(source, target))) {
             throw new BoardEditException("there is no connection " + source + " -> " + target);
         }
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     public void bindKey(int keyCode, KeyEdge edge, String gizmo) {
@@ -281,14 +284,14 @@ public final class Board {
             throw new BoardEditException("key " + keyCode + " " + edgeName(edge) + " is already bound to " + gizmo);
         }
         keyBindings.add(binding);
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     public void unbindKey(int keyCode, KeyEdge edge, String gizmo) {
         if (!keyBindings.remove(new KeyBinding(keyCode, edge, gizmo))) {
             throw new BoardEditException("key " + keyCode + " " + edgeName(edge) + " is not bound to " + gizmo);
         }
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     /** Gives a gizmo its own colour, or with empty back the colour of its kind. */
@@ -297,7 +300,7 @@ public final class Board {
             throw new BoardEditException("colour of " + gizmo + " must be a colour or empty, not null");
         }
         requireGizmo(gizmo).setColour(colour);
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     public void setGravity(double g) {
@@ -305,7 +308,7 @@ public final class Board {
             throw new BoardEditException("gravity must be a finite number, got " + g);
         }
         gravity = g;
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     public void setFriction(double newMu, double newMu2) {
@@ -314,7 +317,7 @@ public final class Board {
         }
         mu = newMu;
         mu2 = newMu2;
-        notifyObservers(BoardChange.EDIT);
+        edited();
     }
 
     /** Removes everything, puts gravity and friction back to their defaults and the time to 0. */
@@ -389,7 +392,7 @@ public final class Board {
     private Optional<String> ballOverlap(GizmoBase candidate) {
         return balls.values().stream()
                 .filter(ball -> !ball.isCaptured())
-                .filter(ball -> candidate.signedDistance(ball.position()) < BALL_RADIUS - TOUCH_TOLERANCE)
+                .filter(ball -> candidate.signedDistance(ball.position()) < BALL_RADIUS - Tolerances.PLACEMENT)
                 .map(Ball::name)
                 .findFirst();
     }
@@ -408,7 +411,7 @@ public final class Board {
                 position.x() + BALL_RADIUS, position.y() + BALL_RADIUS);
         Absorber captor = null;
         for (GizmoBase gizmo : near) {
-            if (gizmo.signedDistance(position) < BALL_RADIUS - TOUCH_TOLERANCE) {
+            if (gizmo.signedDistance(position) < BALL_RADIUS - Tolerances.PLACEMENT) {
                 if (gizmo instanceof Absorber absorber) {
                     captor = absorber;
                 } else {
@@ -428,7 +431,7 @@ public final class Board {
 
     /** Whether balls centred there overlap by more than touching. */
     private static boolean overlap(Vect a, Vect b) {
-        return Math.sqrt(a.distanceSquared(b)) < 2 * BALL_RADIUS - TOUCH_TOLERANCE;
+        return Math.sqrt(a.distanceSquared(b)) < 2 * BALL_RADIUS - Tolerances.PLACEMENT;
     }
 
     static boolean insideBoard(Vect position) {
@@ -483,7 +486,7 @@ public final class Board {
 
     private void captureFreeBallsIn(Absorber absorber) {
         for (Ball ball : balls.values()) {
-            if (!ball.isCaptured() && absorber.signedDistance(ball.position()) < BALL_RADIUS - TOUCH_TOLERANCE) {
+            if (!ball.isCaptured() && absorber.signedDistance(ball.position()) < BALL_RADIUS - Tolerances.PLACEMENT) {
                 capture(ball, absorber);
             }
         }
@@ -571,7 +574,55 @@ public final class Board {
         if (!Double.isFinite(dt) || dt < 0) {
             throw new IllegalArgumentException("tick length must be finite and not negative, got " + dt);
         }
-        new TickRun(this, dt).run();
+        lastTick = new TickRun(this, dt).run();
+        guardsFired = guardsFired.plus(lastTick.guards());
+        long start = System.nanoTime();
+        notifyObservers(BoardChange.TICK);
+        lastRedrawNanos = System.nanoTime() - start;
+    }
+
+    /** What the last tick did (stage times, collisions, balls awake, events); {@link TickReport#NONE} before any. */
+    public TickReport lastTick() {
+        return lastTick;
+    }
+
+    /** How often each last-resort guard of the loop has fired since this board was made. */
+    public GuardCounts guardsFired() {
+        return guardsFired;
+    }
+
+    /**
+     * How far ahead, in seconds, each tick's report looks for every ball's next collision (0, the default: not at
+     * all). The physics overlay turns it on; it costs a detection pass per ball and tick.
+     */
+    public void setNextCollisionLookAhead(double seconds) {
+        if (!(seconds >= 0) || Double.isInfinite(seconds)) {
+            throw new IllegalArgumentException("look-ahead must be finite and not negative, got " + seconds);
+        }
+        nextCollisionLookAhead = seconds;
+    }
+
+    double nextCollisionLookAhead() {
+        return nextCollisionLookAhead;
+    }
+
+    long lastRedrawNanos() {
+        return lastRedrawNanos;
+    }
+
+    void recordEvent(PlayEvent event) {
+        pendingEvents.add(event);
+    }
+
+    /** The events since the last tick's report, for this tick's. */
+    List<PlayEvent> drainEvents() {
+        List<PlayEvent> events = List.copyOf(pendingEvents);
+        pendingEvents.clear();
+        return events;
+    }
+
+    Sleepers sleepers() {
+        return sleepers;
     }
 
     /**
@@ -595,11 +646,13 @@ public final class Board {
                 GizmoBase gizmo = gizmos.get(binding.gizmo());
                 if (gizmo instanceof Flipper flipper) {
                     flipper.markTriggered(time);
+                    boolean wasMoving = flipper.isMoving();
                     if (edge == KeyEdge.DOWN) {
                         flipper.activate();
                     } else {
                         flipper.deactivate();
                     }
+                    swung(flipper, wasMoving);
                 } else {
                     performAction(gizmo, time);
                 }
@@ -619,10 +672,29 @@ public final class Board {
     void performAction(GizmoBase gizmo, double now) {
         gizmo.markTriggered(now);
         if (gizmo instanceof Flipper flipper) {
+            boolean wasMoving = flipper.isMoving();
             flipper.toggle();
+            swung(flipper, wasMoving);
         } else if (gizmo instanceof Absorber absorber) {
             fire(absorber);
         }
+    }
+
+    /**
+     * A flipper that starts to swing wakes every ball in its box (its whole sweep lies there) and what rests on them.
+     */
+    private void swung(Flipper flipper, boolean wasMoving) {
+        if (flipper.isMoving() && !wasMoving) {
+            recordEvent(new PlayEvent.Swing(flipper.name(), flipper.isActive()));
+            wakeSweep(flipper);
+        }
+    }
+
+    /** Wakes every ball in the flipper's box, where all of its sweep lies, and what rests on them. */
+    void wakeSweep(Flipper flipper) {
+        double margin = 2 * BALL_RADIUS;
+        sleepers.wakeWithin(flipper.x() - margin, flipper.y() - margin, flipper.x() + flipper.width() + margin,
+                flipper.y() + flipper.height() + margin);
     }
 
     /**
@@ -636,12 +708,15 @@ public final class Board {
         }
         Vect launch = absorber.launchPosition();
         boolean blocked = !insideBoard(launch)
-                || gizmos.values().stream().anyMatch(g -> g.signedDistance(launch) < BALL_RADIUS - TOUCH_TOLERANCE)
+                || gizmos.values().stream().anyMatch(g -> g.signedDistance(launch) < BALL_RADIUS - Tolerances.PLACEMENT)
                 || balls.values().stream().anyMatch(b -> !b.isCaptured()
-                && Math.sqrt(b.position().distanceSquared(launch)) < 2 * BALL_RADIUS - TOUCH_TOLERANCE);
+                && Math.sqrt(b.position().distanceSquared(launch)) < 2 * BALL_RADIUS - Tolerances.PLACEMENT);
         if (!blocked) {
             absorber.held().removeFirst();
             balls.get(name).release(launch, new Vect(0, -ABSORBER_LAUNCH_SPEED));
+            recordEvent(new PlayEvent.Fired(absorber.name()));
+            double margin = 4 * BALL_RADIUS;
+            sleepers.wakeWithin(launch.x() - margin, launch.y() - margin, launch.x() + margin, launch.y() + margin);
         }
     }
 
@@ -657,6 +732,12 @@ public final class Board {
 
     public void removeObserver(BoardObserver observer) {
         observers.remove(observer);
+    }
+
+    /** After every successful edit: the board changed under the balls, which forget their contacts and wake. */
+    private void edited() {
+        sleepers.disturbAll();
+        notifyObservers(BoardChange.EDIT);
     }
 
     void notifyObservers(BoardChange change) {
@@ -711,6 +792,10 @@ public final class Board {
 
     GizmoBase gizmoBase(String name) {
         return gizmos.get(name);
+    }
+
+    Ball ballState(String name) {
+        return balls.get(name);
     }
 
     SpatialIndex index() {

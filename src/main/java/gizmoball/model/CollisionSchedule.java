@@ -1,15 +1,18 @@
 package gizmoball.model;
 
+import java.util.ArrayList;
+import java.util.Collection;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 
 /**
- * Stage 3 over the whole board: the earliest collision of any free ball within the time left in the tick. It keeps
+ * Stage 3 over the whole board: the earliest collision of any awake ball within the time left in the tick. It keeps
  * each ball's earliest collision with the scene (walls and gizmos) and with the other balls, in seconds since the
  * tick began, so that after a collision only the balls it changed are asked again, not every ball against
  * everything. What a collision changes is forgotten by the loop: the balls involved, or everything when a
- * trigger, a capture, a launch or a held flipper changes the scene.
+ * trigger, a capture, a launch, a wake-up or a held flipper changes the scene. Ball pairs come from a
+ * {@link BallGrid}, so a ball is asked only about the balls it can reach.
  */
 final class CollisionSchedule {
     /** A ball's earliest known collision: {@code at} seconds since the tick began; none when collision is null. */
@@ -19,28 +22,50 @@ final class CollisionSchedule {
     private final CollisionDetector detector;
     private final Map<Ball, Known> withScene = new HashMap<>();
     private final Map<Ball, Known> withBalls = new HashMap<>();
-    private List<Ball> freeBalls = List.of();
+    private final BallGrid grid = new BallGrid();
+    private final List<Ball> nearby = new ArrayList<>();
+    /** When the grid was filled, and the highest speed of any ball since: how stale its positions can be. */
+    private double filedAt;
+    private double fastest;
 
     CollisionSchedule(CollisionDetector detector) {
         this.detector = detector;
     }
 
-    /** The earliest collision within the window, {@code elapsed} seconds into the tick; null if none. */
-    Collision next(List<Ball> free, double elapsed, double window) {
-        if (!free.equals(freeBalls)) {
-            forgetAll();
-            freeBalls = List.copyOf(free);
-        }
+    /** Files every free ball (awake or asleep) where it is now, {@code elapsed} seconds into the tick. */
+    void file(Collection<Ball> free, double elapsed) {
+        grid.clear();
+        filedAt = elapsed;
+        fastest = 0;
         for (Ball ball : free) {
+            grid.add(ball);
+            sped(ball);
+        }
+    }
+
+    /** A ball became free during the tick (launched): file it where it is now. */
+    void fileLate(Ball ball) {
+        grid.add(ball);
+        sped(ball);
+    }
+
+    /** A ball's velocity changed: positions may go stale faster. */
+    void sped(Ball ball) {
+        fastest = Math.max(fastest, detector.motion(ball).length());
+    }
+
+    /** The earliest collision of the awake balls within the window, {@code elapsed} seconds into the tick. */
+    Collision next(List<Ball> awake, double elapsed, double window) {
+        for (Ball ball : awake) {
             withScene.computeIfAbsent(ball, b -> known(detector.againstScene(b, window), elapsed));
         }
-        for (Ball ball : free) {
+        for (Ball ball : awake) {
             if (!withBalls.containsKey(ball)) {
-                askAgainstBalls(ball, free, elapsed, window);
+                askAgainstBalls(ball, elapsed, window);
             }
         }
         Earliest earliest = new Earliest(window);
-        for (Ball ball : free) {
+        for (Ball ball : awake) {
             offer(earliest, withScene.get(ball), elapsed, window);
             offer(earliest, withBalls.get(ball), elapsed, window);
         }
@@ -60,11 +85,18 @@ final class CollisionSchedule {
         withBalls.clear();
     }
 
-    /** The ball against every other; a pair sooner than what another ball knew becomes that ball's too. */
-    private void askAgainstBalls(Ball ball, List<Ball> free, double elapsed, double window) {
+    /**
+     * The ball against every ball it can reach in the window; a pair sooner than what the other ball knew becomes
+     * the other's too. A sleeping ball is a still target; it never asks.
+     */
+    private void askAgainstBalls(Ball ball, double elapsed, double window) {
         Earliest earliest = new Earliest(window);
-        for (Ball other : free) {
-            if (other == ball) {
+        double speed = detector.motion(ball).length();
+        double reach = 2 * Board.BALL_RADIUS + (speed + fastest) * window + fastest * (elapsed - filedAt) + 1e-6;
+        nearby.clear();
+        grid.near(ball.position().x(), ball.position().y(), reach, nearby);
+        for (Ball other : nearby) {
+            if (other == ball || other.isCaptured()) {
                 continue;
             }
             Earliest pair = new Earliest(window);

@@ -6,19 +6,26 @@ import physics.LineSegment;
 /** What a ball is about to hit; stage 4 resolves each kind with the matching physics-lib reflect method. */
 sealed interface Contact {
 
-    /** A fixed segment of a bumper or absorber, or of the outer walls when {@code gizmo} is null. */
-    record Wall(LineSegment segment, GizmoBase gizmo) implements Contact {
+    /** Outer wall {@code side} (0 top, 1 right, 2 bottom, 3 left). */
+    record OuterWall(int side, LineSegment segment) implements Contact {
     }
 
-    /** A fixed circle of a bumper or absorber: a circle bumper or a zero-radius corner. */
-    record Round(Circle circle, GizmoBase gizmo) implements Contact {
+    /** Segment {@code index} of a still gizmo's shape: a side of a polygon bumper, an absorber or a still flipper. */
+    record Face(GizmoBase gizmo, int index, LineSegment segment) implements Contact {
     }
 
     /**
-     * A part of a flipper's shape, taken at the time of contact: side segment {@code index} or, when
-     * {@code circle}, end circle {@code index} ({@link Flipper#PIVOT_CIRCLE}, {@link Flipper#TIP_CIRCLE}).
+     * Circle {@code index} of a still gizmo's shape: a circle bumper, a zero-radius polygon corner or a still
+     * flipper's round end.
      */
-    record FlipperPart(Flipper flipper, boolean circle, int index) implements Contact {
+    record Round(GizmoBase gizmo, int index, Circle circle) implements Contact {
+    }
+
+    /**
+     * A part of a swinging flipper's shape as it is now: side segment {@code index} or, when {@code circle}, end
+     * circle {@code index} ({@link Flipper#PIVOT_CIRCLE}, {@link Flipper#TIP_CIRCLE}).
+     */
+    record SwingingPart(Flipper flipper, boolean circle, int index) implements Contact {
     }
 
     record OtherBall(Ball other) implements Contact {

@@ -26,6 +26,11 @@ final class Earliest {
         }
     }
 
+    /** Offers later than this are dropped. */
+    double limit() {
+        return collision == null ? limit : Math.min(limit, collision.time() + TIE);
+    }
+
     /** The earliest offer, or null. */
     Collision collision() {
         return collision;

@@ -11,8 +11,9 @@ import physics.Vect;
 /**
  * A left or right flipper: a 2 L bar with round ends of radius 0.25 pivoting near a top corner of its 2x2 box. It
  * swings between rest (0 degrees, hanging down) and active (90 degrees, lying along the top edge) at 1080 deg/s
- * and stops exactly at either limit. Its shape is two side segments and two end circles; the shape at rest is
- * built once per placement and the current one only when the angle changes.
+ * and stops exactly at either limit. Its shape is two side segments and two end circles. The shapes at both stops
+ * are built once per placement, so a flipper at a stop is as static as a bumper; only a swinging flipper builds
+ * the shape of its current angle.
  */
 public final class Flipper extends GizmoBase implements Gizmo {
     static final double RADIUS = 0.25;
@@ -26,7 +27,10 @@ public final class Flipper extends GizmoBase implements Gizmo {
 
     private double angle;
     private boolean active;
+    /** Stopped short of its stop by a ball pinched against something: still until it is sent the other way. */
+    private boolean blocked;
     private Shape restShape;
+    private Shape activeShape;
     private Shape currentShape;
 
     Flipper(GizmoKind kind, String name, int x, int y) {
@@ -41,7 +45,9 @@ public final class Flipper extends GizmoBase implements Gizmo {
         super(other);
         this.angle = other.angle;
         this.active = other.active;
+        this.blocked = other.blocked;
         this.restShape = other.restShape;
+        this.activeShape = other.activeShape;
         this.currentShape = other.currentShape;
     }
 
@@ -76,19 +82,40 @@ public final class Flipper extends GizmoBase implements Gizmo {
     }
 
     public boolean isMoving() {
-        return active ? angle < MAX_ANGLE : angle > 0;
+        return !blocked && (active ? angle < MAX_ANGLE : angle > 0);
+    }
+
+    /** True while a pinched ball holds the flipper short of its stop. */
+    public boolean isBlocked() {
+        return blocked;
     }
 
     void activate() {
-        active = true;
+        if (!active) {
+            toggle();
+        }
     }
 
     void deactivate() {
-        active = false;
+        if (active) {
+            toggle();
+        }
     }
 
+    /** Sent the other way: whatever blocked it is behind it now. */
     void toggle() {
         active = !active;
+        blocked = false;
+    }
+
+    /** A ball pinched between the flipper and something else stops it where it is. */
+    void block() {
+        blocked = true;
+    }
+
+    /** The ball that blocked it has gone: it swings on. */
+    void unblock() {
+        blocked = false;
     }
 
     /** Seconds until the flipper reaches the limit it is swinging to (0 when still). */
@@ -140,6 +167,7 @@ public final class Flipper extends GizmoBase implements Gizmo {
                 List.of(new LineSegment(pivot.plus(across), restTip.plus(across)),
                         new LineSegment(pivot.minus(across), restTip.minus(across))),
                 List.of(new Circle(pivot, RADIUS), new Circle(restTip, RADIUS)));
+        activeShape = turned(MAX_ANGLE);
         currentShape = shapeAt(angle);
         return restShape;
     }
@@ -149,6 +177,10 @@ public final class Flipper extends GizmoBase implements Gizmo {
         if (degrees == 0) {
             return restShape;
         }
+        return degrees == MAX_ANGLE ? activeShape : turned(degrees);
+    }
+
+    private Shape turned(double degrees) {
         double up = kind() == GizmoKind.LEFT_FLIPPER ? -1 : 1;
         Angle turn = new Angle(up * Math.toRadians(degrees));
         Vect pivot = restShape.circles().get(PIVOT_CIRCLE).getCenter();

@@ -9,11 +9,10 @@ import physics.Vect;
 
 /**
  * The physical invariants of a board, for tests and the benchmark: no NaN or infinite ball state, every free ball
- * inside the board, no free ball inside a gizmo or another free ball by more than {@link #TOLERANCE} L, speeds
+ * inside the board, no free ball inside a gizmo or another free ball by more than {@link Tolerances#INVARIANT} L, speeds
  * within {@link Board#MAX_SPEED}. Captured balls sit inside their absorber by design: only finiteness is checked.
  */
 public final class Invariants {
-    static final double TOLERANCE = 1e-6;
 
     private Invariants() {
     }
@@ -48,8 +47,8 @@ public final class Invariants {
         double r = Board.BALL_RADIUS;
         for (Ball ball : free) {
             Vect p = ball.position();
-            if (p.x() < r - TOLERANCE || p.x() > Board.SIZE - r + TOLERANCE
-                    || p.y() < r - TOLERANCE || p.y() > Board.SIZE - r + TOLERANCE) {
+            if (p.x() < r - Tolerances.INVARIANT || p.x() > Board.SIZE - r + Tolerances.INVARIANT
+                    || p.y() < r - Tolerances.INVARIANT || p.y() > Board.SIZE - r + Tolerances.INVARIANT) {
                 found.add(ball + ": outside the board");
             }
             for (GizmoBase gizmo : board.gizmoBases()) {
@@ -57,7 +56,7 @@ public final class Invariants {
                     continue;   // every body lies within its footprint: a ball this far cannot be inside it
                 }
                 double depth = r - gizmo.signedDistance(p);
-                if (depth > TOLERANCE) {
+                if (depth > Tolerances.INVARIANT) {
                     found.add(ball + ": " + depth + " L inside " + gizmo);
                 }
             }
@@ -65,7 +64,8 @@ public final class Invariants {
         for (int i = 0; i < free.size(); i++) {
             for (int j = i + 1; j < free.size(); j++) {
                 double depth = 2 * r - Math.sqrt(free.get(i).position().distanceSquared(free.get(j).position()));
-                if (depth > TOLERANCE && !passingThrough.contains(Set.of(free.get(i).name(), free.get(j).name()))) {
+                if (depth > Tolerances.INVARIANT
+                        && !passingThrough.contains(Set.of(free.get(i).name(), free.get(j).name()))) {
                     found.add(free.get(i) + ": " + depth + " L inside " + free.get(j));
                 }
             }

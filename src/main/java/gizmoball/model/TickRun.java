@@ -1,6 +1,7 @@
 package gizmoball.model;
 
 import java.util.ArrayList;
+import java.util.EnumMap;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
@@ -16,61 +17,76 @@ import physics.LineSegment;
 import physics.Vect;
 
 /**
- * One tick of the six-stage loop of SPEC.md on a board. Stage 1 changes the velocities; then stages 3 (detect,
- * through a {@link CollisionSchedule} that asks again only about what the last collision changed), 2 (move
- * everything to the collision), 4 (resolve) and 5 (trigger) repeat until the tick is used up; stage 6 notifies
- * the observers. In {@link LoopMode#SEED} a ball that has bounced stays where it is for the rest of the
- * tick (the classic loop: one move, at most one collision per ball and tick; per ball, because one ball lying on
- * the floor would otherwise stop every ball on the board); in {@link LoopMode#CONTINUOUS} it goes on moving, so
- * no time is lost.
+ * One tick of the six-stage loop on a board (docs/design.md, "The tick"). Stage 1 changes the velocities of the awake
+ * balls; then stages 3 (detect, through a {@link CollisionSchedule} that asks again only about what the last
+ * collision changed), 2 (move what moves to the collision), 4 (resolve) and 5 (trigger) repeat until the tick is
+ * used up; stage 6 reports and notifies the observers. In {@link LoopMode#SEED} a ball that has bounced stays
+ * where it is for the rest of the tick (the classic loop: at most one collision per ball and tick); in
+ * {@link LoopMode#CONTINUOUS} it goes on moving, so no time is lost.
  *
- * <p>Resting contact (pitfall 11): a ball meeting a fixed surface more slowly than about two ticks of gravity
- * loses its normal velocity instead of bouncing, so a ball lying on a surface sees one zero-time collision per
- * tick, keeps its position and ends the tick at rest on it. Guards bound the work of a tick: a touch whose
- * zero-time collision changed no velocity (it closes at a rounding of the velocity) is settled and not met again
- * at zero time until its balls' velocities change; a ball with many zero-time collisions in one tick is wedged
- * and stops (also against a flipper held still); a flipper hitting the same ball again and again in one
- * tick is pinching it against something and is held still for the rest of the tick; a tick with an absurd number
- * of collisions ends early (nothing moves any further, so nothing overlaps).
+ * <p>Resting and rolling contact: a ball meeting a still surface more slowly than about two ticks of the gravity
+ * pressing it into that surface loses its normal velocity instead of bouncing and keeps the surface as a persistent
+ * contact ({@link Contacts}); from then on stage 1 removes the part of gravity pressing into it, so the ball rolls
+ * along or lies on it with no collision at all. A ball lying still on its contacts for {@link #SLEEP_TICKS} ticks
+ * falls asleep: no gravity, no detection, no motion, until something can reach it ({@link Sleepers}).
  *
  * <p>Energy: in free flight the integration (gravity, then a straight move) keeps the shadow energy
- * |v - g dt/2 y|^2/2 - g y exactly, but an elastic bounce part-way through a tick moves it by up to g dt |v|
- * either way, and many such bounces would random-walk the energy. So in CONTINUOUS mode a ball whose collisions
- * in a tick were all elastic gets its speed rescaled at the end of the tick to keep its shadow energy; energy()
- * of a lone ball then stays within g dt |v| of its start for ever.
+ * |v - g dt/2 y|^2/2 - g y exactly, but an elastic bounce part-way through a tick moves it by up to g dt |v| either
+ * way, and many such bounces would random-walk the energy. So in CONTINUOUS mode a ball whose collisions in a tick
+ * were all elastic gets the normal component of its last bounce adjusted at the end of the tick to keep its shadow
+ * energy; its tangential velocity is untouched.
  */
 final class TickRun {
     /** A collision sooner than this after the previous one counts as zero-time. */
     static final double ZERO_TIME = 1e-12;
-    private static final int ZERO_TIME_HITS_BEFORE_WEDGED = 8;
-    private static final int FLIPPER_HITS_BEFORE_PINCHED = 3;
+    /** Slower normal approach than this many ticks' worth of the gravity pressing into a surface is resting contact. */
+    static final double REST_TICKS_OF_GRAVITY = 2;
+    /** L/s: a ball on its contacts slower than this is still. */
+    static final double SLEEP_SPEED = 1e-3;
+    /** Ticks a ball must lie still on its contacts before it falls asleep. */
+    static final int SLEEP_TICKS = 30;
+    private static final int ZERO_TIME_HITS_BEFORE_WEDGED = 32;
+    /** A flipper striking the same ball this often in one tick has it pinched against something. */
+    private static final int STRIKES_OF_A_PINCH = 2;
+    /** A flipper striking the same ball this often in one tick, nothing in between, is pushing it. */
+    private static final int STRIKES_OF_A_PUSH = 3;
     private static final int MAX_COLLISIONS_BASE = 500;
     private static final int MAX_COLLISIONS_PER_BALL = 100;
-    /** Slower normal approach than this many ticks' worth of gravity is resting contact. */
-    private static final double REST_TICKS_OF_GRAVITY = 2;
-    /** A larger correction than this would not be a rounding of the bounce timing: leave the ball alone. */
-    private static final double MAX_SHADOW_RESCALE = 0.5;
-    /** Floor of the resting speed, for a board without gravity: rounding, not motion. */
-    private static final double MIN_REST_SPEED = 1e-9;
+
+    /** A ball and a flipper, for counting how often the flipper hits the ball within one tick. */
+    private record Strike(Ball ball, Flipper flipper) {
+    }
 
     private final Board board;
     private final double dt;
     private final double startTime;
-    private final double restSpeed;
-    private final Set<Flipper> stoppedFlippers = new HashSet<>();
-    private final CollisionDetector detector;
-    private final CollisionSchedule schedule;
-    private final Set<CollisionDetector.Touch> settled = new HashSet<>();
-    private final Map<Ball, Integer> zeroTimeHits = new HashMap<>();
-    private final Map<List<Object>, Integer> flipperHits = new HashMap<>();
+    private final double gravity;
+    private final Contacts contacts;
+    private final Set<Flipper> heldFlippers = new HashSet<>();
     /** SEED: balls that have had their collision this tick and move no more. */
     private final Set<Ball> finished = new HashSet<>();
+    /** SEED: balls a swinging flipper struck this tick, which move on to the end of it. */
+    private final Set<Ball> carried = new HashSet<>();
+    private final CollisionDetector detector;
+    private final CollisionSchedule schedule;
+    private final List<Flipper> flippers = new ArrayList<>();
+    private final List<Ball> awake = new ArrayList<>();
+    private final Map<Ball, Integer> zeroTimeHits = new HashMap<>();
+    private final Map<Strike, Integer> strikes = new HashMap<>();
+    /** Balls that met something else since a swinging flipper last struck them in this tick. */
+    private final Set<Ball> metSinceStrike = new HashSet<>();
     private final Map<Ball, Double> shadowAtStart = new HashMap<>();
-    /** In order of first bounce (insertion order keeps every run bit-for-bit the same). */
-    private final Set<Ball> bouncedElastically = new LinkedHashSet<>();
+    /** The normal of each ball's last elastic bounce this tick, in order of first bounce (runs stay bit-identical). */
+    private final Map<Ball, Vect> elasticNormals = new LinkedHashMap<>();
     private final Set<Ball> lostEnergy = new HashSet<>();
     private final List<List<Ball>> ballPairs = new ArrayList<>();
+    private final EnumMap<Stage, Long> nanos = new EnumMap<>(Stage.class);
     private double elapsed;
+    private int collisions;
+    private int zeroTimeCollisions;
+    private long wedged;
+    private long pinched;
+    private long capped;
     /** Whether the collision stage 4 resolved last was a resting contact rather than a bounce. */
     private boolean restingContact;
 
@@ -78,36 +94,59 @@ final class TickRun {
         this.board = board;
         this.dt = dt;
         this.startTime = board.time();
-        this.restSpeed = Math.max(MIN_REST_SPEED, REST_TICKS_OF_GRAVITY * Math.abs(board.gravity()) * dt);
-        this.detector = new CollisionDetector(board, stoppedFlippers, finished, settled);
+        this.gravity = board.gravity();
+        this.contacts = new Contacts(board);
+        this.detector = new CollisionDetector(board, heldFlippers, finished);
         this.schedule = new CollisionSchedule(detector);
+        for (GizmoBase gizmo : board.gizmoBases()) {
+            if (gizmo instanceof Flipper flipper) {
+                flippers.add(flipper);
+            }
+        }
     }
 
-    void run() {
+    /** A blocked flipper goes on once no ball touches it any more. */
+    private void releaseBlockedFlippers() {
+        for (Flipper flipper : flippers) {
+            if (flipper.isBlocked() && board.ballStates().stream().noneMatch(ball -> !ball.isCaptured()
+                    && flipper.signedDistance(ball.position()) <= Board.BALL_RADIUS + Tolerances.CONTACT)) {
+                flipper.unblock();
+                board.wakeSweep(flipper);   // it swings on into whatever fell asleep in its way
+            }
+        }
+    }
+
+    TickReport run() {
+        long start = System.nanoTime();
+        releaseBlockedFlippers();
         stage1FrictionAndGravity();
+        long mark = lap(Stage.FRICTION_AND_GRAVITY, start);
+        findAwake();
+        schedule.file(freeBalls(), 0);
         double remaining = dt;
-        int collisions = 0;
-        int maxCollisions = MAX_COLLISIONS_BASE + MAX_COLLISIONS_PER_BALL * board.ballStates().size();
+        int maxCollisions = MAX_COLLISIONS_BASE + MAX_COLLISIONS_PER_BALL * awake.size();
         while (remaining > 0) {
             Collision collision = stage3CollisionDetection(remaining);
+            mark = lap(Stage.COLLISION_DETECTION, mark);
             if (collision == null) {
                 stage2BallMotion(remaining);
+                lap(Stage.BALL_MOTION, mark);
                 break;
             }
             stage2BallMotion(collision.time());
+            mark = lap(Stage.BALL_MOTION, mark);
             remaining -= collision.time();
-            List<Ball> involved = ballsOf(collision);
-            List<Vect> before = velocitiesOf(involved);
             String hit = stage4CollisionResolution(collision);
-            settleOrUnsettle(collision, involved, before);
-            forgetWhatChanged(collision);
+            mark = lap(Stage.COLLISION_RESOLUTION, mark);
             if (hit != null) {
                 stage5Triggering(hit);
+                mark = lap(Stage.TRIGGERING, mark);
             }
-            if (board.loopMode() == LoopMode.SEED && !restingContact) {
-                finish(collision);   // a resting contact only projects the velocity: it is no bounce to stop at
+            if (board.loopMode() == LoopMode.SEED && finishes(collision)) {
+                finish(collision);
             }
             if (++collisions >= maxCollisions) {
+                capped++;   // guard: never reached in ordinary play (counted)
                 break;
             }
         }
@@ -115,31 +154,64 @@ final class TickRun {
             keepShadowEnergyOfElasticBounces();   // SEED stays the classic loop, lost time and all
         }
         board.advanceTime(dt);
-        stage6Notify();
+        return report();
     }
 
-    /** Stage 1: V_new = V_old * (1 - mu*dt - mu2*|V_old|*dt), then gravity; speed clamped to MAX_SPEED. */
+    /**
+     * Stage 1: V_new = V_old * (1 - mu*dt - mu2*|V_old|*dt), then gravity; speed clamped to MAX_SPEED. A ball in
+     * persistent contact loses what presses it into its surfaces; a ball still on them long enough falls asleep.
+     */
     private void stage1FrictionAndGravity() {
-        for (Ball ball : freeBalls()) {
+        for (Ball ball : board.ballStates()) {
+            if (ball.isCaptured() || ball.isAsleep()) {
+                continue;
+            }
+            List<Vect> normals = contacts.refresh(ball);
             Vect v = ball.velocity();
             double factor = Math.max(0, 1 - board.mu() * dt - board.mu2() * v.length() * dt);
-            Vect next = v.times(factor).plus(new Vect(0, board.gravity() * dt));
+            Vect free = v.times(factor).plus(new Vect(0, gravity * dt));
+            Vect next = Contacts.project(free, normals);
             ball.setVelocity(next);
-            if (ball.velocity().equals(next)) {
+            if (next != free) {
+                lostEnergy.add(ball);
+            } else if (ball.velocity().equals(next)) {
                 shadowAtStart.put(ball, shadowEnergyAfterStage1(ball));
             }
+            countStillness(ball, normals);
         }
     }
 
-    /** Stage 2: balls move in straight lines, swinging flippers turn (stopping at their limits), for time t. */
+    private void countStillness(Ball ball, List<Vect> normals) {
+        if (normals.isEmpty() || ball.velocity().length() > SLEEP_SPEED || nearSwingingFlipper(ball)) {
+            ball.setStillTicks(0);
+        } else if (ball.stillTicks() + 1 >= SLEEP_TICKS) {
+            ball.fallAsleep();
+        } else {
+            ball.setStillTicks(ball.stillTicks() + 1);
+        }
+    }
+
+    private boolean nearSwingingFlipper(Ball ball) {
+        double r = 2 * Board.BALL_RADIUS;
+        Vect p = ball.position();
+        for (Flipper flipper : flippers) {
+            if (flipper.isMoving() && p.x() > flipper.x() - r && p.x() < flipper.x() + flipper.width() + r
+                    && p.y() > flipper.y() - r && p.y() < flipper.y() + flipper.height() + r) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Stage 2: awake balls move in straight lines, swinging flippers turn (stopping at their limits), for time t. */
     private void stage2BallMotion(double t) {
-        for (Ball ball : freeBalls()) {
+        for (Ball ball : awake) {
             if (!finished.contains(ball)) {
                 ball.advance(t);
             }
         }
-        for (GizmoBase gizmo : board.gizmoBases()) {
-            if (gizmo instanceof Flipper flipper && !stoppedFlippers.contains(flipper)) {
+        for (Flipper flipper : flippers) {
+            if (!heldFlippers.contains(flipper)) {
                 flipper.advance(t);
             }
         }
@@ -148,34 +220,222 @@ final class TickRun {
 
     /** Stage 3: the earliest collision within the time left, or null. */
     private Collision stage3CollisionDetection(double window) {
-        return schedule.next(freeBalls(), elapsed, window);
+        return schedule.next(awake, elapsed, window);
     }
 
     /**
-     * Stage 4: the ball and what it hits touch now; reflect with the matching physics-lib method (or capture).
-     * Returns the name of the trigger source that was hit (a gizmo or the outer walls), null for a ball.
+     * Stage 4: the ball and what it hits touch now; reflect with the matching physics-lib method, come to rest on
+     * it, or be captured. Returns the name of the trigger source that was hit (a gizmo or the outer walls), null
+     * for a ball.
      */
     private String stage4CollisionResolution(Collision collision) {
         Ball ball = collision.ball();
-        boolean zeroTime = collision.time() <= ZERO_TIME;
         Contact contact = collision.contact();
         restingContact = false;
+        ball.setStillTicks(0);
+        if (!(contact instanceof Contact.SwingingPart)) {
+            metSinceStrike.add(ball);
+            if (contact instanceof Contact.OtherBall other) {
+                metSinceStrike.add(other.other());
+            }
+        }
         String hit;
-        if (contact instanceof Contact.Wall wall) {
-            hit = hitFixed(ball, wall.gizmo(), coeff -> Geometry.reflectWall(wall.segment(), ball.velocity(), coeff));
+        if (contact instanceof Contact.OuterWall wall) {
+            hitStill(ball, wall, null, normalFromSegment(ball, wall.segment()),
+                    coeff -> Geometry.reflectWall(wall.segment(), ball.velocity(), coeff));
+            hit = Board.OUTER_WALLS;
+        } else if (contact instanceof Contact.Face face) {
+            hit = hitGizmo(ball, face, face.gizmo(), normalFromSegment(ball, face.segment()),
+                    coeff -> Geometry.reflectWall(face.segment(), ball.velocity(), coeff));
         } else if (contact instanceof Contact.Round round) {
-            hit = hitFixed(ball, round.gizmo(),
-                    coeff -> Geometry.reflectCircle(round.circle().getCenter(), ball.position(), ball.velocity(), coeff));
-        } else if (contact instanceof Contact.FlipperPart part) {
-            hit = hitFlipper(ball, part);
+            Vect centre = round.circle().getCenter();
+            hit = hitGizmo(ball, round, round.gizmo(), ball.position().minus(centre).unitSize(),
+                    coeff -> Geometry.reflectCircle(centre, ball.position(), ball.velocity(), coeff));
+        } else if (contact instanceof Contact.SwingingPart part) {
+            hit = hitSwingingFlipper(ball, part);
         } else {
             hit = hitBall(ball, ((Contact.OtherBall) contact).other());
         }
-        if (zeroTime && countZeroTimeHit(ball) && !isSwingingFlipper(collision.contact())) {
-            ball.setVelocity(Vect.ZERO);   // wedged between surfaces: at rest for this tick
-            lostEnergy.add(ball);
+        forgetWhatChanged(collision);
+        if (collision.time() <= ZERO_TIME) {
+            zeroTimeCollisions++;
+            if (zeroTimeHits.merge(ball, 1, Integer::sum) > ZERO_TIME_HITS_BEFORE_WEDGED
+                    && !(contact instanceof Contact.SwingingPart)) {
+                wedged++;   // guard (counted): at rest for the rest of this tick
+                ball.setVelocity(Vect.ZERO);
+                lostEnergy.add(ball);
+            }
         }
         return hit;
+    }
+
+    private static Vect normalFromSegment(Ball ball, LineSegment segment) {
+        return ball.position().minus(Geometry.perpendicularPointWholeLine(segment, ball.position())).unitSize();
+    }
+
+    private String hitGizmo(Ball ball, Contact contact, GizmoBase gizmo, Vect normal, DoubleFunction<Vect> reflect) {
+        gizmo.markTriggered(now());
+        if (gizmo instanceof Absorber absorber) {
+            board.capture(ball, absorber);
+            board.recordEvent(new PlayEvent.Captured(absorber.name()));
+            lostEnergy.add(ball);
+            sceneChanged();
+        } else {
+            hitStill(ball, contact, gizmo, normal, reflect);
+        }
+        return gizmo.name();
+    }
+
+    /**
+     * A still surface: a bounce with its coefficient or, approaching more slowly than the gravity pressing the ball
+     * into it would explain, resting contact.
+     */
+    private void hitStill(Ball ball, Contact contact, GizmoBase gizmo, Vect normal, DoubleFunction<Vect> reflect) {
+        double approach = -ball.velocity().dot(normal);
+        board.recordEvent(new PlayEvent.Hit(gizmo == null ? Board.OUTER_WALLS : gizmo.name(),
+                gizmo == null ? null : gizmo.kind(), approach));
+        ContactRef surface = Contacts.refOf(contact);
+        if (approach <= restingSpeed(ball, normal, surface)) {
+            comeToRest(ball, surface);
+            return;
+        }
+        double coefficient = gizmo == null ? 1.0 : gizmo.reflectionCoefficient();
+        ball.setVelocity(reflect.apply(coefficient));
+        bounced(ball, normal, coefficient == 1.0);
+    }
+
+    /** The ball keeps the surface as a contact and loses every part of its velocity that presses into its contacts. */
+    private void comeToRest(Ball ball, ContactRef ref) {
+        Contacts.attach(ball, ref);
+        ball.setVelocity(Contacts.project(ball.velocity(), contacts.normals(ball)));
+        lostEnergy.add(ball);
+        restingContact = true;
+    }
+
+    /**
+     * The ball approaching a surface with this normal more slowly than this is resting contact: two ticks of the
+     * acceleration pressing it into the surface, which is gravity as the ball's other contacts leave it (a ball on a
+     * slope is pressed into the wall at its foot by the slope, though gravity is parallel to the wall).
+     */
+    private double restingSpeed(Ball ball, Vect normal, ContactRef surface) {
+        Vect pull = Contacts.project(new Vect(0, gravity), contacts.normalsBesides(ball, surface));
+        double pressing = Math.max(0, -pull.dot(normal));
+        return Math.max(Tolerances.ROUNDING_SPEED, REST_TICKS_OF_GRAVITY * pressing * dt);
+    }
+
+    private void bounced(Ball ball, Vect normal, boolean elastic) {
+        if (elastic) {
+            elasticNormals.put(ball, normal);
+        } else {
+            lostEnergy.add(ball);
+        }
+    }
+
+    private String hitSwingingFlipper(Ball ball, Contact.SwingingPart part) {
+        Flipper flipper = part.flipper();
+        flipper.markTriggered(now());
+        lostEnergy.add(ball);
+        finished.remove(ball);   // SEED too: a swinging flipper carries the ball on, it cannot stand in its way
+        carried.add(ball);
+        Shape shape = flipper.shape();
+        double omega = flipper.angularVelocity();
+        Vect pivot = flipper.pivot();
+        Circle circle = ball.circle();
+        Vect before = ball.velocity();
+        boolean cameBack = metSinceStrike.remove(ball);
+        int strike = strikes.merge(new Strike(ball, flipper), 1, Integer::sum);
+        ball.setVelocity(strike >= STRIKES_OF_A_PUSH && !cameBack
+                ? pushed(before, reflectOffSwinging(part, shape, pivot, omega, circle, Vect.ZERO))
+                : reflectOffSwinging(part, shape, pivot, omega, circle, before));
+        board.recordEvent(new PlayEvent.Hit(flipper.name(), flipper.kind(), ball.velocity().minus(before).length() / 2));
+        if (strike >= STRIKES_OF_A_PINCH && cameBack) {
+            pinch(ball, flipper);
+        }
+        return flipper.name();
+    }
+
+    private static Vect reflectOffSwinging(Contact.SwingingPart part, Shape shape, Vect pivot, double omega,
+                                           Circle circle, Vect velocity) {
+        return part.circle()
+                ? Geometry.reflectRotatingCircle(shape.circles().get(part.index()), pivot, omega, circle, velocity,
+                        Flipper.REFLECTION)
+                : Geometry.reflectRotatingWall(shape.segments().get(part.index()), pivot, omega, circle, velocity,
+                        Flipper.REFLECTION);
+    }
+
+    /**
+     * A ball the flipper keeps striking with nothing in between is being pushed: each bounce leaves it a little
+     * slower than the surface further out, which meets it again at once, without end. It is batted as a ball at
+     * rest would be (the normal velocity a still ball would take), keeping its sliding along the surface, and so
+     * leaves the surface for good.
+     */
+    private static Vect pushed(Vect before, Vect fromRest) {
+        double speed = fromRest.length();
+        if (speed == 0) {
+            return before;
+        }
+        Vect normal = fromRest.times(1 / speed);
+        return before.minus(normal.times(before.dot(normal))).plus(fromRest);
+    }
+    /**
+     * The flipper met the ball again within the tick after the ball met something else: it came straight back from
+     * something it is squeezed against, and each further strike would pump it faster in a shrinking gap. (A ball
+     * struck again with nothing in between is only pushed on by a surface that moves faster further out.) The jammed ball blocks the flipper
+     * where it is and stops (counted); it keeps everything it touches, the flipper too, as contacts.
+     */
+    private void pinch(Ball ball, Flipper flipper) {
+        pinched++;
+        flipper.block();
+        contacts.touchAll(ball);
+        ball.setVelocity(Vect.ZERO);
+        sceneChanged();
+    }
+
+    /**
+     * Another ball. Balls that meet more slowly than two ticks of gravity, one of them lying on something (asleep, or
+     * in persistent contact), are pressed together in a pile, not bouncing: each that meets a supported ball stops
+     * closing on it and keeps it as a contact, as it would on a floor, and a floor feels nothing. So piles build
+     * from the bottom and settle. Otherwise the two bounce elastically, and a sleeping one wakes.
+     */
+    private String hitBall(Ball ball, Ball other) {
+        Vect normal = ball.position().minus(other.position()).unitSize();
+        double approach = -ball.velocity().minus(detector.motion(other)).dot(normal);
+        board.recordEvent(new PlayEvent.Hit(null, null, approach));
+        boolean slow = approach <= Math.max(Tolerances.ROUNDING_SPEED, REST_TICKS_OF_GRAVITY * Math.abs(gravity) * dt);
+        if (slow && (Contacts.supports(other, ball) || Contacts.supports(ball, other))) {
+            restAgainst(ball, other);
+            restAgainst(other, ball);
+            if (-ball.velocity().minus(other.velocity()).dot(normal) > Tolerances.ROUNDING_SPEED) {
+                // the support itself moves into the ball: they go on together along the normal, momentum kept
+                double common = (ball.velocity().dot(normal) + other.velocity().dot(normal)) / 2;
+                ball.setVelocity(ball.velocity().plus(normal.times(common - ball.velocity().dot(normal))));
+                other.setVelocity(other.velocity().plus(normal.times(common - other.velocity().dot(normal))));
+                lostEnergy.add(other);
+            }
+            restingContact = true;
+            return null;
+        }
+        other.setStillTicks(0);
+        if (other.isAsleep()) {
+            board.sleepers().wake(other);
+            findAwake();
+            schedule.forgetAll();
+        }
+        Geometry.VectPair after = Geometry.reflectBalls(ball.position(), 1, ball.velocity(), other.position(), 1,
+                other.velocity());
+        ball.setVelocity(after.v1);
+        other.setVelocity(after.v2);
+        bounced(ball, normal, true);
+        bounced(other, normal.neg(), true);
+        ballPairs.add(List.of(ball, other));
+        return null;
+    }
+
+    /** The ball, awake, stops closing on a supporting ball and keeps it as a contact. */
+    private void restAgainst(Ball ball, Ball support) {
+        if (!ball.isAsleep() && Contacts.supports(support, ball)) {
+            comeToRest(ball, new ContactRef.OnBall(support.name()));
+        }
     }
 
     /** Stage 5: the gizmo or the walls that were hit trigger every gizmo connected to them. */
@@ -186,142 +446,102 @@ final class TickRun {
                 GizmoBase target = board.gizmoBase(connection.target());
                 if (target != null) {
                     board.performAction(target, now);
-                    sceneChanged();   // a flipper turned round or an absorber fired
+                    sceneChanged();   // a flipper turned round, an absorber fired, balls woke
                 }
             }
         }
     }
 
-    /** Stage 6: observers redraw. */
-    private void stage6Notify() {
-        board.notifyObservers(BoardChange.TICK);
-    }
-
-    private String hitFixed(Ball ball, GizmoBase gizmo, DoubleFunction<Vect> reflect) {
-        if (gizmo instanceof Absorber absorber) {
-            absorber.markTriggered(now());
-            board.capture(ball, absorber);
-            lostEnergy.add(ball);
-            return absorber.name();
-        }
-        double coefficient = gizmo == null ? 1.0 : gizmo.reflectionCoefficient();
-        boolean rested = reflectOrRest(ball, reflect, coefficient);
-        (rested || coefficient != 1.0 ? lostEnergy : bouncedElastically).add(ball);
-        if (gizmo == null) {
-            return Board.OUTER_WALLS;
-        }
-        gizmo.markTriggered(now());
-        return gizmo.name();
-    }
-
-    /**
-     * Reflects with the coefficient, unless the ball approaches so slowly that this is resting contact: then only
-     * the normal part of its velocity goes (coefficient 0) and it stays on the surface.
-     */
-    private boolean reflectOrRest(Ball ball, DoubleFunction<Vect> reflect, double coefficient) {
-        Vect before = ball.velocity();
-        boolean resting = reflect.apply(1.0).minus(before).length() / 2 <= restSpeed;
-        ball.setVelocity(reflect.apply(resting ? 0.0 : coefficient));
-        restingContact = resting;
-        return resting;
-    }
-
-    private String hitFlipper(Ball ball, Contact.FlipperPart part) {
-        Flipper flipper = part.flipper();
-        flipper.markTriggered(now());
-        lostEnergy.add(ball);
-        Shape shape = flipper.shape();
-        if (!detector.isMoving(flipper)) {
-            if (part.circle()) {
-                Vect centre = shape.circles().get(part.index()).getCenter();
-                reflectOrRest(ball, coeff -> Geometry.reflectCircle(centre, ball.position(), ball.velocity(), coeff),
-                        Flipper.REFLECTION);
-            } else {
-                LineSegment side = shape.segments().get(part.index());
-                reflectOrRest(ball, coeff -> Geometry.reflectWall(side, ball.velocity(), coeff), Flipper.REFLECTION);
+    /** Stage 6: the report of this tick; the board hands it to the observers. */
+    private TickReport report() {
+        int asleep = 0;
+        List<BallReport> balls = new ArrayList<>();
+        double lookAhead = board.nextCollisionLookAhead();
+        for (Ball ball : board.ballStates()) {
+            if (ball.isCaptured()) {
+                continue;
             }
-            return flipper.name();
-        }
-        double omega = flipper.angularVelocity();
-        Vect pivot = flipper.pivot();
-        Circle circle = ball.circle();
-        if (part.circle()) {
-            ball.setVelocity(Geometry.reflectRotatingCircle(shape.circles().get(part.index()), pivot, omega, circle,
-                    ball.velocity(), Flipper.REFLECTION));
-        } else {
-            try {
-                ball.setVelocity(Geometry.reflectRotatingWall(shape.segments().get(part.index()), pivot, omega, circle,
-                        ball.velocity(), Flipper.REFLECTION));
-            } catch (IllegalArgumentException atSegmentEnd) {
-                // The contact is at the end of the side, which lies on an end circle: resolve it there (pitfall 9).
-                Circle end = nearestEnd(shape, ball.position());
-                ball.setVelocity(Geometry.reflectRotatingCircle(end, pivot, omega, circle, ball.velocity(),
-                        Flipper.REFLECTION));
+            asleep += ball.isAsleep() ? 1 : 0;
+            if (lookAhead > 0) {
+                balls.add(ballReport(ball, lookAhead));
             }
         }
-        if (countFlipperHit(ball, flipper)) {
-            stoppedFlippers.add(flipper);   // the ball is pinched: hold the flipper rather than push it through
-            sceneChanged();
+        nanos.put(Stage.REDRAWING, board.lastRedrawNanos());
+        return new TickReport(board.time(), nanos, collisions, zeroTimeCollisions, awake.size(), asleep,
+                new GuardCounts(wedged, pinched, capped), board.drainEvents(), balls);
+    }
+
+    private BallReport ballReport(Ball ball, double lookAhead) {
+        BallReport.BallState state = ball.isAsleep() ? BallReport.BallState.ASLEEP
+                : ball.contacts().isEmpty() ? BallReport.BallState.FLYING : BallReport.BallState.CONTACT;
+        double in = Double.POSITIVE_INFINITY;
+        Vect at = null;
+        if (!ball.isAsleep()) {
+            Earliest earliest = detector.againstScene(ball, lookAhead);
+            for (Ball other : board.ballStates()) {
+                if (other != ball && !other.isCaptured()) {
+                    detector.againstBall(ball, other, lookAhead, earliest);
+                }
+            }
+            if (earliest.collision() != null) {
+                in = earliest.collision().time();
+                at = ball.position().plus(ball.velocity().times(in));
+            }
         }
-        return flipper.name();
+        return new BallReport(ball.name(), ball.position(), ball.velocity(), state, in, at);
     }
 
-    private static Circle nearestEnd(Shape shape, Vect point) {
-        Circle pivotEnd = shape.circles().get(Flipper.PIVOT_CIRCLE);
-        Circle tipEnd = shape.circles().get(Flipper.TIP_CIRCLE);
-        return pivotEnd.getCenter().distanceSquared(point) <= tipEnd.getCenter().distanceSquared(point)
-                ? pivotEnd : tipEnd;
+    private long lap(Stage stage, long since) {
+        long now = System.nanoTime();
+        nanos.merge(stage, now - since, Long::sum);
+        return now;
     }
 
-    private String hitBall(Ball ball, Ball other) {
-        Geometry.VectPair after = Geometry.reflectBalls(ball.position(), 1, ball.velocity(), other.position(), 1,
-                other.velocity());
-        ball.setVelocity(after.v1);
-        other.setVelocity(after.v2);
-        bouncedElastically.add(ball);
-        bouncedElastically.add(other);
-        ballPairs.add(List.of(ball, other));
-        return null;
-    }
-
+    /** A trigger, a capture or a held flipper changed the scene: which balls move, and what they can hit. */
     private void sceneChanged() {
+        findAwake();
+        schedule.file(freeBalls(), elapsed);
         schedule.forgetAll();
-        settled.clear();
     }
 
-    private static List<Ball> ballsOf(Collision collision) {
-        return collision.contact() instanceof Contact.OtherBall other ? List.of(collision.ball(), other.other())
-                : List.of(collision.ball());
-    }
-
-    private static List<Vect> velocitiesOf(List<Ball> balls) {
-        return balls.stream().map(Ball::velocity).toList();
-    }
-
-    /**
-     * A zero-time collision whose resolution left every velocity as it was closes at a rounding of the velocity
-     * (the reflection's change fell below the last digit): detection would report it again at once, for ever,
-     * with no time passing. It is settled: the detector skips its zero-time collisions until a velocity of its
-     * balls changes. A swinging flipper is never settled, it turns on into the ball (the pinch guard bounds it).
-     */
-    private void settleOrUnsettle(Collision collision, List<Ball> involved, List<Vect> before) {
-        if (!velocitiesOf(involved).equals(before)) {
-            settled.removeIf(touch -> involved.contains(touch.ball())
-                    || touch.contact() instanceof Contact.OtherBall other && involved.contains(other.other()));
-        } else if (collision.time() <= ZERO_TIME && !isSwingingFlipper(collision.contact())) {
-            settled.add(new CollisionDetector.Touch(collision.ball(), collision.contact()));
-            if (collision.contact() instanceof Contact.OtherBall other) {
-                settled.add(new CollisionDetector.Touch(other.other(), new Contact.OtherBall(collision.ball())));
+    private void findAwake() {
+        awake.clear();
+        for (Ball ball : board.ballStates()) {
+            if (!ball.isCaptured() && !ball.isAsleep()) {
+                awake.add(ball);
             }
         }
+    }
+
+    private List<Ball> freeBalls() {
+        List<Ball> free = new ArrayList<>();
+        for (Ball ball : board.ballStates()) {
+            if (!ball.isCaptured()) {
+                free.add(ball);
+            }
+        }
+        return free;
     }
 
     /** The balls of a resolved collision move differently now: stage 3 asks about them again. */
     private void forgetWhatChanged(Collision collision) {
         schedule.forget(collision.ball());
+        schedule.sped(collision.ball());
         if (collision.contact() instanceof Contact.OtherBall other) {
             schedule.forget(other.other());
+            schedule.sped(other.other());
         }
+    }
+
+    /**
+     * SEED: whether the collision ends its balls' motion for the tick. A resting contact only projects the velocity:
+     * no bounce to stop at; a ball a swinging flipper struck is carried on for the rest of the tick, or the flipper
+     * would swing into it where it stopped. Nor is a collision at the very
+     * start of the ball's motion: balls that stopped where they touch would meet there again every tick, never
+     * moving apart, while gravity pumped their velocities up.
+     */
+    private boolean finishes(Collision collision) {
+        return !restingContact && !carried.contains(collision.ball()) && elapsed > ZERO_TIME;
     }
 
     /** SEED: the ball (and a ball it hit) stays put for the rest of the tick. */
@@ -337,20 +557,20 @@ final class TickRun {
      * kick back: right after stage 1 that is v - g dt/2 y; at the end of a tick it is v + g dt/2 y.
      */
     private double shadowEnergyAfterStage1(Ball ball) {
-        Vect u = ball.velocity().minus(new Vect(0, board.gravity() * dt / 2));
-        return u.dot(u) / 2 - board.gravity() * ball.position().y();
+        Vect u = ball.velocity().minus(new Vect(0, gravity * dt / 2));
+        return u.dot(u) / 2 - gravity * ball.position().y();
     }
 
     /**
-     * Rescales the velocities of the balls whose collisions this tick were all elastic (with fixed shapes of
-     * coefficient 1 or with each other; a ball that met a lossy one counts as lossy too) so that their shadow
-     * energy is what it was at the start. Ball-ball collisions conserve a group's total, not each ball's, so the
-     * balls that met each other share one factor s: with h = g dt/2 and n balls in the group, s solves
-     * s^2 sum|v|^2 + 2 s h sum(v_y) + n h^2 = 2 (sum S + g sum y).
+     * Adjusts the balls whose collisions this tick were all elastic (with still shapes of coefficient 1 or with each
+     * other; a ball that met a lossy one counts as lossy too) so that their shadow energy is what it was at the
+     * start. Ball-ball collisions conserve a group's total, not each ball's, so the balls that met each other share
+     * one correction: each ball's velocity moves by lambda along the normal of its last bounce (opposite normals for
+     * a pair, so momentum is kept), with w_i = v_i + g dt/2 y and sum |w_i + lambda n_i|^2 = sum 2 (S_i + g y_i).
      */
     private void keepShadowEnergyOfElasticBounces() {
         Map<Ball, List<Ball>> groups = new LinkedHashMap<>();
-        for (Ball ball : bouncedElastically) {
+        for (Ball ball : elasticNormals.keySet()) {
             groups.put(ball, new ArrayList<>(List.of(ball)));
         }
         for (List<Ball> pair : ballPairs) {
@@ -365,53 +585,35 @@ final class TickRun {
     }
 
     private void keepShadowEnergy(List<Ball> group) {
+        double h = gravity * dt / 2;
+        double squares = 0;
+        double along = 0;
+        double target = 0;
         for (Ball ball : group) {
             if (lostEnergy.contains(ball) || ball.isCaptured() || !shadowAtStart.containsKey(ball)) {
                 return;
             }
+            Vect w = ball.velocity().plus(new Vect(0, h));
+            squares += w.dot(w);
+            along += w.dot(elasticNormals.get(ball));
+            target += 2 * (shadowAtStart.get(ball) + gravity * ball.position().y());
         }
-        double g = board.gravity();
-        double h = g * dt / 2;
-        double speedsSquared = 0;
-        double verticals = 0;
-        double target = 0;
-        for (Ball ball : group) {
-            speedsSquared += ball.velocity().dot(ball.velocity());
-            verticals += ball.velocity().y();
-            target += 2 * (shadowAtStart.get(ball) + g * ball.position().y());
-        }
-        double discriminant = h * h * verticals * verticals - speedsSquared * (group.size() * h * h - target);
-        if (speedsSquared == 0 || discriminant < 0) {
+        int n = group.size();
+        double discriminant = along * along - n * (squares - target);
+        if (discriminant < 0) {
             return;
         }
-        double scale = (-h * verticals + Math.sqrt(discriminant)) / speedsSquared;
-        if (Math.abs(scale - 1) < MAX_SHADOW_RESCALE) {
-            group.forEach(ball -> ball.setVelocity(ball.velocity().times(scale)));
-        }
-    }
-
-    private boolean isSwingingFlipper(Contact contact) {
-        return contact instanceof Contact.FlipperPart part && detector.isMoving(part.flipper());
-    }
-
-    /** Counts a zero-time collision of the ball; true once it has had too many this tick. */
-    private boolean countZeroTimeHit(Ball ball) {
-        return zeroTimeHits.merge(ball, 1, Integer::sum) > ZERO_TIME_HITS_BEFORE_WEDGED;
-    }
-
-    /** Counts a hit of the ball by the swinging flipper; true once it has been hit too often this tick. */
-    private boolean countFlipperHit(Ball ball, Flipper flipper) {
-        return flipperHits.merge(List.of(ball, flipper), 1, Integer::sum) >= FLIPPER_HITS_BEFORE_PINCHED;
-    }
-
-    private List<Ball> freeBalls() {
-        List<Ball> free = new ArrayList<>();
-        for (Ball ball : board.ballStates()) {
-            if (!ball.isCaptured()) {
-                free.add(ball);
+        double root = Math.sqrt(discriminant);
+        double lambda = Math.abs(-along + root) <= Math.abs(-along - root) ? (-along + root) / n : (-along - root) / n;
+        for (Ball ball : group) {
+            double normalSpeed = ball.velocity().dot(elasticNormals.get(ball));
+            if (normalSpeed + lambda < 0 || Math.abs(lambda) > normalSpeed / 2) {
+                return;   // not a rounding of the bounce timing: leave the group alone
             }
         }
-        return free;
+        for (Ball ball : group) {
+            ball.setVelocity(ball.velocity().plus(elasticNormals.get(ball).times(lambda)));
+        }
     }
 
     private double now() {

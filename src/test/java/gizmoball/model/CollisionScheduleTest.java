@@ -39,14 +39,17 @@ class CollisionScheduleTest {
             }
         }
         List<Ball> free = new ArrayList<>(board.balls());
-        CollisionDetector detector = new CollisionDetector(board, Set.of(), Set.of(), Set.of());
+        CollisionDetector detector = new CollisionDetector(board, Set.of(), Set.of());
         CollisionSchedule schedule = new CollisionSchedule(detector);
+        schedule.file(free, 0);
         double tick = 0.25;
         double elapsed = 0;
         int step = 0;
         for (; step < 200 && elapsed < tick; step++) {
             Collision kept = schedule.next(free, elapsed, tick - elapsed);
-            Collision fresh = new CollisionSchedule(detector).next(free, elapsed, tick - elapsed);
+            CollisionSchedule afresh = new CollisionSchedule(detector);
+            afresh.file(free, elapsed);
+            Collision fresh = afresh.next(free, elapsed, tick - elapsed);
             String where = "seed " + seed + " step " + step;
             if (fresh == null) {
                 assertThat(kept).as(where).isNull();
@@ -70,5 +73,6 @@ class CollisionScheduleTest {
     private static void changeVelocity(Ball ball, Random random, CollisionSchedule schedule) {
         ball.setVelocity(ball.velocity().times(-(0.5 + random.nextDouble())));
         schedule.forget(ball);
+        schedule.sped(ball);
     }
 }

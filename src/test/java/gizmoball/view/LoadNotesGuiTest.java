@@ -57,8 +57,7 @@ class LoadNotesGuiTest {
                 .as("loaded before the notes show").containsExactly(Optional.of(new Rgb(0x99, 0xb3, 0xff)));
         assertThat(onEdt(dialog::getTitle)).isEqualTo("Notes on peer.txt");
         assertThat(list(dialog, "loadProblems.notes.list")).containsExactly(
-                "line 2: color S #99b3ff   <- 'color' read as Colour",
-                "line 2: color S #99b3ff   <- colour #99b3ff read as Colour S 153 179 255",
+                "line 2: color S #99b3ff   <- read as Colour S 153 179 255",
                 "line 3: Ball B 5 5   <- no velocity given: the ball starts at rest");
         assertThat(onEdt(() -> Gui.find(dialog.getContentPane(), JList.class,
                 l -> "loadProblems.list".equals(l.getName())))).as("no problems section").isEmpty();

@@ -6,6 +6,7 @@ import static gizmoball.view.Gui.onEdt;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.app.Gizmoball;
+import gizmoball.controller.Settings;
 import gizmoball.editor.Tool;
 import gizmoball.model.Board;
 import gizmoball.model.GizmoKind;
@@ -19,6 +20,8 @@ import java.awt.event.KeyEvent;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.Optional;
+import java.util.UUID;
+import java.util.prefs.Preferences;
 import javax.swing.JDialog;
 import javax.swing.JEditorPane;
 import javax.swing.JLabel;
@@ -29,13 +32,15 @@ import org.junit.jupiter.api.Test;
 
 /** Issue 12, items 17-20: status line, window placement, modal pause and help (needs a display). */
 class PlayWindowGuiTest {
+    /** Settings of their own, so that no window place remembered by another test moves the window. */
+    private final Preferences node = Preferences.userRoot().node("/gizmoball-test/" + UUID.randomUUID());
     private Gizmoball app;
     private GameWindow window;
 
     @BeforeEach
     void open() {
         Gui.assumeDisplay();
-        app = Gizmoball.launch(null);
+        app = Gizmoball.launch(null, new Settings(node));
         window = app.window();
         onEdt(() -> {
             Board board = new Board();
@@ -50,10 +55,11 @@ class PlayWindowGuiTest {
     }
 
     @AfterEach
-    void close() {
+    void close() throws Exception {
         for (Window w : Window.getWindows()) {
             onEdt(w::dispose);
         }
+        node.removeNode();
     }
 
     private String status() {

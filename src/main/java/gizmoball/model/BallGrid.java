@@ -1,0 +1,48 @@
+package gizmoball.model;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * The broad phase for ball pairs: free balls filed by the cell their centre was in when filed. Positions go stale as
+ * balls move on within a tick, so a query widens its radius by how far any ball can have moved since; balls far
+ * apart are never asked about each other (docs/design.md, "Detection asks only about what can be reached").
+ */
+final class BallGrid {
+    private final List<List<Ball>> cells = new ArrayList<>(Board.SIZE * Board.SIZE);
+
+    BallGrid() {
+        for (int i = 0; i < Board.SIZE * Board.SIZE; i++) {
+            cells.add(new ArrayList<>(2));
+        }
+    }
+
+    void clear() {
+        cells.forEach(List::clear);
+    }
+
+    void add(Ball ball) {
+        cells.get(index(cell(ball.position().x()), cell(ball.position().y()))).add(ball);
+    }
+
+    /** Every filed ball whose filed centre lies within the square of half-side {@code reach} around (x, y). */
+    void near(double x, double y, double reach, List<Ball> into) {
+        int x0 = cell(x - reach);
+        int x1 = cell(x + reach);
+        int y0 = cell(y - reach);
+        int y1 = cell(y + reach);
+        for (int cy = y0; cy <= y1; cy++) {
+            for (int cx = x0; cx <= x1; cx++) {
+                into.addAll(cells.get(index(cx, cy)));
+            }
+        }
+    }
+
+    private static int index(int cx, int cy) {
+        return cy * Board.SIZE + cx;
+    }
+
+    private static int cell(double coordinate) {
+        return (int) Math.max(0, Math.min(Board.SIZE - 1, Math.floor(coordinate)));
+    }
+}

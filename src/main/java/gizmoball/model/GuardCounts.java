@@ -1,0 +1,21 @@
+package gizmoball.model;
+
+/**
+ * How often each last-resort guard of the loop fired (docs/design.md, "Guards"). None fires in ordinary play: each
+ * count above zero is a case the contact handling did not resolve on its own.
+ *
+ * @param wedged       a ball with more zero-time collisions in one tick than any real contact needs was stopped
+ * @param pinched      a flipper hitting the same ball again and again in one tick was held where it was
+ * @param collisionCap a tick with more collisions than its balls can need ended early
+ */
+public record GuardCounts(long wedged, long pinched, long collisionCap) {
+    public static final GuardCounts NONE = new GuardCounts(0, 0, 0);
+
+    public GuardCounts plus(GuardCounts other) {
+        return new GuardCounts(wedged + other.wedged, pinched + other.pinched, collisionCap + other.collisionCap);
+    }
+
+    public long total() {
+        return wedged + pinched + collisionCap;
+    }
+}
