@@ -12,10 +12,16 @@ import gizmoball.view.editor.EdgePopup;
 import gizmoball.view.editor.EditMenu;
 import gizmoball.view.editor.PalettePanel;
 import gizmoball.view.editor.PropertiesPanel;
-import gizmoball.view.editor.WindowFit;
+import gizmoball.view.editor.SidePane;
 
 import javax.swing.JMenuBar;
+import javax.swing.JScrollPane;
 import java.awt.Cursor;
+import java.awt.Insets;
+import java.awt.Rectangle;
+import java.awt.Toolkit;
+import java.awt.event.ComponentAdapter;
+import java.awt.event.ComponentEvent;
 import java.util.function.BooleanSupplier;
 
 /**
@@ -30,6 +36,9 @@ public final class BuildModeInstaller {
     public record BuildMode(Editor controller, PalettePanel palette, PropertiesPanel properties,
                             EditMenu editMenu) { }
 
+    /** Pixels of board wanted beside the labelled palette and the properties before the palette turns compact. */
+    private static final int MIN_BOARD = 480;
+
     public static BuildMode install(GameWindow window, GameSession session) {
         BoardPanel panel = window.boardPanel();
         BooleanSupplier building = () -> session.mode() == Mode.BUILD;
@@ -42,28 +51,53 @@ public final class BuildModeInstaller {
                 : Cursor.getDefaultCursor());
         controller.addStateListener(cursor);
 
-        PalettePanel palette = new PalettePanel(controller);
-        PropertiesPanel properties = new PropertiesPanel(controller, panel::requestFocusInWindow);
-        window.setSidePanels(palette, properties);
+        PalettePanel palette = PalettePanel.of(controller);
+        PropertiesPanel properties = PropertiesPanel.of(controller, panel::requestFocusInWindow);
+        // Each side scrolls when the window is too short for it, so that a small window keeps every tool and
+        // field in reach; the window itself is never resized for build mode (the player chose its size).
+        JScrollPane west = SidePane.scrolling(palette);
+        JScrollPane east = SidePane.scrolling(properties);
+        window.setSidePanels(west, east);
+        openWideEnoughForBuildMode(window, west.getPreferredSize().width + east.getPreferredSize().width);
+        // Below this width the labelled palette would leave the board less than MIN_BOARD pixels: icons only.
+        int compactBelow = palette.getPreferredSize().width + properties.getPreferredSize().width + MIN_BOARD;
+        Runnable fitPalette = () -> palette.setCompact(window.getWidth() < compactBelow);
+        window.addComponentListener(new ComponentAdapter() {
+            @Override
+            public void componentResized(ComponentEvent e) {
+                fitPalette.run();
+            }
+        });
+        fitPalette.run();
 
-        EditMenu editMenu = new EditMenu(controller, window, building);
+        EditMenu editMenu = EditMenu.of(controller, window, building);
         JMenuBar menus = window.menus();
         menus.add(editMenu, Math.min(1, menus.getMenuCount()));
         menus.revalidate();
 
         panel.addOverlay(new BuildOverlay(controller, building));
-        EdgePopup edgePopup = new EdgePopup(controller, panel);
+        EdgePopup edgePopup = EdgePopup.of(controller, panel);
         BoardInput.attach(controller, panel, building, edgePopup::show);
 
-        WindowFit fit = new WindowFit(window);
         session.addModeListener(mode -> {
-            fit.modeChanged(mode);
             controller.cancel();
             editMenu.update();
             cursor.run();
             panel.repaint();
         });
         return new BuildMode(controller, palette, properties, editMenu);
+    }
+
+    /**
+     * The window opens as wide as play mode's board plus both sides (within the screen), so that entering build
+     * mode never has to resize it; a size the player chose later, or that the settings restore, is kept.
+     */
+    private static void openWideEnoughForBuildMode(GameWindow window, int sides) {
+        Rectangle screen = window.getGraphicsConfiguration().getBounds();
+        Insets insets = Toolkit.getDefaultToolkit().getScreenInsets(window.getGraphicsConfiguration());
+        int width = Math.min(window.getWidth() + sides, screen.width - insets.left - insets.right);
+        window.setSize(width, Math.min(window.getHeight(), screen.height - insets.top - insets.bottom));
+        window.setLocationRelativeTo(null);
     }
 
     /** Crosshair where a click places something, a hand where it acts on what is under it. */

@@ -9,9 +9,11 @@ import gizmoball.preview.AimPreview;
 import gizmoball.preview.Predictor;
 import gizmoball.session.GameSession;
 import gizmoball.session.Mode;
+import gizmoball.sound.GameSounds;
 import gizmoball.sound.SoundPlayer;
 import gizmoball.view.BallTrails;
 import gizmoball.view.GameWindow;
+import gizmoball.view.PhysicsOverlay;
 import gizmoball.view.editor.AimPreviewOverlay;
 import java.awt.GraphicsConfiguration;
 import java.awt.GraphicsDevice;
@@ -34,8 +36,8 @@ import javax.swing.SwingUtilities;
 
 /**
  * Adds to a game window what makes the physics visible and audible and the window remember itself:
- * Game > Speed and Sound, View > Ball trails and Aim preview, and the settings that stick (speed, sound,
- * trails, aim preview, last folder, window place and size).
+ * Game > Speed and Sound, View > Ball trails, Physics overlay and Aim preview, and the settings that stick
+ * (speed, sound, trails, overlay, aim preview, last folder, window place and size).
  * Every setting the player changes is written to {@link Settings} at once.
  */
 public final class PlayFeatures {
@@ -47,6 +49,7 @@ public final class PlayFeatures {
     private final BallTrails trails;
     private final SoundPlayer sound;
     private final AimPreview aim;
+    private final PhysicsOverlay overlay;
 
     private PlayFeatures(GameWindow window, GameSession session, GameLoop loop, BoardFileCommands files,
                          Editor editor, Settings settings) {
@@ -61,6 +64,7 @@ public final class PlayFeatures {
                 () -> new AimPreview.Inputs(editor.tool(), editor.preview(), editor.selected()), new Predictor(),
                 SwingUtilities::invokeLater);
         editor.addStateListener(aim::refresh);
+        this.overlay = new PhysicsOverlay(session.board());
     }
 
     public static PlayFeatures install(GameWindow window, GameSession session, GameLoop loop,
@@ -80,6 +84,10 @@ public final class PlayFeatures {
 
     public AimPreview aimPreview() {
         return aim;
+    }
+
+    public PhysicsOverlay physicsOverlay() {
+        return overlay;
     }
 
     private void installSpeed() {
@@ -122,6 +130,7 @@ public final class PlayFeatures {
             window.statusLine().showMessage(on ? "Sound on" : "Sound off");
         }));
         sound.setEnabled(settings.sound());
+        GameSounds.attach(session.board(), sound);
         window.addWindowListener(new WindowAdapter() {
             @Override
             public void windowClosed(WindowEvent e) {
@@ -140,6 +149,13 @@ public final class PlayFeatures {
         }));
         trails.setEnabled(settings.ballTrails());
         window.boardPanel().addUnderlay(trails);
+        view.add(toggle("Physics overlay", KeyEvent.VK_O, InputEvent.SHIFT_DOWN_MASK, settings.physicsOverlay(), on -> {
+            settings.setPhysicsOverlay(on);
+            overlayShown();
+        }));
+        overlayShown();
+        session.addModeListener(mode -> overlayShown());
+        window.boardPanel().addOverlay(overlay);
         view.add(toggle("Aim preview", KeyEvent.VK_A, InputEvent.SHIFT_DOWN_MASK, settings.aimPreview(), on -> {
             settings.setAimPreview(on);
             aimPreviewShown();
@@ -151,6 +167,12 @@ public final class PlayFeatures {
         JMenuBar menus = window.menus();
         menus.add(view, Math.min(menus.getComponentIndex(menu(menus, "Mode")) + 1, menus.getMenuCount()));
         menus.revalidate();
+    }
+
+    /** Play mode only: in build mode nothing ticks, so there is no tick to report. */
+    private void overlayShown() {
+        overlay.setEnabled(settings.physicsOverlay() && session.mode() == Mode.PLAY);
+        window.boardPanel().repaint();
     }
 
     /** Build mode only: the path of the ball the player is placing, moving or has selected. */

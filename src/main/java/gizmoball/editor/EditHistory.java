@@ -1,5 +1,6 @@
 package gizmoball.editor;
 
+import gizmoball.boardfile.BoardContents;
 import gizmoball.model.Board;
 import gizmoball.model.BoardChange;
 import gizmoball.model.BoardObserver;
@@ -117,7 +118,7 @@ public final class EditHistory {
     }
 
     private void changedElsewhere(BoardChange change) {
-        if (Design.of(board).equals(Design.of(current))) {
+        if (BoardContents.of(board).equals(BoardContents.of(current))) {
             return;
         }
         if (change == BoardChange.EDIT) {

@@ -27,6 +27,10 @@ import physics.Vect;
  * {@link PendingStep}. Every change of the board goes through {@link Board}'s editing operations (the same ones
  * the file loader uses) inside the {@link EditHistory}, so the editor can build only boards the loader accepts,
  * and every edit can be undone. A refusal never escapes as an exception: its message goes to the status line.
+ * <p>
+ * Longer than 400 lines because it is the one facade of build mode: the state the views read, the commands of
+ * the menus and the properties panel, and the services the handlers share (editing inside the history,
+ * previews, picking). What each tool does is in its handler, not here.
  */
 public final class Editor {
     /** Ball centres snap to quarter cells: positions stay readable in saved files and easy to hit again. */

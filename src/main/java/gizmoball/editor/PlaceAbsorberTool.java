@@ -35,6 +35,11 @@ final class PlaceAbsorberTool implements ToolHandler {
         }
         Preview.Footprint f = footprint(a.x0(), a.y0(), Editor.cell(x), Editor.cell(y));
         editor.finishGesture();
+        if (f.problem().isPresent()) {
+            // In the preview's words, as the drag showed it (see PlaceGizmoTool).
+            editor.say(f.problem().get());
+            return;
+        }
         String name = editor.names().nextGizmoName(GizmoKind.ABSORBER);
         if (editor.edit("Placed absorber " + name, b -> b.addAbsorber(name, f.x(), f.y(),
                 f.x() + f.width(), f.y() + f.height()))) {

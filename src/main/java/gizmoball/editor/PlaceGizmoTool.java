@@ -17,10 +17,20 @@ final class PlaceGizmoTool implements ToolHandler {
         return editor.footprint(kind, Editor.cell(x), Editor.cell(y), kind.width(), kind.height());
     }
 
+    /**
+     * A footprint the preview shows refused is refused with the preview's own words, so that hovering and
+     * clicking say the same thing, and no message names the gizmo that was never made.
+     */
     @Override
     public void press(double x, double y) {
         int cx = Editor.cell(x);
         int cy = Editor.cell(y);
+        Preview footprint = hover(x, y);
+        if (footprint.problem().isPresent()) {
+            editor.say(footprint.problem().get());
+            editor.setPreview(footprint, false);
+            return;
+        }
         String name = editor.names().nextGizmoName(kind);
         if (editor.edit("Placed " + name + " at (" + cx + "," + cy + ")", b -> b.addGizmo(kind, name, cx, cy))) {
             editor.selectQuietly(name);

@@ -1,17 +1,20 @@
 package gizmoball.model;
 
+import physics.Vect;
+
 /** Something audible or visible that happened in play, reported with the tick it happened in (for sound, flashes). */
 public sealed interface PlayEvent {
 
     /**
      * A ball hit a gizmo, the outer walls ({@code kind} null, {@code source} {@link Board#OUTER_WALLS}) or another
      * ball ({@code kind} null, {@code source} null), closing at {@code speed} L/s along the contact normal.
+     * {@code ball} is the ball that hit, {@code at} its centre at the moment of the hit (the aim preview marks it).
      */
-    record Hit(String source, GizmoKind kind, double speed) implements PlayEvent {
+    record Hit(String source, GizmoKind kind, double speed, String ball, Vect at) implements PlayEvent {
     }
 
-    /** An absorber captured a ball. */
-    record Captured(String absorber) implements PlayEvent {
+    /** An absorber captured {@code ball}, whose centre was at {@code at} when it touched the absorber. */
+    record Captured(String absorber, String ball, Vect at) implements PlayEvent {
     }
 
     /** An absorber fired a ball. */

@@ -273,8 +273,8 @@ final class TickRun {
     private String hitGizmo(Ball ball, Contact contact, GizmoBase gizmo, Vect normal, DoubleFunction<Vect> reflect) {
         gizmo.markTriggered(now());
         if (gizmo instanceof Absorber absorber) {
+            board.recordEvent(new PlayEvent.Captured(absorber.name(), ball.name(), ball.position()));
             board.capture(ball, absorber);
-            board.recordEvent(new PlayEvent.Captured(absorber.name()));
             lostEnergy.add(ball);
             sceneChanged();
         } else {
@@ -290,7 +290,7 @@ final class TickRun {
     private void hitStill(Ball ball, Contact contact, GizmoBase gizmo, Vect normal, DoubleFunction<Vect> reflect) {
         double approach = -ball.velocity().dot(normal);
         board.recordEvent(new PlayEvent.Hit(gizmo == null ? Board.OUTER_WALLS : gizmo.name(),
-                gizmo == null ? null : gizmo.kind(), approach));
+                gizmo == null ? null : gizmo.kind(), approach, ball.name(), ball.position()));
         ContactRef surface = Contacts.refOf(contact);
         if (approach <= restingSpeed(ball, normal, surface)) {
             comeToRest(ball, surface);
@@ -344,7 +344,8 @@ final class TickRun {
         ball.setVelocity(strike >= STRIKES_OF_A_PUSH && !cameBack
                 ? pushed(before, reflectOffSwinging(part, shape, pivot, omega, circle, Vect.ZERO))
                 : reflectOffSwinging(part, shape, pivot, omega, circle, before));
-        board.recordEvent(new PlayEvent.Hit(flipper.name(), flipper.kind(), ball.velocity().minus(before).length() / 2));
+        board.recordEvent(new PlayEvent.Hit(flipper.name(), flipper.kind(), ball.velocity().minus(before).length() / 2,
+                ball.name(), ball.position()));
         if (strike >= STRIKES_OF_A_PINCH && cameBack) {
             pinch(ball, flipper);
         }
@@ -397,7 +398,7 @@ final class TickRun {
     private String hitBall(Ball ball, Ball other) {
         Vect normal = ball.position().minus(other.position()).unitSize();
         double approach = -ball.velocity().minus(detector.motion(other)).dot(normal);
-        board.recordEvent(new PlayEvent.Hit(null, null, approach));
+        board.recordEvent(new PlayEvent.Hit(null, null, approach, ball.name(), ball.position()));
         boolean slow = approach <= Math.max(Tolerances.ROUNDING_SPEED, REST_TICKS_OF_GRAVITY * Math.abs(gravity) * dt);
         if (slow && (Contacts.supports(other, ball) || Contacts.supports(ball, other))) {
             restAgainst(ball, other);

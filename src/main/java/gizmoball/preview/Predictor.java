@@ -2,6 +2,8 @@ package gizmoball.preview;
 
 import gizmoball.model.Ball;
 import gizmoball.model.Board;
+import gizmoball.model.Connection;
+import gizmoball.model.PlayEvent;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
@@ -80,8 +82,34 @@ public final class Predictor {
                 }
                 copy.tick(dt);
                 path.add(point(copy.ball(ball).orElseThrow()));
+                for (PlayEvent event : copy.lastTick().events()) {
+                    hitBy(event);
+                }
             }
             return new Prediction(ball, path, collisions, trigger, (path.size() - 1) * dt, !isDone());
+        }
+
+        /** A hit or capture of the predicted ball: a dot, and the first one that drives other gizmos is the trigger. */
+        private void hitBy(PlayEvent event) {
+            String source;
+            Vect at;
+            if (event instanceof PlayEvent.Hit hit && ball.equals(hit.ball())) {
+                source = hit.source();
+                at = hit.at();
+            } else if (event instanceof PlayEvent.Captured captured && ball.equals(captured.ball())) {
+                source = captured.absorber();
+                at = captured.at();
+            } else {
+                return;
+            }
+            collisions.add(at);
+            if (trigger.isEmpty() && source != null) {
+                List<String> targets = copy.connections().stream().filter(c -> c.source().equals(source))
+                        .map(Connection::target).toList();
+                if (!targets.isEmpty()) {
+                    trigger = Optional.of(new Prediction.Trigger(source, at, targets));
+                }
+            }
         }
 
         private static Prediction.Point point(Ball b) {

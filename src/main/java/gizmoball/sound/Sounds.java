@@ -1,6 +1,8 @@
 package gizmoball.sound;
 
+import gizmoball.model.Board;
 import gizmoball.model.GizmoKind;
+import gizmoball.model.PlayEvent;
 import java.util.Optional;
 
 /**
@@ -19,6 +21,26 @@ public final class Sounds {
     private static final double LAUNCH_GAIN = 0.7;
 
     private Sounds() {
+    }
+
+    /** The sound of something that happened in play, if it makes one. */
+    public static Optional<Cue> cueFor(PlayEvent event) {
+        if (event instanceof PlayEvent.Hit hit) {
+            if (hit.kind() != null) {
+                return gizmoHit(hit.kind(), hit.speed());
+            }
+            return Board.OUTER_WALLS.equals(hit.source()) ? wallHit(hit.speed()) : ballHit(hit.speed());
+        }
+        if (event instanceof PlayEvent.Swing) {
+            return Optional.of(flipperSwing());
+        }
+        if (event instanceof PlayEvent.Captured) {
+            return Optional.of(capture());
+        }
+        if (event instanceof PlayEvent.Fired) {
+            return Optional.of(fire());
+        }
+        throw new IllegalArgumentException("no sound for " + event);
     }
 
     public static Optional<Cue> gizmoHit(GizmoKind kind, double impactSpeed) {

@@ -9,7 +9,7 @@ import gizmoball.model.GizmoKind;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
-import java.awt.FontMetrics;
+import java.awt.font.GlyphVector;
 import java.awt.Graphics2D;
 import java.awt.Shape;
 import java.awt.geom.Ellipse2D;
@@ -36,8 +36,6 @@ public final class BoardPainter {
     /** Size in L of the number of balls an absorber holds, written on the ball in its corner. */
     private static final float HELD_COUNT_FONT = 0.36f;
     private static final Color HELD_COUNT = new Color(0x202020);
-    /** Digits are about this part of a font's ascent tall (to centre them on the ball). */
-    private static final float DIGIT_HEIGHT_OF_ASCENT = 0.75f;
     /** Thickness of the outer walls, drawn just outside the board. */
     static final int WALL_PIXELS = 3;
     /** How long (simulated seconds) a triggered gizmo stays lit, fading out. */
@@ -125,15 +123,15 @@ public final class BoardPainter {
     private static void paintHeldCounts(Graphics2D g, Board board) {
         Map<Vect, Long> held = board.balls().stream().filter(Ball::isCaptured)
                 .collect(Collectors.groupingBy(Ball::position, LinkedHashMap::new, Collectors.counting()));
-        g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 1).deriveFont(HELD_COUNT_FONT));
+        Font font = new Font(Font.SANS_SERIF, Font.BOLD, 1).deriveFont(HELD_COUNT_FONT);
         g.setColor(HELD_COUNT);
-        FontMetrics metrics = g.getFontMetrics();
         held.forEach((at, count) -> {
             if (count > 1) {
-                String text = Long.toString(count);
-                Rectangle2D bounds = metrics.getStringBounds(text, g);
-                float digitHeight = metrics.getAscent() * DIGIT_HEIGHT_OF_ASCENT;
-                g.drawString(text, (float) (at.x() - bounds.getWidth() / 2), (float) at.y() + digitHeight / 2);
+                // Centred on the digits' ink, not on font metrics: at a fraction of an L the metrics of the scaled
+                // font are too coarse to centre by, and the digits sat below the ball, half on the absorber.
+                GlyphVector digits = font.createGlyphVector(g.getFontRenderContext(), Long.toString(count));
+                Rectangle2D ink = digits.getVisualBounds();
+                g.fill(digits.getOutline((float) (at.x() - ink.getCenterX()), (float) (at.y() - ink.getCenterY())));
             }
         });
     }

@@ -2,7 +2,6 @@ package gizmoball.view;
 
 import gizmoball.model.Board;
 import gizmoball.model.BoardChange;
-import gizmoball.model.BoardObserver;
 import java.awt.Dimension;
 import java.awt.Graphics2D;
 import java.awt.Graphics;
@@ -38,7 +37,7 @@ public final class BoardPanel extends JComponent {
     private transient BufferedImage fixedImage;
     private transient List<Object> fixedImageKey;
 
-    public BoardPanel(Board board) {
+    private BoardPanel(Board board) {
         this.board = board;
         setOpaque(true);
         setDoubleBuffered(true);
@@ -46,13 +45,18 @@ public final class BoardPanel extends JComponent {
         int side = PREFERRED_PIXELS_PER_L * Board.SIZE + 2 * MARGIN;
         setPreferredSize(new Dimension(side, side));
         setMinimumSize(new Dimension(4 * Board.SIZE, 4 * Board.SIZE));
-        BoardObserver repaintOnChange = (Board b, BoardChange change) -> {
+    }
+
+    /** A view of {@code board}, repainting on its every change (registered once the view is whole). */
+    public static BoardPanel of(Board board) {
+        BoardPanel panel = new BoardPanel(board);
+        board.addObserver((Board b, BoardChange change) -> {
             if (change != BoardChange.TICK) {
-                layout.incrementAndGet();
+                panel.layout.incrementAndGet();
             }
-            repaint();
-        };
-        board.addObserver(repaintOnChange);
+            panel.repaint();
+        });
+        return panel;
     }
 
     /** The mapping between board and pixels at the panel's current size. */
@@ -74,10 +78,6 @@ public final class BoardPanel extends JComponent {
     public void setGridVisible(boolean visible) {
         gridVisible = visible;
         repaint();
-    }
-
-    public boolean isGridVisible() {
-        return gridVisible;
     }
 
     /** Frames painted in the last second. */

@@ -100,7 +100,7 @@ public final class GameWindow extends JFrame {
         super("Gizmoball");
         this.session = session;
         this.commands = commands;
-        boardPanel = new BoardPanel(session.board());
+        boardPanel = BoardPanel.of(session.board());
         newBoard = action("New", KeyEvent.VK_N, 0, commands::newBoard);
         open = action("Open...", KeyEvent.VK_O, 0, commands::open);
         save = action("Save", KeyEvent.VK_S, 0, commands::save);

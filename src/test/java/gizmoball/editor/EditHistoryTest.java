@@ -1,5 +1,6 @@
 package gizmoball.editor;
 
+import gizmoball.boardfile.BoardContents;
 import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.GizmoKind;
@@ -32,14 +33,14 @@ class EditHistoryTest {
             b.addBall("B1", 5, 5, 1, 1);
             b.setGravity(3);
         });
-        Design after = Design.of(board);
+        BoardContents after = BoardContents.of(board);
 
         history.undo();
         assertThat(board.balls()).isEmpty();
         assertThat(board.gravity()).isEqualTo(Board.DEFAULT_GRAVITY);
         assertThat(board.gizmos()).hasSize(1);
         history.redo();
-        assertThat(Design.of(board)).isEqualTo(after);
+        assertThat(BoardContents.of(board)).isEqualTo(after);
     }
 
     @Test

@@ -1,5 +1,6 @@
 package gizmoball.editor;
 
+import gizmoball.boardfile.BoardContents;
 import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.Connection;
@@ -133,11 +134,11 @@ class EditorTest {
     void draggingOntoAnotherGizmoIsRefusedAndLeavesBothInPlace() {
         click(Tool.SQUARE, 3, 3);
         click(Tool.CIRCLE, 6, 3);
-        Design before = Design.of(board);
+        BoardContents before = BoardContents.of(board);
         editor.setTool(Tool.SELECT);
         drag(3.5, 3.5, 6.5, 3.5);
 
-        assertThat(Design.of(board)).isEqualTo(before);
+        assertThat(BoardContents.of(board)).isEqualTo(before);
         assertThat(lastMessage()).contains("overlap");
     }
 
@@ -359,10 +360,10 @@ class EditorTest {
     @Test
     void aRefusedOverlapLeavesTheBoardUnchangedAndSaysWhy() {
         click(Tool.SQUARE, 3, 4);
-        Design before = Design.of(board);
+        BoardContents before = BoardContents.of(board);
         click(Tool.LEFT_FLIPPER, 2, 3);
 
-        assertThat(Design.of(board)).isEqualTo(before);
+        assertThat(BoardContents.of(board)).isEqualTo(before);
         assertThat(lastMessage()).contains("overlap").contains("S1");
         assertThat(edits).isEqualTo(1);
         editor.undo();
@@ -402,7 +403,7 @@ class EditorTest {
         click(Tool.CIRCLE, 2, 2);
         click(Tool.TRIANGLE, 3, 3);
         click(Tool.ROTATE, 3, 3);
-        Design all = Design.of(board);
+        BoardContents all = BoardContents.of(board);
 
         assertThat(editor.undo()).isTrue();
         assertThat(gizmo("T1").rotation()).isZero();
@@ -412,7 +413,7 @@ class EditorTest {
         editor.redo();
         editor.redo();
         editor.redo();
-        assertThat(Design.of(board)).isEqualTo(all);
+        assertThat(BoardContents.of(board)).isEqualTo(all);
         assertThat(editor.redo()).isFalse();
         assertThat(lastMessage()).isEqualTo("Nothing to redo");
     }
@@ -463,9 +464,9 @@ class EditorTest {
         assertThat(List.of(b.position().x(), b.position().y(), b.velocity().x(), b.velocity().y()))
                 .containsExactly(4.5, 6.0, -3.0, 7.25);
 
-        Design before = Design.of(board);
+        BoardContents before = BoardContents.of(board);
         assertThat(editor.setBall("B1", 25, 6, 1, 1)).isFalse();
-        assertThat(Design.of(board)).isEqualTo(before);
+        assertThat(BoardContents.of(board)).isEqualTo(before);
         editor.undo();
         // One step took back both the move and the new velocity.
         assertThat(board.ball("B1").orElseThrow().position()).isEqualTo(new Vect(3, 3));
@@ -480,6 +481,21 @@ class EditorTest {
         assertThat(editor.setBall("B1", 3, 3, 5, -5)).isTrue();
         assertThat(board.balls()).extracting(Ball::name).containsExactly("B1", "B2");
         assertThat(board.ball("B1").orElseThrow().velocity()).isEqualTo(new Vect(5, -5));
+    }
+
+    /** Issue 12 item 12: hovering and clicking word a refusal the same way, naming no gizmo that is not there. */
+    @Test
+    void aRefusedPlacementIsWordedAlikeOnHoverAndOnClick() {
+        board.addGizmo(GizmoKind.SQUARE, "S1", 2, 4);
+        editor.setTool(Tool.SQUARE);
+        editor.hover(2.5, 4.5);
+        String onHover = lastMessage();
+        assertThat(onHover).startsWith("a square at (2,4) would overlap").contains("S1");
+        editor.press(2.5, 4.5);
+        editor.release(2.5, 4.5);
+        assertThat(lastMessage()).isEqualTo(onHover);
+        assertThat(messages).noneMatch(m -> m.contains("S2"));
+        assertThat(board.gizmos()).hasSize(1);
     }
 
     /** Issue 12 item 11: a circle and an absorber look the same turned. */
@@ -504,14 +520,14 @@ class EditorTest {
         click(Tool.LEFT_FLIPPER, 4, 4);
         board.connect("S1", "LF1");
         editor.setConstants(10, 0, 0);
-        Design full = Design.of(board);
+        BoardContents full = BoardContents.of(board);
 
         editor.clearBoard();
         assertThat(board.gizmos()).isEmpty();
         assertThat(board.connections()).isEmpty();
         assertThat(board.gravity()).isEqualTo(Board.DEFAULT_GRAVITY);
         editor.undo();
-        assertThat(Design.of(board)).isEqualTo(full);
+        assertThat(BoardContents.of(board)).isEqualTo(full);
     }
 
     @Test

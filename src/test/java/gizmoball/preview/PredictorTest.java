@@ -99,6 +99,33 @@ class PredictorTest {
     }
 
     @Test
+    void eachCollisionIsADotAndTheFirstTriggerNamesWhatItDrives() {
+        Board board = new Board();
+        board.setFriction(0, 0);
+        board.addGizmo(GizmoKind.SQUARE, "Plain", 10, 6);
+        board.addGizmo(GizmoKind.TRIANGLE, "Ramp", 10, 12);
+        board.addGizmo(GizmoKind.LEFT_FLIPPER, "LF", 2, 16);
+        board.addGizmo(GizmoKind.CIRCLE, "C", 15, 15);
+        board.connect("Ramp", "LF");
+        board.connect("Ramp", "C");
+        board.addBall("B", 10.5, 7.5, 0, 0);   // just below the plain square, falling onto the ramp
+        Prediction p = unhurried.predict(board, "B", 3, DT, Long.MAX_VALUE);
+        assertThat(p.collisions()).isNotEmpty();
+        // The ramp (a triangle, unrotated: its slope faces down-right, its top edge flat) is hit first, on top.
+        Vect first = p.collisions().get(0);
+        assertThat(first.x()).isCloseTo(10.5, within(1e-9));
+        assertThat(first.y()).isCloseTo(12 - Board.BALL_RADIUS, within(1e-9));
+        Prediction.Trigger trigger = p.trigger().orElseThrow();
+        assertThat(trigger.source()).isEqualTo("Ramp");
+        assertThat(trigger.targets()).containsExactly("LF", "C");
+        assertThat(trigger.at()).isEqualTo(first);
+        // Every dot lies on the path: within one tick's travel of a predicted position.
+        for (Vect dot : p.collisions()) {
+            assertThat(p.path()).anyMatch(pt -> pt.at().minus(dot).length() <= 40 * DT);
+        }
+    }
+
+    @Test
     void aBallBeingPlacedIsPredictedWithTheVelocityDraggedOut() {
         Board board = new Board();
         board.setGravity(0);

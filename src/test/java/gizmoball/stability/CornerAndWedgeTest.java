@@ -10,7 +10,7 @@ import physics.Vect;
 import static org.assertj.core.api.Assertions.assertThat;
 
 /**
- * Failure mode (pitfall 12): a ball in a corner or a wedge, where two surfaces are hit within one tick
+ * Failure mode (docs/design.md, "Failure modes": corners and wedges): a ball in a corner or a wedge, where two surfaces are hit within one tick
  * (or at once) over and over. Resolving one collision per tick loses time; resolving several must not
  * loop for ever, push the ball through either surface, or pump energy in.
  */

@@ -18,7 +18,7 @@ import java.util.stream.Stream;
 import static org.assertj.core.api.Assertions.assertThat;
 
 /**
- * Failure mode (pitfall 14): very fast balls. At the speed limit, 200 L/s, a ball moves 3.3 L per tick at
+ * Failure mode (docs/design.md, "Failure modes": fast balls): very fast balls. At the speed limit, 200 L/s, a ball moves 3.3 L per tick at
  * 1/60 s, more than any gizmo is thick: stepping and testing for overlap would tunnel; exact collision
  * times must not, against thin corners and moving flippers included.
  */

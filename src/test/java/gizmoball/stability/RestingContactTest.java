@@ -11,7 +11,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
 /**
- * Failure mode (pitfall 11): a ball resting on, or moving parallel to, a surface. Under gravity it gets a
+ * Failure mode (docs/design.md, "Failure modes": resting contact): a ball resting on, or moving parallel to, a surface. Under gravity it gets a
  * collision at time 0 every tick; it must neither sink, nor hop higher than one tick of gravity can lift
  * it, nor freeze the loop, nor gain energy.
  */

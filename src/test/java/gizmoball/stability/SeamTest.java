@@ -11,7 +11,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
 /**
- * Failure mode (pitfall 13): seams between adjacent gizmos. Where two squares meet, their corner circles
+ * Failure mode (docs/design.md, "Failure modes": seams between gizmos): seams between adjacent gizmos. Where two squares meet, their corner circles
  * lie exactly on the flat surface; a ball crossing the seam touches them tangentially, which is no
  * collision. It must not snag (lose speed, be kicked up) on them.
  */

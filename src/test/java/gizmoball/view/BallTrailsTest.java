@@ -32,7 +32,7 @@ class BallTrailsTest {
         }
         assertThat(trails.trail("B")).containsExactlyElementsOf(positions.subList(40 - BallTrails.LENGTH, 40));
 
-        BoardPanel panel = new BoardPanel(board);
+        BoardPanel panel = BoardPanel.of(board);
         panel.addUnderlay(trails);
         panel.setSize(SIZE, SIZE);
         BufferedImage image = new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);

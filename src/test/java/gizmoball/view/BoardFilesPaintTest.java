@@ -59,7 +59,7 @@ class BoardFilesPaintTest {
     }
 
     private static void assertPaintedAsModelled(Board board, Path file) {
-        BoardPanel panel = new BoardPanel(board);
+        BoardPanel panel = BoardPanel.of(board);
         panel.setSize(SIZE, SIZE);
         BufferedImage image = new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();

@@ -31,7 +31,7 @@ class BoardPanelPaintTest {
         board.addAbsorber("A", 0, 19, 20, 20);
         board.addBall("B", 10.5, 10.5, 0, 0);
         board.bindKey(Z, KeyEdge.DOWN, "LF");
-        panel = new BoardPanel(board);
+        panel = BoardPanel.of(board);
         panel.setSize(SIZE, SIZE);
     }
 
@@ -131,7 +131,7 @@ class BoardPanelPaintTest {
         Board held = new Board();
         held.addAbsorber("A", 0, 18, 20, 20);
         held.addBall("B1", 5, 18.5, 0, 0);
-        panel = new BoardPanel(held);
+        panel = BoardPanel.of(held);
         panel.setSize(SIZE, SIZE);
         assertThat(darkPixelsOnBall(render(), 19.75, 19.75)).as("one ball: no label").isZero();
 
@@ -140,6 +140,47 @@ class BoardPanelPaintTest {
 
         assertThat(held.balls()).allSatisfy(b -> assertThat(b.isCaptured()).isTrue());
         assertThat(darkPixelsOnBall(render(), 19.75, 19.75)).as("three balls: a label").isPositive();
+    }
+
+    /** Issue 12 item 16: the count sat below the ball, half outside it, dark on the dark absorber. */
+    @Test
+    void theCountOfHeldBallsIsInkedInsideTheBallAndCentredOnIt() {
+        Board held = new Board();
+        held.addAbsorber("A", 0, 18, 20, 20);
+        for (int i = 0; i < 3; i++) {
+            held.addBall("B" + i, 5 + 2 * i, 18.5, 0, 0);
+        }
+        panel = BoardPanel.of(held);
+        panel.setSize(SIZE, SIZE);
+        BufferedImage image = render();
+        Point2D centre = panel.transform().toScreen(19.75, 19.75);
+        double pixelsPerL = panel.transform().scale();
+        double radius = Board.BALL_RADIUS * pixelsPerL;
+        int reach = (int) Math.ceil(2.5 * radius);
+        double sumX = 0;
+        double sumY = 0;
+        int ink = 0;
+        for (int px = (int) centre.getX() - reach; px <= (int) centre.getX() + reach; px++) {
+            for (int py = (int) centre.getY() - reach; py <= (int) centre.getY() + reach; py++) {
+                double d0 = Math.hypot(px + 0.5 - centre.getX(), py + 0.5 - centre.getY());
+                physics.Vect onBoard = panel.transform().toBoard(px + 0.5, py + 0.5);
+                if (d0 > 2 * radius || onBoard.x() >= Board.SIZE || onBoard.y() >= Board.SIZE) {
+                    continue;   // the ball and the absorber around it, not the margin beyond the walls
+                }
+                Color c = new Color(image.getRGB(px, py));
+                // The digits' colour, far darker than the ball, its edge and the absorber.
+                if (c.getRed() < 64 && c.getGreen() < 64 && c.getBlue() < 64) {
+                    double d = Math.hypot(px + 0.5 - centre.getX(), py + 0.5 - centre.getY());
+                    assertThat(d).as("ink at (%d, %d) is on the ball", px, py).isLessThanOrEqualTo(radius);
+                    sumX += px + 0.5;
+                    sumY += py + 0.5;
+                    ink++;
+                }
+            }
+        }
+        assertThat(ink).isPositive();
+        // One digit's ink is symmetric about its centre to within a pixel or two.
+        assertThat(Math.hypot(sumX / ink - centre.getX(), sumY / ink - centre.getY())).isLessThan(2.0);
     }
 
     /** Pixels well inside the ball (away from its outline) much darker than the ball's colour. */

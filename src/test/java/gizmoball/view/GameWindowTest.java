@@ -151,7 +151,7 @@ class GameWindowTest {
         assertThat(onEdt(() -> window.session().mode())).isEqualTo(Mode.BUILD);
         assertThat(onEdt(west::isVisible)).isTrue();
         assertThat(onEdt(east::isVisible)).isTrue();
-        assertThat(onEdt(() -> window.boardPanel().isGridVisible())).isTrue();
+        assertThat(onEdt(() -> gridLineShows(window.boardPanel()))).as("the grid, in build mode").isTrue();
         assertThat(onEdt(() -> Gui.menuItem(window.menus(), "Start").isEnabled())).isFalse();
         assertThat(onEdt(() -> Gui.menuItem(window.menus(), "Build").isSelected())).isTrue();
         double t = time();
@@ -190,5 +190,16 @@ class GameWindowTest {
         robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
         robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
         await("the board to have the keyboard focus", () -> window.boardPanel().isFocusOwner());
+    }
+
+    /** Whether the panel, painted now, shows a grid line at x = 15 L (the floor is plain there without one). */
+    private static boolean gridLineShows(BoardPanel panel) {
+        java.awt.image.BufferedImage image = new java.awt.image.BufferedImage(panel.getWidth(), panel.getHeight(),
+                java.awt.image.BufferedImage.TYPE_INT_RGB);
+        java.awt.Graphics2D g = image.createGraphics();
+        panel.paint(g);
+        g.dispose();
+        java.awt.geom.Point2D line = panel.transform().toScreen(15, 5.5);
+        return !new java.awt.Color(image.getRGB((int) line.getX(), (int) line.getY())).equals(BoardPainter.FLOOR);
     }
 }

@@ -18,6 +18,8 @@ import java.awt.Font;
 import java.awt.FontMetrics;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
+import java.awt.Shape;
+import java.awt.Stroke;
 import java.awt.geom.CubicCurve2D;
 import java.awt.geom.Ellipse2D;
 import java.awt.geom.Line2D;
@@ -37,6 +39,12 @@ import java.util.stream.Collectors;
  */
 public final class BuildOverlay implements BoardOverlay {
     private static final float LINE = 2.5f;
+    /** Pixels a gizmo's selection outline stands off its footprint. */
+    private static final double OUTLINE_GROW = 3;
+    /** Pixels between the lines of a refused footprint's hatching. */
+    private static final float HATCH_PITCH = 9f;
+    /** Pixels between a selection outline (or footprint) and the label of keys beside it. */
+    private static final double LABEL_GAP = 6;
 
     private final Editor controller;
     private final BooleanSupplier active;
@@ -99,7 +107,7 @@ public final class BuildOverlay implements BoardOverlay {
             g.draw(screenRect(t, 0, 0, Board.SIZE, Board.SIZE, -2));
         } else if (gizmo.isPresent()) {
             Gizmo z = gizmo.get();
-            g.draw(screenRect(t, z.x(), z.y(), z.width(), z.height(), 3));
+            g.draw(screenRect(t, z.x(), z.y(), z.width(), z.height(), OUTLINE_GROW));
         } else if (ball.isPresent()) {
             Ball b = ball.get();
             double r = b.radius() + 0.12;
@@ -107,22 +115,53 @@ public final class BuildOverlay implements BoardOverlay {
         }
     }
 
+    /**
+     * A footprint that fits is a translucent green; a refused one is hatched black and white inside a black-edged
+     * red outline, which reads over every gizmo colour (a translucent red vanished over a red square).
+     */
     private void paintPreview(Graphics2D g, BoardTransform t, Preview preview) {
         Color color = preview.fits() ? EditorColors.FITS : EditorColors.REFUSED;
-        g.setStroke(new BasicStroke(LINE));
+        Shape shape;
         if (preview instanceof Preview.Footprint f) {
-            Rectangle2D r = screenRect(t, f.x(), f.y(), f.width(), f.height(), 0);
-            g.setColor(EditorColors.translucent(color, 80));
-            g.fill(r);
-            g.setColor(color);
-            g.draw(r);
-        } else if (preview instanceof Preview.BallPlacement b) {
-            Ellipse2D e = screenEllipse(t, b.x(), b.y(), Board.BALL_RADIUS);
-            g.setColor(EditorColors.translucent(color, 110));
-            g.fill(e);
-            g.setColor(color);
-            g.draw(e);
+            shape = screenRect(t, f.x(), f.y(), f.width(), f.height(), 0);
+        } else {
+            Preview.BallPlacement b = (Preview.BallPlacement) preview;
+            shape = screenEllipse(t, b.x(), b.y(), Board.BALL_RADIUS);
             velocityArrow(g, t, b.x(), b.y(), b.vx(), b.vy(), color);
+        }
+        if (preview.fits()) {
+            g.setColor(EditorColors.translucent(color, 90));
+            g.fill(shape);
+        } else {
+            hatch(g, shape);
+            g.setColor(Color.BLACK);
+            g.setStroke(new BasicStroke(LINE + 2));
+            g.draw(shape);
+        }
+        g.setColor(color);
+        g.setStroke(new BasicStroke(LINE));
+        g.draw(shape);
+    }
+
+    /** Diagonal black lines with white cores across the shape. */
+    private static void hatch(Graphics2D g, Shape shape) {
+        Graphics2D h = (Graphics2D) g.create();
+        try {
+            h.clip(shape);
+            Rectangle2D r = shape.getBounds2D();
+            Stroke dark = new BasicStroke(HATCH_PITCH / 2);
+            Stroke light = new BasicStroke(HATCH_PITCH / 5);
+            for (double d = -r.getHeight(); d < r.getWidth(); d += HATCH_PITCH) {
+                Line2D line = new Line2D.Double(r.getX() + d, r.getMaxY(), r.getX() + d + r.getHeight(), r.getY());
+                h.setColor(Color.BLACK);
+                h.setStroke(dark);
+                h.draw(line);
+                h.setColor(Color.WHITE);
+                h.setStroke(light);
+                h.draw(line);
+            }
+        } finally {
+            h.dispose();
         }
     }
 
@@ -205,8 +244,21 @@ public final class BuildOverlay implements BoardOverlay {
         if (keys.isEmpty()) {
             return;
         }
-        Point2D below = t.toScreen(gizmo.x(), gizmo.y() + gizmo.height());
-        label(g, "keys: " + keys, below.getX(), below.getY() + 16, EditorColors.KEY_LABEL);
+        // Below the gizmo, clear of its selection outline; above it for the bottom row, where below is the wall.
+        boolean bottomRow = gizmo.y() + gizmo.height() >= Board.SIZE;
+        Point2D corner = t.toScreen(gizmo.x(), bottomRow ? gizmo.y() : gizmo.y() + gizmo.height());
+        labelBeside(g, "keys: " + keys, corner.getX(), corner.getY(), bottomRow, EditorColors.KEY_LABEL);
+    }
+
+    /** A label whose box starts {@link #LABEL_GAP} beyond a selection outline, below or above {@code edgeY}. */
+    private static void labelBeside(Graphics2D g, String text, double x, double edgeY, boolean above, Color color) {
+        g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 12));
+        FontMetrics fm = g.getFontMetrics();
+        double clear = OUTLINE_GROW + (LINE + 1) / 2 + LABEL_GAP;
+        // label() draws its box from (baseline - ascent - 2) to (baseline - ascent + height).
+        double baseline = above ? edgeY - clear - fm.getHeight() + fm.getAscent()
+                : edgeY + clear + fm.getAscent() + 2;
+        label(g, text, x, baseline, color);
     }
 
     /** Text on a dark rounded box so it stays readable over any gizmo colour. */

@@ -19,7 +19,7 @@ public final class EdgePopup {
     private final BoardPanel panel;
     private final JPopupMenu popup = new JPopupMenu("Key edge");
 
-    public EdgePopup(Editor controller, BoardPanel panel) {
+    private EdgePopup(Editor controller, BoardPanel panel) {
         this.controller = controller;
         this.panel = panel;
         popup.add(item("On key down and up (hold)", "edge.both", EdgeChoice.DOWN_AND_UP));
@@ -43,11 +43,17 @@ public final class EdgePopup {
                 }
             }
         });
+    }
+
+    /** The popup of {@code controller}'s Key Connect over {@code panel}, closing whenever no answer is awaited. */
+    public static EdgePopup of(Editor controller, BoardPanel panel) {
+        EdgePopup edges = new EdgePopup(controller, panel);
         controller.addStateListener(() -> {
-            if (!controller.awaitingEdge() && popup.isVisible()) {
-                popup.setVisible(false);
+            if (!controller.awaitingEdge() && edges.popup.isVisible()) {
+                edges.popup.setVisible(false);
             }
         });
+        return edges;
     }
 
     /** Shows the popup at the top-right corner of the selected gizmo (or mid-board). */

@@ -11,14 +11,19 @@ import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.util.function.BooleanSupplier;
 
-/** Edit menu of build mode: Undo, Redo, Rotate and Delete selection, Clear board (after confirmation). */
+/**
+ * Edit menu of build mode: Undo and Redo (each saying what it would take back or bring again), Rotate and Delete
+ * selection (enabled only when there is a selection they act on), Clear board (after confirmation).
+ */
 public final class EditMenu extends JMenu {
     private final Editor controller;
     private final BooleanSupplier building;
     private final JMenuItem undo;
     private final JMenuItem redo;
+    private final JMenuItem rotate;
+    private final JMenuItem delete;
 
-    public EditMenu(Editor controller, Component parent, BooleanSupplier building) {
+    private EditMenu(Editor controller, Component parent, BooleanSupplier building) {
         super("Edit");
         this.controller = controller;
         this.building = building;
@@ -27,8 +32,9 @@ public final class EditMenu extends JMenu {
         redo = item("Redo", KeyStroke.getKeyStroke(KeyEvent.VK_Y, InputEvent.CTRL_DOWN_MASK), controller::redo);
         addSeparator();
         // No accelerator: Ctrl+R is the File menu's Reload.
-        item("Rotate selection", null, controller::rotateSelected);
-        item("Delete selection", null, controller::deleteSelected).setToolTipText("Also the Delete key over the board");
+        rotate = item("Rotate selection", null, controller::rotateSelected);
+        delete = item("Delete selection", null, controller::deleteSelected);
+        delete.setToolTipText("Also the Delete key over the board");
         addSeparator();
         item("Clear board\u2026", null, () -> {
             int answer = JOptionPane.showConfirmDialog(parent,
@@ -39,8 +45,15 @@ public final class EditMenu extends JMenu {
                 controller.clearBoard();
             }
         });
-        controller.history().addListener(this::update);
         update();
+    }
+
+    /** The Edit menu of {@code controller}, following its history and selection. */
+    public static EditMenu of(Editor controller, Component parent, BooleanSupplier building) {
+        EditMenu menu = new EditMenu(controller, parent, building);
+        controller.history().addListener(menu::update);
+        controller.addStateListener(menu::update);
+        return menu;
     }
 
     /** Enables the menu in build mode only, and Undo/Redo only when there is something to undo or redo. */
@@ -49,8 +62,10 @@ public final class EditMenu extends JMenu {
         setEnabled(on);
         undo.setEnabled(on && controller.history().canUndo());
         redo.setEnabled(on && controller.history().canRedo());
-        undo.setToolTipText(controller.history().undoable().map(what -> "Undo: " + what).orElse(null));
-        redo.setToolTipText(controller.history().redoable().map(what -> "Redo: " + what).orElse(null));
+        undo.setText(controller.history().undoable().map(what -> "Undo: " + what).orElse("Undo"));
+        redo.setText(controller.history().redoable().map(what -> "Redo: " + what).orElse("Redo"));
+        rotate.setEnabled(on && controller.selectedGizmo().isPresent());
+        delete.setEnabled(on && (controller.selectedGizmo().isPresent() || controller.selectedBall().isPresent()));
     }
 
     private JMenuItem item(String text, KeyStroke accelerator, Runnable action) {

@@ -4,7 +4,6 @@ import gizmoball.boardfile.KeyCodes;
 import gizmoball.editor.Editor;
 import gizmoball.editor.Tool;
 
-import javax.swing.AbstractButton;
 import javax.swing.BorderFactory;
 import javax.swing.ButtonGroup;
 import javax.swing.JPanel;
@@ -21,18 +20,17 @@ import java.util.Map;
  */
 public final class PalettePanel extends JPanel {
     private final Map<Tool, JToggleButton> buttons = new EnumMap<>(Tool.class);
+    private final JPanel column = new JPanel(new GridLayout(0, 1, 0, 2));
+    private boolean compact;
 
-    public PalettePanel(Editor controller) {
+    private PalettePanel(Editor controller) {
         super(new BorderLayout());
         setBorder(BorderFactory.createEmptyBorder(6, 6, 6, 6));
         // The buttons keep their natural height at the top however tall the window is.
-        JPanel column = new JPanel(new GridLayout(0, 1, 0, 2));
         add(column, BorderLayout.NORTH);
         ButtonGroup group = new ButtonGroup();
         for (Tool tool : Tool.values()) {
-            // The shortcut key, greyed after the label, so the keys are learnt by looking at the palette.
-            JToggleButton button = new JToggleButton("<html>" + tool.label() + " <font color=gray>"
-                    + KeyCodes.name(tool.shortcut()) + "</font></html>", new ToolIcon(tool));
+            JToggleButton button = new JToggleButton(label(tool), new ToolIcon(tool));
             button.setName("tool." + tool.name());
             button.setHorizontalAlignment(SwingConstants.LEADING);
             button.setIconTextGap(8);
@@ -43,12 +41,33 @@ public final class PalettePanel extends JPanel {
             column.add(button);
             buttons.put(tool, button);
         }
-        controller.addStateListener(() -> buttons.get(controller.tool()).setSelected(true));
         buttons.get(controller.tool()).setSelected(true);
     }
 
-    /** The button of a tool (for tests and for the installer's focus handling). */
-    public AbstractButton button(Tool tool) {
-        return buttons.get(tool);
+    /** The palette of {@code controller}'s tools, its buttons following the tool chosen (by key or click). */
+    public static PalettePanel of(Editor controller) {
+        PalettePanel palette = new PalettePanel(controller);
+        controller.addStateListener(() -> palette.buttons.get(controller.tool()).setSelected(true));
+        return palette;
+    }
+
+    /**
+     * A compact palette is a grid of icons, two to a row (each button's tooltip still names the tool and its key),
+     * for windows too narrow to give the board its room beside the labelled column.
+     */
+    public void setCompact(boolean compact) {
+        if (compact == this.compact) {
+            return;
+        }
+        this.compact = compact;
+        column.setLayout(new GridLayout(0, compact ? 2 : 1, 2, 2));
+        buttons.forEach((tool, button) -> button.setText(compact ? null : label(tool)));
+        revalidate();
+        repaint();
+    }
+
+    /** The tool's name, then its shortcut key greyed, so the keys are learnt by looking at the palette. */
+    private static String label(Tool tool) {
+        return "<html>" + tool.label() + " <font color=gray>" + KeyCodes.name(tool.shortcut()) + "</font></html>";
     }
 }

@@ -25,7 +25,10 @@ import javax.swing.JPanel;
 import javax.swing.JScrollPane;
 import javax.swing.JTextField;
 import javax.swing.ListSelectionModel;
+import javax.swing.SwingConstants;
 import java.awt.BorderLayout;
+import java.awt.Component;
+import java.awt.Container;
 import java.awt.Color;
 import java.awt.Dimension;
 import java.awt.FlowLayout;
@@ -56,6 +59,9 @@ public final class PropertiesPanel extends JPanel {
         }
     }
 
+    private static final int WIDTH = 250;
+    private static final int SELECTION_WIDTH = 226;
+
     private final Editor controller;
     private final Runnable focusBoard;
     private final NumberField gravity = new NumberField("gravity");
@@ -76,14 +82,11 @@ public final class PropertiesPanel extends JPanel {
     private final JButton removeLink = new JButton("Remove");
     private String shownSelection;
 
-    /** @param focusBoard gives the keyboard back to the board view (after Enter, Apply or Esc in a field) */
-    public PropertiesPanel(Editor controller, Runnable focusBoard) {
+    private PropertiesPanel(Editor controller, Runnable focusBoard) {
         this.controller = controller;
         this.focusBoard = focusBoard;
         setLayout(new BorderLayout());
         setBorder(BorderFactory.createEmptyBorder(6, 6, 6, 6));
-        // A fixed width: the board view must not jump when the selection shows more or fewer rows.
-        setPreferredSize(new Dimension(250, 10));
         // Stacked at the top at their natural heights, however tall the window is.
         JPanel stack = new JPanel();
         stack.setLayout(new BoxLayout(stack, BoxLayout.Y_AXIS));
@@ -92,18 +95,33 @@ public final class PropertiesPanel extends JPanel {
         stack.add(section("Selection", selectionSection()));
         add(stack, BorderLayout.NORTH);
 
+        refresh();
+    }
+
+    /**
+     * The panel of {@code controller}'s board and selection, following its edits and selection.
+     *
+     * @param focusBoard gives the keyboard back to the board view (after Enter, Apply or Esc in a field)
+     */
+    public static PropertiesPanel of(Editor controller, Runnable focusBoard) {
+        PropertiesPanel panel = new PropertiesPanel(controller, focusBoard);
         controller.board().addObserver((board, change) -> {
             if (change != BoardChange.TICK) {
-                refresh();
+                panel.refresh();
             }
         });
         controller.addStateListener(() -> {
-            String now = controller.selected().orElse(null);
-            if (!Objects.equals(now, shownSelection)) {
-                refresh();
+            if (!Objects.equals(controller.selected().orElse(null), panel.shownSelection)) {
+                panel.refresh();
             }
         });
-        refresh();
+        return panel;
+    }
+
+    /** A fixed width: the board view must not jump when the selection shows more or fewer rows. */
+    @Override
+    public Dimension getPreferredSize() {
+        return new Dimension(WIDTH, super.getPreferredSize().height);
     }
 
     /** Shows the board's current values; called on edits and selection changes, not on every pointer move. */
@@ -117,8 +135,17 @@ public final class PropertiesPanel extends JPanel {
         Optional<Gizmo> gizmo = controller.selectedGizmo();
         Optional<Ball> ball = controller.selectedBall();
         selection.setText(describe(gizmo, ball));
-        ballRows.setVisible(ball.isPresent());
-        colourRows.setVisible(gizmo.isPresent());
+        // The ball's and the colour's rows keep their room when they do not apply, so that nothing below jumps.
+        for (NumberField f : new NumberField[]{ballX, ballY, ballVx, ballVy}) {
+            f.setEnabled(ball.isPresent());
+            if (ball.isEmpty()) {
+                f.setText("");
+            }
+        }
+        applyBall.setEnabled(ball.isPresent());
+        enableAll(colourRows, gizmo.isPresent());
+        colour.setText("");
+        swatch.setBackground(colourRows.getBackground());
         gizmo.ifPresent(g -> {
             colour.setText(g.colour().map(Editor::hex).orElse(""));
             swatch.setBackground(BoardPainter.colourOf(g));
@@ -167,6 +194,11 @@ public final class PropertiesPanel extends JPanel {
     private JComponent selectionSection() {
         JPanel p = new JPanel(new GridBagLayout());
         selection.setName("selection");
+        // Two lines' room whatever is selected: a longer description must not push the rows below it down.
+        selection.setVerticalAlignment(SwingConstants.TOP);
+        Dimension twoLines = new Dimension(SELECTION_WIDTH, 2 * selection.getFontMetrics(selection.getFont()).getHeight() + 4);
+        selection.setPreferredSize(twoLines);
+        selection.setMinimumSize(twoLines);
         GridBagConstraints c = constraints(0, 0);
         c.gridwidth = 2;
         p.add(selection, c);
@@ -195,6 +227,8 @@ public final class PropertiesPanel extends JPanel {
         linkList.setVisibleRowCount(6);
         JScrollPane scroll = new JScrollPane(linkList);
         scroll.setPreferredSize(new Dimension(200, 150));
+        // Never squeezed to a row: the panel scrolls instead (see gizmoball.app.BuildModeInstaller).
+        scroll.setMinimumSize(scroll.getPreferredSize());
         GridBagConstraints s = constraints(0, 7);
         s.gridwidth = 2;
         s.fill = GridBagConstraints.BOTH;
@@ -309,20 +343,33 @@ public final class PropertiesPanel extends JPanel {
     private String describe(Optional<Gizmo> gizmo, Optional<Ball> ball) {
         if (gizmo.isPresent()) {
             Gizmo g = gizmo.get();
-            String size = g.width() + "x" + g.height();
-            return "<html><b>" + g.name() + "</b>: " + Wording.kind(g.kind()) + " " + size
-                    + " at (" + g.x() + "," + g.y() + ")" + (g.rotation() == 0 ? "" : ", " + g.rotation() * 90
-                    + "\u00b0") + "</html>";
+            return named(g.name(), Wording.kind(g.kind()) + " " + g.width() + "x" + g.height() + " at (" + g.x()
+                    + "," + g.y() + ")" + (g.rotation() == 0 ? "" : ", " + g.rotation() * 90 + "\u00b0"));
         }
         if (ball.isPresent()) {
             Ball b = ball.get();
-            return "<html><b>" + b.name() + "</b>: ball" + (b.isCaptured() ? " (held by an absorber)" : "")
-                    + "</html>";
+            return named(b.name(), "ball" + (b.isCaptured() ? " (held by an absorber)" : ""));
         }
         return controller.selected().filter(Board.OUTER_WALLS::equals).isPresent()
-                ? "<html><b>" + Board.OUTER_WALLS + "</b>: the walls around the board</html>"
+                ? named(Board.OUTER_WALLS, "the walls around the board")
                 : "Nothing selected";
     }
+
+    private static void enableAll(Container rows, boolean enabled) {
+        for (Component c : rows.getComponents()) {
+            c.setEnabled(enabled);
+            if (c instanceof Container inner) {
+                enableAll(inner, enabled);
+            }
+        }
+    }
+
+    /** "<b>name</b>: what", wrapped within the label's width. */
+    private static String named(String name, String what) {
+        return "<html><body style='width: " + (SELECTION_WIDTH - 10) + "px'><b>" + name + "</b>: " + what
+                + "</body></html>";
+    }
+
 
     private static JComponent section(String title, JComponent content) {
         content.setBorder(BorderFactory.createTitledBorder(title));

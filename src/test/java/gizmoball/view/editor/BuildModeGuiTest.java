@@ -1,8 +1,8 @@
 package gizmoball.view.editor;
 
+import gizmoball.boardfile.BoardContents;
 import gizmoball.session.GameSession;
 import gizmoball.session.Mode;
-import gizmoball.editor.Design;
 import gizmoball.editor.Tool;
 import gizmoball.model.Board;
 import gizmoball.model.Connection;
@@ -34,6 +34,9 @@ import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.util.ArrayList;
 import java.util.List;
+import javax.swing.JComponent;
+import javax.swing.JButton;
+import java.awt.Rectangle;
 
 import static gizmoball.view.Gui.await;
 import static gizmoball.view.Gui.onEdt;
@@ -75,7 +78,7 @@ class BuildModeGuiTest {
         Robot robot = new Robot();
         robot.setAutoDelay(20);
         robot.waitForIdle();
-        Point button = BuildWindow.centreOnScreen(w.build.palette().button(Tool.SQUARE));
+        Point button = BuildWindow.centreOnScreen(w.toolButton(Tool.SQUARE));
         Point cell = w.cellOnScreen(6, 9);
         robot.mouseMove(button.x, button.y);
         robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
@@ -181,8 +184,8 @@ class BuildModeGuiTest {
         w.clickTool(Tool.SQUARE);
         w.clickCell(1, 1);
         w.clickCell(2, 1);
-        JMenuItem undo = onEdt(() -> Gui.menuItem(w.window.menus(), "Undo"));
-        JMenuItem redo = onEdt(() -> Gui.menuItem(w.window.menus(), "Redo"));
+        JMenuItem undo = EditorGui.menuItemNamed(w.window.menus(), "edit.undo");
+        JMenuItem redo = EditorGui.menuItemNamed(w.window.menus(), "edit.redo");
         assertThat(onEdt(redo::isEnabled)).isFalse();
 
         onEdt(() -> undo.doClick(0));
@@ -196,11 +199,11 @@ class BuildModeGuiTest {
     void aRefusedOverlapLeavesTheBoardAsItWasAndSaysWhyOnTheStatusLine() {
         w.clickTool(Tool.SQUARE);
         w.clickCell(5, 5);
-        Design before = onEdt(() -> Design.of(board));
+        BoardContents before = onEdt(() -> BoardContents.of(board));
         w.clickTool(Tool.RIGHT_FLIPPER);
         w.clickCell(4, 4);
 
-        assertThat(onEdt(() -> Design.of(board))).isEqualTo(before);
+        assertThat(onEdt(() -> BoardContents.of(board))).isEqualTo(before);
         assertThat(w.status()).contains("overlap").contains("S1");
     }
 
@@ -285,23 +288,30 @@ class BuildModeGuiTest {
                 .doesNotHaveDuplicates();
     }
 
+    /** Issue 12 item 9: build mode never resizes the window, and at 700 x 480 every tool and field is in reach. */
     @Test
-    void theSidePanelsDoNotSqueezeTheBoardAndPlayGetsItsSizeBack() {
+    void buildModeKeepsTheWindowsSizeAndASmallWindowReachesEveryToolAndField() {
+        Dimension small = new Dimension(700, 480);
         onEdt(() -> w.session.setMode(Mode.PLAY));
-        await("play layout", () -> !w.build.palette().isShowing());
-        Dimension playWindow = onEdt(() -> w.window.getSize());
-        int playBoard = onEdt(() -> Math.min(w.panel.getWidth(), w.panel.getHeight()));
-
+        onEdt(() -> w.window.setSize(small));
+        await("the small window", () -> w.window.getSize().equals(small));
         onEdt(() -> w.session.setMode(Mode.BUILD));
         await("build layout", () -> w.build.palette().isShowing() && w.panel.getWidth() > 0);
-        Dimension wanted = onEdt(() -> w.window.getPreferredSize());
-        Dimension screen = Toolkit.getDefaultToolkit().getScreenSize();
-        assumeTrue(screen.width >= wanted.width && screen.height >= wanted.height,
-                "the screen (" + screen + ") is smaller than the build-mode window wants (" + wanted + ")");
-        int buildBoard = onEdt(() -> Math.min(w.panel.getWidth(), w.panel.getHeight()));
-        assertThat(buildBoard).isGreaterThanOrEqualTo(playBoard * 9 / 10);
-
+        onEdt(() -> w.window.validate());
+        assertThat(onEdt(() -> w.window.getSize())).isEqualTo(small);
+        List<JComponent> controls = new ArrayList<>();
+        for (Tool tool : Tool.values()) {
+            controls.add(w.toolButton(tool));
+        }
+        controls.add(onEdt(() -> EditorGui.find(w.build.properties(), JButton.class, "board.apply")));
+        controls.add(onEdt(() -> EditorGui.find(w.build.properties(), JButton.class, "links.remove")));
+        for (JComponent c : controls) {
+            onEdt(() -> c.scrollRectToVisible(new Rectangle(c.getSize())));
+            assertThat(onEdt(() -> c.getVisibleRect().getSize())).as(c.getName() + " scrolled into view")
+                    .isEqualTo(onEdt(() -> c.getSize()));
+        }
         onEdt(() -> w.session.setMode(Mode.PLAY));
-        assertThat(onEdt(() -> w.window.getSize())).isEqualTo(playWindow);
+        assertThat(onEdt(() -> w.window.getSize())).isEqualTo(small);
     }
+
 }

@@ -11,6 +11,7 @@ import gizmoball.view.GameWindow;
 import gizmoball.view.Gui;
 
 import java.awt.Component;
+import javax.swing.JToggleButton;
 import java.awt.Point;
 import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
@@ -55,7 +56,12 @@ final class BuildWindow {
     }
 
     void clickTool(Tool tool) {
-        onEdt(() -> build.palette().button(tool).doClick(0));
+        onEdt(() -> toolButton(tool).doClick(0));
+    }
+
+    /** The palette's button of a tool, found by its component name. */
+    JToggleButton toolButton(Tool tool) {
+        return onEdt(() -> EditorGui.find(build.palette(), JToggleButton.class, "tool." + tool.name()));
     }
 
     void clickCell(int cx, int cy) {
@@ -66,6 +72,15 @@ final class BuildWindow {
         onEdt(() -> {
             mouse(MouseEvent.MOUSE_PRESSED, x, y);
             mouse(MouseEvent.MOUSE_RELEASED, x, y);
+        });
+    }
+
+    /** The pointer moves over the board to (x, y) with no button down. */
+    void hover(double x, double y) {
+        onEdt(() -> {
+            Point2D p = panel.transform().toScreen(x, y);
+            panel.dispatchEvent(new MouseEvent(panel, MouseEvent.MOUSE_MOVED, System.currentTimeMillis(), 0,
+                    (int) Math.round(p.getX()), (int) Math.round(p.getY()), 0, false, MouseEvent.NOBUTTON));
         });
     }
 

@@ -1,8 +1,8 @@
 package gizmoball.view.editor;
 
+import gizmoball.boardfile.BoardContents;
 import gizmoball.boardfile.BoardFiles;
 import gizmoball.session.Mode;
-import gizmoball.editor.Design;
 import gizmoball.editor.Tool;
 import gizmoball.model.Ball;
 import gizmoball.model.Board;
@@ -79,7 +79,7 @@ class DefaultBoardFromScratchGuiTest {
         type("mu2", target.mu2());
 
         Board built = w.board;
-        assertThat(renamed(Design.of(built), inverse(editorName))).isEqualTo(Design.of(target));
+        assertThat(renamed(BoardContents.of(built), inverse(editorName))).isEqualTo(BoardContents.of(target));
 
         Path file = dir.resolve("by-hand.txt");
         onEdt(() -> {
@@ -87,7 +87,7 @@ class DefaultBoardFromScratchGuiTest {
             return null;
         });
         Board reloaded = BoardFiles.load(file);
-        assertThat(Design.of(reloaded)).isEqualTo(onEdt(() -> Design.of(built)));
+        assertThat(BoardContents.of(reloaded)).isEqualTo(onEdt(() -> BoardContents.of(built)));
 
         onEdt(() -> w.session.setMode(Mode.PLAY));
         String leftFlipper = editorName.get("LF");
@@ -146,15 +146,15 @@ class DefaultBoardFromScratchGuiTest {
         return inverse;
     }
 
-    private static Design renamed(Design d, Map<String, String> name) {
-        return new Design(
-                d.gizmos().stream().map(g -> new Design.GizmoState(name.get(g.name()), g.kind(), g.x(), g.y(),
-                        g.width(), g.height(), g.rotation())).toList(),
-                d.balls().stream().map(b -> new Design.BallState(name.get(b.name()), b.x(), b.y(), b.vx(), b.vy()))
-                        .toList(),
+    private static BoardContents renamed(BoardContents d, Map<String, String> name) {
+        return new BoardContents(
+                d.gizmos().stream().map(g -> new BoardContents.GizmoState(name.get(g.name()), g.kind(), g.x(), g.y(),
+                        g.width(), g.height(), g.rotation(), g.colour())).toList(),
+                d.balls().stream().map(b -> new BoardContents.BallState(name.get(b.name()), b.x(), b.y(), b.vx(),
+                        b.vy(), b.captured())).toList(),
                 d.connections().stream().map(c -> new Connection(name.get(c.source()), name.get(c.target())))
                         .toList(),
-                d.keys().stream().map(k -> new KeyBinding(k.keyCode(), k.edge(), name.get(k.gizmo()))).toList(),
+                d.keyBindings().stream().map(k -> new KeyBinding(k.keyCode(), k.edge(), name.get(k.gizmo()))).toList(),
                 d.gravity(), d.mu(), d.mu2());
     }
 }

@@ -122,6 +122,60 @@ class EditorFieldsGuiTest {
         assertThat(onEdt(() -> w.board.keyBindings())).as("one undo step for both").isEmpty();
     }
 
+    /** Issue 12 item 12: the refusal reads the same on hover and on click, and names no would-be gizmo. */
+    @Test
+    void aRefusedPlacementSaysTheSameOnHoverAndOnClick() {
+        w.clickTool(Tool.SQUARE);
+        w.clickCell(2, 4);
+        w.clickTool(Tool.TRIANGLE);
+        w.hover(2.5, 4.5);
+        String onHover = w.status();
+        assertThat(onHover).startsWith("a triangle at (2,4) would overlap").contains("S1");
+        w.clickCell(2, 4);
+        assertThat(w.status()).isEqualTo(onHover);
+        assertThat(onEdt(() -> w.board.gizmos())).hasSize(1);
+    }
+
+    /** Issue 12 item 13. */
+    @Test
+    void theEditMenuSaysWhatUndoTakesBackAndOffersRotateAndDeleteOnlyForASelection() {
+        JMenuItem undo = EditorGui.menuItemNamed(w.window.menus(), "edit.undo");
+        JMenuItem rotate = EditorGui.menuItemNamed(w.window.menus(), "edit.rotateselection");
+        JMenuItem delete = EditorGui.menuItemNamed(w.window.menus(), "edit.deleteselection");
+        assertThat(onEdt(() -> rotate.isEnabled() || delete.isEnabled())).as("nothing selected").isFalse();
+
+        w.clickTool(Tool.SQUARE);
+        w.clickCell(2, 4);
+        assertThat(onEdt(() -> undo.getText())).isEqualTo("Undo: Placed S1 at (2,4)");
+        assertThat(onEdt(() -> rotate.isEnabled() && delete.isEnabled())).as("S1 selected").isTrue();
+
+        w.clickTool(Tool.SELECT);
+        w.click(-0.5, 10);
+        assertThat(onEdt(() -> w.build.controller().selected())).contains(Board.OUTER_WALLS);
+        assertThat(onEdt(() -> rotate.isEnabled() || delete.isEnabled())).as("the outer walls selected").isFalse();
+        onEdt(() -> undo.doClick(0));
+        assertThat(onEdt(() -> EditorGui.menuItemNamed(w.window.menus(), "edit.redo").getText()))
+                .isEqualTo("Redo: Placed S1 at (2,4)");
+    }
+
+    /** Issue 12 item 15: the rows of the Selection panel stay where they are, whatever is selected. */
+    @Test
+    void theSelectionPanelDoesNotJumpWhenTheSelectionChanges() {
+        onEdt(() -> {
+            w.board.addGizmo(GizmoKind.SQUARE, "S1", 2, 2);
+            w.board.addBall("B1", 10.5, 10.5, 0, 0);
+        });
+        javax.swing.JList<?> links = onEdt(() -> EditorGui.find(w.build.properties(), javax.swing.JList.class, "links"));
+        java.util.List<java.awt.Rectangle> placed = new java.util.ArrayList<>();
+        for (String name : new String[] {null, "S1", "B1", Board.OUTER_WALLS}) {
+            onEdt(() -> w.build.controller().select(name));
+            onEdt(() -> w.build.properties().validate());
+            placed.add(onEdt(() -> javax.swing.SwingUtilities.convertRectangle(links.getParent(),
+                    links.getParent().getBounds(), w.build.properties())));
+        }
+        assertThat(placed).as("the links list, selecting nothing, S1, B1, OuterWalls").containsOnly(placed.get(0));
+    }
+
     private static Optional<JMenuItem> popupItem(String name) {
         for (Window window : Window.getWindows()) {
             Optional<JMenuItem> item = Gui.find(window, JMenuItem.class, i -> name.equals(i.getName()) && i.isShowing());

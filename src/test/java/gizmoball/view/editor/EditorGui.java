@@ -2,7 +2,11 @@ package gizmoball.view.editor;
 
 import gizmoball.view.Gui;
 import javax.swing.JMenuItem;
+import gizmoball.view.Gui;
 import java.awt.Component;
+import javax.swing.JMenu;
+import javax.swing.JMenuBar;
+import javax.swing.JMenuItem;
 import java.awt.Container;
 import java.awt.Window;
 import java.util.Optional;
@@ -31,5 +35,21 @@ final class EditorGui {
 
     private static <C extends Component> Optional<C> named(Container root, Class<C> type, String name) {
         return Gui.find(root, type, c -> name.equals(c.getName()));
+    }
+
+    /** The item of any menu of {@code menus} with that component name (its text may say what it would do). */
+    static JMenuItem menuItemNamed(JMenuBar menus, String name) {
+        return Gui.onEdt(() -> {
+            for (int i = 0; i < menus.getMenuCount(); i++) {
+                JMenu menu = menus.getMenu(i);
+                for (int j = 0; j < menu.getItemCount(); j++) {
+                    JMenuItem item = menu.getItem(j);
+                    if (item != null && name.equals(item.getName())) {
+                        return item;
+                    }
+                }
+            }
+            throw new AssertionError("no menu item named " + name);
+        });
     }
 }

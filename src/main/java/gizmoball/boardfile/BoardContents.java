@@ -12,20 +12,24 @@ import java.util.List;
 import java.util.Objects;
 import java.util.Optional;
 
-/** Everything a board file records about a board, as a value, so two boards can be compared with equals. */
-record BoardContents(List<GizmoState> gizmos, List<BallState> balls, List<Connection> connections,
+/**
+ * Everything a board file records about a board, as a value, so two boards can be compared with equals (Board
+ * itself has no equality): the editor's history uses it to tell whether a change made elsewhere (Open, back
+ * from play) altered the design, and the tests to compare boards read, written and edited.
+ */
+public record BoardContents(List<GizmoState> gizmos, List<BallState> balls, List<Connection> connections,
                      List<KeyBinding> keyBindings, double gravity, double mu, double mu2) {
 
-    record GizmoState(String name, GizmoKind kind, int x, int y, int width, int height, int rotation,
+    public record GizmoState(String name, GizmoKind kind, int x, int y, int width, int height, int rotation,
                       Optional<Rgb> colour) {
     }
 
     /** Doubles compared exactly (records use Double.compare semantics), so a lost bit shows. */
-    record BallState(String name, double x, double y, double vx, double vy, boolean captured) {
+    public record BallState(String name, double x, double y, double vx, double vy, boolean captured) {
     }
 
     /** What differs from {@code other}, element by element, so a failure names the one ball or gizmo at fault. */
-    List<String> differences(BoardContents other) {
+    public List<String> differences(BoardContents other) {
         List<String> differences = new ArrayList<>();
         compare("gizmo", gizmos, other.gizmos, differences);
         compare("ball", balls, other.balls, differences);
@@ -45,7 +49,7 @@ record BoardContents(List<GizmoState> gizmos, List<BallState> balls, List<Connec
         }
     }
 
-    static BoardContents of(Board board) {
+    public static BoardContents of(Board board) {
         return new BoardContents(
                 board.gizmos().stream().map(BoardContents::state).toList(),
                 board.balls().stream().map(BoardContents::state).toList(),

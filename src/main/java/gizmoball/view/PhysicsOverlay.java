@@ -1,0 +1,176 @@
+package gizmoball.view;
+
+import gizmoball.model.BallReport;
+import gizmoball.model.Board;
+import gizmoball.model.Stage;
+import gizmoball.model.TickReport;
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Font;
+import java.awt.FontMetrics;
+import java.awt.Graphics2D;
+import java.awt.geom.Ellipse2D;
+import java.awt.geom.Line2D;
+import java.awt.geom.Path2D;
+import java.awt.geom.Point2D;
+import java.awt.geom.RoundRectangle2D;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import physics.Vect;
+
+/**
+ * View > Physics overlay: the loop made visible. For each free ball its velocity, its next collision (where
+ * its centre will be, and in how long) and whether it flies, rests in contact or sleeps; in a corner, what
+ * the last tick cost stage by stage, how many collisions it resolved and how many balls were awake.
+ * <p>
+ * Every number is read from the model's {@link TickReport}, the read-only snapshot taken at stage 6; the
+ * overlay computes nothing of the physics itself. While shown, it asks the board to look ahead for each
+ * ball's next collision (which costs a detection pass per ball and tick, so it is off otherwise).
+ */
+public final class PhysicsOverlay implements BoardOverlay {
+    /** How far ahead the report looks for a ball's next collision. */
+    static final double LOOK_AHEAD_SECONDS = 2;
+    /** A velocity is drawn as the way the ball goes in this time. */
+    static final double VECTOR_SECONDS = 0.1;
+    private static final Color VELOCITY = new Color(0x7cf29c);
+    private static final Color NEXT = new Color(0xffd166);
+    private static final Color FLYING = new Color(0x8fd3ff);
+    private static final Color CONTACT = new Color(0xff9f43);
+    private static final Color ASLEEP = new Color(0xa0a0a0);
+    private static final Color PANEL = new Color(10, 12, 18, 200);
+    private static final Color TEXT = new Color(0xe8ecf4);
+    private static final float[] DASH = {4f, 4f};
+
+    private final Board board;
+    private boolean enabled;
+
+    public PhysicsOverlay(Board board) {
+        this.board = board;
+    }
+
+    public boolean isEnabled() {
+        return enabled;
+    }
+
+    public void setEnabled(boolean on) {
+        enabled = on;
+        board.setNextCollisionLookAhead(on ? LOOK_AHEAD_SECONDS : 0);
+    }
+
+    /** The corner panel's lines for {@code r}: the tick, the six stage times, collisions, balls awake. */
+    static List<String> panelLines(TickReport r) {
+        List<String> lines = new ArrayList<>();
+        lines.add(String.format(Locale.ROOT, "tick at t = %.3f s", r.time()));
+        long total = 0;
+        for (Stage stage : Stage.values()) {
+            long nanos = r.stageNanos().get(stage);
+            total += nanos;
+            lines.add(String.format(Locale.ROOT, "%d %-10s %8.1f us", stage.ordinal() + 1, stageName(stage), nanos / 1e3));
+        }
+        lines.add(String.format(Locale.ROOT, "  %-10s %8.1f us", "total", total / 1e3));
+        lines.add(String.format(Locale.ROOT, "collisions %d (%d at zero time)", r.collisions(), r.zeroTimeCollisions()));
+        lines.add(String.format(Locale.ROOT, "balls awake %d, asleep %d", r.ballsAwake(), r.ballsAsleep()));
+        return lines;
+    }
+
+    /** The label under a ball: its state, and when its next collision is. */
+    static String ballLabel(BallReport b) {
+        String state = b.state().name().toLowerCase(Locale.ROOT);
+        return Double.isFinite(b.nextCollisionIn())
+                ? String.format(Locale.ROOT, "%s, hit in %.3f s", state, b.nextCollisionIn())
+                : state;
+    }
+
+    private static String stageName(Stage stage) {
+        return switch (stage) {
+            case FRICTION_AND_GRAVITY -> "forces";
+            case BALL_MOTION -> "motion";
+            case COLLISION_DETECTION -> "detection";
+            case COLLISION_RESOLUTION -> "resolution";
+            case TRIGGERING -> "triggers";
+            case REDRAWING -> "redraw";
+        };
+    }
+
+    @Override
+    public void paint(Graphics2D screen, BoardTransform t) {
+        if (!enabled) {
+            return;
+        }
+        TickReport report = board.lastTick();
+        Graphics2D g = (Graphics2D) screen.create();
+        try {
+            g.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 11));
+            for (BallReport ball : report.balls()) {
+                paintBall(g, t, ball);
+            }
+            paintPanel(g, t, panelLines(report));
+        } finally {
+            g.dispose();
+        }
+    }
+
+    private static void paintBall(Graphics2D g, BoardTransform t, BallReport ball) {
+        Point2D at = t.toScreen(ball.position().x(), ball.position().y());
+        double r = Board.BALL_RADIUS * t.scale();
+        Vect next = ball.nextCollisionAt();
+        if (next != null && Double.isFinite(ball.nextCollisionIn())) {
+            Point2D hit = t.toScreen(next.x(), next.y());
+            g.setColor(NEXT);
+            g.setStroke(new BasicStroke(1f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, DASH, 0f));
+            g.draw(new Line2D.Double(at, hit));
+            g.setStroke(new BasicStroke(1.5f));
+            g.draw(new Ellipse2D.Double(hit.getX() - r, hit.getY() - r, 2 * r, 2 * r));
+        }
+        Vect v = ball.velocity();
+        Point2D tip = t.toScreen(ball.position().x() + v.x() * VECTOR_SECONDS, ball.position().y() + v.y() * VECTOR_SECONDS);
+        g.setColor(VELOCITY);
+        g.setStroke(new BasicStroke(2f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+        g.draw(new Line2D.Double(at, tip));
+        paintArrowHead(g, at, tip);
+        g.setColor(switch (ball.state()) {
+            case FLYING -> FLYING;
+            case CONTACT -> CONTACT;
+            case ASLEEP -> ASLEEP;
+        });
+        g.setStroke(new BasicStroke(2f));
+        g.draw(new Ellipse2D.Double(at.getX() - r - 3, at.getY() - r - 3, 2 * r + 6, 2 * r + 6));
+        String label = ballLabel(ball);
+        FontMetrics m = g.getFontMetrics();
+        g.drawString(label, (float) (at.getX() - m.stringWidth(label) / 2.0), (float) (at.getY() + r + 4 + m.getAscent()));
+    }
+
+    private static void paintArrowHead(Graphics2D g, Point2D from, Point2D tip) {
+        double dx = tip.getX() - from.getX();
+        double dy = tip.getY() - from.getY();
+        double length = Math.hypot(dx, dy);
+        if (length < 4) {
+            return;
+        }
+        double ux = dx / length;
+        double uy = dy / length;
+        double size = Math.min(8, length / 2);
+        Path2D.Double head = new Path2D.Double();
+        head.moveTo(tip.getX(), tip.getY());
+        head.lineTo(tip.getX() - size * (ux - uy / 2), tip.getY() - size * (uy + ux / 2));
+        head.lineTo(tip.getX() - size * (ux + uy / 2), tip.getY() - size * (uy - ux / 2));
+        head.closePath();
+        g.fill(head);
+    }
+
+    private static void paintPanel(Graphics2D g, BoardTransform t, List<String> lines) {
+        FontMetrics m = g.getFontMetrics();
+        int width = lines.stream().mapToInt(m::stringWidth).max().orElse(0) + 12;
+        int height = lines.size() * m.getHeight() + 8;
+        Point2D corner = t.toScreen(0, 0);
+        double x = corner.getX() + 6;
+        double y = corner.getY() + 6;
+        g.setColor(PANEL);
+        g.fill(new RoundRectangle2D.Double(x, y, width, height, 8, 8));
+        g.setColor(TEXT);
+        for (int i = 0; i < lines.size(); i++) {
+            g.drawString(lines.get(i), (float) x + 6, (float) (y + 4 + m.getAscent() + i * m.getHeight()));
+        }
+    }
+}

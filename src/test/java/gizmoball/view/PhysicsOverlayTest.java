@@ -1,0 +1,88 @@
+package gizmoball.view;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
+
+import gizmoball.model.BallReport;
+import gizmoball.model.Board;
+import gizmoball.model.TickReport;
+import java.awt.Color;
+import java.awt.Graphics2D;
+import java.awt.geom.Point2D;
+import java.awt.image.BufferedImage;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The overlay shows the model's own numbers for a scripted tick: one ball, no gravity or friction, 0.25 L from
+ * the left wall at 30 L/s, so that it bounces once in the tick (after 1/120 s) and is then 0.5 L from the wall
+ * going right, 19.25 L (0.6417 s) from the right wall.
+ */
+class PhysicsOverlayTest {
+    private static final int SIZE = 612;
+    private final Board board = new Board();
+    private final PhysicsOverlay overlay = new PhysicsOverlay(board);
+
+    private TickReport scriptedTick() {
+        board.setGravity(0);
+        board.setFriction(0, 0);
+        board.addBall("B", 0.5, 10, -30, 0);
+        overlay.setEnabled(true);
+        board.tick(Board.DEFAULT_TICK);
+        return board.lastTick();
+    }
+
+    @Test
+    void thePanelShowsTheTicksCollisionsBallsAndSixStages() {
+        TickReport r = scriptedTick();
+        assertThat(r.collisions()).isEqualTo(1);
+        assertThat(r.ballsAwake()).isEqualTo(1);
+        assertThat(PhysicsOverlay.panelLines(r)).contains("collisions 1 (0 at zero time)", "balls awake 1, asleep 0")
+                .filteredOn(line -> line.matches("[1-6] .* us")).hasSize(6);
+    }
+
+    @Test
+    void eachBallShowsItsNextCollisionFromTheReport() {
+        TickReport r = scriptedTick();
+        assertThat(r.balls()).hasSize(1);
+        BallReport b = r.balls().get(0);
+        assertThat(b.position().x()).isCloseTo(0.5, within(1e-9));
+        assertThat(b.nextCollisionIn()).isCloseTo(19.25 / 30, within(1e-9));
+        assertThat(b.nextCollisionAt().x()).isCloseTo(19.75, within(1e-9));
+        assertThat(PhysicsOverlay.ballLabel(b)).isEqualTo("flying, hit in 0.642 s");
+
+        BoardPanel panel = BoardPanel.of(board);
+        panel.addOverlay(overlay);
+        panel.setSize(SIZE, SIZE);
+        BufferedImage image = new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = image.createGraphics();
+        panel.paint(g);
+        g.dispose();
+        // The ghost ball at the next collision: its ring crosses y = 10 at x = 19.5 (left edge of the ball there).
+        Point2D ring = panel.transform().toScreen(19.5, 10);
+        assertThat(brightest(image, ring, 2).getRed()).isGreaterThan(200);
+        // The velocity arrow: 0.1 s of motion, 3 L to the right of the ball.
+        Point2D arrow = panel.transform().toScreen(2.0, 10);
+        assertThat(brightest(image, arrow, 1).getGreen()).isGreaterThan(200);
+    }
+
+    @Test
+    void offItCostsTheLoopNothing() {
+        scriptedTick();
+        overlay.setEnabled(false);
+        board.tick(Board.DEFAULT_TICK);
+        assertThat(board.lastTick().balls()).as("no look-ahead, so no per-ball report").isEmpty();
+    }
+
+    private static Color brightest(BufferedImage image, Point2D at, int radius) {
+        Color best = Color.BLACK;
+        for (int dx = -radius; dx <= radius; dx++) {
+            for (int dy = -radius; dy <= radius; dy++) {
+                Color c = new Color(image.getRGB((int) at.getX() + dx, (int) at.getY() + dy));
+                if (c.getRed() + c.getGreen() + c.getBlue() > best.getRed() + best.getGreen() + best.getBlue()) {
+                    best = c;
+                }
+            }
+        }
+        return best;
+    }
+}
