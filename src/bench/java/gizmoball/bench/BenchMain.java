@@ -9,21 +9,23 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 
 /**
- * The benchmark: every scene with every method (cost and error), the scaling runs and the soak; a table
- * on standard output, CSV and PNG charts in the output directory.
+ * The benchmark: every scene with every method (cost and error), the scaling runs, the soak, the aim preview and
+ * the steady state of play (issue 10); a table on standard output, CSV and PNG charts in the output directory.
  * <p>
- * Arguments: {@code [--quick] --scripts DIR --boards DIR --out DIR} (key scripts, the game's sample boards,
- * where to write). {@code --quick} takes fewer and shorter timing
- * samples, shorter scaling runs and a shorter soak, for a smoke run under two minutes.
+ * Arguments: {@code [--quick] --scripts DIR --boards DIR [--peers DIR] --out DIR} (key scripts, the game's sample
+ * boards, other implementations' boards for the steady state and the guard survey, where to write).
+ * {@code --quick} takes fewer and shorter timing samples, shorter scaling runs, a shorter soak and shorter
+ * steady-state windows, for a smoke run under two minutes.
  */
 public final class BenchMain {
 
     /** How much work each part does. */
-    record Effort(int samples, long minSampleNanos, double scalingSeconds, long soakTicks) {
-        static final Effort FULL = new Effort(5, 20_000_000, 5, 1_000_000);
-        static final Effort QUICK = new Effort(3, 5_000_000, 1, 50_000);
+    record Effort(int samples, long minSampleNanos, double scalingSeconds, long soakTicks, SteadyState.Windows steady) {
+        static final Effort FULL = new Effort(5, 20_000_000, 5, 1_000_000, SteadyState.Windows.FULL);
+        static final Effort QUICK = new Effort(3, 5_000_000, 1, 50_000, SteadyState.Windows.QUICK);
     }
 
     private BenchMain() {
@@ -34,14 +36,16 @@ public final class BenchMain {
         Path scripts = Path.of("bench");
         Path boards = Path.of("boards");
         Path out = Path.of("build/reports/bench");
+        Optional<Path> peers = Optional.empty();
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
                 case "--quick" -> effort = Effort.QUICK;
                 case "--scripts" -> scripts = Path.of(args[++i]);
                 case "--boards" -> boards = Path.of(args[++i]);
                 case "--out" -> out = Path.of(args[++i]);
+                case "--peers" -> peers = Optional.of(Path.of(args[++i]));
                 default -> throw new IllegalArgumentException("unknown argument " + args[i]
-                        + "; usage: [--quick] [--scripts DIR] [--boards DIR] [--out DIR]");
+                        + "; usage: [--quick] [--scripts DIR] [--boards DIR] [--peers DIR] [--out DIR]");
             }
         }
         Files.createDirectories(out);
@@ -78,13 +82,16 @@ public final class BenchMain {
         stdout.println("soak");
         Soak.Result soak = Soak.run(effort.soakTicks());
         Report.printSoak(stdout, soak);
-        Report.printHeadline(stdout, rows, scaling);
+        Report.printHeadline(stdout, rows, scaling, effort.scalingSeconds());
         Report.writeSoak(out.resolve("soak.csv"), soak);
 
         stdout.println("aim preview");
         List<PreviewCost.Row> preview = PreviewCost.run(boards, effort.samples());
         PreviewCost.print(stdout, preview);
         PreviewCost.write(out.resolve("preview.csv"), preview);
+
+        stdout.println("steady state");
+        SteadyState.run(stdout, boards, peers, effort.steady(), out);
 
         stdout.printf(Locale.ROOT, "%nwrote CSV and charts to %s in %.0f s wall time%n", out.toAbsolutePath(),
                 (System.nanoTime() - wallStart) / 1e9);

@@ -1,5 +1,6 @@
 package gizmoball.bench;
 
+import org.knowm.xchart.AnnotationLine;
 import org.knowm.xchart.AnnotationText;
 import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.XYChart;
@@ -13,7 +14,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.stream.Collectors;
 
-/** The PNG charts: one work-precision chart per scene and the two scaling charts. */
+/** The PNG charts: one work-precision chart per scene, the two scaling charts and the steady-state chart. */
 final class Charts {
 
     /** Log axes cannot show an exact zero; errors below this are drawn at this floor. */
@@ -75,6 +76,39 @@ final class Charts {
             chart.addSeries(index ? "spatial index on" : "spatial index off (scan every gizmo)", x, y);
         }
         save(chart, dir.resolve("scaling-" + axis + ".png"));
+    }
+
+    /**
+     * Cost per tick against tick number, mean and max of each bin of ticks (log), with the start of the measured
+     * window and the targets of issue 10 (mean 50 us, max 2 ms) marked.
+     */
+    static void tickCost(Path dir, String board, List<SteadyState.Bin> bins, int binTicks, int windowStart)
+            throws IOException {
+        XYChart chart = new XYChartBuilder().width(900).height(560)
+                .title("Cost per tick against tick number: " + board + " at 1/60 s (each point " + binTicks + " ticks)")
+                .xAxisTitle("tick").yAxisTitle("wall microseconds per tick (log)").build();
+        chart.getStyler().setYAxisLogarithmic(true);
+        chart.getStyler().setYAxisDecimalPattern("#,##0");
+        chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideNE);
+        double[] x = bins.stream().mapToDouble(SteadyState.Bin::firstTick).toArray();
+        chart.addSeries("max of " + binTicks + " ticks", x, bins.stream().mapToDouble(SteadyState.Bin::maxUs).toArray())
+                .setMarker(SeriesMarkers.NONE);
+        chart.addSeries("mean of " + binTicks + " ticks", x, bins.stream().mapToDouble(SteadyState.Bin::meanUs).toArray())
+                .setMarker(SeriesMarkers.NONE);
+        chart.addAnnotation(new AnnotationLine(windowStart, true, false));
+        double top = bins.stream().mapToDouble(SteadyState.Bin::maxUs).max().orElse(1);
+        double bottom = bins.stream().mapToDouble(SteadyState.Bin::meanUs).min().orElse(1);
+        // Both target lines stay in view, however far from them the run was.
+        chart.getStyler().setYAxisMin(Math.min(bottom, SteadyState.TARGET_MEAN_US) / 2);
+        chart.getStyler().setYAxisMax(Math.max(top, SteadyState.TARGET_MAX_US) * 2);
+        double right = x.length == 0 ? 0 : x[x.length - 1];
+        chart.addAnnotation(new AnnotationText("measured from here ->", windowStart + right * 0.08, top, false));
+        for (double target : new double[] {SteadyState.TARGET_MEAN_US, SteadyState.TARGET_MAX_US}) {
+            chart.addAnnotation(new AnnotationLine(target, false, false));
+        }
+        chart.addAnnotation(new AnnotationText("target mean", right * 0.93, SteadyState.TARGET_MEAN_US * 1.25, false));
+        chart.addAnnotation(new AnnotationText("target max", right * 0.93, SteadyState.TARGET_MAX_US * 1.25, false));
+        save(chart, dir.resolve("steady-state-" + board.replace(".txt", "") + ".png"));
     }
 
     private static void save(XYChart chart, Path file) throws IOException {

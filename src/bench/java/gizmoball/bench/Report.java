@@ -45,9 +45,10 @@ final class Report {
 
     /**
      * The headline: per scene at the game's tick length, each loop's cost and error as ratios to the game's
-     * loop; and the stress-sized board's cost per tick with and without the spatial index.
+     * loop; and the stress-sized board's cost per tick with and without the spatial index over the first seconds
+     * of play (the steady state, once balls have settled, is {@link SteadyState}'s).
      */
-    static void printHeadline(PrintStream out, List<SceneResult> rows, List<ScalingPoint> scaling) {
+    static void printHeadline(PrintStream out, List<SceneResult> rows, List<ScalingPoint> scaling, double seconds) {
         int rate = Method.GAME_DEFAULT.ticksPerSecond();
         out.println();
         out.println("Headline at 1/" + rate + " s: cost and error of each loop relative to " + Method.GAME_DEFAULT.label());
@@ -72,9 +73,10 @@ final class Report {
             boolean randomStress = on.axis().equals("gizmos") && on.gizmos() == Scaling.STRESS_GIZMOS;
             boolean shipped = !on.axis().equals("gizmos") && !on.axis().equals("balls");
             if (randomStress || shipped) {
-                out.printf(Locale.ROOT, "Stress-sized board, %s (%d gizmos, %d balls): %s us/tick with the spatial index, "
-                                + "%s us/tick without (x %.1f)%n", randomStress ? "random" : on.axis(), on.gizmos(), on.balls(),
-                        f3(on.usPerTick()), f3(off.usPerTick()), off.usPerTick() / on.usPerTick());
+                out.printf(Locale.ROOT, "Stress-sized board, %s (%d gizmos, %d balls), first %.0f s of play from load: %s us/tick "
+                                + "with the spatial index, %s us/tick without (x %.1f)%n", randomStress ? "random" : on.axis(),
+                        on.gizmos(), on.balls(), seconds, f3(on.usPerTick()), f3(off.usPerTick()),
+                        off.usPerTick() / on.usPerTick());
             }
         }
     }

@@ -1,0 +1,556 @@
+package gizmoball.bench;
+
+import gizmoball.boardfile.BoardFileException;
+import gizmoball.boardfile.BoardFiles;
+import gizmoball.boardfile.LoadResult;
+import gizmoball.model.Ball;
+import gizmoball.model.Board;
+import gizmoball.model.GizmoKind;
+import gizmoball.model.GuardCounts;
+import gizmoball.model.Stage;
+import gizmoball.model.TickReport;
+import physics.Vect;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.lang.management.GarbageCollectorMXBean;
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Comparator;
+import java.util.EnumMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+import java.util.stream.Stream;
+
+/**
+ * What a tick costs once play has settled (issue 10): most of a real game is balls lying in V's, on bumpers and in
+ * piles, not the first second of flight.
+ * <ul>
+ *     <li>Steady state: each shipped board and the 100-ball peer board, ticked at 1/60 s through a warm-up, then
+ *     every tick of the window timed alone: mean, p99 and max, collisions and zero-time collisions per tick, the
+ *     balls asleep and awake at the end, and the guards that fired in the window.</li>
+ *     <li>A sleeping pile against the same board without balls: the cost of balls that do nothing.</li>
+ *     <li>A guard survey: every shipped and every loadable peer board for a fixed number of ticks.</li>
+ * </ul>
+ * Each tick is timed by wall time ({@code System.nanoTime}, tens of nanoseconds to read): a frame is late by wall
+ * time, garbage collection and the machine's other work included. The thread CPU clock costs about 2 us a read
+ * on these machines, as much as a small board's tick, so it is read only at the ends of the window: where its
+ * mean is well below the wall mean, other processes had the core.
+ */
+final class SteadyState {
+
+    static final double DT = Board.DEFAULT_TICK;
+    /** The peer board with 100 balls (MIT 6.170 staff test), measured beside the shipped boards. */
+    static final String MANY_BALLS = "dwctsai__mit-6.170-gizmoball-3d__src__stafftests__many-balls.gb";
+    /** The board whose every tick is charted. */
+    static final String CHARTED = "stress.txt";
+    /** The targets of issue 10 (benchmark figures on 2 cores): stress.txt in the steady state, ... */
+    static final double TARGET_MEAN_US = 50;
+    static final double TARGET_P99_US = 250;
+    static final double TARGET_MAX_US = 2_000;
+    static final double TARGET_COLLISIONS = 3;
+    /** ... the 100-ball board's mean, and a sleeping pile's cost over the same board without balls. */
+    static final double TARGET_MANY_BALLS_MEAN_US = 150;
+    static final double TARGET_PILE_RATIO = 2;
+    /** Ticks per point of the chart. */
+    static final int BIN = 100;
+
+    /**
+     * Tick numbers of each part. Steady state: warm-up ticks [0, from), measured [from, to). Pile: ticks to settle,
+     * then ticks timed of each board. Survey: ticks per board.
+     */
+    record Windows(int from, int to, int pileSettle, int pileTicks, int surveyTicks) {
+        static final Windows FULL = new Windows(3_000, 15_000, 300, 60_000, 5_000);
+        static final Windows QUICK = new Windows(600, 1_800, 300, 6_000, 1_000);
+    }
+
+    /** One board's window. Times in microseconds; guards are those fired within the window. */
+    record Row(String board, int gizmos, int balls, int from, int to, double meanUs, double cpuMeanUs, double p99Us,
+               double maxUs,
+               double meanCollisions, int maxCollisions, double meanZeroTime, int maxZeroTime, int awake, int asleep,
+               GuardCounts guards, long gcPauses, long gcMillis, int slowestTick, int slowestCollisions,
+               Map<Stage, Long> stageNanos) {
+    }
+
+    /** A row and the time of every tick from 0 (for the chart). */
+    record Run(Row row, long[] tickNanos) {
+    }
+
+    /**
+     * The sleeping pile and the same board without balls, each {@code ticks} ticks after settling, timed in
+     * alternating blocks. {@code moved}: the farthest any ball of the pile went while it was timed.
+     */
+    record Pile(int balls, int asleepAfterSettle, int asleepAtEnd, double pileUs, double emptyUs, double moved) {
+        double ratio() {
+            return pileUs / emptyUs;
+        }
+    }
+
+    /** A board of the survey with the guards it fired; {@code failure} when a tick threw. */
+    record Surveyed(String board, int balls, GuardCounts guards, Optional<String> failure) {
+    }
+
+    record Survey(int ticks, int filesSeen, List<Surveyed> boards) {
+        List<Surveyed> firing() {
+            return boards.stream().filter(b -> b.guards().total() > 0)
+                    .sorted(Comparator.comparingLong((Surveyed b) -> b.guards().total()).reversed()).toList();
+        }
+
+        GuardCounts totals() {
+            return boards.stream().map(Surveyed::guards).reduce(GuardCounts.NONE, GuardCounts::plus);
+        }
+    }
+
+    private static final ThreadMXBean THREADS = ManagementFactory.getThreadMXBean();
+
+    private SteadyState() {
+    }
+
+    /**
+     * The whole part: the steady-state table (and the chart of {@link #CHARTED}), the pile, the survey and the
+     * targets, printed, with CSV files and the chart in {@code dir}. Without a peer folder the 100-ball board and
+     * the peer boards of the survey are left out, with a note.
+     */
+    static void run(PrintStream out, Path shipped, Optional<Path> peers, Windows w, Path dir) throws IOException {
+        if (peers.isEmpty()) {
+            out.println("note: no peer-board folder (--peers DIR; gradle passes ../shared/peer-boards when it exists): "
+                    + "the 100-ball peer board and the peer boards of the guard survey are left out");
+        }
+        // Wall times on a shared machine mean little without its load: said at both ends of the part.
+        printLoad(out, "start");
+        List<NamedBoard> boards = boards(shipped, peers);
+        boards.stream().filter(b -> b.name().equals(CHARTED)).findFirst().ifPresent(b -> warmUp(b.board(), w.from()));
+        List<Row> rows = new ArrayList<>();
+        for (NamedBoard board : boards) {
+            Run run = measure(board, w);
+            rows.add(run.row());
+            if (board.name().equals(CHARTED)) {
+                writeBins(dir.resolve("steady-state-ticks.csv"), run.tickNanos());
+                Charts.tickCost(dir, CHARTED, bins(run.tickNanos()), BIN, w.from());
+            }
+        }
+        printRows(out, rows, w);
+        writeRows(dir.resolve("steady-state.csv"), rows);
+
+        Pile pile = comparePile(w);
+        printPile(out, pile, w);
+        writePile(dir.resolve("sleeping-pile.csv"), pile);
+
+        Survey survey = survey(shipped, peers, w.surveyTicks());
+        printSurvey(out, survey, w, 8);
+        writeSurvey(dir.resolve("guard-survey.csv"), survey);
+
+        printTargets(out, rows, pile, survey);
+        printLoad(out, "end");
+    }
+
+    private static void printLoad(PrintStream out, String when) {
+        out.printf(Locale.ROOT, "machine at the %s of the steady-state part: load average %.2f over the last minute, "
+                        + "%d processors%n", when, ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage(),
+                Runtime.getRuntime().availableProcessors());
+    }
+
+    /** The boards of the steady-state table: the shipped ones, then the 100-ball peer board when peers is given. */
+    static List<NamedBoard> boards(Path shipped, Optional<Path> peers) throws IOException {
+        List<NamedBoard> boards = new ArrayList<>();
+        for (Path file : files(shipped, ".txt")) {
+            try {
+                boards.add(new NamedBoard(String.valueOf(file.getFileName()), BoardFiles.load(file)));
+            } catch (BoardFileException e) {
+                throw new IOException("cannot load " + file + ": " + e.getMessage(), e);
+            }
+        }
+        if (peers.isPresent()) {
+            Path file = peers.get().resolve(MANY_BALLS);
+            LoadResult loaded = BoardFiles.loadSkippingBadLines(file);
+            if (!loaded.skippedLines().isEmpty()) {
+                throw new IOException(file + " lost lines on loading: " + loaded.skippedLines());
+            }
+            boards.add(new NamedBoard(MANY_BALLS, loaded.board()));
+        }
+        return boards;
+    }
+
+    record NamedBoard(String name, Board board) {
+    }
+
+    /** A throw-away run, so that the first board measured does not pay for compiling the loop. */
+    static void warmUp(Board board, int ticks) {
+        Board copy = board.copy();
+        for (int i = 0; i < ticks; i++) {
+            copy.tick(DT);
+        }
+    }
+
+    /** Ticks the board from 0 to the window's end, timing every tick; statistics over the window only. */
+    static Run measure(NamedBoard named, Windows w) {
+        Board board = named.board();
+        long[] nanos = new long[w.to()];
+        int[] collisions = new int[w.to()];
+        int[] zeroTime = new int[w.to()];
+        GuardCounts guards = GuardCounts.NONE;
+        long[] gcAtStart = new long[2];
+        long cpuAtStart = 0;
+        Map<Stage, Long> stages = new EnumMap<>(Stage.class);
+        for (int t = 0; t < w.to(); t++) {
+            if (t == w.from()) {
+                gcAtStart = garbageCollections();
+                cpuAtStart = THREADS.getCurrentThreadCpuTime();
+            }
+            long start = System.nanoTime();
+            board.tick(DT);
+            nanos[t] = System.nanoTime() - start;
+            TickReport report = board.lastTick();
+            collisions[t] = report.collisions();
+            zeroTime[t] = report.zeroTimeCollisions();
+            if (t >= w.from()) {
+                guards = guards.plus(report.guards());
+                report.stageNanos().forEach((stage, n) -> stages.merge(stage, n, Long::sum));
+            }
+        }
+        long cpu = THREADS.getCurrentThreadCpuTime() - cpuAtStart;
+        long[] gcAtEnd = garbageCollections();
+        int slowest = w.from();
+        for (int t = w.from(); t < w.to(); t++) {
+            slowest = nanos[t] > nanos[slowest] ? t : slowest;
+        }
+        long[] window = Arrays.copyOfRange(nanos, w.from(), w.to());
+        Arrays.sort(window);
+        int n = window.length;
+        TickReport last = board.lastTick();
+        Row row = new Row(named.name(), board.gizmos().size(), board.balls().size(), w.from(), w.to(),
+                Arrays.stream(window).average().orElse(0) / 1e3, cpu / 1e3 / n, window[(int) Math.ceil(0.99 * n) - 1] / 1e3,
+                window[n - 1] / 1e3, mean(collisions, w.from()), max(collisions, w.from()), mean(zeroTime, w.from()),
+                max(zeroTime, w.from()), last.ballsAwake(), last.ballsAsleep(), guards, gcAtEnd[0] - gcAtStart[0],
+                gcAtEnd[1] - gcAtStart[1], slowest, collisions[slowest], stages);
+        return new Run(row, nanos);
+    }
+
+    /**
+     * Collections so far and their total milliseconds, over every collector: a tick that a collection interrupts
+     * lasts as long as the pause, which is what the max of a small board mostly is.
+     */
+    private static long[] garbageCollections() {
+        long count = 0;
+        long millis = 0;
+        for (GarbageCollectorMXBean gc : ManagementFactory.getGarbageCollectorMXBeans()) {
+            count += Math.max(0, gc.getCollectionCount());
+            millis += Math.max(0, gc.getCollectionTime());
+        }
+        return new long[] {count, millis};
+    }
+
+    private static double mean(int[] values, int from) {
+        return Arrays.stream(values, from, values.length).average().orElse(0);
+    }
+
+    private static int max(int[] values, int from) {
+        return Arrays.stream(values, from, values.length).max().orElse(0);
+    }
+
+    /**
+     * Two squares on the floor, cells (4,19) and (9,19), with the four cells between them filled by three rows of
+     * touching balls: 8 on the floor, 7 in their grooves, 6 in those. Each row lies 2r sin 60 deg above the one
+     * below, where a ball touches both balls under it.
+     */
+    static Board pile(boolean withBalls) {
+        Board board = new Board();
+        board.addGizmo(GizmoKind.SQUARE, "left", 4, 19);
+        board.addGizmo(GizmoKind.SQUARE, "right", 9, 19);
+        if (withBalls) {
+            double r = Board.BALL_RADIUS;
+            double rise = 2 * r * Math.sin(Math.toRadians(60));
+            int[] rowSizes = {8, 7, 6};
+            for (int row = 0; row < rowSizes.length; row++) {
+                double y = Board.SIZE - r - row * rise;
+                for (int i = 0; i < rowSizes[row]; i++) {
+                    board.addBall("p" + row + "_" + i, 5 + r + row * r + i * 2 * r, y, 0, 0);
+                }
+            }
+        }
+        return board;
+    }
+
+    /**
+     * Settles both boards, then times them in alternating blocks of ticks (so that both see the same machine load)
+     * until each has run {@code ticks}. A tick of a board that does nothing lasts well under a microsecond, close
+     * to the cost of reading the clock, so the clock is read once per block, not per tick.
+     */
+    static Pile comparePile(Windows w) {
+        Board pile = pile(true);
+        Board empty = pile(false);
+        for (int t = 0; t < w.pileSettle(); t++) {
+            pile.tick(DT);
+            empty.tick(DT);
+        }
+        int asleepAfterSettle = pile.lastTick().ballsAsleep();
+        List<Vect> settled = pile.balls().stream().map(Ball::position).toList();
+        int block = 1_000;
+        long pileNanos = 0;
+        long emptyNanos = 0;
+        for (int done = 0; done < w.pileTicks(); done += block) {
+            pileNanos += timeBlock(pile, block);
+            emptyNanos += timeBlock(empty, block);
+        }
+        double moved = 0;
+        for (int i = 0; i < settled.size(); i++) {
+            moved = Math.max(moved, settled.get(i).minus(pile.balls().get(i).position()).length());
+        }
+        int ticks = (w.pileTicks() + block - 1) / block * block;
+        return new Pile(pile.balls().size(), asleepAfterSettle, pile.lastTick().ballsAsleep(), pileNanos / 1e3 / ticks,
+                emptyNanos / 1e3 / ticks, moved);
+    }
+
+    private static long timeBlock(Board board, int ticks) {
+        long start = System.nanoTime();
+        for (int t = 0; t < ticks; t++) {
+            board.tick(DT);
+        }
+        return System.nanoTime() - start;
+    }
+
+    /**
+     * Every shipped board (strictly loaded) and every file of the peer folder that loads something when its bad
+     * lines are skipped, each ticked {@code ticks} times from load.
+     */
+    static Survey survey(Path shipped, Optional<Path> peers, int ticks) throws IOException {
+        List<Surveyed> boards = new ArrayList<>();
+        int seen = 0;
+        for (NamedBoard named : boards(shipped, Optional.empty())) {
+            boards.add(play(named, ticks));
+        }
+        if (peers.isPresent()) {
+            for (Path file : files(peers.get(), "")) {
+                seen++;
+                LoadResult loaded = BoardFiles.loadSkippingBadLines(file);
+                if (!loaded.keptNothing()) {
+                    boards.add(play(new NamedBoard(String.valueOf(file.getFileName()), loaded.board()), ticks));
+                }
+            }
+        }
+        return new Survey(ticks, seen, boards);
+    }
+
+    private static Surveyed play(NamedBoard named, int ticks) {
+        Board board = named.board();
+        int balls = board.balls().size();
+        try {
+            for (int t = 0; t < ticks; t++) {
+                board.tick(DT);
+            }
+            return new Surveyed(named.name(), balls, board.guardsFired(), Optional.empty());
+        } catch (RuntimeException e) {
+            return new Surveyed(named.name(), balls, board.guardsFired(),
+                    Optional.of("tick " + Math.round(board.time() / DT) + ": " + e));
+        }
+    }
+
+    private static List<Path> files(Path dir, String suffix) throws IOException {
+        try (Stream<Path> list = Files.list(dir)) {
+            return list.filter(Files::isRegularFile).filter(p -> p.toString().endsWith(suffix)).sorted().toList();
+        }
+    }
+
+    // ---------------------------------------------------------------- printing and CSV
+
+    static void printRows(PrintStream out, List<Row> rows, Windows w) {
+        out.println();
+        out.printf(Locale.ROOT, "Steady state at 1/60 s: ticks %,d-%,d after a warm-up of ticks 0-%,d%s; each tick timed "
+                        + "alone (wall us); guards: fired within the window%n", w.from(), w.to(), w.from(),
+                !w.equals(Windows.FULL) ? " (quick run: shorter windows than the full run's 3,000-15,000)" : "");
+        String format = "%-22s %6s %5s %8s %8s %8s %8s %9s %8s %9s %8s %6s %5s %6s %7s %5s %8s%n";
+        out.printf(Locale.ROOT, format, "board", "gizmos", "balls", "mean us", "CPU us", "p99 us", "max us", "coll/tick",
+                "max coll", "zero/tick", "max zero", "asleep", "awake", "wedged", "pinched", "cap", "GCs (ms)");
+        for (Row r : rows) {
+            out.printf(Locale.ROOT, format, shortName(r.board()), r.gizmos(), r.balls(), f1(r.meanUs()), f1(r.cpuMeanUs()),
+                    f1(r.p99Us()),
+                    f1(r.maxUs()), f2(r.meanCollisions()), r.maxCollisions(), f2(r.meanZeroTime()), r.maxZeroTime(),
+                    r.asleep(), r.awake(), r.guards().wedged(), r.guards().pinched(), r.guards().collisionCap(),
+                    r.gcPauses() + " (" + r.gcMillis() + ")");
+        }
+        out.println("(CPU us: the ticking thread's CPU time over the window per tick; asleep, awake: balls at the end; "
+                + "GCs: garbage collections during the window and their total time)");
+        out.println("Where the window's time goes: the slowest tick, and each stage's share of the time the model's "
+                + "stage clocks measured (TickReport.stageNanos)");
+        StringBuilder stageFormat = new StringBuilder("%-22s %20s");
+        List<Object> header = new ArrayList<>(List.of("board", "slowest tick (coll)"));
+        for (Stage stage : Stage.values()) {
+            stageFormat.append(" %").append(stageLabel(stage).length()).append('s');
+            header.add(stageLabel(stage));
+        }
+        String format2 = stageFormat.append("%n").toString();
+        out.printf(Locale.ROOT, format2, header.toArray());
+        for (Row r : rows) {
+            long total = r.stageNanos().values().stream().mapToLong(Long::longValue).sum();
+            List<Object> cells = new ArrayList<>(List.of(shortName(r.board()),
+                    String.format(Locale.ROOT, "%,d (%d)", r.slowestTick(), r.slowestCollisions())));
+            for (Stage stage : Stage.values()) {
+                cells.add(String.format(Locale.ROOT, "%.0f%%", 100.0 * r.stageNanos().getOrDefault(stage, 0L) / total));
+            }
+            out.printf(Locale.ROOT, format2, cells.toArray());
+        }
+    }
+
+    private static String stageLabel(Stage stage) {
+        return switch (stage) {
+            case FRICTION_AND_GRAVITY -> "1 gravity";
+            case BALL_MOTION -> "2 motion";
+            case COLLISION_DETECTION -> "3 detection";
+            case COLLISION_RESOLUTION -> "4 resolution";
+            case TRIGGERING -> "5 triggers";
+            case REDRAWING -> "6 redraw";
+        };
+    }
+
+    /** Peer file names are long (owner__repository__path); the table shows their last part. */
+    static String shortName(String board) {
+        int cut = board.lastIndexOf("__");
+        return cut < 0 ? board : "peer " + board.substring(cut + 2);
+    }
+
+    static void printPile(PrintStream out, Pile p, Windows w) {
+        out.println();
+        out.printf(Locale.ROOT, "Sleeping pile: two squares on the floor with %d touching balls between them (rows of 8, 7, "
+                + "6), settled %d ticks, against the same board with no balls; %,d ticks of each, timed in alternating "
+                + "blocks of 1,000%s%n", p.balls(), w.pileSettle(), w.pileTicks(), quickNote(w, Windows.FULL.pileTicks()));
+        out.printf(Locale.ROOT, "  asleep after settling %d of %d, at the end %d; farthest a ball moved while timed %s L%n",
+                p.asleepAfterSettle(), p.balls(), p.asleepAtEnd(), e(p.moved()));
+        out.printf(Locale.ROOT, "  pile %.3f us per tick, no balls %.3f us per tick: ratio %.2f (target < %s: %s)%n",
+                p.pileUs(), p.emptyUs(), p.ratio(), f0(TARGET_PILE_RATIO), p.ratio() < TARGET_PILE_RATIO ? "met" : "NOT met");
+    }
+
+    private static String quickNote(Windows w, int fullTicks) {
+        return w.equals(Windows.FULL) ? "" : String.format(Locale.ROOT, " (quick run: the full run's is %,d)", fullTicks);
+    }
+
+    static void printSurvey(PrintStream out, Survey s, Windows w, int worst) {
+        out.println();
+        GuardCounts t = s.totals();
+        List<Surveyed> firing = s.firing();
+        out.printf(Locale.ROOT, "Guard survey: %,d ticks of each of %d boards (the shipped ones and the %s of %d peer files "
+                        + "that load something with bad lines skipped)%s%n", s.ticks(), s.boards().size(),
+                s.filesSeen() == 0 ? "none" : Integer.toString(s.boards().size() - shippedCount(s)), s.filesSeen(),
+                quickNote(w, Windows.FULL.surveyTicks()));
+        out.printf(Locale.ROOT, "  boards on which a guard fired: %d; totals: wedged %d, pinched %d, collision cap %d%n",
+                firing.size(), t.wedged(), t.pinched(), t.collisionCap());
+        for (Surveyed b : firing.subList(0, Math.min(worst, firing.size()))) {
+            out.printf(Locale.ROOT, "  %-80s balls %3d: wedged %d, pinched %d, cap %d%n", b.board(), b.balls(),
+                    b.guards().wedged(), b.guards().pinched(), b.guards().collisionCap());
+        }
+        s.boards().stream().filter(b -> b.failure().isPresent())
+                .forEach(b -> out.printf(Locale.ROOT, "  FAILED %s: %s%n", b.board(), b.failure().get()));
+    }
+
+    private static int shippedCount(Survey s) {
+        return (int) s.boards().stream().filter(b -> !b.board().contains("__")).count();
+    }
+
+    /** The targets of issue 10 next to what this run measured. */
+    static void printTargets(PrintStream out, List<Row> rows, Pile pile, Survey survey) {
+        out.println();
+        out.println("Targets of issue 10 (benchmark figures on 2 cores), this run:");
+        rows.stream().filter(r -> r.board().equals(CHARTED)).findFirst().ifPresent(r -> {
+            target(out, "stress.txt mean <= " + f0(TARGET_MEAN_US) + " us per tick", f1(r.meanUs()) + " us",
+                    r.meanUs() <= TARGET_MEAN_US);
+            target(out, "stress.txt p99 <= " + f0(TARGET_P99_US) + " us", f1(r.p99Us()) + " us", r.p99Us() <= TARGET_P99_US);
+            target(out, "stress.txt max <= " + f0(TARGET_MAX_US) + " us", f1(r.maxUs()) + " us", r.maxUs() <= TARGET_MAX_US);
+            // "At most 3 collisions per tick", read both ways: on average, and in every tick.
+            target(out, "stress.txt collisions per tick <= " + f0(TARGET_COLLISIONS) + ", mean", f2(r.meanCollisions()),
+                    r.meanCollisions() <= TARGET_COLLISIONS);
+            target(out, "stress.txt collisions per tick <= " + f0(TARGET_COLLISIONS) + ", every tick",
+                    "max " + r.maxCollisions(), r.maxCollisions() <= TARGET_COLLISIONS);
+        });
+        rows.stream().filter(r -> r.board().equals(MANY_BALLS)).findFirst().ifPresent(r ->
+                target(out, "100-ball board mean <= " + f0(TARGET_MANY_BALLS_MEAN_US) + " us per tick",
+                        f1(r.meanUs()) + " us", r.meanUs() <= TARGET_MANY_BALLS_MEAN_US));
+        target(out, "sleeping pile < " + f0(TARGET_PILE_RATIO) + "x the board without balls",
+                String.format(Locale.ROOT, "%.2fx", pile.ratio()), pile.ratio() < TARGET_PILE_RATIO);
+        target(out, "no guard fires on any surveyed board in " + String.format(Locale.ROOT, "%,d", survey.ticks())
+                + " ticks", survey.firing().size() + " of " + survey.boards().size() + " boards fired one",
+                survey.firing().isEmpty());
+    }
+
+    private static void target(PrintStream out, String what, String measured, boolean met) {
+        out.printf(Locale.ROOT, "  %-55s %-27s %s%n", what, measured, met ? "met" : "NOT met");
+    }
+
+    static void writeRows(Path file, List<Row> rows) throws IOException {
+        List<String> lines = new ArrayList<>();
+        lines.add("board,gizmos,balls,from_tick,to_tick,mean_us,cpu_mean_us,p99_us,max_us,collisions_per_tick,max_collisions,"
+                + "zero_time_per_tick,max_zero_time,balls_asleep_end,balls_awake_end,guard_wedged,guard_pinched,guard_cap,"
+                + "gc_count,gc_ms");
+        for (Row r : rows) {
+            lines.add(String.format(Locale.ROOT, "%s,%d,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%.4f,%d,%.4f,%d,%d,%d,%d,%d,%d,%d,%d",
+                    r.board(), r.gizmos(), r.balls(), r.from(), r.to(), r.meanUs(), r.cpuMeanUs(), r.p99Us(), r.maxUs(),
+                    r.meanCollisions(), r.maxCollisions(), r.meanZeroTime(), r.maxZeroTime(), r.asleep(), r.awake(), r.guards().wedged(),
+                    r.guards().pinched(), r.guards().collisionCap(), r.gcPauses(), r.gcMillis()));
+        }
+        Files.write(file, lines);
+    }
+
+    /** Per bin of {@link #BIN} ticks: the first tick, the mean and the max cost (us). */
+    static void writeBins(Path file, long[] tickNanos) throws IOException {
+        List<String> lines = new ArrayList<>();
+        lines.add("first_tick,mean_us,max_us");
+        for (Bin b : bins(tickNanos)) {
+            lines.add(String.format(Locale.ROOT, "%d,%.3f,%.3f", b.firstTick(), b.meanUs(), b.maxUs()));
+        }
+        Files.write(file, lines);
+    }
+
+    record Bin(int firstTick, double meanUs, double maxUs) {
+    }
+
+    static List<Bin> bins(long[] tickNanos) {
+        List<Bin> bins = new ArrayList<>();
+        for (int first = 0; first + BIN <= tickNanos.length; first += BIN) {
+            long sum = 0;
+            long max = 0;
+            for (int t = first; t < first + BIN; t++) {
+                sum += tickNanos[t];
+                max = Math.max(max, tickNanos[t]);
+            }
+            bins.add(new Bin(first, sum / 1e3 / BIN, max / 1e3));
+        }
+        return bins;
+    }
+
+    static void writePile(Path file, Pile p) throws IOException {
+        Files.write(file, List.of("balls,asleep_after_settle,asleep_end,pile_us_per_tick,empty_us_per_tick,ratio,moved_L",
+                String.format(Locale.ROOT, "%d,%d,%d,%.4f,%.4f,%.4f,%s", p.balls(), p.asleepAfterSettle(), p.asleepAtEnd(),
+                        p.pileUs(), p.emptyUs(), p.ratio(), Double.toString(p.moved()))));
+    }
+
+    static void writeSurvey(Path file, Survey s) throws IOException {
+        List<String> lines = new ArrayList<>();
+        lines.add("board,balls,ticks,guard_wedged,guard_pinched,guard_cap,failure");
+        for (Surveyed b : s.boards()) {
+            lines.add(String.format(Locale.ROOT, "%s,%d,%d,%d,%d,%d,%s", b.board(), b.balls(), s.ticks(),
+                    b.guards().wedged(), b.guards().pinched(), b.guards().collisionCap(),
+                    b.failure().map(f -> '"' + f.replace("\"", "\"\"") + '"').orElse("")));
+        }
+        Files.write(file, lines);
+    }
+
+    private static String f0(double v) {
+        return String.format(Locale.ROOT, "%,.0f", v);
+    }
+
+    private static String f1(double v) {
+        return String.format(Locale.ROOT, "%.1f", v);
+    }
+
+    private static String f2(double v) {
+        return String.format(Locale.ROOT, "%.2f", v);
+    }
+
+    private static String e(double v) {
+        return String.format(Locale.ROOT, "%.1e", v);
+    }
+}
