@@ -3,11 +3,14 @@ package gizmoball.model;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.Collections;
+import java.util.HashSet;
+import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 import java.util.concurrent.CopyOnWriteArrayList;
 
 import physics.Vect;
@@ -31,6 +34,7 @@ public final class Board {
     private final Map<String, GizmoBase> gizmos = new LinkedHashMap<>();
     private final Map<String, Ball> balls = new LinkedHashMap<>();
     private final List<Connection> connections = new ArrayList<>();
+    private final Set<Set<String>> passingPairs = new HashSet<>();
     private final List<KeyBinding> keyBindings = new ArrayList<>();
     private SpatialIndex index = new SpatialIndex();
     private double gravity = DEFAULT_GRAVITY;
@@ -41,6 +45,10 @@ public final class Board {
     private LoopMode loopMode = LoopMode.CONTINUOUS;
     private final List<BoardObserver> observers = new CopyOnWriteArrayList<>();
     private final Sleepers sleepers = new Sleepers(balls.values());
+    /** Reused by every tick: the broad phase for ball pairs. */
+    private final BallGrid ballGrid = new BallGrid();
+    /** The flippers among the gizmos, found again after every change of the gizmos (null until then). */
+    private List<Flipper> flippers;
     private final List<PlayEvent> pendingEvents = new ArrayList<>();
     private TickReport lastTick = TickReport.NONE;
     private GuardCounts guardsFired = GuardCounts.NONE;
@@ -78,6 +86,8 @@ public final class Board {
         source.balls.values().forEach(ball -> balls.put(ball.name(), ball.copy()));
         connections.clear();
         connections.addAll(source.connections);
+        passingPairs.clear();
+        passingPairs.addAll(source.passingPairs);
         keyBindings.clear();
         keyBindings.addAll(source.keyBindings);
         gravity = source.gravity;
@@ -134,10 +144,33 @@ public final class Board {
      */
     public List<String> addBallOverlappingBalls(String name, double x, double y, double vx, double vy) {
         Ball ball = placeBall(name, x, y, vx, vy, true);
-        return ball.isCaptured() ? List.of() : balls.values().stream()
+        List<String> overlapped = ball.isCaptured() ? List.of() : balls.values().stream()
                 .filter(other -> other != ball && !other.isCaptured() && overlap(other.position(), ball.position()))
                 .map(Ball::name)
                 .toList();
+        overlapped.forEach(other -> passingPairs.add(Set.of(name, other)));
+        return overlapped;
+    }
+
+    /**
+     * The pairs of balls placed on each other that have not come apart since: detection lets them pass through
+     * each other. A pair leaves the set at the end of the first tick it no longer overlaps.
+     */
+    boolean passingThrough(Ball a, Ball b) {
+        return !passingPairs.isEmpty() && passingPairs.contains(Set.of(a.name(), b.name()));
+    }
+
+    /** Forgets the passing pairs that have come apart (or lost a ball to an absorber or a delete). */
+    void forgetSeparatedPairs() {
+        passingPairs.removeIf(pair -> pair.stream().map(balls::get)
+                .anyMatch(ball -> ball == null || ball.isCaptured())
+                || !overlap(balls.get(pair.iterator().next()).position(), otherOf(pair).position()));
+    }
+
+    private Ball otherOf(Set<String> pair) {
+        Iterator<String> names = pair.iterator();
+        names.next();
+        return balls.get(names.next());
     }
 
     private Ball placeBall(String name, double x, double y, double vx, double vy, boolean ballsMayOverlap) {
@@ -326,6 +359,7 @@ public final class Board {
         balls.clear();
         connections.clear();
         keyBindings.clear();
+        passingPairs.clear();
         index = new SpatialIndex();
         gravity = DEFAULT_GRAVITY;
         mu = DEFAULT_MU;
@@ -625,6 +659,23 @@ public final class Board {
         return sleepers;
     }
 
+    BallGrid ballGrid() {
+        return ballGrid;
+    }
+
+    List<Flipper> flippers() {
+        if (flippers == null) {
+            List<Flipper> found = new ArrayList<>();
+            for (GizmoBase gizmo : gizmos.values()) {
+                if (gizmo instanceof Flipper flipper) {
+                    found.add(flipper);
+                }
+            }
+            flippers = List.copyOf(found);
+        }
+        return flippers;
+    }
+
     /**
      * Performs the actions bound to (keyCode, DOWN): flippers swing up, others perform their action; and those
      * bound to (keyCode, CHANGE): every gizmo performs its action (a flipper toggles).
@@ -736,11 +787,15 @@ public final class Board {
 
     /** After every successful edit: the board changed under the balls, which forget their contacts and wake. */
     private void edited() {
+        flippers = null;
         sleepers.disturbAll();
         notifyObservers(BoardChange.EDIT);
     }
 
     void notifyObservers(BoardChange change) {
+        if (change != BoardChange.TICK) {
+            flippers = null;   // replaced or cleared: other gizmos
+        }
         for (BoardObserver observer : observers) {
             observer.boardChanged(this, change);
         }

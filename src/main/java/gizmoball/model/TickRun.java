@@ -69,7 +69,7 @@ final class TickRun {
     private final Set<Ball> carried = new HashSet<>();
     private final CollisionDetector detector;
     private final CollisionSchedule schedule;
-    private final List<Flipper> flippers = new ArrayList<>();
+    private final List<Flipper> flippers;
     private final List<Ball> awake = new ArrayList<>();
     private final Map<Ball, Integer> zeroTimeHits = new HashMap<>();
     private final Map<Strike, Integer> strikes = new HashMap<>();
@@ -95,14 +95,10 @@ final class TickRun {
         this.dt = dt;
         this.startTime = board.time();
         this.gravity = board.gravity();
-        this.contacts = new Contacts(board);
+        this.contacts = new Contacts(board, dt);
         this.detector = new CollisionDetector(board, heldFlippers, finished);
-        this.schedule = new CollisionSchedule(detector);
-        for (GizmoBase gizmo : board.gizmoBases()) {
-            if (gizmo instanceof Flipper flipper) {
-                flippers.add(flipper);
-            }
-        }
+        this.schedule = new CollisionSchedule(detector, board.ballGrid());
+        this.flippers = board.flippers();
     }
 
     /** A blocked flipper goes on once no ball touches it any more. */
@@ -153,6 +149,7 @@ final class TickRun {
         if (board.loopMode() == LoopMode.CONTINUOUS) {
             keepShadowEnergyOfElasticBounces();   // SEED stays the classic loop, lost time and all
         }
+        board.forgetSeparatedPairs();
         board.advanceTime(dt);
         return report();
     }
