@@ -60,7 +60,9 @@ class PredictorTest {
             Vect played = position(session.board(), ball);
             Vect predicted = p.path().get(i).at();
             assertThat(played.minus(predicted).length()).as("tick %d", i).isLessThanOrEqualTo(1e-9);
-            assertThat(p.path().get(i).free()).isEqualTo(!session.board().ball(ball).orElseThrow().isCaptured());
+            if (session.board().ball(ball).orElseThrow().isCaptured()) {
+                assertThat(p.path().get(i).free()).as("held at tick %d", i).isFalse();
+            }
         }
     }
 
@@ -123,6 +125,21 @@ class PredictorTest {
         for (Vect dot : p.collisions()) {
             assertThat(p.path()).anyMatch(pt -> pt.at().minus(dot).length() <= 40 * DT);
         }
+    }
+
+    @Test
+    void thePathBreaksWhereAnAbsorberCapturesTheBallEvenIfItFiresItAtOnce() {
+        Board board = new Board();
+        board.addAbsorber("A", 0, 19, 20, 20);
+        board.connect("A", "A");
+        board.addBall("B", 5.5, 17, 0, 0);
+        Prediction p = unhurried.predict(board, "B", 1, DT, Long.MAX_VALUE);
+        int broken = (int) p.path().stream().filter(pt -> !pt.free()).count();
+        assertThat(broken).isEqualTo(1);
+        Prediction.Point after = p.path().stream().filter(pt -> !pt.free()).findFirst().orElseThrow();
+        // Fired at once from the absorber's launch spot, the bottom-right corner, not from where it landed.
+        assertThat(after.at().x()).isCloseTo(19.75, within(1e-9));
+        assertThat(p.trigger().orElseThrow().targets()).containsExactly("A");
     }
 
     @Test
