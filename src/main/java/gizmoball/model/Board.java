@@ -19,6 +19,10 @@ import physics.Vect;
  * The game board: gizmos, balls, connections, key bindings and the physics constants, with the editing operations
  * (each succeeds completely or throws {@link BoardEditException} and changes nothing), queries, and play
  * ({@link #tick(double)}, keys, triggers). The physics loop itself lives in {@link TickRun}.
+ *
+ * <p>At over 800 lines this class is well over the project's 400: it is still the registry, the placement checks
+ * and the actions of play in one. The placement rule itself has one home ({@link Overlaps}); splitting the rest
+ * into a registry, placement rules and play actions behind this facade is the open part of the structure work.
  */
 public final class Board {
     public static final int SIZE = 20;
@@ -145,7 +149,8 @@ public final class Board {
     public List<String> addBallOverlappingBalls(String name, double x, double y, double vx, double vy) {
         Ball ball = placeBall(name, x, y, vx, vy, true);
         List<String> overlapped = ball.isCaptured() ? List.of() : balls.values().stream()
-                .filter(other -> other != ball && !other.isCaptured() && overlap(other.position(), ball.position()))
+                .filter(other -> other != ball && !other.isCaptured()
+                        && Overlaps.balls(other.position(), ball.position()))
                 .map(Ball::name)
                 .toList();
         overlapped.forEach(other -> passingPairs.add(Set.of(name, other)));
@@ -164,7 +169,7 @@ public final class Board {
     void forgetSeparatedPairs() {
         passingPairs.removeIf(pair -> pair.stream().map(balls::get)
                 .anyMatch(ball -> ball == null || ball.isCaptured())
-                || !overlap(balls.get(pair.iterator().next()).position(), otherOf(pair).position()));
+                || !Overlaps.balls(balls.get(pair.iterator().next()).position(), otherOf(pair).position()));
     }
 
     private Ball otherOf(Set<String> pair) {
@@ -447,7 +452,7 @@ public final class Board {
     private Optional<String> ballOverlap(GizmoBase candidate) {
         return balls.values().stream()
                 .filter(ball -> !ball.isCaptured())
-                .filter(ball -> candidate.signedDistance(ball.position()) < BALL_RADIUS - Tolerances.PLACEMENT)
+                .filter(ball -> Overlaps.ballInGizmo(candidate, ball.position()))
                 .map(Ball::name)
                 .findFirst();
     }
@@ -466,7 +471,7 @@ public final class Board {
                 position.x() + BALL_RADIUS, position.y() + BALL_RADIUS);
         Absorber captor = null;
         for (GizmoBase gizmo : near) {
-            if (gizmo.signedDistance(position) < BALL_RADIUS - Tolerances.PLACEMENT) {
+            if (Overlaps.ballInGizmo(gizmo, position)) {
                 if (gizmo instanceof Absorber absorber) {
                     captor = absorber;
                 } else {
@@ -476,7 +481,8 @@ public final class Board {
         }
         if (captor == null && !ballsMayOverlap) {
             for (Ball other : balls.values()) {
-                if (!other.isCaptured() && !other.name().equals(ignoring) && overlap(other.position(), position)) {
+                if (!other.isCaptured() && !other.name().equals(ignoring)
+                        && Overlaps.balls(other.position(), position)) {
                     throw new BoardEditException(what + " would overlap ball " + other.name());
                 }
             }
@@ -484,10 +490,6 @@ public final class Board {
         return captor;
     }
 
-    /** Whether balls centred there overlap by more than touching. */
-    private static boolean overlap(Vect a, Vect b) {
-        return Math.sqrt(a.distanceSquared(b)) < 2 * BALL_RADIUS - Tolerances.PLACEMENT;
-    }
 
     static boolean insideBoard(Vect position) {
         return position.x() >= BALL_RADIUS && position.x() <= SIZE - BALL_RADIUS
@@ -541,7 +543,7 @@ public final class Board {
 
     private void captureFreeBallsIn(Absorber absorber) {
         for (Ball ball : balls.values()) {
-            if (!ball.isCaptured() && absorber.signedDistance(ball.position()) < BALL_RADIUS - Tolerances.PLACEMENT) {
+            if (!ball.isCaptured() && Overlaps.ballInGizmo(absorber, ball.position())) {
                 capture(ball, absorber);
             }
         }
@@ -780,9 +782,9 @@ public final class Board {
         }
         Vect launch = absorber.launchPosition();
         boolean blocked = !insideBoard(launch)
-                || gizmos.values().stream().anyMatch(g -> g.signedDistance(launch) < BALL_RADIUS - Tolerances.PLACEMENT)
+                || gizmos.values().stream().anyMatch(g -> Overlaps.ballInGizmo(g, launch))
                 || balls.values().stream().anyMatch(b -> !b.isCaptured()
-                && Math.sqrt(b.position().distanceSquared(launch)) < 2 * BALL_RADIUS - Tolerances.PLACEMENT);
+                && Overlaps.balls(b.position(), launch));
         if (!blocked) {
             absorber.held().removeFirst();
             balls.get(name).release(launch, new Vect(0, -ABSORBER_LAUNCH_SPEED));
