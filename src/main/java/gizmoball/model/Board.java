@@ -190,6 +190,27 @@ public final class Board {
         return ball;
     }
 
+    /**
+     * Puts a flipper where play left it: {@code degrees} from rest (0 to 90), swinging toward its active stop when
+     * {@code active}, else toward rest. A board saved during play keeps its flippers this way; no free ball may be
+     * inside the flipper there.
+     */
+    public void setFlipperState(String flipper, double degrees, boolean active) {
+        if (!(requireGizmo(flipper) instanceof Flipper target)) {
+            throw new BoardEditException(flipper + " is not a flipper");
+        }
+        if (!(degrees >= 0 && degrees <= Flipper.MAX_ANGLE)) {
+            throw new BoardEditException("flipper " + flipper + ": angle " + degrees + " must be from 0 to "
+                    + Flipper.MAX_ANGLE + " degrees");
+        }
+        Flipper candidate = target.copy();
+        candidate.setState(degrees, active);
+        refuseIfPresent(ballOverlap(candidate).map(ball -> "flipper " + flipper + " at " + degrees
+                + " degrees would overlap ball " + ball));
+        target.setState(degrees, active);
+        edited();
+    }
+
     /** Turns a gizmo 90 degrees clockwise within its footprint; circles and absorbers stay as they are. */
     public void rotate(String gizmo) {
         GizmoBase target = requireGizmo(gizmo);
