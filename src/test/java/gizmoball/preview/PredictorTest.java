@@ -87,7 +87,7 @@ class PredictorTest {
 
         // While the square is being placed (the editor's footprint under the pointer), and once it is placed.
         Optional<AimScenario> placing = AimScenario.of(board, Tool.SQUARE,
-                Optional.of(new Preview.Footprint(10, 10, 1, 1, Optional.empty())), Optional.of("B"));
+                Optional.of(new Preview.Footprint(10, 10, 1, 1, Optional.empty())), Optional.of("B"), Optional.empty());
         Prediction whilePlacing = unhurried.predict(placing.orElseThrow().board(), "B", 3, DT, Long.MAX_VALUE);
         board.addGizmo(GizmoKind.SQUARE, "S", 10, 10);
         Prediction placed = unhurried.predict(board, "B", 3, DT, Long.MAX_VALUE);
@@ -148,7 +148,8 @@ class PredictorTest {
         board.setGravity(0);
         board.setFriction(0, 0);
         AimScenario s = AimScenario.of(board, Tool.BALL,
-                Optional.of(new Preview.BallPlacement(5, 5, 10, 0, Optional.empty())), Optional.empty()).orElseThrow();
+                Optional.of(new Preview.BallPlacement(5, 5, 10, 0, Optional.empty())), Optional.empty(),
+                Optional.empty()).orElseThrow();
         Prediction p = unhurried.predict(s.board(), s.ball(), 1, DT, Long.MAX_VALUE);
         // 10 L/s to the right without forces: 10/60 L per tick until the right wall at 19.75 (after 1.475 s).
         assertThat(p.path().get(30).at().x()).isCloseTo(5 + 30 * 10 * DT, within(1e-9));
@@ -159,8 +160,8 @@ class PredictorTest {
     void withoutABallThereIsNothingToPredict() {
         Board board = new Board();
         board.addGizmo(GizmoKind.CIRCLE, "C", 3, 3);
-        assertThat(AimScenario.of(board, Tool.SELECT, Optional.empty(), Optional.of("C"))).isEmpty();
-        assertThat(AimScenario.of(board, Tool.SELECT, Optional.empty(), Optional.empty())).isEmpty();
+        assertThat(AimScenario.of(board, Tool.SELECT, Optional.empty(), Optional.of("C"), Optional.empty())).isEmpty();
+        assertThat(AimScenario.of(board, Tool.SELECT, Optional.empty(), Optional.empty(), Optional.empty())).isEmpty();
     }
 
     @Test
