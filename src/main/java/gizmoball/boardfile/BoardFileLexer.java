@@ -7,11 +7,14 @@ import java.util.regex.Pattern;
 /**
  * Splits board-file text into numbered command lines and whitespace-separated words.
  * Tolerates what real files contain: CR LF (even CR CR LF) line ends, a byte-order mark,
- * blank lines, {@code #} comment lines, leading, trailing and repeated whitespace, no final newline.
+ * blank lines, {@code #} comment lines, leading, trailing and repeated whitespace, no final newline. A line that
+ * starts with {@code #@} is no comment to us: it carries play state ({@link CommandWord#FLIPPER_STATE}), which
+ * other implementations skip as the comment it looks like.
  */
 final class BoardFileLexer {
     private static final Pattern WHITESPACE = Pattern.compile("\\s+");
     private static final char BYTE_ORDER_MARK = '\uFEFF';
+    static final String PLAY_STATE = "#@";
 
     private BoardFileLexer() {
     }
@@ -26,11 +29,17 @@ final class BoardFileLexer {
         for (int i = 0; i < raw.length; i++) {
             String line = raw[i].replace("\r", "");
             String stripped = line.strip();
-            if (!stripped.isEmpty() && !stripped.startsWith("#")) {
+            if (!stripped.isEmpty() && (!stripped.startsWith("#") || isPlayState(stripped))) {
                 lines.add(new SourceLine(i + 1, line));
             }
         }
         return lines;
+    }
+
+    /** A {@code #@} line naming a play-state command; any other {@code #} line is a comment. */
+    private static boolean isPlayState(String stripped) {
+        return stripped.startsWith(PLAY_STATE)
+                && CommandWord.lookup(words(stripped).get(0)).filter(word -> word == CommandWord.FLIPPER_STATE).isPresent();
     }
 
     static List<String> words(String line) {

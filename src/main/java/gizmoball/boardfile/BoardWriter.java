@@ -4,6 +4,7 @@ import gizmoball.model.Absorber;
 import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.Connection;
+import gizmoball.model.Flipper;
 import gizmoball.model.Gizmo;
 import gizmoball.model.KeyBinding;
 import java.util.ArrayList;
@@ -13,7 +14,7 @@ import java.util.stream.Collectors;
 
 /**
  * The canonical form of a board: one command per line, gizmos (in the board's order), then rotations, the
- * colours of gizmos that have their own, balls, connections, key bindings, gravity and friction. Reading it back
+ * colours of gizmos that have their own, the play state of flippers play has moved, balls, connections, key bindings, gravity and friction. Reading it back
  * gives an equal board.
  */
 final class BoardWriter {
@@ -38,6 +39,12 @@ final class BoardWriter {
         }
         for (Gizmo gizmo : board.gizmos()) {
             gizmo.colour().ifPresent(colour -> commands.add(new Command.Colour(gizmo.name(), colour)));
+        }
+        for (Gizmo gizmo : board.gizmos()) {
+            // Only where play moved it: a board as built is written as before, and other implementations skip it.
+            if (gizmo instanceof Flipper flipper && (flipper.angleFromRest() != 0 || flipper.isActive())) {
+                commands.add(new Command.FlipperState(flipper.name(), flipper.angleFromRest(), flipper.isActive()));
+            }
         }
         for (Ball ball : board.balls()) {
             // A captured ball sits at its absorber's corner with no velocity; written there, it is captured again.

@@ -181,6 +181,25 @@ public sealed interface Command {
         }
     }
 
+    /**
+     * A flipper as play left it: {@code #@FlipperAngle <name> <degrees> up|down}, up when it swings (or stays) toward
+     * its active stop. Written before the balls, which may lie where only the raised flipper leaves room.
+     */
+    record FlipperState(String name, double degrees, boolean active) implements Command {
+        public void applyTo(Board board) {
+            board.setFlipperState(name, degrees, active);
+        }
+
+        public String toLine() {
+            return CommandWord.FLIPPER_STATE.spelling() + " " + name + " " + format(degrees) + " "
+                    + (active ? "up" : "down");
+        }
+
+        public List<String> references() {
+            return List.of(name);
+        }
+    }
+
     record Gravity(double g) implements Command {
         public void applyTo(Board board) {
             board.setGravity(g);

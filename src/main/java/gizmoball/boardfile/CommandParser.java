@@ -99,10 +99,22 @@ final class CommandParser {
             case MOVE -> new Command.Move(args.get(0), number("x", args.get(1)), number("y", args.get(2)));
             case CONNECT -> new Command.Connect(args.get(0), args.get(1));
             case KEY_CONNECT -> keyConnect(args, notes);
+            case FLIPPER_STATE -> new Command.FlipperState(args.get(0), number("angle", args.get(1)),
+                    direction(args.get(2)));
             case GRAVITY -> new Command.Gravity(number("gravity", args.get(0)));
             case FRICTION -> new Command.Friction(number("mu", args.get(0)), number("mu2", args.get(1)));
             case COLOUR -> throw new IllegalStateException("colours are read by colour(), in any spelling");
         };
+    }
+
+    private static boolean direction(String word) throws Refusal {
+        if (word.equalsIgnoreCase("up")) {
+            return true;
+        }
+        if (word.equalsIgnoreCase("down")) {
+            return false;
+        }
+        throw new Refusal("a flipper's direction is up or down, not " + word);
     }
 
     /** {@code Flipper <name> <x> <y>}: the side is in the name, LF... or RF... */

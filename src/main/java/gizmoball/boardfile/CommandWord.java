@@ -23,6 +23,8 @@ enum CommandWord {
     CONNECT("Connect", null, "<name1> <name2>"),
     KEY_CONNECT("KeyConnect", null, "key <keycode> down|up|change <name>"),
     COLOUR("Colour", null, "<name> <red> <green> <blue>"),
+    /** Play state: a flipper's angle and direction, written by a save during play. */
+    FLIPPER_STATE(BoardFileLexer.PLAY_STATE + "FlipperAngle", null, "<name> <degrees> up|down"),
     GRAVITY("Gravity", null, "<g>"),
     FRICTION("Friction", null, "<mu> <mu2>");
 

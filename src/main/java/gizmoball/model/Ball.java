@@ -25,6 +25,8 @@ public final class Ball {
     private final List<ContactRef> contacts = new ArrayList<>();
     private int stillTicks;
     private boolean asleep;
+    /** Index of the ball among the free balls of the tick running now (the collision schedule's bookkeeping). */
+    private int slot;
 
     Ball(String name, Vect position, Vect velocity) {
         this.name = name;
@@ -83,6 +85,14 @@ public final class Ball {
         stillTicks = ticks;
     }
 
+    int slot() {
+        return slot;
+    }
+
+    void setSlot(int index) {
+        slot = index;
+    }
+
     void fallAsleep() {
         asleep = true;
         velocity = Vect.ZERO;
@@ -126,7 +136,7 @@ public final class Ball {
     }
 
     void advance(double dt) {
-        position = position.plus(velocity.times(dt));
+        position = new Vect(position.x() + velocity.x() * dt, position.y() + velocity.y() * dt);
     }
 
     void capture(Vect holdingPosition) {

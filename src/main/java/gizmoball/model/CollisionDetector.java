@@ -94,8 +94,8 @@ final class CollisionDetector {
         if (gap > relative.length() * window + REACH_MARGIN) {
             return;   // cannot close the gap within the window
         }
-        if (gap < -Tolerances.PLACEMENT) {
-            return;   // placed overlapping (a loaded file may do that): they pass through until they are apart
+        if (board.passingThrough(ball, other)) {
+            return;   // placed on each other (a loaded file may do that): they pass through until they are apart
         }
         double time = Geometry.timeUntilBallBallCollision(ball.circle(), mine, other.circle(), theirs);
         if (time <= window) {

@@ -1,10 +1,9 @@
 package gizmoball.model;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collection;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 
 /**
  * Stage 3 over the whole board: the earliest collision of any awake ball within the time left in the tick. It keeps
@@ -20,16 +19,19 @@ final class CollisionSchedule {
     }
 
     private final CollisionDetector detector;
-    private final Map<Ball, Known> withScene = new HashMap<>();
-    private final Map<Ball, Known> withBalls = new HashMap<>();
-    private final BallGrid grid = new BallGrid();
+    /** Each free ball's known collisions, by its slot ({@link Ball#slot()}); null: not known, ask again. */
+    private Known[] withScene = new Known[0];
+    private Known[] withBalls = new Known[0];
+    private int filed;
+    private final BallGrid grid;
     private final List<Ball> nearby = new ArrayList<>();
     /** When the grid was filled, and the highest speed of any ball since: how stale its positions can be. */
     private double filedAt;
     private double fastest;
 
-    CollisionSchedule(CollisionDetector detector) {
+    CollisionSchedule(CollisionDetector detector, BallGrid grid) {
         this.detector = detector;
+        this.grid = grid;
     }
 
     /** Files every free ball (awake or asleep) where it is now, {@code elapsed} seconds into the tick. */
@@ -37,16 +39,14 @@ final class CollisionSchedule {
         grid.clear();
         filedAt = elapsed;
         fastest = 0;
+        filed = 0;
+        withScene = new Known[free.size()];
+        withBalls = new Known[free.size()];
         for (Ball ball : free) {
+            ball.setSlot(filed++);
             grid.add(ball);
             sped(ball);
         }
-    }
-
-    /** A ball became free during the tick (launched): file it where it is now. */
-    void fileLate(Ball ball) {
-        grid.add(ball);
-        sped(ball);
     }
 
     /** A ball's velocity changed: positions may go stale faster. */
@@ -57,32 +57,42 @@ final class CollisionSchedule {
     /** The earliest collision of the awake balls within the window, {@code elapsed} seconds into the tick. */
     Collision next(List<Ball> awake, double elapsed, double window) {
         for (Ball ball : awake) {
-            withScene.computeIfAbsent(ball, b -> known(detector.againstScene(b, window), elapsed));
+            if (withScene[ball.slot()] == null) {
+                withScene[ball.slot()] = known(detector.againstScene(ball, window), elapsed);
+            }
         }
         for (Ball ball : awake) {
-            if (!withBalls.containsKey(ball)) {
+            if (withBalls[ball.slot()] == null) {
                 askAgainstBalls(ball, elapsed, window);
             }
         }
         Earliest earliest = new Earliest(window);
         for (Ball ball : awake) {
-            offer(earliest, withScene.get(ball), elapsed, window);
-            offer(earliest, withBalls.get(ball), elapsed, window);
+            offer(earliest, withScene[ball.slot()], elapsed, window);
+            offer(earliest, withBalls[ball.slot()], elapsed, window);
         }
         return earliest.collision();
     }
 
     /** The ball's velocity or position changed other than by moving on: ask again about it. */
     void forget(Ball ball) {
-        withScene.remove(ball);
-        withBalls.remove(ball);
-        withBalls.values().removeIf(known -> known.collision() != null
-                && ((Contact.OtherBall) known.collision().contact()).other() == ball);
+        if (ball.isCaptured()) {
+            return;   // filed no more: the capture filed the free balls afresh
+        }
+        withScene[ball.slot()] = null;
+        withBalls[ball.slot()] = null;
+        for (int i = 0; i < filed; i++) {
+            Known known = withBalls[i];
+            if (known != null && known.collision() != null
+                    && ((Contact.OtherBall) known.collision().contact()).other() == ball) {
+                withBalls[i] = null;
+            }
+        }
     }
 
     void forgetAll() {
-        withScene.clear();
-        withBalls.clear();
+        Arrays.fill(withScene, null);
+        Arrays.fill(withBalls, null);
     }
 
     /**
@@ -106,12 +116,12 @@ final class CollisionSchedule {
                 continue;
             }
             earliest.offer(found.time(), ball, new Contact.OtherBall(other), true);
-            Known theirs = withBalls.get(other);
+            Known theirs = withBalls[other.slot()];
             if (theirs != null && (theirs.collision() == null || elapsed + found.time() < theirs.at())) {
-                withBalls.put(other, new Known(elapsed + found.time(), found, true));
+                withBalls[other.slot()] = new Known(elapsed + found.time(), found, true);
             }
         }
-        withBalls.put(ball, known(earliest, elapsed));
+        withBalls[ball.slot()] = known(earliest, elapsed);
     }
 
     private static Known known(Earliest earliest, double elapsed) {

@@ -21,9 +21,20 @@ final class Contacts {
     private static final double SNAP_DEPTH = Tolerances.CONTACT / 10;
 
     private final Board board;
+    /** A contact the ball has drifted off by less than this, slower than {@link #holdSpeed}, still holds. */
+    private final double holdGap;
+    private final double holdSpeed;
 
-    Contacts(Board board) {
+    /**
+     * A ball lying on something and nudged off it by a rounding of a wedge's projections, or rolling over a curve
+     * slowly, drifts off by less than a tick of gravity would bring back ({@code g dt^2}), at less than half a tick of
+     * gravity's speed: such a ball keeps the contact and loses that drift, as gravity would have done.
+     */
+    Contacts(Board board, double dt) {
         this.board = board;
+        double g = Math.abs(board.gravity());
+        this.holdGap = Math.max(Tolerances.CONTACT, g * dt * dt);
+        this.holdSpeed = g * dt / 2;
     }
 
     /**
@@ -33,7 +44,7 @@ final class Contacts {
      */
     List<Vect> refresh(Ball ball) {
         List<Vect> normals = new ArrayList<>();
-        boolean lost = ball.contacts().removeIf(ref -> normalOf(ball, ref, normals) == null);
+        boolean lost = ball.contacts().removeIf(ref -> normalOf(ball, ref, normals, true) == null);
         if (lost) {
             discover(ball, normals);
         }
@@ -127,13 +138,19 @@ final class Contacts {
 
     /** Adds the normal of a contact that still holds to {@code normals} and returns it; null if it has ended. */
     private Vect normalOf(Ball ball, ContactRef ref, List<Vect> normals) {
+        return normalOf(ball, ref, normals, false);
+    }
+
+    /** With {@code hold}, a contact the ball has only just drifted off is put back (see the constructor). */
+    private Vect normalOf(Ball ball, ContactRef ref, List<Vect> normals, boolean hold) {
+        double gap = hold ? holdGap : Tolerances.CONTACT;
         Vect normal;
         if (ref instanceof ContactRef.Wall wall) {
-            normal = onSegment(ball, CollisionDetector.OUTER_WALLS.get(wall.side()));
+            normal = onSegment(ball, CollisionDetector.OUTER_WALLS.get(wall.side()), gap);
         } else if (ref instanceof ContactRef.Part part) {
-            normal = onPart(ball, part);
+            normal = onPart(ball, part, gap);
         } else {
-            normal = onBall(ball, (ContactRef.OnBall) ref);
+            normal = onBall(ball, (ContactRef.OnBall) ref, gap);
         }
         if (normal != null) {
             normals.add(normal);
@@ -141,7 +158,7 @@ final class Contacts {
         return normal;
     }
 
-    private Vect onPart(Ball ball, ContactRef.Part part) {
+    private Vect onPart(Ball ball, ContactRef.Part part, double gap) {
         GizmoBase gizmo = board.gizmoBase(part.gizmo());
         if (gizmo == null || gizmo instanceof Flipper flipper && flipper.isMoving()
                 && !(part.circle() && part.index() == Flipper.PIVOT_CIRCLE)) {
@@ -149,14 +166,15 @@ final class Contacts {
         }
         Shape shape = gizmo.shape();
         if (part.circle()) {
-            return part.index() < shape.circles().size() ? onCircle(ball, shape.circles().get(part.index())) : null;
+            return part.index() < shape.circles().size() ? onCircle(ball, shape.circles().get(part.index()), gap) : null;
         }
-        return part.index() < shape.segments().size() ? onSegment(ball, shape.segments().get(part.index())) : null;
+        return part.index() < shape.segments().size() ? onSegment(ball, shape.segments().get(part.index()), gap)
+                : null;
     }
 
-    private Vect onBall(Ball ball, ContactRef.OnBall on) {
+    private Vect onBall(Ball ball, ContactRef.OnBall on, double gap) {
         Ball other = board.ballState(on.ball());
-        return other == null || !supports(other, ball) ? null : onCircle(ball, other.circle());
+        return other == null || !supports(other, ball) ? null : onCircle(ball, other.circle(), gap);
     }
 
     /**
@@ -179,29 +197,40 @@ final class Contacts {
         return false;
     }
 
-    private static Vect onSegment(Ball ball, LineSegment segment) {
+    private Vect onSegment(Ball ball, LineSegment segment, double gap) {
         Vect p = ball.position();
         Vect foot = Geometry.perpendicularPoint(segment, p);
         if (foot == null) {
             return null;   // past the end: the corner circle or the next face takes over
         }
-        return touching(ball, foot, 0);
+        return touching(ball, foot, 0, gap);
     }
 
-    private static Vect onCircle(Ball ball, Circle circle) {
-        return touching(ball, circle.getCenter(), circle.getRadius());
+    private Vect onCircle(Ball ball, Circle circle, double gap) {
+        return touching(ball, circle.getCenter(), circle.getRadius(), gap);
     }
 
-    /** The normal away from a surface point (or circle centre) the ball touches within the tolerance, or null. */
-    private static Vect touching(Ball ball, Vect from, double radius) {
+    /**
+     * The normal away from a surface point (or circle centre) the ball touches, or null. A ball found slightly inside
+     * is put back to touching; one that drifted off by more than the contact tolerance but less than {@code gap},
+     * slowly, from a surface below or beside it, keeps the contact and loses the drift. It is not moved back: that
+     * could push it into its other neighbours; it lies a hair above the surface instead (at most g dt^2).
+     */
+    private Vect touching(Ball ball, Vect from, double radius, double gap) {
         Vect offset = ball.position().minus(from);
         double distance = offset.length();
         double touch = radius + Board.BALL_RADIUS;
-        if (distance == 0 || distance - touch > Tolerances.CONTACT) {
+        if (distance == 0 || distance - touch > gap) {
             return null;
         }
         Vect normal = offset.times(1 / distance);
-        if (touch - distance > SNAP_DEPTH) {
+        if (distance - touch > Tolerances.CONTACT) {
+            double leaving = ball.velocity().dot(normal);
+            if (leaving > holdSpeed || normal.y() > 0) {
+                return null;
+            }
+            ball.setVelocity(ball.velocity().minus(normal.times(Math.max(0, leaving))));
+        } else if (touch - distance > SNAP_DEPTH) {
             ball.moveTo(from.plus(normal.times(touch)));
         }
         return normal;

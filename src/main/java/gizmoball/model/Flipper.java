@@ -108,6 +108,14 @@ public final class Flipper extends GizmoBase implements Gizmo {
         blocked = false;
     }
 
+    /** Puts the flipper at an angle (0..90 degrees from rest), swinging toward its active stop or its rest. */
+    void setState(double degrees, boolean toActive) {
+        angle = degrees;
+        active = toActive;
+        blocked = false;
+        currentShape = shapeAt(angle);
+    }
+
     /** A ball pinched between the flipper and something else stops it where it is. */
     void block() {
         blocked = true;

@@ -33,6 +33,8 @@ public final class AimPreview {
     private Object madeFor;
     private Optional<Prediction> current = Optional.empty();
     private Predictor.Run running;
+    /** The ball last selected: its path stays shown while a gizmo is selected, placed or moved. */
+    private String followed;
 
     public AimPreview(Board design, Supplier<Inputs> inputs, Predictor predictor, Consumer<Runnable> later) {
         this.design = design;
@@ -74,11 +76,24 @@ public final class AimPreview {
             return;
         }
         madeFor = key;
-        running = now == null ? null : AimScenario.of(design, now.tool(), now.preview(), now.selected())
+        if (now != null) {
+            follow(now.selected());
+        }
+        running = now == null ? null : AimScenario.of(design, now.tool(), now.preview(), now.selected(),
+                        Optional.ofNullable(followed))
                 .map(s -> predictor.start(s.board(), s.ball(), Predictor.HORIZON_SECONDS, Board.DEFAULT_TICK))
                 .orElse(null);
         current = Optional.empty();
         advance(running);
+    }
+
+    /** A selected ball is followed; a selected gizmo keeps the ball followed; selecting nothing lets it go. */
+    private void follow(Optional<String> selected) {
+        if (selected.isEmpty()) {
+            followed = null;
+        } else if (design.ball(selected.get()).isPresent()) {
+            followed = selected.get();
+        }
     }
 
     /** One slice of {@code run}, unless a newer prediction replaced it meanwhile. */

@@ -14,11 +14,15 @@ import java.util.Optional;
  */
 public record AimScenario(Board board, String ball) {
 
-    /** What the editor shows now, as a board to predict on; empty when no ball is placed, moved or selected. */
+    /**
+     * What the editor shows now, as a board to predict on; empty when no ball is placed, moved or followed.
+     * {@code followed} is the ball to predict when the selection is not a ball (a gizmo being placed or moved).
+     */
     public static Optional<AimScenario> of(Board design, Tool tool, Optional<Preview> preview,
-                                           Optional<String> selected) {
+                                           Optional<String> selected, Optional<String> followed) {
         Board board = design.copy();
-        Optional<String> selectedBall = selected.filter(name -> design.ball(name).isPresent());
+        Optional<String> selectedBall = selected.filter(name -> design.ball(name).isPresent())
+                .or(() -> followed.filter(name -> design.ball(name).isPresent()));
         Optional<String> selectedGizmo = selected.filter(name -> design.gizmo(name).isPresent());
         String ball = selectedBall.orElse(null);
         try {

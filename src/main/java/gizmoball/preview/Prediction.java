@@ -20,7 +20,10 @@ public record Prediction(String ball, List<Point> path, List<Vect> collisions, O
         collisions = List.copyOf(collisions);
     }
 
-    /** A point of the path; {@code free} is false while an absorber holds the ball. */
+    /**
+     * A point of the path; {@code free}: the ball flew here from the previous point (false while an absorber
+     * holds it, and after a tick in which it was captured, even if the absorber fired it again at once).
+     */
     public record Point(Vect at, boolean free) {
     }
 

@@ -81,16 +81,21 @@ public final class Predictor {
                     break;
                 }
                 copy.tick(dt);
-                path.add(point(copy.ball(ball).orElseThrow()));
+                boolean captured = false;
                 for (PlayEvent event : copy.lastTick().events()) {
-                    hitBy(event);
+                    captured |= hitBy(event);
                 }
+                Ball b = copy.ball(ball).orElseThrow();
+                path.add(new Prediction.Point(b.position(), !b.isCaptured() && !captured));
             }
             return new Prediction(ball, path, collisions, trigger, (path.size() - 1) * dt, !isDone());
         }
 
-        /** A hit or capture of the predicted ball: a dot, and the first one that drives other gizmos is the trigger. */
-        private void hitBy(PlayEvent event) {
+        /**
+         * A hit or capture of the predicted ball: a dot, and the first one that drives other gizmos is the trigger.
+         * Returns whether it was a capture.
+         */
+        private boolean hitBy(PlayEvent event) {
             String source;
             Vect at;
             if (event instanceof PlayEvent.Hit hit && ball.equals(hit.ball())) {
@@ -100,7 +105,7 @@ public final class Predictor {
                 source = captured.absorber();
                 at = captured.at();
             } else {
-                return;
+                return false;
             }
             collisions.add(at);
             if (trigger.isEmpty() && source != null) {
@@ -110,6 +115,7 @@ public final class Predictor {
                     trigger = Optional.of(new Prediction.Trigger(source, at, targets));
                 }
             }
+            return event instanceof PlayEvent.Captured;
         }
 
         private static Prediction.Point point(Ball b) {

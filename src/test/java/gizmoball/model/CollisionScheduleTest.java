@@ -40,14 +40,14 @@ class CollisionScheduleTest {
         }
         List<Ball> free = new ArrayList<>(board.balls());
         CollisionDetector detector = new CollisionDetector(board, Set.of(), Set.of());
-        CollisionSchedule schedule = new CollisionSchedule(detector);
+        CollisionSchedule schedule = new CollisionSchedule(detector, new BallGrid());
         schedule.file(free, 0);
         double tick = 0.25;
         double elapsed = 0;
         int step = 0;
         for (; step < 200 && elapsed < tick; step++) {
             Collision kept = schedule.next(free, elapsed, tick - elapsed);
-            CollisionSchedule afresh = new CollisionSchedule(detector);
+            CollisionSchedule afresh = new CollisionSchedule(detector, new BallGrid());
             afresh.file(free, elapsed);
             Collision fresh = afresh.next(free, elapsed, tick - elapsed);
             String where = "seed " + seed + " step " + step;

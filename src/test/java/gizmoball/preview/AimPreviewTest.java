@@ -71,4 +71,26 @@ class AimPreviewTest {
         assertThat(slow.current().orElseThrow().shortened()).isFalse();
         assertThat(slow.current().get().ticks()).isEqualTo(180);
     }
+
+    @Test
+    void theSelectedBallsPathStaysWhileAGizmoIsSelectedAndMoved() {
+        design.addGizmo(GizmoKind.SQUARE, "S", 3, 3);
+        aim.setEnabled(true);
+        Prediction ofBall = aim.current().orElseThrow();
+        inputs = new AimPreview.Inputs(Tool.SELECT, Optional.empty(), Optional.of("S"));
+        aim.refresh();
+        assertThat(aim.current().orElseThrow().ball()).as("still following B").isEqualTo("B");
+        assertThat(aim.current().get().path()).isEqualTo(ofBall.path());
+
+        // Dragging S under the falling ball: the footprint at (10, 12) bends B's path before the drop.
+        inputs = new AimPreview.Inputs(Tool.SELECT, Optional.of(new Preview.Footprint(10, 12, 1, 1, Optional.empty())),
+                Optional.of("S"));
+        aim.refresh();
+        assertThat(aim.current().orElseThrow().path().stream().mapToDouble(p -> p.at().y()).max().orElseThrow())
+                .isLessThanOrEqualTo(11.75 + 1e-9);
+
+        inputs = new AimPreview.Inputs(Tool.SELECT, Optional.empty(), Optional.empty());
+        aim.refresh();
+        assertThat(aim.current()).as("nothing selected: nothing followed").isEmpty();
+    }
 }

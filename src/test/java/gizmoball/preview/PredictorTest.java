@@ -60,7 +60,9 @@ class PredictorTest {
             Vect played = position(session.board(), ball);
             Vect predicted = p.path().get(i).at();
             assertThat(played.minus(predicted).length()).as("tick %d", i).isLessThanOrEqualTo(1e-9);
-            assertThat(p.path().get(i).free()).isEqualTo(!session.board().ball(ball).orElseThrow().isCaptured());
+            if (session.board().ball(ball).orElseThrow().isCaptured()) {
+                assertThat(p.path().get(i).free()).as("held at tick %d", i).isFalse();
+            }
         }
     }
 
@@ -85,7 +87,7 @@ class PredictorTest {
 
         // While the square is being placed (the editor's footprint under the pointer), and once it is placed.
         Optional<AimScenario> placing = AimScenario.of(board, Tool.SQUARE,
-                Optional.of(new Preview.Footprint(10, 10, 1, 1, Optional.empty())), Optional.of("B"));
+                Optional.of(new Preview.Footprint(10, 10, 1, 1, Optional.empty())), Optional.of("B"), Optional.empty());
         Prediction whilePlacing = unhurried.predict(placing.orElseThrow().board(), "B", 3, DT, Long.MAX_VALUE);
         board.addGizmo(GizmoKind.SQUARE, "S", 10, 10);
         Prediction placed = unhurried.predict(board, "B", 3, DT, Long.MAX_VALUE);
@@ -126,12 +128,28 @@ class PredictorTest {
     }
 
     @Test
+    void thePathBreaksWhereAnAbsorberCapturesTheBallEvenIfItFiresItAtOnce() {
+        Board board = new Board();
+        board.addAbsorber("A", 0, 19, 20, 20);
+        board.connect("A", "A");
+        board.addBall("B", 5.5, 17, 0, 0);
+        Prediction p = unhurried.predict(board, "B", 1, DT, Long.MAX_VALUE);
+        int broken = (int) p.path().stream().filter(pt -> !pt.free()).count();
+        assertThat(broken).isEqualTo(1);
+        Prediction.Point after = p.path().stream().filter(pt -> !pt.free()).findFirst().orElseThrow();
+        // Fired at once from the absorber's launch spot, the bottom-right corner, not from where it landed.
+        assertThat(after.at().x()).isCloseTo(19.75, within(1e-9));
+        assertThat(p.trigger().orElseThrow().targets()).containsExactly("A");
+    }
+
+    @Test
     void aBallBeingPlacedIsPredictedWithTheVelocityDraggedOut() {
         Board board = new Board();
         board.setGravity(0);
         board.setFriction(0, 0);
         AimScenario s = AimScenario.of(board, Tool.BALL,
-                Optional.of(new Preview.BallPlacement(5, 5, 10, 0, Optional.empty())), Optional.empty()).orElseThrow();
+                Optional.of(new Preview.BallPlacement(5, 5, 10, 0, Optional.empty())), Optional.empty(),
+                Optional.empty()).orElseThrow();
         Prediction p = unhurried.predict(s.board(), s.ball(), 1, DT, Long.MAX_VALUE);
         // 10 L/s to the right without forces: 10/60 L per tick until the right wall at 19.75 (after 1.475 s).
         assertThat(p.path().get(30).at().x()).isCloseTo(5 + 30 * 10 * DT, within(1e-9));
@@ -142,8 +160,8 @@ class PredictorTest {
     void withoutABallThereIsNothingToPredict() {
         Board board = new Board();
         board.addGizmo(GizmoKind.CIRCLE, "C", 3, 3);
-        assertThat(AimScenario.of(board, Tool.SELECT, Optional.empty(), Optional.of("C"))).isEmpty();
-        assertThat(AimScenario.of(board, Tool.SELECT, Optional.empty(), Optional.empty())).isEmpty();
+        assertThat(AimScenario.of(board, Tool.SELECT, Optional.empty(), Optional.of("C"), Optional.empty())).isEmpty();
+        assertThat(AimScenario.of(board, Tool.SELECT, Optional.empty(), Optional.empty(), Optional.empty())).isEmpty();
     }
 
     @Test
