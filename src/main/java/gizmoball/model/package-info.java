@@ -1,16 +1,20 @@
 /**
  * The Gizmoball board without any Swing: gizmos, balls, connections, key bindings, the editing operations and
- * the six-stage physics loop of SPEC.md.
+ * the six-stage physics loop (docs/design.md, "The tick"). It may use {@code physics} (only the listed API) and
+ * the JDK; no AWT, no Swing.
  *
  * <p>{@link gizmoball.model.Board} holds everything and is the only way to change it. Every editing operation is
  * checked on a copy of the gizmo first, so it either succeeds completely (observers hear EDIT) or throws
  * {@link gizmoball.model.BoardEditException} and leaves the board untouched. Gizmo shapes (physics-lib segments
- * and circles, zero-radius circles at polygon corners) are built when a gizmo is placed, moved or rotated. A
- * 20x20 grid of cells maps each cell to the gizmo covering it: it refuses overlaps when editing and, as the
- * spatial index, gives collision detection the gizmos a ball can reach in the time considered.
+ * and circles, zero-radius circles at polygon corners) are built when a gizmo is placed, moved or rotated; a
+ * flipper's shapes at both stops are built then too. A 20x20 grid of cells maps each cell to the gizmo covering
+ * it: it refuses overlaps when editing and, as the spatial index, gives collision detection the gizmos a ball can
+ * reach in the time considered.
  *
- * <p>{@code TickRun} runs one tick: friction and gravity, then detection, motion to the first collision,
- * resolution and triggering repeat until the tick is used up (CONTINUOUS) or, in SEED, until each ball has had
- * its one collision; then the observers are notified.
+ * <p>{@code TickRun} runs one tick: friction and gravity (less what presses into persistent contacts, which
+ * {@code Contacts} keeps), then detection ({@code CollisionSchedule}, {@code CollisionDetector}, {@code BallGrid}),
+ * motion to the first collision, resolution and triggering repeat until the tick is used up; sleeping balls
+ * ({@code Sleepers}) are left alone; then the {@link gizmoball.model.TickReport} is kept and the observers are
+ * notified. {@link gizmoball.model.Tolerances} holds every tolerance of the model and the loader.
  */
 package gizmoball.model;
