@@ -39,9 +39,9 @@ import java.util.stream.Stream;
  *     <li>A guard survey: every shipped and every loadable peer board for a fixed number of ticks.</li>
  * </ul>
  * Each tick is timed by wall time ({@code System.nanoTime}, tens of nanoseconds to read): a frame is late by wall
- * time, garbage collection and the machine's other work included. The thread CPU clock costs about 2 us a read
- * on these machines, as much as a small board's tick, so it is read only at the ends of the window: where its
- * mean is well below the wall mean, other processes had the core.
+ * time, garbage collection and the machine's other work included. On a shared machine that work can make a fast
+ * model look slow, so a second run of the same board times each tick by the thread's CPU clock, which costs about
+ * 2 us a read on these machines (as much as a small board's tick): that run's reads are kept out of the first.
  */
 final class SteadyState {
 
@@ -201,12 +201,10 @@ final class SteadyState {
         int[] zeroTime = new int[w.to()];
         GuardCounts guards = GuardCounts.NONE;
         long[] gcAtStart = new long[2];
-        long cpuAtStart = 0;
         Map<Stage, Long> stages = new EnumMap<>(Stage.class);
         for (int t = 0; t < w.to(); t++) {
             if (t == w.from()) {
                 gcAtStart = garbageCollections();
-                cpuAtStart = THREADS.getCurrentThreadCpuTime();
             }
             long start = System.nanoTime();
             board.tick(DT);
@@ -219,7 +217,6 @@ final class SteadyState {
                 report.stageNanos().forEach((stage, n) -> stages.merge(stage, n, Long::sum));
             }
         }
-        long cpu = THREADS.getCurrentThreadCpuTime() - cpuAtStart;
         long[] gcAtEnd = garbageCollections();
         int slowest = 0;
         for (int i = 0; i < cpuWindow.length; i++) {
@@ -232,7 +229,7 @@ final class SteadyState {
         int n = window.length;
         TickReport last = board.lastTick();
         Row row = new Row(named.name(), board.gizmos().size(), board.balls().size(), w.from(), w.to(),
-                Arrays.stream(window).average().orElse(0) / 1e3, window[p99(n)] / 1e3, window[n - 1] / 1e3, cpu / 1e3 / n,
+                Arrays.stream(window).average().orElse(0) / 1e3, window[p99(n)] / 1e3, window[n - 1] / 1e3, Arrays.stream(cpuWindow).average().orElse(0) / 1e3,
                 cpuWindow[p99(n)] / 1e3, cpuWindow[n - 1] / 1e3, mean(collisions, w.from()), max(collisions, w.from()), mean(zeroTime, w.from()),
                 max(zeroTime, w.from()), last.ballsAwake(), last.ballsAsleep(), guards, gcAtEnd[0] - gcAtStart[0],
                 gcAtEnd[1] - gcAtStart[1], slowestTick, collisions[slowestTick], stages);
@@ -417,8 +414,8 @@ final class SteadyState {
                     r.asleep(), r.awake(), r.guards().wedged(), r.guards().pinched(), r.guards().collisionCap(),
                     r.gcPauses() + " (" + r.gcMillis() + ")");
         }
-        out.println("(wall: each tick by System.nanoTime; CPU: the ticking thread's CPU time, mean over the window, p99 and "
-                + "max of a second run timed tick by tick; asleep, awake: balls at the end; GCs: garbage collections "
+        out.println("(wall: each tick by System.nanoTime; CPU: the ticking thread's CPU time of each tick, in a second run; "
+                + "asleep, awake: balls at the end; GCs: garbage collections "
                 + "during the window and their total time)");
         out.println("Where the window's time goes: the slowest tick by CPU time, and each stage's share of the time the model's "
                 + "stage clocks measured (TickReport.stageNanos)");
