@@ -94,6 +94,10 @@ final class SteadyState {
         double ratio() {
             return pileUs / emptyUs;
         }
+
+        boolean allAsleep() {
+            return asleepAfterSettle == balls && asleepAtEnd == balls;
+        }
     }
 
     /** A board of the survey with the guards it fired; {@code failure} when a tick threw. */
@@ -510,8 +514,10 @@ final class SteadyState {
         rows.stream().filter(r -> r.board().equals(MANY_BALLS)).findFirst().ifPresent(r ->
                 timeTarget(out, "100-ball board mean <= " + f0(TARGET_MANY_BALLS_MEAN_US) + " us per tick", r.meanUs(),
                         r.cpuMeanUs(), TARGET_MANY_BALLS_MEAN_US));
+        // The target is about a pile that sleeps: one that did not fall asleep is not evidence either way.
         target(out, "sleeping pile < " + f0(TARGET_PILE_RATIO) + "x the board without balls",
-                String.format(Locale.ROOT, "%.2fx", pile.ratio()), pile.ratio() < TARGET_PILE_RATIO);
+                String.format(Locale.ROOT, "%.2fx", pile.ratio()), !pile.allAsleep() ? "NOT met: the pile did not sleep"
+                        : pile.ratio() < TARGET_PILE_RATIO ? "met" : "NOT met");
         target(out, "no guard fires on any surveyed board in " + String.format(Locale.ROOT, "%,d", survey.ticks())
                 + " ticks", survey.firing().size() + " of " + survey.boards().size() + " boards fired one",
                 survey.firing().isEmpty());
