@@ -1,7 +1,5 @@
 package gizmoball.editor;
 
-import gizmoball.model.Ball;
-import gizmoball.model.Gizmo;
 import java.util.Optional;
 
 /** Delete: a click removes a ball or gizmo (a ball first: it may sit on a gizmo's cell). */
@@ -14,7 +12,7 @@ final class DeleteTool implements ToolHandler {
 
     @Override
     public Optional<String> target(double x, double y) {
-        return editor.ballNear(x, y).map(Ball::name).or(() -> editor.gizmoAt(x, y).map(Gizmo::name));
+        return editor.ballOrGizmoAt(x, y);
     }
 
     @Override

@@ -524,6 +524,11 @@ public final class Editor {
                 .min(Comparator.comparingDouble(b -> Math.hypot(b.position().x() - x, b.position().y() - y)));
     }
 
+    /** The name of the ball or else the gizmo under the point: a ball first, as it may sit on a gizmo's cell. */
+    Optional<String> ballOrGizmoAt(double x, double y) {
+        return ballNear(x, y).map(Ball::name).or(() -> gizmoAt(x, y).map(Gizmo::name));
+    }
+
     boolean isWall(double x, double y) {
         boolean outside = x < 0 || y < 0 || x >= Board.SIZE || y >= Board.SIZE;
         boolean nearEdge = x < WALL_BAND || y < WALL_BAND || x > Board.SIZE - WALL_BAND || y > Board.SIZE - WALL_BAND;

@@ -15,7 +15,7 @@ final class SelectTool implements ToolHandler {
 
     @Override
     public Optional<String> target(double x, double y) {
-        return editor.ballNear(x, y).map(Ball::name).or(() -> editor.gizmoAt(x, y).map(Gizmo::name));
+        return editor.ballOrGizmoAt(x, y);
     }
 
     @Override
