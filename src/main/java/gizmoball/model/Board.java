@@ -4,7 +4,6 @@ import java.util.ArrayList;
 import java.util.Collection;
 import java.util.Collections;
 import java.util.HashSet;
-import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
@@ -167,15 +166,11 @@ public final class Board {
 
     /** Forgets the passing pairs that have come apart (or lost a ball to an absorber or a delete). */
     void forgetSeparatedPairs() {
-        passingPairs.removeIf(pair -> pair.stream().map(balls::get)
-                .anyMatch(ball -> ball == null || ball.isCaptured())
-                || !Overlaps.balls(balls.get(pair.iterator().next()).position(), otherOf(pair).position()));
-    }
-
-    private Ball otherOf(Set<String> pair) {
-        Iterator<String> names = pair.iterator();
-        names.next();
-        return balls.get(names.next());
+        passingPairs.removeIf(pair -> {
+            List<Ball> two = pair.stream().map(balls::get).toList();
+            return two.contains(null) || two.get(0).isCaptured() || two.get(1).isCaptured()
+                    || !Overlaps.balls(two.get(0).position(), two.get(1).position());
+        });
     }
 
     private Ball placeBall(String name, double x, double y, double vx, double vy, boolean ballsMayOverlap) {
@@ -585,14 +580,6 @@ public final class Board {
 
     public Optional<Ball> ball(String name) {
         return Optional.ofNullable(balls.get(name));
-    }
-
-    /** A ball whose disc contains the point (captured ones included). */
-    public Optional<Ball> ballAt(double x, double y) {
-        Vect point = new Vect(x, y);
-        return balls.values().stream()
-                .filter(b -> b.position().distanceSquared(point) <= BALL_RADIUS * BALL_RADIUS)
-                .findFirst();
     }
 
     public List<Connection> connections() {
