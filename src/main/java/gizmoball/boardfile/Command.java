@@ -7,6 +7,7 @@ import gizmoball.model.BoardEditException;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.Rgb;
+import gizmoball.model.TriggerSource;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
@@ -136,17 +137,18 @@ public sealed interface Command {
         }
     }
 
-    record Connect(String source, String target) implements Command {
+    /** {@code source} as the file names it: the word {@code OuterWalls} is the outer walls. */
+    record Connect(TriggerSource source, String target) implements Command {
         public void applyTo(Board board) {
             board.connect(source, target);
         }
 
         public String toLine() {
-            return CommandWord.CONNECT.spelling() + " " + source + " " + target;
+            return CommandWord.CONNECT.spelling() + " " + source.name() + " " + target;
         }
 
         public List<String> references() {
-            return Board.OUTER_WALLS.equals(source) ? List.of(target) : List.of(source, target);
+            return source instanceof TriggerSource.OfGizmo gizmo ? List.of(gizmo.gizmo(), target) : List.of(target);
         }
     }
 

@@ -3,6 +3,7 @@ package gizmoball.boardfile;
 import gizmoball.model.Board;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.Rgb;
+import gizmoball.model.TriggerSource;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -97,7 +98,7 @@ final class CommandParser {
             case ROTATE -> new Command.Rotate(args.get(0));
             case DELETE -> new Command.Delete(args.get(0));
             case MOVE -> new Command.Move(args.get(0), number("x", args.get(1)), number("y", args.get(2)));
-            case CONNECT -> new Command.Connect(args.get(0), args.get(1));
+            case CONNECT -> new Command.Connect(TriggerSource.named(args.get(0)), args.get(1));
             case KEY_CONNECT -> keyConnect(args, notes);
             case FLIPPER_STATE -> new Command.FlipperState(args.get(0), number("angle", args.get(1)),
                     direction(args.get(2)));

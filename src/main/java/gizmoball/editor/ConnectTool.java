@@ -1,7 +1,6 @@
 package gizmoball.editor;
 
-import gizmoball.model.Board;
-import gizmoball.model.Gizmo;
+import gizmoball.model.TriggerSource;
 import java.util.Optional;
 
 /** Connect and Disconnect: click the trigger source (a gizmo, or the outer walls), then the target. */
@@ -16,29 +15,34 @@ final class ConnectTool implements ToolHandler {
 
     @Override
     public Optional<String> target(double x, double y) {
-        return editor.gizmoAt(x, y).map(Gizmo::name)
-                .or(() -> editor.isWall(x, y) ? Optional.of(Board.OUTER_WALLS) : Optional.empty());
+        return end(x, y).map(TriggerSource::name);
+    }
+
+    /** The gizmo under the point, else the outer walls outside the board or on its rim. */
+    private Optional<TriggerSource> end(double x, double y) {
+        return editor.gizmoAt(x, y).map(g -> TriggerSource.gizmo(g.name()))
+                .or(() -> editor.isWall(x, y) ? Optional.of(TriggerSource.OUTER_WALLS) : Optional.empty());
     }
 
     @Override
     public void press(double x, double y) {
-        Optional<String> end = target(x, y);
+        Optional<TriggerSource> end = end(x, y);
         if (end.isEmpty()) {
             editor.say("Click a gizmo, or outside the board for the outer walls");
             return;
         }
-        String name = end.get();
         if (!(editor.step() instanceof PendingStep.ConnectingFrom from)) {
-            editor.selectQuietly(name);
-            editor.setStep(new PendingStep.ConnectingFrom(name));
-            editor.say(editor.tool().label() + ": source " + name + "; now click the gizmo it "
+            editor.selectQuietly(end.get().name());
+            editor.setStep(new PendingStep.ConnectingFrom(end.get()));
+            editor.say(editor.tool().label() + ": source " + end.get().name() + "; now click the gizmo it "
                     + (connect ? "should trigger" : "triggers"));
             return;
         }
-        if (name.equals(Board.OUTER_WALLS)) {
+        if (!(end.get() instanceof TriggerSource.OfGizmo target)) {
             editor.say("The outer walls can only be a trigger source: click a gizmo");
             return;
         }
+        String name = target.gizmo();
         editor.setStep(PendingStep.NONE);
         if (connect) {
             editor.edit("Connected " + from.source() + " -> " + name, b -> b.connect(from.source(), name));

@@ -9,6 +9,7 @@ import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.Rgb;
+import gizmoball.model.TriggerSource;
 import java.awt.event.KeyEvent;
 import java.util.ArrayList;
 import java.util.Comparator;
@@ -115,12 +116,12 @@ public final class Editor {
         return step;
     }
 
-    /** Name of the selected gizmo or ball, or {@link Board#OUTER_WALLS}; empty if nothing (still) exists. */
+    /** Name of the selected gizmo or ball, or the outer walls' name; empty if nothing (still) exists. */
     public Optional<String> selected() {
         if (selected == null) {
             return Optional.empty();
         }
-        boolean exists = selected.equals(Board.OUTER_WALLS)
+        boolean exists = TriggerSource.named(selected) instanceof TriggerSource.OuterWalls
                 || board.gizmo(selected).isPresent() || board.ball(selected).isPresent();
         return exists ? Optional.of(selected) : Optional.empty();
     }
@@ -138,7 +139,7 @@ public final class Editor {
     }
 
     /** The source chosen by the first click of Connect or Disconnect, waiting for the target. */
-    public Optional<String> connectSource() {
+    public Optional<TriggerSource> connectSource() {
         return step instanceof PendingStep.ConnectingFrom c ? Optional.of(c.source()) : Optional.empty();
     }
 
@@ -222,7 +223,7 @@ public final class Editor {
     }
 
     public boolean deleteSelected() {
-        Optional<String> name = selected().filter(n -> !n.equals(Board.OUTER_WALLS));
+        Optional<String> name = selected().filter(n -> !(TriggerSource.named(n) instanceof TriggerSource.OuterWalls));
         if (name.isEmpty()) {
             say("Nothing selected to delete");
             return false;
@@ -308,7 +309,7 @@ public final class Editor {
     }
 
     /** Removes one connection (from the properties panel's list). */
-    public boolean disconnect(String source, String target) {
+    public boolean disconnect(TriggerSource source, String target) {
         return edit("Disconnected " + source + " -> " + target, b -> b.disconnect(source, target));
     }
 

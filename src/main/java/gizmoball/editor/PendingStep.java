@@ -2,6 +2,7 @@ package gizmoball.editor;
 
 import gizmoball.model.Ball;
 import gizmoball.model.Gizmo;
+import gizmoball.model.TriggerSource;
 
 /**
  * The half-done step of a tool: what the next pointer or key event completes. Exactly one is pending at a time
@@ -26,7 +27,7 @@ public sealed interface PendingStep {
     record MovingBall(Ball ball, double pressX, double pressY) implements PendingStep { }
 
     /** Connect or Disconnect: the source (a gizmo or the outer walls) is chosen, the target is next. */
-    record ConnectingFrom(String source) implements PendingStep { }
+    record ConnectingFrom(TriggerSource source) implements PendingStep { }
 
     /** Key Connect or Key Disconnect: the gizmo is chosen, the key is next. */
     record AwaitingKey(String gizmo) implements PendingStep { }

@@ -1,8 +1,8 @@
 package gizmoball.editor;
 
 import gizmoball.model.Ball;
-import gizmoball.model.Board;
 import gizmoball.model.Gizmo;
+import gizmoball.model.TriggerSource;
 import java.util.Optional;
 
 /** Select / Move: a click selects a gizmo, a ball or the outer walls; a drag moves the gizmo or ball. */
@@ -30,7 +30,7 @@ final class SelectTool implements ToolHandler {
             editor.selectQuietly(g.name());
             editor.setStep(new PendingStep.MovingGizmo(g, Editor.cell(x) - g.x(), Editor.cell(y) - g.y()));
         } else {
-            editor.select(editor.isWall(x, y) ? Board.OUTER_WALLS : null);
+            editor.select(editor.isWall(x, y) ? TriggerSource.OUTER_WALLS.name() : null);
         }
     }
 

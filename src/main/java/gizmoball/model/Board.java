@@ -32,7 +32,6 @@ public final class Board {
     public static final double DEFAULT_MU2 = 0.025;
     public static final double DEFAULT_TICK = 1.0 / 60;
     public static final double ABSORBER_LAUNCH_SPEED = 50;
-    public static final String OUTER_WALLS = "OuterWalls";
 
     private final Map<String, GizmoBase> gizmos = new LinkedHashMap<>();
     private final Map<String, Ball> balls = new LinkedHashMap<>();
@@ -233,7 +232,7 @@ public final class Board {
         if (gizmo != null) {
             index.remove(gizmo);
             gizmos.remove(name);
-            connections.removeIf(c -> c.source().equals(name) || c.target().equals(name));
+            connections.removeIf(c -> c.source().equals(TriggerSource.gizmo(name)) || c.target().equals(name));
             keyBindings.removeIf(k -> k.gizmo().equals(name));
             if (gizmo instanceof Absorber absorber) {
                 absorber.held().forEach(balls::remove);
@@ -306,8 +305,8 @@ public final class Board {
         edited();
     }
 
-    /** Whenever source (a gizmo or OUTER_WALLS) is hit, target performs its action. Self-connections allowed. */
-    public void connect(String source, String target) {
+    /** Whenever source (a gizmo or the outer walls) is hit, target performs its action. Self-connections allowed. */
+    public void connect(TriggerSource source, String target) {
         requireSource(source);
         requireGizmo(target);
         Connection connection = new Connection(source, target);
@@ -318,7 +317,7 @@ public final class Board {
         edited();
     }
 
-    public void disconnect(String source, String target) {
+    public void disconnect(TriggerSource source, String target) {
         if (!connections.remove(new Connection(source, target))) {
             throw new BoardEditException("there is no connection " + source + " -> " + target);
         }
@@ -502,8 +501,8 @@ public final class Board {
         if (name == null || name.isEmpty() || name.chars().anyMatch(Character::isWhitespace)) {
             throw new BoardEditException("name '" + name + "' must be non-empty and contain no whitespace");
         }
-        if (name.equals(OUTER_WALLS)) {
-            throw new BoardEditException("name " + OUTER_WALLS + " is reserved for the outer walls");
+        if (name.equals(TriggerSource.OuterWalls.NAME)) {
+            throw new BoardEditException("name " + name + " is reserved for the outer walls");
         }
         if (gizmos.containsKey(name) || balls.containsKey(name)) {
             throw new BoardEditException("name " + name + " is already used");
@@ -519,9 +518,12 @@ public final class Board {
         return gizmo;
     }
 
-    private void requireSource(String name) {
-        if (!OUTER_WALLS.equals(name)) {
-            requireGizmo(name);
+    private void requireSource(TriggerSource source) {
+        if (source == null) {
+            throw new BoardEditException("a connection needs a source: a gizmo or the outer walls");
+        }
+        if (source instanceof TriggerSource.OfGizmo gizmo) {
+            requireGizmo(gizmo.gizmo());
         }
     }
 

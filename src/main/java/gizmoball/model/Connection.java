@@ -1,5 +1,5 @@
 package gizmoball.model;
 
-/** Whenever {@code source} is hit (a gizmo or {@link Board#OUTER_WALLS}), {@code target} performs its action. */
-public record Connection(String source, String target) {
+/** Whenever {@code source} (a gizmo or the outer walls) is hit, the gizmo {@code target} performs its action. */
+public record Connection(TriggerSource source, String target) {
 }

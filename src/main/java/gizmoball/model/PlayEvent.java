@@ -6,11 +6,11 @@ import physics.Vect;
 public sealed interface PlayEvent {
 
     /**
-     * A ball hit a gizmo, the outer walls ({@code kind} null, {@code source} {@link Board#OUTER_WALLS}) or another
-     * ball ({@code kind} null, {@code source} null), closing at {@code speed} L/s along the contact normal.
-     * {@code ball} is the ball that hit, {@code at} its centre at the moment of the hit (the aim preview marks it).
+     * A ball hit {@code struck}: a gizmo (of {@code kind}), the outer walls or another ball ({@code kind} null for
+     * both), closing at {@code speed} L/s along the contact normal. {@code ball} is the ball that hit, {@code at} its
+     * centre at the moment of the hit (the aim preview marks it).
      */
-    record Hit(String source, GizmoKind kind, double speed, String ball, Vect at) implements PlayEvent {
+    record Hit(Struck struck, GizmoKind kind, double speed, String ball, Vect at) implements PlayEvent {
     }
 
     /** An absorber captured {@code ball}, whose centre was at {@code at} when it touched the absorber. */

@@ -127,10 +127,10 @@ final class TickRun {
             stage2BallMotion(collision.time());
             mark = lap(Stage.BALL_MOTION, mark);
             remaining -= collision.time();
-            String hit = stage4CollisionResolution(collision);
+            Struck hit = stage4CollisionResolution(collision);
             mark = lap(Stage.COLLISION_RESOLUTION, mark);
-            if (hit != null) {
-                stage5Triggering(hit);
+            if (hit instanceof TriggerSource source) {
+                stage5Triggering(source);
                 mark = lap(Stage.TRIGGERING, mark);
             }
             if (board.loopMode() == LoopMode.SEED && finishes(collision)) {
@@ -217,10 +217,9 @@ final class TickRun {
 
     /**
      * Stage 4: the ball and what it hits touch now; reflect with the matching physics-lib method, come to rest on
-     * it, or be captured. Returns the name of the trigger source that was hit (a gizmo or the outer walls), null
-     * for a ball.
+     * it, or be captured. Returns what was hit: a gizmo, the outer walls or a ball.
      */
-    private String stage4CollisionResolution(Collision collision) {
+    private Struck stage4CollisionResolution(Collision collision) {
         Ball ball = collision.ball();
         Contact contact = collision.contact();
         restingContact = false;
@@ -231,11 +230,11 @@ final class TickRun {
                 metSinceStrike.add(other.other());
             }
         }
-        String hit;
+        Struck hit;
         if (contact instanceof Contact.OuterWall wall) {
             hitStill(ball, wall, null, normalFromSegment(ball, wall.segment()),
                     coeff -> Geometry.reflectWall(wall.segment(), ball.velocity(), coeff));
-            hit = Board.OUTER_WALLS;
+            hit = TriggerSource.OUTER_WALLS;
         } else if (contact instanceof Contact.Face face) {
             hit = hitGizmo(ball, face, face.gizmo(), normalFromSegment(ball, face.segment()),
                     coeff -> Geometry.reflectWall(face.segment(), ball.velocity(), coeff));
@@ -265,7 +264,8 @@ final class TickRun {
         return ball.position().minus(Geometry.perpendicularPointWholeLine(segment, ball.position())).unitSize();
     }
 
-    private String hitGizmo(Ball ball, Contact contact, GizmoBase gizmo, Vect normal, DoubleFunction<Vect> reflect) {
+    private TriggerSource hitGizmo(Ball ball, Contact contact, GizmoBase gizmo, Vect normal,
+                                   DoubleFunction<Vect> reflect) {
         gizmo.markTriggered(now());
         if (gizmo instanceof Absorber absorber) {
             board.recordEvent(new PlayEvent.Captured(absorber.name(), ball.name(), ball.position()));
@@ -275,7 +275,7 @@ final class TickRun {
         } else {
             hitStill(ball, contact, gizmo, normal, reflect);
         }
-        return gizmo.name();
+        return TriggerSource.gizmo(gizmo.name());
     }
 
     /**
@@ -284,8 +284,9 @@ final class TickRun {
      */
     private void hitStill(Ball ball, Contact contact, GizmoBase gizmo, Vect normal, DoubleFunction<Vect> reflect) {
         double approach = -ball.velocity().dot(normal);
-        board.recordEvent(new PlayEvent.Hit(gizmo == null ? Board.OUTER_WALLS : gizmo.name(),
-                gizmo == null ? null : gizmo.kind(), approach, ball.name(), ball.position()));
+        board.recordEvent(new PlayEvent.Hit(gizmo == null ? TriggerSource.OUTER_WALLS
+                : TriggerSource.gizmo(gizmo.name()), gizmo == null ? null : gizmo.kind(), approach, ball.name(),
+                ball.position()));
         ContactRef surface = Contacts.refOf(contact);
         if (approach <= restingSpeed(ball, normal, surface)) {
             comeToRest(ball, surface);
@@ -315,7 +316,7 @@ final class TickRun {
         return Math.max(Tolerances.ROUNDING_SPEED, REST_TICKS_OF_GRAVITY * pressing * dt);
     }
 
-    private String hitSwingingFlipper(Ball ball, Contact.SwingingPart part) {
+    private TriggerSource hitSwingingFlipper(Ball ball, Contact.SwingingPart part) {
         Flipper flipper = part.flipper();
         flipper.markTriggered(now());
         energy.lost(ball);
@@ -331,12 +332,12 @@ final class TickRun {
         ball.setVelocity(strike >= STRIKES_OF_A_PUSH && !cameBack
                 ? pushed(before, reflectOffSwinging(part, shape, pivot, omega, circle, Vect.ZERO))
                 : reflectOffSwinging(part, shape, pivot, omega, circle, before));
-        board.recordEvent(new PlayEvent.Hit(flipper.name(), flipper.kind(), ball.velocity().minus(before).length() / 2,
-                ball.name(), ball.position()));
+        board.recordEvent(new PlayEvent.Hit(TriggerSource.gizmo(flipper.name()), flipper.kind(),
+                ball.velocity().minus(before).length() / 2, ball.name(), ball.position()));
         if (strike >= STRIKES_OF_A_PINCH && cameBack) {
             pinch(ball, flipper);
         }
-        return flipper.name();
+        return TriggerSource.gizmo(flipper.name());
     }
 
     private static Vect reflectOffSwinging(Contact.SwingingPart part, Shape shape, Vect pivot, double omega,
@@ -382,10 +383,11 @@ final class TickRun {
      * closing on it and keeps it as a contact, as it would on a floor, and a floor feels nothing. So piles build
      * from the bottom and settle. Otherwise the two bounce elastically, and a sleeping one wakes.
      */
-    private String hitBall(Ball ball, Ball other) {
+    private Struck hitBall(Ball ball, Ball other) {
         Vect normal = ball.position().minus(other.position()).unitSize();
         double approach = -ball.velocity().minus(detector.motion(other)).dot(normal);
-        board.recordEvent(new PlayEvent.Hit(null, null, approach, ball.name(), ball.position()));
+        board.recordEvent(new PlayEvent.Hit(new Struck.OtherBall(other.name()), null, approach, ball.name(),
+                ball.position()));
         boolean slow = approach <= Math.max(Tolerances.ROUNDING_SPEED, REST_TICKS_OF_GRAVITY * Math.abs(gravity) * dt);
         if (slow && (Contacts.supports(other, ball) || Contacts.supports(ball, other))) {
             restAgainst(ball, other);
@@ -398,7 +400,7 @@ final class TickRun {
                 energy.lost(other);
             }
             restingContact = true;
-            return null;
+            return new Struck.OtherBall(other.name());
         }
         other.setStillTicks(0);
         if (other.isAsleep()) {
@@ -413,7 +415,7 @@ final class TickRun {
         energy.bounced(ball, normal, true);
         energy.bounced(other, normal.neg(), true);
         energy.met(ball, other);
-        return null;
+        return new Struck.OtherBall(other.name());
     }
 
     /** The ball, awake, stops closing on a supporting ball and keeps it as a contact. */
@@ -424,7 +426,7 @@ final class TickRun {
     }
 
     /** Stage 5: the gizmo or the walls that were hit trigger every gizmo connected to them. */
-    private void stage5Triggering(String source) {
+    private void stage5Triggering(TriggerSource source) {
         double now = now();
         for (Connection connection : board.connections()) {
             if (connection.source().equals(source)) {

@@ -4,6 +4,8 @@ import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.Connection;
 import gizmoball.model.PlayEvent;
+import gizmoball.model.Struck;
+import gizmoball.model.TriggerSource;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
@@ -96,23 +98,23 @@ public final class Predictor {
          * Returns whether it was a capture.
          */
         private boolean hitBy(PlayEvent event) {
-            String source;
+            Struck struck;
             Vect at;
             if (event instanceof PlayEvent.Hit hit && ball.equals(hit.ball())) {
-                source = hit.source();
+                struck = hit.struck();
                 at = hit.at();
             } else if (event instanceof PlayEvent.Captured captured && ball.equals(captured.ball())) {
-                source = captured.absorber();
+                struck = TriggerSource.gizmo(captured.absorber());
                 at = captured.at();
             } else {
                 return false;
             }
             collisions.add(at);
-            if (trigger.isEmpty() && source != null) {
+            if (trigger.isEmpty() && struck instanceof TriggerSource source) {
                 List<String> targets = copy.connections().stream().filter(c -> c.source().equals(source))
                         .map(Connection::target).toList();
                 if (!targets.isEmpty()) {
-                    trigger = Optional.of(new Prediction.Trigger(source, at, targets));
+                    trigger = Optional.of(new Prediction.Trigger(source.name(), at, targets));
                 }
             }
             return event instanceof PlayEvent.Captured;

@@ -1,8 +1,8 @@
 package gizmoball.sound;
 
-import gizmoball.model.Board;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.PlayEvent;
+import gizmoball.model.TriggerSource;
 import java.util.Optional;
 
 /**
@@ -29,7 +29,7 @@ public final class Sounds {
             if (hit.kind() != null) {
                 return gizmoHit(hit.kind(), hit.speed());
             }
-            return Board.OUTER_WALLS.equals(hit.source()) ? wallHit(hit.speed()) : ballHit(hit.speed());
+            return hit.struck() instanceof TriggerSource.OuterWalls ? wallHit(hit.speed()) : ballHit(hit.speed());
         }
         if (event instanceof PlayEvent.Swing) {
             return Optional.of(flipperSwing());

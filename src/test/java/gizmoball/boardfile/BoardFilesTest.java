@@ -6,6 +6,7 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import gizmoball.model.Board;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.TriggerSource;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -26,8 +27,8 @@ class BoardFilesTest {
         board.addGizmo(GizmoKind.RIGHT_FLIPPER, "RF", 10, 10);
         board.addAbsorber("A", 0, 19, 20, 20);
         board.addBall("B", 5.5, 2.25, -1.5, 0.125);
-        board.connect("T", "RF");
-        board.connect(Board.OUTER_WALLS, "A");
+        board.connect(TriggerSource.gizmo("T"), "RF");
+        board.connect(TriggerSource.OUTER_WALLS, "A");
         board.bindKey(32, KeyEdge.DOWN, "A");
         board.setGravity(12.5);
         board.setFriction(0.5, 0.0);

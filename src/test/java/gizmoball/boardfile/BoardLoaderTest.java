@@ -9,6 +9,7 @@ import gizmoball.model.Connection;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.TriggerSource;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -40,7 +41,8 @@ class BoardLoaderTest {
             assertThat(ball.position().x()).isEqualTo(10.5);
             assertThat(ball.velocity().y()).isEqualTo(-2.0);
         });
-        assertThat(board.connections()).containsExactly(new Connection("A", "A"), new Connection("9lives", "LF"));
+        assertThat(board.connections()).containsExactly(new Connection(TriggerSource.gizmo("A"), "A"),
+                new Connection(TriggerSource.gizmo("9lives"), "LF"));
         assertThat(board.keyBindings()).containsExactly(new KeyBinding(76, KeyEdge.DOWN, "LF"),
                 new KeyBinding(32, KeyEdge.UP, "A"));
         assertThat(board.gravity()).isEqualTo(Board.DEFAULT_GRAVITY);

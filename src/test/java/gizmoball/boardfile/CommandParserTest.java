@@ -6,6 +6,7 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.Rgb;
+import gizmoball.model.TriggerSource;
 import java.util.List;
 import java.util.stream.Stream;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -26,8 +27,8 @@ class CommandParserTest {
                 Arguments.of("Rotate S1", new Command.Rotate("S1")),
                 Arguments.of("delete S1", new Command.Delete("S1")),
                 Arguments.of("Move B 3.5 4", new Command.Move("B", 3.5, 4)),
-                Arguments.of("Connect A A", new Command.Connect("A", "A")),
-                Arguments.of("Connect OuterWalls LF", new Command.Connect("OuterWalls", "LF")),
+                Arguments.of("Connect A A", new Command.Connect(TriggerSource.gizmo("A"), "A")),
+                Arguments.of("Connect OuterWalls LF", new Command.Connect(TriggerSource.OUTER_WALLS, "LF")),
                 Arguments.of("KeyConnect key 32 down A", new Command.KeyConnect(32, KeyEdge.DOWN, "A")),
                 Arguments.of("keyconnect KEY 76.0 UP L", new Command.KeyConnect(76, KeyEdge.UP, "L")),
                 Arguments.of("KeyConnect key 70 change F", new Command.KeyConnect(70, KeyEdge.CHANGE, "F")),

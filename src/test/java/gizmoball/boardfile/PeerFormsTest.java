@@ -14,6 +14,7 @@ import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.Rgb;
+import gizmoball.model.TriggerSource;
 import java.awt.event.KeyEvent;
 import java.io.IOException;
 import java.io.InputStream;
@@ -55,7 +56,7 @@ class PeerFormsTest {
         LoadResult result = BoardFiles.loadSkippingBadLines("f", fixture("forward-references.txt"));
         Board board = result.board();
 
-        assertThat(board.connections()).containsExactly(new Connection("C1", "LF"));
+        assertThat(board.connections()).containsExactly(new Connection(TriggerSource.gizmo("C1"), "LF"));
         assertThat(board.keyBindings()).containsExactly(new KeyBinding(90, KeyEdge.DOWN, "LF"));
         assertThat(board.gizmo("T").orElseThrow().rotation()).isEqualTo(1);
         assertThat(board.ball("B").orElseThrow().position()).as("Move after Move keeps its order")

@@ -5,6 +5,7 @@ import gizmoball.model.BoardEditException;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.Rgb;
+import gizmoball.model.TriggerSource;
 import java.util.List;
 import java.util.Optional;
 import java.util.Random;
@@ -48,7 +49,7 @@ final class RandomBoards {
         if (!names.isEmpty()) {
             int connections = random.nextInt(10);
             for (int i = 0; i < connections; i++) {
-                String source = random.nextInt(5) == 0 ? Board.OUTER_WALLS : pick(names);
+                TriggerSource source = random.nextInt(5) == 0 ? TriggerSource.OUTER_WALLS : TriggerSource.gizmo(pick(names));
                 attempt(() -> board.connect(source, pick(names)));
             }
             int bindings = random.nextInt(8);

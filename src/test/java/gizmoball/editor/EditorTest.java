@@ -10,6 +10,7 @@ import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.Rgb;
+import gizmoball.model.TriggerSource;
 import org.junit.jupiter.api.BeforeEach;
 import physics.Vect;
 import org.junit.jupiter.api.Test;
@@ -190,7 +191,7 @@ class EditorTest {
     void deleteRemovesTheGizmoWithItsConnectionsAndBindings() {
         click(Tool.SQUARE, 1, 1);
         click(Tool.LEFT_FLIPPER, 4, 4);
-        board.connect("S1", "LF1");
+        board.connect(TriggerSource.gizmo("S1"), "LF1");
         board.bindKey(KeyEvent.VK_SPACE, KeyEdge.DOWN, "LF1");
 
         click(Tool.DELETE, 5, 5);
@@ -227,10 +228,10 @@ class EditorTest {
         click(Tool.LEFT_FLIPPER, 8, 8);
         editor.setTool(Tool.CONNECT);
         clickCell(2, 2);
-        assertThat(editor.connectSource()).contains("C1");
+        assertThat(editor.connectSource()).contains(TriggerSource.gizmo("C1"));
         clickCell(9, 9);
 
-        assertThat(board.connections()).containsExactly(new Connection("C1", "LF1"));
+        assertThat(board.connections()).containsExactly(new Connection(TriggerSource.gizmo("C1"), "LF1"));
         assertThat(editor.connectSource()).isEmpty();
         assertThat(editor.selected()).contains("C1");
     }
@@ -243,7 +244,7 @@ class EditorTest {
         editor.press(x, y);
         clickCell(10, 18);
 
-        assertThat(board.connections()).containsExactly(new Connection(Board.OUTER_WALLS, "A1"));
+        assertThat(board.connections()).containsExactly(new Connection(TriggerSource.OUTER_WALLS, "A1"));
     }
 
     @Test
@@ -253,7 +254,7 @@ class EditorTest {
         editor.setTool(Tool.CONNECT);
         editor.press(0.1, 5.5);
         clickCell(3, 5);
-        assertThat(board.connections()).containsExactly(new Connection("S1", "S2"));
+        assertThat(board.connections()).containsExactly(new Connection(TriggerSource.gizmo("S1"), "S2"));
     }
 
     @Test
@@ -265,7 +266,7 @@ class EditorTest {
 
         assertThat(board.connections()).isEmpty();
         assertThat(lastMessage()).contains("outer walls can only be a trigger source");
-        assertThat(editor.connectSource()).contains("S1");
+        assertThat(editor.connectSource()).contains(TriggerSource.gizmo("S1"));
     }
 
     @Test
@@ -278,7 +279,7 @@ class EditorTest {
         clickCell(3, 3);
         clickCell(5, 3);
 
-        assertThat(board.connections()).containsExactly(new Connection("S1", "S2"));
+        assertThat(board.connections()).containsExactly(new Connection(TriggerSource.gizmo("S1"), "S2"));
         assertThat(messages).anyMatch(m -> m.startsWith("Connected"));
         assertThat(lastMessage()).doesNotStartWith("Connected");
         assertThat(edits).isEqualTo(3);
@@ -288,13 +289,13 @@ class EditorTest {
     void disconnectRemovesTheClickedConnection() {
         click(Tool.SQUARE, 3, 3);
         click(Tool.SQUARE, 5, 3);
-        board.connect("S1", "S2");
-        board.connect("S2", "S1");
+        board.connect(TriggerSource.gizmo("S1"), "S2");
+        board.connect(TriggerSource.gizmo("S2"), "S1");
         editor.setTool(Tool.DISCONNECT);
         clickCell(3, 3);
         clickCell(5, 3);
 
-        assertThat(board.connections()).containsExactly(new Connection("S2", "S1"));
+        assertThat(board.connections()).containsExactly(new Connection(TriggerSource.gizmo("S2"), "S1"));
     }
 
     @Test
@@ -518,7 +519,7 @@ class EditorTest {
     void clearBoardEmptiesItAndUndoBringsItBack() {
         click(Tool.SQUARE, 1, 1);
         click(Tool.LEFT_FLIPPER, 4, 4);
-        board.connect("S1", "LF1");
+        board.connect(TriggerSource.gizmo("S1"), "LF1");
         editor.setConstants(10, 0, 0);
         BoardContents full = BoardContents.of(board);
 
@@ -560,7 +561,7 @@ class EditorTest {
         editor.setTool(Tool.SELECT);
         editor.press(-1, 10);
         editor.release(-1, 10);
-        assertThat(editor.selected()).contains(Board.OUTER_WALLS);
+        assertThat(editor.selected()).contains(TriggerSource.OuterWalls.NAME);
         assertThat(editor.deleteSelected()).isFalse();
     }
 
@@ -580,7 +581,7 @@ class EditorTest {
 
         editor.setTool(Tool.CONNECT);
         editor.hover(-1, 3);
-        assertThat(editor.target()).contains(Board.OUTER_WALLS);
+        assertThat(editor.target()).contains(TriggerSource.OuterWalls.NAME);
 
         editor.setTool(Tool.SQUARE);
         editor.hover(4.5, 4.5);

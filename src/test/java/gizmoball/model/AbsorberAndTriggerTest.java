@@ -71,7 +71,7 @@ class AbsorberAndTriggerTest {
     @Test
     void aSelfConnectedAbsorberFiresAsSoonAsItCaptures() {
         Board board = boardWithAbsorber();
-        board.connect("A", "A");
+        board.connect(TriggerSource.gizmo("A"), "A");
         board.addBall("B", 6, 15, 0, 0);
         double lowest = 0;
         boolean firedUp = false;
@@ -101,7 +101,7 @@ class AbsorberAndTriggerTest {
         Board board = new Board();
         board.addGizmo(GizmoKind.SQUARE, "S", 10, 10);
         board.addGizmo(GizmoKind.LEFT_FLIPPER, "F", 2, 2);
-        board.connect("S", "F");
+        board.connect(TriggerSource.gizmo("S"), "F");
         board.addBall("B", 10.5, 8, 0, 0);
         Flipper flipper = (Flipper) board.gizmo("F").orElseThrow();
         for (int i = 0; i < 60 && !flipper.isActive(); i++) {
@@ -116,7 +116,7 @@ class AbsorberAndTriggerTest {
         Board board = new Board();
         board.setGravity(0);
         board.addGizmo(GizmoKind.RIGHT_FLIPPER, "F", 2, 2);
-        board.connect(Board.OUTER_WALLS, "F");
+        board.connect(TriggerSource.OUTER_WALLS, "F");
         board.addBall("B", 19.5, 10, 30, 0);   // reaches the wall at x = 19.75 after 1/120 s
         board.tick(DT);
         assertThat(((Flipper) board.gizmo("F").orElseThrow()).isActive()).isTrue();

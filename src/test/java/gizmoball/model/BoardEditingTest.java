@@ -28,8 +28,8 @@ class BoardEditingTest {
         board.addAbsorber("A", 0, 18, 20, 20);
         board.addBall("B1", 1.5, 1.5, 3, -4);
         board.addBall("B2", 19.5, 19.5, 0, 0);
-        board.connect("S1", "LF");
-        board.connect(Board.OUTER_WALLS, "RF");
+        board.connect(TriggerSource.gizmo("S1"), "LF");
+        board.connect(TriggerSource.OUTER_WALLS, "RF");
         board.bindKey(32, KeyEdge.DOWN, "LF");
         return board;
     }
@@ -132,7 +132,7 @@ class BoardEditingTest {
         board.delete("LF");
         assertThat(board.gizmo("LF")).isEmpty();
         assertThat(board.gizmoAt(10, 10)).isEmpty();
-        assertThat(board.connections()).containsExactly(new Connection(Board.OUTER_WALLS, "RF"));
+        assertThat(board.connections()).containsExactly(new Connection(TriggerSource.OUTER_WALLS, "RF"));
         assertThat(board.keyBindings()).isEmpty();
         board.delete("B1");
         assertThat(board.ball("B1")).isEmpty();
@@ -182,9 +182,10 @@ class BoardEditingTest {
     @Test
     void connectionsAndKeyBindingsCanBeRemoved() {
         Board board = sample();
-        board.connect("A", "A");
-        board.disconnect("S1", "LF");
-        assertThat(board.connections()).containsExactly(new Connection(Board.OUTER_WALLS, "RF"), new Connection("A", "A"));
+        board.connect(TriggerSource.gizmo("A"), "A");
+        board.disconnect(TriggerSource.gizmo("S1"), "LF");
+        assertThat(board.connections()).containsExactly(new Connection(TriggerSource.OUTER_WALLS, "RF"),
+                new Connection(TriggerSource.gizmo("A"), "A"));
         board.bindKey(32, KeyEdge.UP, "LF");
         board.unbindKey(32, KeyEdge.DOWN, "LF");
         assertThat(board.keyBindings()).containsExactly(new KeyBinding(32, KeyEdge.UP, "LF"));
@@ -267,7 +268,8 @@ class BoardEditingTest {
                 refusal("name reused by a gizmo", b -> b.addGizmo(GizmoKind.SQUARE, "S1", 0, 0), "name S1 is already used"),
                 refusal("name reused by a ball", b -> b.addGizmo(GizmoKind.SQUARE, "B1", 0, 0), "name B1 is already used"),
                 refusal("ball named like a gizmo", b -> b.addBall("C1", 10, 10, 0, 0), "name C1 is already used"),
-                refusal("reserved name", b -> b.addGizmo(GizmoKind.SQUARE, Board.OUTER_WALLS, 0, 0), "reserved"),
+                refusal("reserved name", b -> b.addGizmo(GizmoKind.SQUARE, TriggerSource.OuterWalls.NAME, 0, 0),
+                        "reserved"),
                 refusal("empty name", b -> b.addGizmo(GizmoKind.SQUARE, "", 0, 0), "non-empty"),
                 refusal("name with a space", b -> b.addGizmo(GizmoKind.SQUARE, "a b", 0, 0), "whitespace"),
                 refusal("null name", b -> b.addBall(null, 10, 10, 0, 0), "non-empty"),
@@ -299,12 +301,13 @@ class BoardEditingTest {
                 refusal("move ball unknown", b -> b.moveBall("Nope", 1, 1), "no ball named Nope"),
                 refusal("move ball into a gizmo", b -> b.moveBall("B1", 2.5, 3.5), "would overlap gizmo S1"),
                 refusal("move ball outside", b -> b.moveBall("B1", 25, 3.5), "outside the board"),
-                refusal("connect unknown source", b -> b.connect("Nope", "S1"), "no gizmo named Nope"),
-                refusal("connect unknown target", b -> b.connect("S1", "Nope"), "no gizmo named Nope"),
-                refusal("connect to a ball", b -> b.connect("S1", "B1"), "B1 is a ball"),
-                refusal("connect to the walls", b -> b.connect("S1", Board.OUTER_WALLS), "no gizmo named OuterWalls"),
-                refusal("connect twice", b -> b.connect("S1", "LF"), "connection S1 -> LF already exists"),
-                refusal("disconnect missing", b -> b.disconnect("S1", "C1"), "no connection S1 -> C1"),
+                refusal("connect unknown source", b -> b.connect(TriggerSource.gizmo("Nope"), "S1"), "no gizmo named Nope"),
+                refusal("connect unknown target", b -> b.connect(TriggerSource.gizmo("S1"), "Nope"), "no gizmo named Nope"),
+                refusal("connect to a ball", b -> b.connect(TriggerSource.gizmo("S1"), "B1"), "B1 is a ball"),
+                refusal("connect to the walls", b -> b.connect(TriggerSource.gizmo("S1"), TriggerSource.OuterWalls.NAME),
+                        "no gizmo named OuterWalls"),
+                refusal("connect twice", b -> b.connect(TriggerSource.gizmo("S1"), "LF"), "connection S1 -> LF already exists"),
+                refusal("disconnect missing", b -> b.disconnect(TriggerSource.gizmo("S1"), "C1"), "no connection S1 -> C1"),
                 refusal("bind negative key", b -> b.bindKey(-1, KeyEdge.DOWN, "LF"), "key code"),
                 refusal("bind unknown", b -> b.bindKey(32, KeyEdge.UP, "Nope"), "no gizmo named Nope"),
                 refusal("bind twice", b -> b.bindKey(32, KeyEdge.DOWN, "LF"), "key 32 down is already bound to LF"),

@@ -26,7 +26,7 @@ class PlayEventTest {
             board.tick(Board.DEFAULT_TICK);
         }
         PlayEvent.Hit hit = (PlayEvent.Hit) events.get(0);
-        assertThat(hit.source()).isEqualTo("S");
+        assertThat(hit.struck()).isEqualTo(TriggerSource.gizmo("S"));
         assertThat(hit.ball()).isEqualTo("B");
         // Falling straight down x = 10.5 onto the top face y = 10: the centre one radius above it.
         assertThat(hit.at().x()).isCloseTo(10.5, within(1e-9));

@@ -39,7 +39,8 @@ class RandomBoardTest {
         }
         List<Gizmo> gizmos = board.gizmos();
         for (int i = 0; i < 10; i++) {
-            String source = random.nextInt(5) == 0 ? Board.OUTER_WALLS : gizmos.get(random.nextInt(gizmos.size())).name();
+            TriggerSource source = random.nextInt(5) == 0 ? TriggerSource.OUTER_WALLS
+                    : TriggerSource.gizmo(gizmos.get(random.nextInt(gizmos.size())).name());
             try {
                 board.connect(source, gizmos.get(random.nextInt(gizmos.size())).name());
             } catch (BoardEditException duplicate) {

@@ -10,6 +10,7 @@ import gizmoball.editor.Tool;
 import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.GizmoKind;
+import gizmoball.model.TriggerSource;
 import gizmoball.session.GameSession;
 import gizmoball.session.Mode;
 import java.nio.file.Path;
@@ -108,8 +109,8 @@ class PredictorTest {
         board.addGizmo(GizmoKind.TRIANGLE, "Ramp", 10, 12);
         board.addGizmo(GizmoKind.LEFT_FLIPPER, "LF", 2, 16);
         board.addGizmo(GizmoKind.CIRCLE, "C", 15, 15);
-        board.connect("Ramp", "LF");
-        board.connect("Ramp", "C");
+        board.connect(TriggerSource.gizmo("Ramp"), "LF");
+        board.connect(TriggerSource.gizmo("Ramp"), "C");
         board.addBall("B", 10.5, 7.5, 0, 0);   // just below the plain square, falling onto the ramp
         Prediction p = unhurried.predict(board, "B", 3, DT, Long.MAX_VALUE);
         assertThat(p.collisions()).isNotEmpty();
@@ -131,7 +132,7 @@ class PredictorTest {
     void thePathBreaksWhereAnAbsorberCapturesTheBallEvenIfItFiresItAtOnce() {
         Board board = new Board();
         board.addAbsorber("A", 0, 19, 20, 20);
-        board.connect("A", "A");
+        board.connect(TriggerSource.gizmo("A"), "A");
         board.addBall("B", 5.5, 17, 0, 0);
         Prediction p = unhurried.predict(board, "B", 1, DT, Long.MAX_VALUE);
         int broken = (int) p.path().stream().filter(pt -> !pt.free()).count();

@@ -8,6 +8,7 @@ import gizmoball.model.Board;
 import gizmoball.model.Connection;
 import gizmoball.model.Gizmo;
 import gizmoball.model.KeyBinding;
+import gizmoball.model.TriggerSource;
 import gizmoball.view.BoardOverlay;
 import gizmoball.view.BoardTransform;
 import physics.Vect;
@@ -65,9 +66,9 @@ public final class BuildOverlay implements BoardOverlay {
             g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
             controller.target().ifPresent(name -> outline(g, t, name, EditorColors.TARGET, false));
             controller.selected().ifPresent(name -> paintSelection(g, t, name));
-            controller.connectSource().ifPresent(name -> {
-                outline(g, t, name, EditorColors.CONNECTION, true);
-                controller.pointer().ifPresent(p -> rubberBand(g, t, name, p));
+            controller.connectSource().ifPresent(source -> {
+                outline(g, t, source.name(), EditorColors.CONNECTION, true);
+                controller.pointer().ifPresent(p -> rubberBand(g, t, source, p));
             });
             controller.awaitingKeyFor().flatMap(controller.board()::gizmo).ifPresent(gizmo -> {
                 Point2D above = t.toScreen(gizmo.x(), gizmo.y());
@@ -82,7 +83,7 @@ public final class BuildOverlay implements BoardOverlay {
     private void paintSelection(Graphics2D g, BoardTransform t, String name) {
         Board board = controller.board();
         for (Connection c : board.connections()) {
-            if (c.source().equals(name)) {
+            if (c.source().equals(TriggerSource.named(name))) {
                 connectionArrow(g, t, c, EditorColors.CONNECTION);
             } else if (c.target().equals(name)) {
                 connectionArrow(g, t, c, EditorColors.INCOMING);
@@ -103,7 +104,7 @@ public final class BuildOverlay implements BoardOverlay {
                 : new BasicStroke(LINE + 1));
         Optional<Gizmo> gizmo = board.gizmo(name);
         Optional<Ball> ball = board.ball(name);
-        if (name.equals(Board.OUTER_WALLS)) {
+        if (TriggerSource.named(name) instanceof TriggerSource.OuterWalls) {
             g.draw(screenRect(t, 0, 0, Board.SIZE, Board.SIZE, -2));
         } else if (gizmo.isPresent()) {
             Gizmo z = gizmo.get();
@@ -179,11 +180,8 @@ public final class BuildOverlay implements BoardOverlay {
     }
 
     /** Connect's first click is made: a dashed line from the source to the pointer, to where the target goes. */
-    private void rubberBand(Graphics2D g, BoardTransform t, String source, Vect pointer) {
-        Rectangle2D at = new Rectangle2D.Double(pointer.x(), pointer.y(), 0, 0);
-        Rectangle2D from = source.equals(Board.OUTER_WALLS)
-                ? wallPoint(at)
-                : controller.board().gizmo(source).map(BuildOverlay::box).orElse(null);
+    private void rubberBand(Graphics2D g, BoardTransform t, TriggerSource source, Vect pointer) {
+        Rectangle2D from = sourceBox(source, new Rectangle2D.Double(pointer.x(), pointer.y(), 0, 0));
         if (from == null) {
             return;
         }
@@ -202,14 +200,12 @@ public final class BuildOverlay implements BoardOverlay {
             return;
         }
         Rectangle2D targetBox = box(target.get());
-        Rectangle2D sourceBox = c.source().equals(Board.OUTER_WALLS)
-                ? wallPoint(targetBox)
-                : board.gizmo(c.source()).map(BuildOverlay::box).orElse(null);
+        Rectangle2D sourceBox = sourceBox(c.source(), targetBox);
         if (sourceBox == null) {
             return;
         }
         g.setStroke(new BasicStroke(LINE, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
-        if (c.source().equals(c.target())) {
+        if (c.source().equals(TriggerSource.gizmo(c.target()))) {
             selfLoop(g, t, targetBox, color);
             return;
         }
@@ -281,6 +277,13 @@ public final class BuildOverlay implements BoardOverlay {
 
     private static Rectangle2D box(Gizmo g) {
         return new Rectangle2D.Double(g.x(), g.y(), g.width(), g.height());
+    }
+
+    /** Where an arrow from the source toward {@code toward} starts: the gizmo's box, or a point on the walls. */
+    private Rectangle2D sourceBox(TriggerSource source, Rectangle2D toward) {
+        return source instanceof TriggerSource.OfGizmo gizmo
+                ? controller.board().gizmo(gizmo.gizmo()).map(BuildOverlay::box).orElse(null)
+                : wallPoint(toward);
     }
 
     /** The point of the outer walls nearest to the target, as an empty box for the arrow to start from. */

@@ -10,6 +10,7 @@ import gizmoball.model.Connection;
 import gizmoball.model.Gizmo;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.Rgb;
+import gizmoball.model.TriggerSource;
 import gizmoball.view.BoardPainter;
 
 import javax.swing.BorderFactory;
@@ -161,7 +162,7 @@ public final class PropertiesPanel extends JPanel {
         if (shownSelection != null) {
             String name = shownSelection;
             for (Connection c : board.connections()) {
-                if (c.source().equals(name) || c.target().equals(name)) {
+                if (c.source().equals(TriggerSource.named(name)) || c.target().equals(name)) {
                     links.addElement(new Link(c.source() + " \u2192 " + c.target(),
                             () -> controller.disconnect(c.source(), c.target())));
                 }
@@ -350,8 +351,8 @@ public final class PropertiesPanel extends JPanel {
             Ball b = ball.get();
             return named(b.name(), "ball" + (b.isCaptured() ? " (held by an absorber)" : ""));
         }
-        return controller.selected().filter(Board.OUTER_WALLS::equals).isPresent()
-                ? named(Board.OUTER_WALLS, "the walls around the board")
+        return controller.selected().filter(n -> TriggerSource.named(n) instanceof TriggerSource.OuterWalls).isPresent()
+                ? named(TriggerSource.OUTER_WALLS.name(), "the walls around the board")
                 : "Nothing selected";
     }
 

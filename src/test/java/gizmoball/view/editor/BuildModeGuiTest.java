@@ -12,6 +12,7 @@ import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.Rgb;
+import gizmoball.model.TriggerSource;
 import gizmoball.view.BoardPainter;
 import gizmoball.view.Gui;
 import org.junit.jupiter.api.AfterEach;
@@ -153,7 +154,7 @@ class BuildModeGuiTest {
         w.clickCell(4, 4);
         w.clickCell(9, 9);
 
-        assertThat(board.connections()).containsExactly(new Connection("C1", "LF1"));
+        assertThat(board.connections()).containsExactly(new Connection(TriggerSource.gizmo("C1"), "LF1"));
         JList<?> links = onEdt(() -> EditorGui.find(w.build.properties(), JList.class, "links"));
         assertThat(onEdt(() -> links.getModel().getSize())).isEqualTo(1);
         assertThat(onEdt(() -> links.getModel().getElementAt(0).toString())).isEqualTo("C1 \u2192 LF1");

@@ -12,6 +12,7 @@ import gizmoball.model.Gizmo;
 import gizmoball.model.Invariants;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.TriggerSource;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -60,10 +61,10 @@ class DefaultBoardFromScratchGuiTest {
                         b.position().y() + b.velocity().y() / 10);
                 editorName.put(b.name(), w.build.controller().selected().orElseThrow());
             }
-            editorName.put(Board.OUTER_WALLS, Board.OUTER_WALLS);
+            editorName.put(TriggerSource.OuterWalls.NAME, TriggerSource.OuterWalls.NAME);
             for (Connection c : target.connections()) {
                 w.clickTool(Tool.CONNECT);
-                clickOn(target, c.source());
+                clickOn(target, c.source().name());
                 clickOn(target, c.target());
             }
         });
@@ -124,7 +125,7 @@ class DefaultBoardFromScratchGuiTest {
 
     /** Clicks a gizmo of the target board where it stands, or just left of the board for the outer walls. */
     private void clickOn(Board target, String name) {
-        if (name.equals(Board.OUTER_WALLS)) {
+        if (name.equals(TriggerSource.OuterWalls.NAME)) {
             w.click(-0.5, Board.SIZE / 2.0);
         } else {
             Gizmo g = target.gizmo(name).orElseThrow();
@@ -152,8 +153,8 @@ class DefaultBoardFromScratchGuiTest {
                         g.width(), g.height(), g.rotation(), g.colour())).toList(),
                 d.balls().stream().map(b -> new BoardContents.BallState(name.get(b.name()), b.x(), b.y(), b.vx(),
                         b.vy(), b.captured())).toList(),
-                d.connections().stream().map(c -> new Connection(name.get(c.source()), name.get(c.target())))
-                        .toList(),
+                d.connections().stream().map(c -> new Connection(TriggerSource.named(name.get(c.source().name())),
+                        name.get(c.target()))).toList(),
                 d.keyBindings().stream().map(k -> new KeyBinding(k.keyCode(), k.edge(), name.get(k.gizmo()))).toList(),
                 d.gravity(), d.mu(), d.mu2());
     }

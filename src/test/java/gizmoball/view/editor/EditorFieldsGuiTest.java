@@ -9,6 +9,7 @@ import gizmoball.model.Board;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.TriggerSource;
 import gizmoball.view.Gui;
 import java.awt.Window;
 import java.awt.event.KeyEvent;
@@ -151,7 +152,7 @@ class EditorFieldsGuiTest {
 
         w.clickTool(Tool.SELECT);
         w.click(-0.5, 10);
-        assertThat(onEdt(() -> w.build.controller().selected())).contains(Board.OUTER_WALLS);
+        assertThat(onEdt(() -> w.build.controller().selected())).contains(TriggerSource.OuterWalls.NAME);
         assertThat(onEdt(() -> rotate.isEnabled() || delete.isEnabled())).as("the outer walls selected").isFalse();
         onEdt(() -> undo.doClick(0));
         assertThat(onEdt(() -> EditorGui.menuItemNamed(w.window.menus(), "edit.redo").getText()))
@@ -167,7 +168,7 @@ class EditorFieldsGuiTest {
         });
         javax.swing.JList<?> links = onEdt(() -> EditorGui.find(w.build.properties(), javax.swing.JList.class, "links"));
         java.util.List<java.awt.Rectangle> placed = new java.util.ArrayList<>();
-        for (String name : new String[] {null, "S1", "B1", Board.OUTER_WALLS}) {
+        for (String name : new String[] {null, "S1", "B1", TriggerSource.OuterWalls.NAME}) {
             onEdt(() -> w.build.controller().select(name));
             onEdt(() -> w.build.properties().validate());
             placed.add(onEdt(() -> javax.swing.SwingUtilities.convertRectangle(links.getParent(),
