@@ -54,6 +54,14 @@ public final class Vect implements Serializable {
     }
 
     public double length() {
+        // Along an axis hypot gives exactly the other component's magnitude (NaN and infinity too), without its
+        // cost: most walls, faces and bounced velocities lie along an axis.
+        if (x == 0) {
+            return Math.abs(y);
+        }
+        if (y == 0) {
+            return Math.abs(x);
+        }
         return Math.hypot(x, y);
     }
 

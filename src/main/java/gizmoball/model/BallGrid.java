@@ -33,7 +33,10 @@ final class BallGrid {
         int y1 = cell(y + reach);
         for (int cy = y0; cy <= y1; cy++) {
             for (int cx = x0; cx <= x1; cx++) {
-                into.addAll(cells.get(index(cx, cy)));
+                List<Ball> cell = cells.get(index(cx, cy));
+                for (int i = 0, n = cell.size(); i < n; i++) {   // addAll would copy each cell into an array
+                    into.add(cell.get(i));
+                }
             }
         }
     }

@@ -53,7 +53,15 @@ final class CollisionDetector {
 
     /** The velocity the ball moves with for the rest of the tick: none while asleep or finished. */
     Vect motion(Ball ball) {
-        return ball.isAsleep() || finishedBalls.contains(ball) ? Vect.ZERO : ball.velocity();
+        return ball.isAsleep() || !finishedBalls.isEmpty() && finishedBalls.contains(ball) ? Vect.ZERO : ball.velocity();
+    }
+
+    /**
+     * A speed for a reach, which carries {@link #REACH_MARGIN}, far above the rounding: a plain square root, several
+     * times cheaper than the overflow-safe hypot behind {@link Vect#length()}.
+     */
+    static double speedBound(Vect velocity) {
+        return Math.sqrt(velocity.x() * velocity.x() + velocity.y() * velocity.y());
     }
 
     boolean isSwinging(Flipper flipper) {
@@ -91,7 +99,7 @@ final class CollisionDetector {
         Vect theirs = motion(other);
         Vect relative = mine.minus(theirs);
         double gap = Math.sqrt(ball.position().distanceSquared(other.position())) - 2 * Board.BALL_RADIUS;
-        if (gap > relative.length() * window + REACH_MARGIN) {
+        if (gap > speedBound(relative) * window + REACH_MARGIN) {
             return;   // cannot close the gap within the window
         }
         if (board.passingThrough(ball, other)) {

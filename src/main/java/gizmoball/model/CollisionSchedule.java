@@ -51,25 +51,27 @@ final class CollisionSchedule {
 
     /** A ball's velocity changed: positions may go stale faster. */
     void sped(Ball ball) {
-        fastest = Math.max(fastest, detector.motion(ball).length());
+        fastest = Math.max(fastest, CollisionDetector.speedBound(detector.motion(ball)));
     }
 
     /** The earliest collision of the awake balls within the window, {@code elapsed} seconds into the tick. */
     Collision next(List<Ball> awake, double elapsed, double window) {
-        for (Ball ball : awake) {
-            if (withScene[ball.slot()] == null) {
-                withScene[ball.slot()] = known(detector.againstScene(ball, window), elapsed);
+        int n = awake.size();
+        for (int i = 0; i < n; i++) {
+            Ball ball = awake.get(i);
+            int slot = ball.slot();
+            if (withScene[slot] == null) {
+                withScene[slot] = known(detector.againstScene(ball, window), elapsed);
             }
-        }
-        for (Ball ball : awake) {
-            if (withBalls[ball.slot()] == null) {
+            if (withBalls[slot] == null) {
                 askAgainstBalls(ball, elapsed, window);
             }
         }
         Earliest earliest = new Earliest(window);
-        for (Ball ball : awake) {
-            offer(earliest, withScene[ball.slot()], elapsed, window);
-            offer(earliest, withBalls[ball.slot()], elapsed, window);
+        for (int i = 0; i < n; i++) {   // only now: asking about a ball may have told an earlier one of a sooner pair
+            int slot = awake.get(i).slot();
+            offer(earliest, withScene[slot], elapsed, window);
+            offer(earliest, withBalls[slot], elapsed, window);
         }
         return earliest.collision();
     }
@@ -101,7 +103,7 @@ final class CollisionSchedule {
      */
     private void askAgainstBalls(Ball ball, double elapsed, double window) {
         Earliest earliest = new Earliest(window);
-        double speed = detector.motion(ball).length();
+        double speed = CollisionDetector.speedBound(detector.motion(ball));
         double reach = 2 * Board.BALL_RADIUS + (speed + fastest) * window + fastest * (elapsed - filedAt) + 1e-6;
         nearby.clear();
         grid.near(ball.position().x(), ball.position().y(), reach, nearby);

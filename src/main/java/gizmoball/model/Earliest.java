@@ -6,8 +6,12 @@ final class Earliest {
     static final double TIE = 1e-12;
 
     private final double limit;
-    private Collision collision;
+    /** The earliest offer so far (ball null: none); its {@link Collision} is made only when asked for. */
+    private double time;
+    private Ball ball;
+    private Contact contact;
     private boolean circle;
+    private Collision collision;
 
     Earliest(double limit) {
         this.limit = limit;
@@ -17,22 +21,28 @@ final class Earliest {
         if (!(time >= 0 && time <= limit)) {
             return;   // also drops NaN and infinity
         }
-        boolean better = collision == null
-                || time < collision.time() - TIE
-                || (time <= collision.time() + TIE && isCircle && !circle);
+        boolean better = this.ball == null
+                || time < this.time - TIE
+                || (time <= this.time + TIE && isCircle && !circle);
         if (better) {
-            collision = new Collision(time, ball, contact);
-            circle = isCircle;
+            this.time = time;
+            this.ball = ball;
+            this.contact = contact;
+            this.circle = isCircle;
+            this.collision = null;
         }
     }
 
     /** Offers later than this are dropped. */
     double limit() {
-        return collision == null ? limit : Math.min(limit, collision.time() + TIE);
+        return ball == null ? limit : Math.min(limit, time + TIE);
     }
 
     /** The earliest offer, or null. */
     Collision collision() {
+        if (collision == null && ball != null) {
+            collision = new Collision(time, ball, contact);
+        }
         return collision;
     }
 

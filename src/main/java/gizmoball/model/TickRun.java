@@ -197,8 +197,13 @@ final class TickRun {
 
     /** Stage 2: awake balls move in straight lines, swinging flippers turn (stopping at their limits), for time t. */
     private void stage2BallMotion(double t) {
-        for (Ball ball : awake) {
-            if (!finished.contains(ball)) {
+        if (t == 0) {
+            return;   // a zero-time collision (a chain through touching balls): nothing moves, p + v*0 is p
+        }
+        boolean anyFinished = !finished.isEmpty();
+        for (int i = 0, n = awake.size(); i < n; i++) {
+            Ball ball = awake.get(i);
+            if (!anyFinished || !finished.contains(ball)) {
                 ball.advance(t);
             }
         }
