@@ -464,7 +464,7 @@ public final class Editor {
      */
     boolean rotate(Gizmo gizmo) {
         if (gizmo.kind() == GizmoKind.CIRCLE || gizmo.kind() == GizmoKind.ABSORBER) {
-            say(gizmo.name() + " is " + Wording.aKind(gizmo.kind())
+            say(gizmo.name() + " is " + gizmo.kind().withArticle()
                     + ": it looks the same turned, so it cannot be rotated");
             stateChanged();
             return false;

@@ -75,6 +75,12 @@ public final class Absorber extends GizmoBase implements Gizmo {
         return Solids.toConvexPolygon(outline(), p);
     }
 
+    /** Fires the longest-held ball, if the spot above is free. */
+    @Override
+    void act(Play play) {
+        play.fire(this);
+    }
+
     @Override
     Absorber copy() {
         return new Absorber(this);

@@ -108,6 +108,26 @@ public final class Flipper extends GizmoBase implements Gizmo {
         blocked = false;
     }
 
+    /** Triggered, it toggles: up if it was down or going down, else back down. */
+    @Override
+    void act(Play play) {
+        boolean wasMoving = isMoving();
+        toggle();
+        play.swung(this, wasMoving);
+    }
+
+    /** A key swings it up while held: up on DOWN, back down on UP, whichever way it was going. */
+    @Override
+    void keyEdge(KeyEdge edge, Play play) {
+        boolean wasMoving = isMoving();
+        if (edge == KeyEdge.DOWN) {
+            activate();
+        } else {
+            deactivate();
+        }
+        play.swung(this, wasMoving);
+    }
+
     /** Puts the flipper at an angle (0..90 degrees from rest), swinging toward its active stop or its rest. */
     void setState(double degrees, boolean toActive) {
         angle = degrees;

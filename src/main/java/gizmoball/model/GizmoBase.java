@@ -117,6 +117,18 @@ abstract sealed class GizmoBase permits Bumper, Flipper, Absorber {
         lastTriggeredAt = time;
     }
 
+    /**
+     * Its action when it is triggered (by a hit on a source it is connected to, or a key's change binding), done
+     * through {@code play} where it reaches beyond the gizmo. A bumper has none: it only records the time.
+     */
+    void act(Play play) {
+    }
+
+    /** A key bound to {@code edge} of it went down or up: by default its action. */
+    void keyEdge(KeyEdge edge, Play play) {
+        act(play);
+    }
+
     /** Turns a point given for the unrotated footprint by the gizmo's rotation, clockwise about the footprint centre. */
     Vect rotated(double px, double py) {
         double cx = x + width() / 2.0;

@@ -1,6 +1,11 @@
 package gizmoball.model;
 
-/** The kinds of gizmo a board can hold, with the footprint each occupies (an absorber's size is per gizmo). */
+import java.util.Locale;
+
+/**
+ * The kinds of gizmo a board can hold, with the footprint each occupies (an absorber's size is per gizmo), the class
+ * that plays each and the name the player sees.
+ */
 public enum GizmoKind {
     SQUARE(1), CIRCLE(1), TRIANGLE(1), LEFT_FLIPPER(2), RIGHT_FLIPPER(2), ABSORBER(1);
 
@@ -16,5 +21,28 @@ public enum GizmoKind {
 
     public int height() {
         return side;
+    }
+
+    /** How every message and help text names the kind: "square", "left flipper". */
+    public String displayName() {
+        return name().toLowerCase(Locale.ROOT).replace('_', ' ');
+    }
+
+    /** The name with its article: "a square", "an absorber". */
+    public String withArticle() {
+        String name = displayName();
+        return ("aeiou".indexOf(name.charAt(0)) >= 0 ? "an " : "a ") + name;
+    }
+
+    /**
+     * A new gizmo of this kind with its top-left cell at (x, y): the one place that maps a kind to its class. An
+     * absorber has a size of its own and is made from its corners ({@link Board#addAbsorber}).
+     */
+    GizmoBase create(String name, int x, int y) {
+        return switch (this) {
+            case SQUARE, CIRCLE, TRIANGLE -> new Bumper(this, name, x, y);
+            case LEFT_FLIPPER, RIGHT_FLIPPER -> new Flipper(this, name, x, y);
+            case ABSORBER -> throw new IllegalArgumentException("an absorber is made from its corners, not a cell");
+        };
     }
 }

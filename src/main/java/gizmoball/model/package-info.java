@@ -3,7 +3,11 @@
  * the six-stage physics loop (docs/design.md, "The tick"). It may use {@code physics} (only the listed API) and
  * the JDK; no AWT, no Swing.
  *
- * <p>{@link gizmoball.model.Board} holds everything and is the only way to change it. Every editing operation is
+ * <p>{@link gizmoball.model.Board} holds everything and is the only way to change it, a facade over parts with one
+ * job each: {@code Registry} (the gizmos and balls by name), {@code PlacementRules} (bounds, overlaps, names),
+ * {@code Wiring} (connections and key bindings), {@code Play} (keys, triggers, firing, capture; what each gizmo
+ * does when driven is its own {@code act}) and {@code Observers}. A connection's source and what a ball hit are
+ * types ({@link gizmoball.model.TriggerSource}, {@link gizmoball.model.Struck}), not names. Every editing operation is
  * checked on a copy of the gizmo first, so it either succeeds completely (observers hear EDIT) or throws
  * {@link gizmoball.model.BoardEditException} and leaves the board untouched. Gizmo shapes (physics-lib segments
  * and circles, zero-radius circles at polygon corners) are built when a gizmo is placed, moved or rotated; a

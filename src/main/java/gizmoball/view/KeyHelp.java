@@ -1,6 +1,5 @@
 package gizmoball.view;
 
-import gizmoball.editor.Wording;
 import gizmoball.boardfile.KeyCodes;
 import gizmoball.model.Board;
 import gizmoball.model.Gizmo;
@@ -40,7 +39,7 @@ final class KeyHelp {
 
     /** "left flipper " for LEFT_FLIPPER; nothing for a name the board does not hold. */
     private static String kindName(GizmoKind kind) {
-        return kind == null ? "" : Wording.kind(kind) + " ";
+        return kind == null ? "" : kind.displayName() + " ";
     }
 
     /** A flipper driven by both edges stays up while the key is held; anything else acts on the edges. */

@@ -2,7 +2,6 @@ package gizmoball.view.editor;
 
 import gizmoball.boardfile.KeyCodes;
 import gizmoball.editor.Editor;
-import gizmoball.editor.Wording;
 import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.BoardChange;
@@ -344,7 +343,7 @@ public final class PropertiesPanel extends JPanel {
     private String describe(Optional<Gizmo> gizmo, Optional<Ball> ball) {
         if (gizmo.isPresent()) {
             Gizmo g = gizmo.get();
-            return named(g.name(), Wording.kind(g.kind()) + " " + g.width() + "x" + g.height() + " at (" + g.x()
+            return named(g.name(), g.kind().displayName() + " " + g.width() + "x" + g.height() + " at (" + g.x()
                     + "," + g.y() + ")" + (g.rotation() == 0 ? "" : ", " + g.rotation() * 90 + "\u00b0"));
         }
         if (ball.isPresent()) {

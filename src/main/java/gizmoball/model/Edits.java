@@ -1,0 +1,187 @@
+package gizmoball.model;
+
+import java.util.List;
+import java.util.Optional;
+
+import physics.Vect;
+
+/**
+ * The editing operations on gizmos and balls (the {@link Board} methods of the same names say what each does).
+ * Each checks the change first, on a copy of the gizmo where it changes one, through the {@link PlacementRules},
+ * and throws {@link BoardEditException} before it has changed anything; the board then tells its observers.
+ */
+final class Edits {
+    private final Registry registry;
+    private final PlacementRules rules;
+    private final Wiring wiring;
+    private final Play play;
+
+    Edits(Registry registry, PlacementRules rules, Wiring wiring, Play play) {
+        this.registry = registry;
+        this.rules = rules;
+        this.wiring = wiring;
+        this.play = play;
+    }
+
+    void addGizmo(GizmoKind kind, String name, int x, int y) {
+        if (kind == null || kind == GizmoKind.ABSORBER) {
+            throw new BoardEditException("cannot add " + name + ": addGizmo takes a bumper or flipper kind, not "
+                    + kind + " (absorbers are added with their corners)");
+        }
+        rules.requireFreshName(name);
+        GizmoBase candidate = kind.create(name, x, y);
+        refuseIfPresent(rules.problemFor(candidate, null));
+        registry.insert(candidate);
+    }
+
+    void addAbsorber(String name, int x1, int y1, int x2, int y2) {
+        rules.requireFreshName(name);
+        if (x2 <= x1 || y2 <= y1) {
+            throw new BoardEditException("absorber " + name + " from (" + x1 + "," + y1 + ") to (" + x2 + "," + y2
+                    + ") must be at least one cell wide and high ((x2, y2) is the exclusive bottom-right corner)");
+        }
+        Absorber candidate = new Absorber(name, x1, y1, x2 - x1, y2 - y1);
+        refuseIfPresent(rules.problemFor(candidate, null));
+        registry.insert(candidate);
+        play.captureFreeBallsIn(candidate);
+    }
+
+    void addBall(String name, double x, double y, double vx, double vy) {
+        placeBall(name, x, y, vx, vy, false);
+    }
+
+    List<String> addBallOverlappingBalls(String name, double x, double y, double vx, double vy) {
+        Ball ball = placeBall(name, x, y, vx, vy, true);
+        List<String> overlapped = ball.isCaptured() ? List.of() : registry.balls().stream()
+                .filter(other -> other != ball && !other.isCaptured()
+                        && Overlaps.balls(other.position(), ball.position()))
+                .map(Ball::name)
+                .toList();
+        overlapped.forEach(other -> registry.passThrough(name, other));
+        return overlapped;
+    }
+
+    private Ball placeBall(String name, double x, double y, double vx, double vy, boolean ballsMayOverlap) {
+        rules.requireFreshName(name);
+        if (!Double.isFinite(vx) || !Double.isFinite(vy)) {
+            throw new BoardEditException("ball " + name + ": velocity (" + vx + "," + vy + ") must be finite");
+        }
+        Vect position = new Vect(requireFinite(x, name), requireFinite(y, name));
+        Absorber captor = rules.captorOfPlacedBall(name, position, null, ballsMayOverlap);
+        Ball ball = new Ball(name, position, Vect.ZERO);
+        ball.setVelocity(new Vect(vx, vy));
+        registry.add(ball);
+        if (captor != null) {
+            play.capture(ball, captor);
+        }
+        return ball;
+    }
+
+    void setFlipperState(String flipper, double degrees, boolean active) {
+        if (!(registry.requireGizmo(flipper) instanceof Flipper target)) {
+            throw new BoardEditException(flipper + " is not a flipper");
+        }
+        if (!(degrees >= 0 && degrees <= Flipper.MAX_ANGLE)) {
+            throw new BoardEditException("flipper " + flipper + ": angle " + degrees + " must be from 0 to "
+                    + Flipper.MAX_ANGLE + " degrees");
+        }
+        Flipper candidate = target.copy();
+        candidate.setState(degrees, active);
+        refuseIfPresent(rules.ballOverlap(candidate).map(ball -> "flipper " + flipper + " at " + degrees
+                + " degrees would overlap ball " + ball));
+        target.setState(degrees, active);
+    }
+
+    void rotate(String gizmo) {
+        GizmoBase target = registry.requireGizmo(gizmo);
+        if (target.rotates()) {
+            GizmoBase candidate = target.copy();
+            candidate.rotateClockwise();
+            refuseIfPresent(rules.ballOverlap(candidate).map(ball -> "rotating " + gizmo + " would make it overlap ball "
+                    + ball));
+            target.rotateClockwise();
+        }
+    }
+
+    void delete(String name) {
+        GizmoBase gizmo = registry.gizmo(name);
+        Ball ball = registry.ball(name);
+        if (gizmo != null) {
+            registry.remove(gizmo);
+            wiring.forget(name);
+        } else if (ball != null) {
+            registry.remove(ball);
+        } else {
+            throw new BoardEditException("cannot delete " + name + ": no gizmo or ball named " + name);
+        }
+    }
+
+    void moveGizmo(String gizmo, int x, int y) {
+        GizmoBase target = registry.requireGizmo(gizmo);
+        GizmoBase candidate = target.copy();
+        candidate.moveTo(x, y);
+        refuseIfPresent(rules.problemFor(candidate, gizmo));
+        registry.move(target, x, y);
+        if (target instanceof Absorber absorber) {
+            absorber.held().forEach(held -> registry.ball(held).capture(absorber.holdingPosition()));
+            play.captureFreeBallsIn(absorber);
+        }
+    }
+
+    void moveBall(String ball, double x, double y) {
+        Ball target = registry.ball(ball);
+        if (target == null) {
+            throw new BoardEditException("cannot move " + ball + ": no ball named " + ball);
+        }
+        Vect position = new Vect(requireFinite(x, ball), requireFinite(y, ball));
+        Absorber captor = rules.captorOfPlacedBall(ball, position, ball, false);
+        if (target.isCaptured()) {
+            registry.releaseFromAbsorber(target);
+            target.release(position, Vect.ZERO);
+        } else {
+            target.moveTo(position);
+        }
+        if (captor != null) {
+            play.capture(target, captor);
+        }
+    }
+
+    boolean setBallVelocity(String ball, double vx, double vy) {
+        Ball target = registry.ball(ball);
+        if (target == null) {
+            throw new BoardEditException("cannot set the velocity of " + ball + ": no ball named " + ball);
+        }
+        if (!Double.isFinite(vx) || !Double.isFinite(vy)) {
+            throw new BoardEditException("ball " + ball + ": velocity (" + vx + ", " + vy + ") is not finite");
+        }
+        Vect velocity = new Vect(vx, vy);
+        if (target.isCaptured()) {
+            if (!velocity.equals(Vect.ZERO)) {
+                throw new BoardEditException(ball + " is held by an absorber: it cannot be given a velocity");
+            }
+            return false;
+        }
+        target.setVelocity(velocity);
+        return true;
+    }
+
+    void setColour(String gizmo, Optional<Rgb> colour) {
+        if (colour == null) {
+            throw new BoardEditException("colour of " + gizmo + " must be a colour or empty, not null");
+        }
+        registry.requireGizmo(gizmo).setColour(colour);
+    }
+
+    private static double requireFinite(double coordinate, String ball) {
+        if (!Double.isFinite(coordinate)) {
+            throw new BoardEditException("ball " + ball + ": position " + coordinate + " is not a finite number");
+        }
+        return coordinate;
+    }
+
+    private static void refuseIfPresent(Optional<String> problem) {
+        if (problem.isPresent()) {
+            throw new BoardEditException(problem.get());
+        }
+    }
+}

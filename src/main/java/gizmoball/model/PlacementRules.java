@@ -1,0 +1,146 @@
+package gizmoball.model;
+
+import java.util.List;
+import java.util.Optional;
+
+import physics.Vect;
+
+/**
+ * Where a gizmo or a ball may go: inside the board, on no other gizmo, no free ball inside a gizmo, a ball on an
+ * absorber captured by it, names fresh and not reserved. The editor's previews, the editor's edits and the board
+ * file loader all ask these rules, so none of them can accept what another refuses. Overlap itself is
+ * {@link Overlaps}.
+ */
+final class PlacementRules {
+    private final Registry registry;
+
+    PlacementRules(Registry registry) {
+        this.registry = registry;
+    }
+
+    /** See {@link Board#placementProblem}. */
+    Optional<String> placementProblem(GizmoKind kind, int x, int y, int width, int height, String ignoring) {
+        if (kind == null) {
+            return Optional.of("no gizmo kind given");
+        }
+        if (kind == GizmoKind.ABSORBER) {
+            if (width < 1 || height < 1) {
+                return Optional.of("an absorber must be at least one cell wide and high, not " + width + "x" + height);
+            }
+            return problemFor(new Absorber("", x, y, width, height), ignoring);
+        }
+        if (width != kind.width() || height != kind.height()) {
+            return Optional.of("a " + kind.displayName() + " is " + kind.width() + "x" + kind.height()
+                    + " cells, not " + width + "x" + height);
+        }
+        GizmoBase candidate = kind.create("", x, y);
+        GizmoBase moving = ignoring == null ? null : registry.gizmo(ignoring);
+        if (moving != null && moving.kind() == kind) {
+            for (int i = 0; i < moving.rotation(); i++) {
+                candidate.rotateClockwise();
+            }
+        }
+        return problemFor(candidate, ignoring);
+    }
+
+    /** Footprint inside the board, no other gizmo's cells (but the ignored one's), no free ball inside the shape. */
+    Optional<String> problemFor(GizmoBase candidate, String ignoring) {
+        String what = (candidate.name().isEmpty() ? "a " + candidate.kind().displayName()
+                : "gizmo " + candidate.name()) + " at (" + candidate.x() + "," + candidate.y() + ")";
+        for (int cx = candidate.x(); cx < candidate.x() + candidate.width(); cx++) {
+            for (int cy = candidate.y(); cy < candidate.y() + candidate.height(); cy++) {
+                if (!SpatialIndex.inside(cx, cy)) {
+                    return Optional.of(what + " would leave the board: cell (" + cx + "," + cy + ") is outside it");
+                }
+            }
+        }
+        for (int cx = candidate.x(); cx < candidate.x() + candidate.width(); cx++) {
+            for (int cy = candidate.y(); cy < candidate.y() + candidate.height(); cy++) {
+                GizmoBase occupant = registry.index().at(cx, cy);
+                if (occupant != null && !occupant.name().equals(ignoring)) {
+                    return Optional.of(what + " would overlap gizmo " + occupant.name());
+                }
+            }
+        }
+        if (candidate instanceof Absorber) {
+            return Optional.empty();   // free balls under a new absorber are captured, not in the way
+        }
+        return ballOverlap(candidate).map(ball -> what + " would overlap ball " + ball);
+    }
+
+    /** The first free ball that would be inside the candidate's body. */
+    Optional<String> ballOverlap(GizmoBase candidate) {
+        return registry.balls().stream()
+                .filter(ball -> !ball.isCaptured())
+                .filter(ball -> Overlaps.ballInGizmo(candidate, ball.position()))
+                .map(Ball::name)
+                .findFirst();
+    }
+
+    /**
+     * Checks a ball position (for the ball named {@code name}, ignoring ball {@code ignoring}) and returns the
+     * absorber that would capture it there, or null.
+     */
+    Absorber captorOfPlacedBall(String name, Vect position, String ignoring, boolean ballsMayOverlap) {
+        String what = "ball " + name + " at (" + position.x() + "," + position.y() + ")";
+        if (!insideBoard(position)) {
+            throw new BoardEditException(what + " is outside the board (its centre must be at least "
+                    + Board.BALL_RADIUS + " L inside each wall)");
+        }
+        Absorber captor = null;
+        for (GizmoBase gizmo : gizmosUnder(position)) {
+            if (gizmo instanceof Absorber absorber) {
+                captor = absorber;
+            } else {
+                throw new BoardEditException(what + " would overlap gizmo " + gizmo.name());
+            }
+        }
+        if (captor == null && !ballsMayOverlap) {
+            Optional<Ball> other = freeBallUnder(position, ignoring);
+            if (other.isPresent()) {
+                throw new BoardEditException(what + " would overlap ball " + other.get().name());
+            }
+        }
+        return captor;
+    }
+
+    /** Whether a ball could appear there now: inside the board, in no gizmo (absorbers too), on no free ball. */
+    boolean freeForBall(Vect position) {
+        return insideBoard(position) && gizmosUnder(position).isEmpty() && freeBallUnder(position, null).isEmpty();
+    }
+
+    /** The gizmos a ball centred there would be inside, in the order of the cells around it. */
+    private List<GizmoBase> gizmosUnder(Vect position) {
+        double r = Board.BALL_RADIUS;
+        return registry.index().within(position.x() - r, position.y() - r, position.x() + r, position.y() + r)
+                .stream()
+                .filter(gizmo -> Overlaps.ballInGizmo(gizmo, position))
+                .toList();
+    }
+
+    /** The first free ball, other than the one named {@code ignoring}, that a ball centred there would overlap. */
+    private Optional<Ball> freeBallUnder(Vect position, String ignoring) {
+        return registry.balls().stream()
+                .filter(other -> !other.isCaptured() && !other.name().equals(ignoring)
+                        && Overlaps.balls(other.position(), position))
+                .findFirst();
+    }
+
+    static boolean insideBoard(Vect position) {
+        return position.x() >= Board.BALL_RADIUS && position.x() <= Board.SIZE - Board.BALL_RADIUS
+                && position.y() >= Board.BALL_RADIUS && position.y() <= Board.SIZE - Board.BALL_RADIUS;
+    }
+
+    /** A name a new gizmo or ball may take: not empty, no whitespace, not the outer walls', not in use. */
+    void requireFreshName(String name) {
+        if (name == null || name.isEmpty() || name.chars().anyMatch(Character::isWhitespace)) {
+            throw new BoardEditException("name '" + name + "' must be non-empty and contain no whitespace");
+        }
+        if (name.equals(TriggerSource.OuterWalls.NAME)) {
+            throw new BoardEditException("name " + name + " is reserved for the outer walls");
+        }
+        if (registry.uses(name)) {
+            throw new BoardEditException("name " + name + " is already used");
+        }
+    }
+}

@@ -1,0 +1,112 @@
+package gizmoball.model;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import physics.Vect;
+
+/**
+ * The actions of play: keys, triggers and captures. What a gizmo does when driven is its own
+ * ({@link GizmoBase#act}, {@link GizmoBase#keyEdge}); this is what those actions do to the board around it: a flipper
+ * that starts to swing wakes the balls in its box, an absorber fires only into a free spot. It also keeps the events
+ * of play (for sound and flashes) until the tick reports them.
+ */
+final class Play {
+    private final Registry registry;
+    private final PlacementRules rules;
+    private final Sleepers sleepers;
+    private final List<PlayEvent> pendingEvents = new ArrayList<>();
+
+    Play(Registry registry, PlacementRules rules, Sleepers sleepers) {
+        this.registry = registry;
+        this.rules = rules;
+        this.sleepers = sleepers;
+    }
+
+    /**
+     * The key went down or up: the gizmos bound to that edge are driven as keys drive them (a flipper stays up
+     * while the key is held), and on DOWN those bound to CHANGE perform their action (a flipper toggles).
+     */
+    void keyAction(List<KeyBinding> bindings, int keyCode, KeyEdge edge, double now) {
+        for (KeyBinding binding : bindings) {
+            if (binding.keyCode() != keyCode) {
+                continue;
+            }
+            GizmoBase gizmo = registry.gizmo(binding.gizmo());
+            if (binding.edge() == KeyEdge.CHANGE && edge == KeyEdge.DOWN) {
+                performAction(gizmo, now);
+            } else if (binding.edge() == edge) {
+                gizmo.markTriggered(now);
+                gizmo.keyEdge(edge, this);
+            }
+        }
+    }
+
+    /** The gizmo performs its action: a flipper toggles, an absorber fires, a bumper only records the time. */
+    void performAction(GizmoBase gizmo, double now) {
+        gizmo.markTriggered(now);
+        gizmo.act(this);
+    }
+
+    /**
+     * A flipper that starts to swing wakes every ball in its box (its whole sweep lies there) and what rests on them.
+     */
+    void swung(Flipper flipper, boolean wasMoving) {
+        if (flipper.isMoving() && !wasMoving) {
+            recordEvent(new PlayEvent.Swing(flipper.name(), flipper.isActive()));
+            wakeSweep(flipper);
+        }
+    }
+
+    /** Wakes every ball in the flipper's box, where all of its sweep lies, and what rests on them. */
+    void wakeSweep(Flipper flipper) {
+        double margin = 2 * Board.BALL_RADIUS;
+        sleepers.wakeWithin(flipper.x() - margin, flipper.y() - margin, flipper.x() + flipper.width() + margin,
+                flipper.y() + flipper.height() + margin);
+    }
+
+    /**
+     * Shoots the longest-held ball straight up from just above the top edge, if the spot there is free (inside
+     * the board, no gizmo or free ball in the way); otherwise the ball stays held.
+     */
+    void fire(Absorber absorber) {
+        String name = absorber.held().peekFirst();
+        if (name == null) {
+            return;
+        }
+        Vect launch = absorber.launchPosition();
+        if (rules.freeForBall(launch)) {
+            absorber.held().removeFirst();
+            registry.ball(name).release(launch, new Vect(0, -Board.ABSORBER_LAUNCH_SPEED));
+            recordEvent(new PlayEvent.Fired(absorber.name()));
+            double margin = 4 * Board.BALL_RADIUS;
+            sleepers.wakeWithin(launch.x() - margin, launch.y() - margin, launch.x() + margin, launch.y() + margin);
+        }
+    }
+
+    /** Holds the ball at the absorber's bottom-right corner, at rest, behind any it already holds. */
+    void capture(Ball ball, Absorber absorber) {
+        ball.capture(absorber.holdingPosition());
+        absorber.held().addLast(ball.name());
+    }
+
+    /** An absorber placed or moved captures the free balls it now covers. */
+    void captureFreeBallsIn(Absorber absorber) {
+        for (Ball ball : registry.balls()) {
+            if (!ball.isCaptured() && Overlaps.ballInGizmo(absorber, ball.position())) {
+                capture(ball, absorber);
+            }
+        }
+    }
+
+    void recordEvent(PlayEvent event) {
+        pendingEvents.add(event);
+    }
+
+    /** The events since the last tick's report, for this tick's. */
+    List<PlayEvent> drainEvents() {
+        List<PlayEvent> events = List.copyOf(pendingEvents);
+        pendingEvents.clear();
+        return events;
+    }
+}

@@ -1,0 +1,151 @@
+package gizmoball.model;
+
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+/**
+ * The gizmos and balls of a board by name, in board order, with the grid of cells the gizmos occupy, the flippers
+ * among them, and the pairs of balls placed on each other. It keeps these consistent with each other and checks
+ * nothing: {@link PlacementRules} decides what may be placed, {@link Board} what an edit does.
+ */
+final class Registry {
+    private final Map<String, GizmoBase> gizmos = new LinkedHashMap<>();
+    /** One map for the board's life: {@link Sleepers} holds a live view of its values. */
+    private final Map<String, Ball> balls = new LinkedHashMap<>();
+    private final Set<Set<String>> passingPairs = new HashSet<>();
+    private SpatialIndex index = new SpatialIndex();
+    /** The flippers among the gizmos, found again after every change of the gizmos (null until then). */
+    private List<Flipper> flippers;
+
+    /** Becomes a deep copy of source. */
+    void copyFrom(Registry source) {
+        clear();
+        for (GizmoBase gizmo : source.gizmos.values()) {
+            insert(gizmo.copy());
+        }
+        source.balls.values().forEach(ball -> balls.put(ball.name(), ball.copy()));
+        passingPairs.addAll(source.passingPairs);
+    }
+
+    void clear() {
+        gizmos.clear();
+        balls.clear();
+        passingPairs.clear();
+        index = new SpatialIndex();
+        flippers = null;
+    }
+
+    Collection<GizmoBase> gizmos() {
+        return gizmos.values();
+    }
+
+    Collection<Ball> balls() {
+        return balls.values();
+    }
+
+    /** The gizmo of that name, or null. */
+    GizmoBase gizmo(String name) {
+        return gizmos.get(name);
+    }
+
+    /** The ball of that name, or null. */
+    Ball ball(String name) {
+        return balls.get(name);
+    }
+
+    boolean uses(String name) {
+        return gizmos.containsKey(name) || balls.containsKey(name);
+    }
+
+    /** The gizmo of that name, or the refusal of an edit naming something else. */
+    GizmoBase requireGizmo(String name) {
+        GizmoBase gizmo = gizmos.get(name);
+        if (gizmo == null) {
+            throw new BoardEditException(balls.containsKey(name) ? name + " is a ball, not a gizmo"
+                    : "no gizmo named " + name);
+        }
+        return gizmo;
+    }
+
+    SpatialIndex index() {
+        return index;
+    }
+
+    void insert(GizmoBase gizmo) {
+        gizmos.put(gizmo.name(), gizmo);
+        index.put(gizmo);
+        flippers = null;
+    }
+
+    /** Removes the gizmo, and the balls an absorber holds with it. */
+    void remove(GizmoBase gizmo) {
+        index.remove(gizmo);
+        gizmos.remove(gizmo.name());
+        if (gizmo instanceof Absorber absorber) {
+            absorber.held().forEach(balls::remove);
+        }
+        flippers = null;
+    }
+
+    /** Moves the gizmo to a new top-left cell, its cells in the grid with it. */
+    void move(GizmoBase gizmo, int x, int y) {
+        index.remove(gizmo);
+        gizmo.moveTo(x, y);
+        index.put(gizmo);
+    }
+
+    void add(Ball ball) {
+        balls.put(ball.name(), ball);
+    }
+
+    void remove(Ball ball) {
+        releaseFromAbsorber(ball);
+        balls.remove(ball.name());
+    }
+
+    /** The ball leaves whichever absorber holds it. */
+    void releaseFromAbsorber(Ball ball) {
+        gizmos.values().stream()
+                .filter(g -> g instanceof Absorber)
+                .forEach(g -> ((Absorber) g).held().remove(ball.name()));
+    }
+
+    List<Flipper> flippers() {
+        if (flippers == null) {
+            List<Flipper> found = new ArrayList<>();
+            for (GizmoBase gizmo : gizmos.values()) {
+                if (gizmo instanceof Flipper flipper) {
+                    found.add(flipper);
+                }
+            }
+            flippers = List.copyOf(found);
+        }
+        return flippers;
+    }
+
+    void passThrough(String a, String b) {
+        passingPairs.add(Set.of(a, b));
+    }
+
+    /**
+     * The pairs of balls placed on each other that have not come apart since: detection lets them pass through
+     * each other. A pair leaves the set at the end of the first tick it no longer overlaps.
+     */
+    boolean passingThrough(Ball a, Ball b) {
+        return !passingPairs.isEmpty() && passingPairs.contains(Set.of(a.name(), b.name()));
+    }
+
+    /** Forgets the passing pairs that have come apart (or lost a ball to an absorber or a delete). */
+    void forgetSeparatedPairs() {
+        passingPairs.removeIf(pair -> {
+            List<Ball> two = pair.stream().map(balls::get).toList();
+            return two.contains(null) || two.get(0).isCaptured() || two.get(1).isCaptured()
+                    || !Overlaps.balls(two.get(0).position(), two.get(1).position());
+        });
+    }
+}
