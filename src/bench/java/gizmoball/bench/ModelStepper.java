@@ -1,6 +1,7 @@
 package gizmoball.bench;
 
 import gizmoball.model.Ball;
+import gizmoball.model.BenchSwitches;
 import gizmoball.model.Board;
 import gizmoball.model.Gizmo;
 import gizmoball.model.Invariants;
@@ -15,8 +16,7 @@ final class ModelStepper implements Stepper {
 
     ModelStepper(Board board, Loop loop, boolean spatialIndex) {
         this.board = board;
-        board.setLoopMode(loop.modelMode());
-        board.setSpatialIndexEnabled(spatialIndex);
+        BenchSwitches.configure(board, loop.modelMode(), spatialIndex);
     }
 
     @Override

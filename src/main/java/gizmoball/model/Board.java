@@ -405,20 +405,22 @@ public final class Board {
     }
 
     // ---------------------------------------------------------------- for tests and the benchmark
+    // The game always plays CONTINUOUS with the index: only tests (directly or through their LoopModes fixture) and
+    // the benchmark (through BenchSwitches, in its own source set) turn these, so they are not public.
 
-    public void setLoopMode(LoopMode mode) {
+    void setLoopMode(LoopMode mode) {
         if (mode == null) {
             throw new IllegalArgumentException("loop mode must not be null");
         }
         loopMode = mode;
     }
 
-    public LoopMode loopMode() {
+    LoopMode loopMode() {
         return loopMode;
     }
 
     /** True (default): collision detection asks the grid for reachable gizmos; false: it scans every gizmo. */
-    public void setSpatialIndexEnabled(boolean enabled) {
+    void setSpatialIndexEnabled(boolean enabled) {
         spatialIndexEnabled = enabled;
     }
 

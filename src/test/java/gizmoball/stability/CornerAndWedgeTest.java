@@ -3,6 +3,7 @@ package gizmoball.stability;
 import gizmoball.model.Board;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.LoopMode;
+import gizmoball.model.LoopModes;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 import physics.Vect;
@@ -41,7 +42,7 @@ class CornerAndWedgeTest {
     @EnumSource(LoopMode.class)
     void ballInAVOfTrianglesNeverEntersAnArm(LoopMode mode) {
         Board board = vOfTriangles();
-        board.setLoopMode(mode);
+        LoopModes.set(board, mode);
         board.addBall("B", 8, 9, 0, 0);
         double impactSpeed = Math.sqrt(2 * board.gravity() * (Board.SIZE - R - 9));   // fastest: down to the floor
         Vect top1 = new Vect(7, 11);
@@ -60,7 +61,7 @@ class CornerAndWedgeTest {
     @EnumSource(LoopMode.class)
     void ballThrownIntoTheBoardCorners(LoopMode mode) {
         Board board = new Board();
-        board.setLoopMode(mode);
+        LoopModes.set(board, mode);
         board.addBall("B", 17, 17, 30, 30);
         double speed = Math.sqrt(2 * 30 * 30 + 2 * board.gravity() * 20);
         new Watch("thrown into a corner", board, DT).allowEnergyGainOfOneTickAt(speed).run(3000);
@@ -71,7 +72,7 @@ class CornerAndWedgeTest {
     @EnumSource(LoopMode.class)
     void ballRollingIntoTheCornerOfTheFloorAndASquare(LoopMode mode) {
         Board board = new Board();
-        board.setLoopMode(mode);
+        LoopModes.set(board, mode);
         board.addGizmo(GizmoKind.SQUARE, "S", 10, 19);
         board.addBall("B", 6, Board.SIZE - R, 4, 0);
         new Watch("square on the floor", board, DT).allowEnergyGainOfOneTickAt(4 + board.gravity() * DT).run(3000,

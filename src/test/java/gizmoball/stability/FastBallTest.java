@@ -5,6 +5,7 @@ import gizmoball.model.Board;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.LoopMode;
+import gizmoball.model.LoopModes;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.EnumSource;
@@ -69,7 +70,7 @@ class FastBallTest {
     @MethodSource("randomThrows")
     void topSpeedAmongBumpersAndFlippers(LoopMode mode, double angle, long boardSeed) {
         Board board = new Board();
-        board.setLoopMode(mode);
+        LoopModes.set(board, mode);
         board.addGizmo(GizmoKind.LEFT_FLIPPER, "LF", 6, 16);
         board.addGizmo(GizmoKind.RIGHT_FLIPPER, "RF", 12, 16);
         board.bindKey(32, KeyEdge.DOWN, "LF");

@@ -6,6 +6,7 @@ import gizmoball.model.Flipper;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.LoopMode;
+import gizmoball.model.LoopModes;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
@@ -46,7 +47,7 @@ class FlipperPinchTest {
     @MethodSource("ballsInTheSweep")
     void flipperSwingingIntoACornerWithABallInTheWay(LoopMode mode, double gravity, double x, double y) {
         Board board = new Board();
-        board.setLoopMode(mode);
+        LoopModes.set(board, mode);
         board.setGravity(gravity);
         board.addGizmo(GizmoKind.LEFT_FLIPPER, "F", 5, 17);
         board.addGizmo(GizmoKind.SQUARE, "Above", 6, 16);
@@ -82,7 +83,7 @@ class FlipperPinchTest {
     @MethodSource("pressTimes")
     void flipperSwingingOverABallOnTheFloor(LoopMode mode, int pressTick) {
         Board board = new Board();
-        board.setLoopMode(mode);
+        LoopModes.set(board, mode);
         board.addGizmo(GizmoKind.LEFT_FLIPPER, "F", 5, 18);
         board.bindKey(KEY, KeyEdge.DOWN, "F");
         board.bindKey(KEY, KeyEdge.UP, "F");

@@ -2,6 +2,7 @@ package gizmoball.stability;
 
 import gizmoball.model.Board;
 import gizmoball.model.LoopMode;
+import gizmoball.model.LoopModes;
 
 /** Boards without gravity or friction, where the outcomes of the stability scenes are exact. */
 final class FreeSpace {
@@ -12,7 +13,7 @@ final class FreeSpace {
     /** An empty board with no gravity and no friction, ticked by the given loop. */
     static Board board(LoopMode mode) {
         Board board = new Board();
-        board.setLoopMode(mode);
+        LoopModes.set(board, mode);
         board.setGravity(0);
         board.setFriction(0, 0);
         return board;

@@ -4,6 +4,7 @@ import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.LoopMode;
+import gizmoball.model.LoopModes;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
@@ -25,7 +26,7 @@ class RestingContactTest {
     @EnumSource(LoopMode.class)
     void ballsRestOnTheFloorASquareAndATriangleTop(LoopMode mode) {
         Board board = new Board();
-        board.setLoopMode(mode);
+        LoopModes.set(board, mode);
         board.addGizmo(GizmoKind.SQUARE, "S", 5, 12);
         board.addGizmo(GizmoKind.TRIANGLE, "T", 12, 12);   // unrotated: flat top edge from (12,12) to (13,12)
         board.addBall("onFloor", 10.5, Board.SIZE - R, 0, 0);
@@ -55,7 +56,7 @@ class RestingContactTest {
     @EnumSource(LoopMode.class)
     void ballRollingAlongTheFloorStaysOnIt(LoopMode mode) {
         Board board = new Board();
-        board.setLoopMode(mode);
+        LoopModes.set(board, mode);
         board.addBall("roller", 2, Board.SIZE - R, 8, 0);
         double hop = board.gravity() * DT * DT;
         new Watch("rolling along the floor", board, DT)

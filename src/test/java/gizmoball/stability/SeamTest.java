@@ -4,6 +4,7 @@ import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.LoopMode;
+import gizmoball.model.LoopModes;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
@@ -28,7 +29,7 @@ class SeamTest {
 
     private static Board rowOfSquares(LoopMode mode) {
         Board board = new Board();
-        board.setLoopMode(mode);
+        LoopModes.set(board, mode);
         for (int x = 4; x < 16; x++) {
             board.addGizmo(GizmoKind.SQUARE, "S" + x, x, 12);
         }
@@ -80,7 +81,7 @@ class SeamTest {
     @EnumSource(LoopMode.class)
     void glidingDownASlopeOfTrianglesAcrossSeamsChangesNothing(LoopMode mode) {
         Board board = CornerAndWedgeTest.vOfTriangles();
-        board.setLoopMode(mode);
+        LoopModes.set(board, mode);
         board.setGravity(0);
         board.setFriction(0, 0);
         double off = R / Math.sqrt(2);   // from the slope y = x + 4 along its free-side normal (1, -1)/sqrt 2

@@ -3,6 +3,7 @@ package gizmoball.stability;
 import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.LoopMode;
+import gizmoball.model.LoopModes;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
@@ -54,7 +55,7 @@ class TouchingBallsTest {
     @EnumSource(LoopMode.class)
     void touchingBallsAtRestOnTheFloorStayPut(LoopMode mode) {
         Board board = new Board();
-        board.setLoopMode(mode);
+        LoopModes.set(board, mode);
         double floor = Board.SIZE - R;
         board.addBall("a", 5, floor, 0, 0);
         board.addBall("b", 5 + 2 * R, floor, 0, 0);

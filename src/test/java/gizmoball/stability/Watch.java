@@ -4,6 +4,7 @@ import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.Invariants;
 import gizmoball.model.LoopMode;
+import gizmoball.model.LoopModes;
 
 import java.time.Duration;
 import java.util.List;
@@ -66,13 +67,13 @@ final class Watch {
         assertTimeoutPreemptively(FREEZE, () -> {
             for (int tick = 1; tick <= ticks; tick++) {
                 board.tick(dt);
-                String where = name + ", tick " + tick + " of " + ticks + " (dt " + dt + ", " + board.loopMode() + ")";
+                String where = name + ", tick " + tick + " of " + ticks + " (dt " + dt + ", " + LoopModes.of(board) + ")";
                 List<String> violations = Invariants.violations(board);
                 assertThat(violations).as(where + ": model invariants").isEmpty();
                 for (Ball ball : board.balls()) {
                     assertInside(where, ball);
                 }
-                if (board.loopMode() == LoopMode.CONTINUOUS) {
+                if (LoopModes.of(board) == LoopMode.CONTINUOUS) {
                     assertThat(board.energy()).as(where + ": energy (start " + e0 + ")").isLessThanOrEqualTo(
                             e0 + NO_GAIN * Math.max(1, Math.abs(e0)) + energyAllowance);
                 }

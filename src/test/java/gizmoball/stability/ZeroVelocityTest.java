@@ -4,6 +4,7 @@ import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.GizmoKind;
 import gizmoball.model.LoopMode;
+import gizmoball.model.LoopModes;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 import physics.Vect;
@@ -26,7 +27,7 @@ class ZeroVelocityTest {
     void ballsAtRestTouchingEveryKindOfSurfaceStayExactlyPut(LoopMode mode) {
         Board board = new Board();
         board.setGravity(0);
-        board.setLoopMode(mode);
+        LoopModes.set(board, mode);
         board.addGizmo(GizmoKind.SQUARE, "S", 3, 3);
         board.addGizmo(GizmoKind.CIRCLE, "C", 8, 3);
         board.addGizmo(GizmoKind.TRIANGLE, "T", 13, 3);
@@ -55,7 +56,7 @@ class ZeroVelocityTest {
     @EnumSource(LoopMode.class)
     void zeroDtChangesNothing(LoopMode mode) {
         Board board = new Board();
-        board.setLoopMode(mode);
+        LoopModes.set(board, mode);
         board.addGizmo(GizmoKind.SQUARE, "S", 10, 10);
         board.addBall("resting", 5, Board.SIZE - 0.25, 0, 0);
         board.addBall("besideSquare", 9.75, 10.5, 0, 0);
@@ -75,7 +76,7 @@ class ZeroVelocityTest {
     @EnumSource(LoopMode.class)
     void ballReleasedFromRestFallsAndBounces(LoopMode mode) {
         Board board = new Board();
-        board.setLoopMode(mode);
+        LoopModes.set(board, mode);
         board.addBall("B", 10, 2, 0, 0);
         double impactSpeed = Math.sqrt(2 * board.gravity() * (Board.SIZE - 0.25 - 2));
         new Watch("released from rest", board, DT).allowEnergyGainOfOneTickAt(impactSpeed).run(3000);
