@@ -87,8 +87,8 @@ final class Edits {
         }
         Flipper candidate = target.copy();
         candidate.setState(degrees, active);
-        refuseIfPresent(rules.ballOverlap(candidate).map(ball -> "flipper " + flipper + " at " + degrees
-                + " degrees would overlap ball " + ball));
+        refuseIfPresent(rules.ballOverlap(candidate).map(ball -> PlacementRules.wouldOverlap("flipper " + flipper
+                + " at " + degrees + " degrees", "ball", ball)));
         target.setState(degrees, active);
     }
 

@@ -58,14 +58,14 @@ final class PlacementRules {
             for (int cy = candidate.y(); cy < candidate.y() + candidate.height(); cy++) {
                 GizmoBase occupant = registry.index().at(cx, cy);
                 if (occupant != null && !occupant.name().equals(ignoring)) {
-                    return Optional.of(what + " would overlap gizmo " + occupant.name());
+                    return Optional.of(wouldOverlap(what, "gizmo", occupant.name()));
                 }
             }
         }
         if (candidate instanceof Absorber) {
             return Optional.empty();   // free balls under a new absorber are captured, not in the way
         }
-        return ballOverlap(candidate).map(ball -> what + " would overlap ball " + ball);
+        return ballOverlap(candidate).map(ball -> wouldOverlap(what, "ball", ball));
     }
 
     /** The first free ball that would be inside the candidate's body. */
@@ -92,13 +92,13 @@ final class PlacementRules {
             if (gizmo instanceof Absorber absorber) {
                 captor = absorber;
             } else {
-                throw new BoardEditException(what + " would overlap gizmo " + gizmo.name());
+                throw new BoardEditException(wouldOverlap(what, "gizmo", gizmo.name()));
             }
         }
         if (captor == null && !ballsMayOverlap) {
             Optional<Ball> other = freeBallUnder(position, ignoring);
             if (other.isPresent()) {
-                throw new BoardEditException(what + " would overlap ball " + other.get().name());
+                throw new BoardEditException(wouldOverlap(what, "ball", other.get().name()));
             }
         }
         return captor;
@@ -124,6 +124,11 @@ final class PlacementRules {
                 .filter(other -> !other.isCaptured() && !other.name().equals(ignoring)
                         && Overlaps.balls(other.position(), position))
                 .findFirst();
+    }
+
+    /** The one wording of every overlap refusal: "gizmo S1 at (2,3) would overlap ball B". */
+    static String wouldOverlap(String what, String kindOfThing, String name) {
+        return what + " would overlap " + kindOfThing + " " + name;
     }
 
     static boolean insideBoard(Vect position) {

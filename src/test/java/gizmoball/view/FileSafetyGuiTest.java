@@ -10,17 +10,13 @@ import gizmoball.model.Gizmo;
 import java.awt.Component;
 import java.awt.Container;
 import java.awt.Robot;
-import java.awt.Window;
 import java.awt.event.KeyEvent;
 import java.io.File;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
-import java.util.Optional;
-import java.util.function.Predicate;
 import java.util.stream.Collectors;
 import javax.swing.JButton;
 import javax.swing.JDialog;
@@ -28,53 +24,23 @@ import javax.swing.JFileChooser;
 import javax.swing.JLabel;
 import javax.swing.JTextArea;
 import javax.swing.SwingUtilities;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 
 /** Issue 12, items 1-6: the window never loses a board or a file's lines without asking (needs a display). */
-class FileSafetyGuiTest {
-    private static final String GOOD = "Square S1 2 2\nCircle C1 5 5\nBall B 10.5 5 0 0\n";
+class FileSafetyGuiTest extends WindowOnFiles {
     /** Two of its five lines are bad. */
     private static final String BAD = "Square S1 2 2\nSquare S2 x 3\nCircle C1 5 5\nBogus 1 2\nBall B 10.5 5 0 0\n";
 
-    @TempDir
-    Path dir;
-    private Gizmoball app;
-    private GameWindow window;
-
-    @BeforeEach
-    void display() {
-        Gui.assumeDisplay();
-    }
-
-    @AfterEach
-    void close() {
-        for (Window w : Window.getWindows()) {
-            onEdt(w::dispose);
-        }
-    }
-
-    private Path write(String name, String text) throws Exception {
-        return Files.writeString(dir.resolve(name), text);
-    }
-
-    private List<String> gizmoNames() {
-        return onEdt(() -> window.session().board().gizmos().stream().map(Gizmo::name).toList());
-    }
-
     private void loadSkipping(Path file) {
         SwingUtilities.invokeLater(() -> app.files().open(file));
-        click(awaitDialog(d -> "loadProblems".equals(d.getName())), LoadProblemsDialog.SKIP);
+        click(awaitProblemsDialog(), LoadProblemsDialog.SKIP);
         await("the good lines to load", () -> window.session().file().isPresent()
                 && window.session().file().get().equals(file));
     }
 
     @Test
     void saveAfterLoadingSkippingBadLinesAsksFirstNamingHowManyLinesTheFileWouldLose() throws Exception {
-        app = Gizmoball.launch(null);
-        window = app.window();
+        launch(null);
         Path file = write("peer.txt", BAD);
         loadSkipping(file);
         assertThat(onEdt(window::getTitle)).as("a board without some of its file's lines is unsaved")
@@ -100,8 +66,7 @@ class FileSafetyGuiTest {
 
     @Test
     void theLossQuestionOffersSaveAsWhichLeavesTheFileWhole() throws Exception {
-        app = Gizmoball.launch(null);
-        window = app.window();
+        launch(null);
         Path file = write("peer.txt", BAD);
         loadSkipping(file);
 
@@ -117,8 +82,7 @@ class FileSafetyGuiTest {
 
     @Test
     void aFileWhoseEveryLineIsBadIsNotOfferedForLoadingSkippingThem() throws Exception {
-        app = Gizmoball.launch(write("good.txt", GOOD));
-        window = app.window();
+        launch(write("good.txt", GOOD));
         Path bad = write("all-bad.txt", "Bogus 1 2\nSquare S x 1\n");
 
         SwingUtilities.invokeLater(() -> app.files().open(bad));
@@ -136,8 +100,7 @@ class FileSafetyGuiTest {
     void saveKeepsTheFilesPermissionBits() throws Exception {
         Path file = write("good.txt", GOOD);
         Files.setPosixFilePermissions(file, PosixFilePermissions.fromString("rw-r--r--"));
-        app = Gizmoball.launch(file);
-        window = app.window();
+        launch(file);
         onEdt(() -> window.session().markModified());
 
         Gui.clickMenu(window.menus(), "Save");
@@ -148,8 +111,7 @@ class FileSafetyGuiTest {
 
     @Test
     void saveIntoAMissingFolderSaysSo() throws Exception {
-        app = Gizmoball.launch(write("good.txt", GOOD));
-        window = app.window();
+        launch(write("good.txt", GOOD));
         Path missing = dir.resolve("no-such-dir");
 
         SwingUtilities.invokeLater(() -> app.files().saveAs());
@@ -164,8 +126,7 @@ class FileSafetyGuiTest {
 
     @Test
     void saveAsAddsTxtToANameWithoutExtension() throws Exception {
-        app = Gizmoball.launch(write("good.txt", GOOD));
-        window = app.window();
+        launch(write("good.txt", GOOD));
 
         SwingUtilities.invokeLater(() -> app.files().saveAs());
         approve(awaitChooser(), dir.resolve("my board").toFile());
@@ -177,8 +138,7 @@ class FileSafetyGuiTest {
 
     @Test
     void saveAsAsksBeforeReplacingTheFileTheAddedExtensionNames() throws Exception {
-        app = Gizmoball.launch(write("good.txt", GOOD));
-        window = app.window();
+        launch(write("good.txt", GOOD));
         Path existing = write("other.txt", "Square S9 9 9\n");
 
         SwingUtilities.invokeLater(() -> app.files().saveAs());
@@ -194,8 +154,7 @@ class FileSafetyGuiTest {
     @Test
     void reloadAsksToDiscardTheChangesAndEnterCancels() throws Exception {
         Path file = write("good.txt", GOOD);
-        app = Gizmoball.launch(file);
-        window = app.window();
+        launch(file);
         onEdt(() -> window.session().board().delete("S1"));
         onEdt(() -> window.session().markModified());
 
@@ -217,18 +176,6 @@ class FileSafetyGuiTest {
         click(awaitDialog(d -> "Reload".equals(d.getTitle())), "Reload");
         await("the reload", () -> window.session().board().gizmos().size() == 2);
         assertThat(onEdt(() -> window.session().isModified())).isFalse();
-    }
-
-    private static JDialog awaitDialog(Predicate<JDialog> which) {
-        await("a dialog", () -> showingDialog(which).isPresent());
-        return showingDialog(which).orElseThrow();
-    }
-
-    private static Optional<JDialog> showingDialog(Predicate<JDialog> which) {
-        return Arrays.stream(Window.getWindows())
-                .filter(w -> w instanceof JDialog d && d.isShowing() && which.test(d))
-                .map(JDialog.class::cast)
-                .findFirst();
     }
 
     private static JFileChooser awaitChooser() {
@@ -265,10 +212,5 @@ class FileSafetyGuiTest {
             }
         }
         return found;
-    }
-
-    private static void click(JDialog dialog, String text) {
-        onEdt(() -> Gui.find(dialog.getContentPane(), JButton.class, b -> text.equals(b.getText()))
-                .orElseThrow().doClick(0));
     }
 }

@@ -11,56 +11,20 @@ import gizmoball.model.Gizmo;
 import java.awt.Window;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Optional;
 import javax.swing.JButton;
 import javax.swing.JDialog;
-import javax.swing.JList;
 import javax.swing.SwingUtilities;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 
 /** Opening, reloading and saving board files through the window (needs a display). */
-class GameWindowFilesTest {
-    private static final String GOOD = "Square S1 2 2\nCircle C1 5 5\nBall B 10.5 5 0 0\n";
+class GameWindowFilesTest extends WindowOnFiles {
     private static final String BAD = "Square S1 2 2\nSquare S2 x 3\nCircle C1 5 5\nBogus 1 2\n";
-
-    @TempDir
-    Path dir;
-    private Gizmoball app;
-    private GameWindow window;
-
-    @BeforeEach
-    void display() {
-        Gui.assumeDisplay();
-    }
-
-    @AfterEach
-    void close() {
-        if (window != null) {
-            onEdt(window::dispose);
-        }
-        for (Window w : Window.getWindows()) {
-            onEdt(w::dispose);
-        }
-    }
-
-    private Path write(String name, String text) throws Exception {
-        return Files.writeString(dir.resolve(name), text);
-    }
-
-    private List<String> gizmoNames() {
-        return onEdt(() -> window.session().board().gizmos().stream().map(Gizmo::name).toList());
-    }
 
     @Test
     void launchOpensTheWindowOnTheBoardFile() throws Exception {
-        app = Gizmoball.launch(write("good.txt", GOOD));
-        window = app.window();
+        launch(write("good.txt", GOOD));
 
         assertThat(gizmoNames()).containsExactly("S1", "C1");
         assertThat(onEdt(window::getTitle)).isEqualTo("Gizmoball - good.txt");
@@ -69,13 +33,12 @@ class GameWindowFilesTest {
 
     @Test
     void aBadFileShowsItsLineNumberedProblemsAndCanBeKeptOut() throws Exception {
-        app = Gizmoball.launch(write("good.txt", GOOD));
-        window = app.window();
+        launch(write("good.txt", GOOD));
         Path bad = write("bad.txt", BAD);
 
         SwingUtilities.invokeLater(() -> app.files().open(bad));
         JDialog dialog = awaitProblemsDialog();
-        List<String> problems = problemsListed(dialog);
+        List<String> problems = listed(dialog, "loadProblems.list");
         assertThat(problems).hasSize(2);
         assertThat(problems.get(0)).startsWith("line 2: ").contains("Square S2 x 3");
         assertThat(problems.get(1)).startsWith("line 4: ").contains("Bogus 1 2");
@@ -90,8 +53,7 @@ class GameWindowFilesTest {
 
     @Test
     void aBadFileCanBeLoadedWithoutItsBadLines() throws Exception {
-        app = Gizmoball.launch(null);
-        window = app.window();
+        launch(null);
         Path bad = write("bad.txt", BAD);
 
         SwingUtilities.invokeLater(() -> app.files().open(bad));
@@ -104,8 +66,7 @@ class GameWindowFilesTest {
 
     @Test
     void launchOnABadFileShowsTheProblemsOnceTheWindowIsUp() throws Exception {
-        app = Gizmoball.launch(write("bad.txt", BAD));
-        window = app.window();
+        launch(write("bad.txt", BAD));
 
         click(awaitProblemsDialog(), LoadProblemsDialog.KEEP);
 
@@ -116,8 +77,7 @@ class GameWindowFilesTest {
     @Test
     void saveWritesTheDesignThatLoadsBackTheSame() throws Exception {
         Path file = write("good.txt", GOOD);
-        app = Gizmoball.launch(file);
-        window = app.window();
+        launch(file);
         for (int i = 0; i < 30; i++) {
             Gui.clickMenu(window.menus(), "Tick");
         }
@@ -135,8 +95,7 @@ class GameWindowFilesTest {
     @Test
     void reloadReadsTheFileAgain() throws Exception {
         Path file = write("good.txt", GOOD);
-        app = Gizmoball.launch(file);
-        window = app.window();
+        launch(file);
         Files.writeString(file, "Square S9 9 9\n");
 
         Gui.clickMenu(window.menus(), "Reload");
@@ -146,8 +105,7 @@ class GameWindowFilesTest {
 
     @Test
     void aMissingFileIsReportedAndTheBoardKept() throws Exception {
-        app = Gizmoball.launch(write("good.txt", GOOD));
-        window = app.window();
+        launch(write("good.txt", GOOD));
 
         SwingUtilities.invokeLater(() -> app.files().open(dir.resolve("missing.txt")));
         await("an error message", () -> window.statusLine().message().contains("missing.txt"));
@@ -162,8 +120,7 @@ class GameWindowFilesTest {
 
     @Test
     void newAsksBeforeDiscardingUnsavedChanges() throws Exception {
-        app = Gizmoball.launch(write("good.txt", GOOD));
-        window = app.window();
+        launch(write("good.txt", GOOD));
         onEdt(() -> window.session().markModified());
 
         SwingUtilities.invokeLater(() -> Gui.menuItem(window.menus(), "New").doClick(0));
@@ -175,32 +132,7 @@ class GameWindowFilesTest {
         assertThat(onEdt(() -> window.session().isModified())).isFalse();
     }
 
-    private Optional<JDialog> unsavedChangesDialog() {
-        return Arrays.stream(Window.getWindows())
-                .filter(w -> w instanceof JDialog d && d.isShowing() && "Unsaved changes".equals(d.getTitle()))
-                .map(JDialog.class::cast)
-                .findFirst();
-    }
-
-    private JDialog awaitProblemsDialog() {
-        await("the problems dialog", () -> Gui.showingWindow("loadProblems").isPresent());
-        return (JDialog) Gui.showingWindow("loadProblems").orElseThrow();
-    }
-
-    private static List<String> problemsListed(JDialog dialog) {
-        return onEdt(() -> {
-            @SuppressWarnings("unchecked")
-            JList<String> list = Gui.find(dialog.getContentPane(), JList.class, l -> true).orElseThrow();
-            List<String> items = new ArrayList<>();
-            for (int i = 0; i < list.getModel().getSize(); i++) {
-                items.add(list.getModel().getElementAt(i));
-            }
-            return items;
-        });
-    }
-
-    private static void click(JDialog dialog, String text) {
-        onEdt(() -> Gui.find(dialog.getContentPane(), JButton.class, b -> text.equals(b.getText()))
-                .orElseThrow().doClick(0));
+    private static Optional<JDialog> unsavedChangesDialog() {
+        return showingDialog(d -> "Unsaved changes".equals(d.getTitle()));
     }
 }

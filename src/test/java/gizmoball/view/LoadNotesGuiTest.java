@@ -7,56 +7,31 @@ import static org.assertj.core.api.Assertions.assertThat;
 import gizmoball.app.Gizmoball;
 import gizmoball.model.Gizmo;
 import gizmoball.model.Rgb;
-import java.awt.Window;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.List;
 import java.util.Optional;
-import javax.swing.JButton;
 import javax.swing.JDialog;
 import javax.swing.JLabel;
 import javax.swing.JList;
 import javax.swing.SwingUtilities;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 
 /** The notes of a load (lines read in another implementation's way) in the problems dialog (needs a display). */
-class LoadNotesGuiTest {
+class LoadNotesGuiTest extends WindowOnFiles {
     private static final String NOTES_ONLY = "Square S 1 1\ncolor S #99b3ff\nBall B 5 5\n";
     private static final String NOTES_AND_ERRORS = "Connect S C\nSquare S 1 1\nCircle C 3 3\nSpinner X 5 5\n";
 
-    @TempDir
-    Path dir;
-    private Gizmoball app;
-    private GameWindow window;
-
-    @BeforeEach
-    void display() {
-        Gui.assumeDisplay();
-    }
-
-    @AfterEach
-    void close() {
-        for (Window w : Window.getWindows()) {
-            onEdt(w::dispose);
-        }
-    }
-
     @Test
     void aFileWithOnlyNotesLoadsAndThenListsThemWithLineNumbers() throws Exception {
-        app = Gizmoball.launch(Files.writeString(dir.resolve("empty.txt"), ""));
-        window = app.window();
+        launch(Files.writeString(dir.resolve("empty.txt"), ""));
         Path file = Files.writeString(dir.resolve("peer.txt"), NOTES_ONLY);
 
         SwingUtilities.invokeLater(() -> app.files().open(file));
-        JDialog dialog = awaitDialog();
+        JDialog dialog = awaitProblemsDialog();
         assertThat(onEdt(() -> window.session().board().gizmos().stream().map(Gizmo::colour).toList()))
                 .as("loaded before the notes show").containsExactly(Optional.of(new Rgb(0x99, 0xb3, 0xff)));
         assertThat(onEdt(dialog::getTitle)).isEqualTo("Notes on peer.txt");
-        assertThat(list(dialog, "loadProblems.notes.list")).containsExactly(
+        assertThat(listed(dialog, "loadProblems.notes.list")).containsExactly(
                 "line 2: color S #99b3ff   <- read as Colour S 153 179 255",
                 "line 3: Ball B 5 5   <- no velocity given: the ball starts at rest");
         assertThat(onEdt(() -> Gui.find(dialog.getContentPane(), JList.class,
@@ -67,43 +42,19 @@ class LoadNotesGuiTest {
 
     @Test
     void errorsAndNotesShareTheDialogUnderTheirOwnHeadings() throws Exception {
-        app = Gizmoball.launch(Files.writeString(dir.resolve("empty.txt"), ""));
-        window = app.window();
+        launch(Files.writeString(dir.resolve("empty.txt"), ""));
         Path file = Files.writeString(dir.resolve("mixed.txt"), NOTES_AND_ERRORS);
 
         SwingUtilities.invokeLater(() -> app.files().open(file));
-        JDialog dialog = awaitDialog();
-        assertThat(list(dialog, "loadProblems.list")).containsExactly(
+        JDialog dialog = awaitProblemsDialog();
+        assertThat(listed(dialog, "loadProblems.list")).containsExactly(
                 "line 4: Spinner X 5 5   <- Spinner X: an extension of another implementation, not part of the format");
-        assertThat(list(dialog, "loadProblems.notes.list")).containsExactly(
+        assertThat(listed(dialog, "loadProblems.notes.list")).containsExactly(
                 "line 1: Connect S C   <- applied after line 3, which defines C");
         assertThat(onEdt(() -> Gui.find(dialog.getContentPane(), JLabel.class,
                 l -> "loadProblems.notes.heading".equals(l.getName())).orElseThrow().getText()))
                 .isEqualTo("A note: lines written for another Gizmoball, read as it meant them");
         click(dialog, LoadProblemsDialog.SKIP);
         await("the board without line 4", () -> onEdt(() -> window.session().board().connections().size()) == 1);
-    }
-
-    private static JDialog awaitDialog() {
-        await("the problems dialog", () -> Gui.showingWindow("loadProblems").isPresent());
-        return (JDialog) Gui.showingWindow("loadProblems").orElseThrow();
-    }
-
-    private static List<String> list(JDialog dialog, String name) {
-        return onEdt(() -> {
-            @SuppressWarnings("unchecked")
-            JList<String> list = Gui.find(dialog.getContentPane(), JList.class, l -> name.equals(l.getName()))
-                    .orElseThrow();
-            List<String> items = new ArrayList<>();
-            for (int i = 0; i < list.getModel().getSize(); i++) {
-                items.add(list.getModel().getElementAt(i));
-            }
-            return items;
-        });
-    }
-
-    private static void click(JDialog dialog, String text) {
-        onEdt(() -> Gui.find(dialog.getContentPane(), JButton.class, b -> text.equals(b.getText()))
-                .orElseThrow().doClick(0));
     }
 }
