@@ -121,9 +121,17 @@ public final class Editor {
         if (selected == null) {
             return Optional.empty();
         }
-        boolean exists = TriggerSource.named(selected) instanceof TriggerSource.OuterWalls
-                || board.gizmo(selected).isPresent() || board.ball(selected).isPresent();
+        boolean exists = isWalls(selected) || board.gizmo(selected).isPresent() || board.ball(selected).isPresent();
         return exists ? Optional.of(selected) : Optional.empty();
+    }
+
+    /** Whether the outer walls are selected (Select's click outside the board, or Connect's source there). */
+    public boolean wallsSelected() {
+        return selected != null && isWalls(selected);
+    }
+
+    private static boolean isWalls(String name) {
+        return TriggerSource.named(name) instanceof TriggerSource.OuterWalls;
     }
 
     public Optional<Gizmo> selectedGizmo() {
@@ -223,7 +231,7 @@ public final class Editor {
     }
 
     public boolean deleteSelected() {
-        Optional<String> name = selected().filter(n -> !(TriggerSource.named(n) instanceof TriggerSource.OuterWalls));
+        Optional<String> name = selected().filter(n -> !isWalls(n));
         if (name.isEmpty()) {
             say("Nothing selected to delete");
             return false;

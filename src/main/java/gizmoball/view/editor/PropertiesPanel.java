@@ -350,7 +350,7 @@ public final class PropertiesPanel extends JPanel {
             Ball b = ball.get();
             return named(b.name(), "ball" + (b.isCaptured() ? " (held by an absorber)" : ""));
         }
-        return controller.selected().filter(n -> TriggerSource.named(n) instanceof TriggerSource.OuterWalls).isPresent()
+        return controller.wallsSelected()
                 ? named(TriggerSource.OUTER_WALLS.name(), "the walls around the board")
                 : "Nothing selected";
     }
