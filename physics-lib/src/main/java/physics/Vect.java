@@ -54,7 +54,7 @@ public final class Vect implements Serializable {
     }
 
     public double length() {
-        // Along an axis hypot gives exactly the other component's magnitude (NaN and infinity too), without its
+        // Along an axis hypot gives exactly the other component's magnitude (infinity too), without its
         // cost: most walls, faces and bounced velocities lie along an axis.
         if (x == 0) {
             return Math.abs(y);

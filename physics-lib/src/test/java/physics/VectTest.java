@@ -6,6 +6,8 @@ import static org.assertj.core.api.Assertions.within;
 
 import java.awt.geom.Point2D;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 
 class VectTest {
     private static final double EPS = 1e-15;
@@ -16,6 +18,18 @@ class VectTest {
         assertThat(Vect.X_HAT).isEqualTo(new Vect(1, 0));
         assertThat(Vect.Y_HAT).isEqualTo(new Vect(0, 1));
         assertThat(new Vect(3, 4).length()).isEqualTo(5);
+    }
+
+    /** Along an axis the length is the other component's magnitude, bit for bit what hypot gives (infinities too). */
+    @ParameterizedTest
+    @ValueSource(doubles = {0.0, -0.0, 1e-310, -2.5, 3.75e300, Double.MAX_VALUE, Double.POSITIVE_INFINITY,
+            Double.NEGATIVE_INFINITY})
+    void lengthAlongAnAxisIsExactlyWhatHypotGives(double component) {
+        assertThat(new Vect(component, 0).length()).isEqualTo(Math.hypot(component, 0));
+        assertThat(new Vect(0, component).length()).isEqualTo(Math.hypot(0, component));
+        assertThat(new Vect(-0.0, component).length()).isEqualTo(Math.hypot(-0.0, component));
+        assertThat(Double.doubleToRawLongBits(new Vect(component, 0).length()))
+                .isEqualTo(Double.doubleToRawLongBits(Math.hypot(component, 0)));
     }
 
     @Test
