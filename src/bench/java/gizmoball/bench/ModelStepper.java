@@ -3,8 +3,8 @@ package gizmoball.bench;
 import gizmoball.model.Ball;
 import gizmoball.model.BenchSwitches;
 import gizmoball.model.Board;
-import gizmoball.model.Gizmo;
 import gizmoball.model.Invariants;
+import gizmoball.model.gizmo.Gizmo;
 
 import java.util.ArrayList;
 import java.util.List;

@@ -2,7 +2,7 @@ package gizmoball.bench;
 
 import gizmoball.model.Ball;
 import gizmoball.model.Board;
-import gizmoball.model.Gizmo;
+import gizmoball.model.gizmo.Gizmo;
 import physics.Vect;
 
 import java.util.ArrayList;

@@ -1,7 +1,7 @@
 package gizmoball.bench;
 
 import gizmoball.model.Board;
-import gizmoball.model.Gizmo;
+import gizmoball.model.gizmo.Gizmo;
 import physics.Vect;
 
 import java.util.List;

@@ -1,7 +1,7 @@
 package gizmoball.bench;
 
 import gizmoball.model.Board;
-import gizmoball.model.GizmoKind;
+import gizmoball.model.gizmo.GizmoKind;
 
 import java.util.ArrayList;
 import java.util.Collections;

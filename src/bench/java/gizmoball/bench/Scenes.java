@@ -1,8 +1,8 @@
 package gizmoball.bench;
 
 import gizmoball.model.Board;
-import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.gizmo.GizmoKind;
 import physics.Vect;
 
 import java.io.IOException;

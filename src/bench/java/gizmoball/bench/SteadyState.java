@@ -5,10 +5,10 @@ import gizmoball.boardfile.BoardFiles;
 import gizmoball.boardfile.LoadResult;
 import gizmoball.model.Ball;
 import gizmoball.model.Board;
-import gizmoball.model.GizmoKind;
 import gizmoball.model.GuardCounts;
 import gizmoball.model.Stage;
 import gizmoball.model.TickReport;
+import gizmoball.model.gizmo.GizmoKind;
 import physics.Vect;
 
 import java.io.IOException;

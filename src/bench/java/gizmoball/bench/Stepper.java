@@ -1,6 +1,6 @@
 package gizmoball.bench;
 
-import gizmoball.model.Gizmo;
+import gizmoball.model.gizmo.Gizmo;
 
 import java.util.List;
 

@@ -1,9 +1,9 @@
 package gizmoball.bench;
 
 import gizmoball.model.Board;
-import gizmoball.model.Bumper;
-import gizmoball.model.Flipper;
-import gizmoball.model.Gizmo;
+import gizmoball.model.gizmo.Bumper;
+import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.Gizmo;
 import physics.Vect;
 
 import java.util.List;

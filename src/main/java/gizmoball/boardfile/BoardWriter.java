@@ -1,12 +1,12 @@
 package gizmoball.boardfile;
 
-import gizmoball.model.Absorber;
 import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.Connection;
-import gizmoball.model.Flipper;
-import gizmoball.model.Gizmo;
 import gizmoball.model.KeyBinding;
+import gizmoball.model.gizmo.Absorber;
+import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.Gizmo;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;

@@ -4,10 +4,10 @@ import static gizmoball.boardfile.Decimals.format;
 
 import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
-import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyEdge;
-import gizmoball.model.Rgb;
 import gizmoball.model.TriggerSource;
+import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Rgb;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;

@@ -1,6 +1,6 @@
 package gizmoball.boardfile;
 
-import gizmoball.model.GizmoKind;
+import gizmoball.model.gizmo.GizmoKind;
 import java.util.Arrays;
 import java.util.Locale;
 import java.util.Map;

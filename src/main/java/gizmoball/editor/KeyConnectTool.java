@@ -1,8 +1,8 @@
 package gizmoball.editor;
 
 import gizmoball.boardfile.KeyCodes;
-import gizmoball.model.Gizmo;
 import gizmoball.model.KeyBinding;
+import gizmoball.model.gizmo.Gizmo;
 import java.awt.event.KeyEvent;
 import java.util.List;
 import java.util.Optional;

@@ -1,7 +1,7 @@
 package gizmoball.editor;
 
 import gizmoball.model.Board;
-import gizmoball.model.GizmoKind;
+import gizmoball.model.gizmo.GizmoKind;
 
 /**
  * Picks the first unused name of the form prefix + number (S1, C2, LF1, B3 ...). Gizmos and balls share one

@@ -1,6 +1,6 @@
 package gizmoball.editor;
 
-import gizmoball.model.GizmoKind;
+import gizmoball.model.gizmo.GizmoKind;
 
 /** Absorber: press on one corner cell, drag to the opposite one, release to place it. */
 final class PlaceAbsorberTool implements ToolHandler {

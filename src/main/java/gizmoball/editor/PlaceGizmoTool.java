@@ -1,6 +1,6 @@
 package gizmoball.editor;
 
-import gizmoball.model.GizmoKind;
+import gizmoball.model.gizmo.GizmoKind;
 
 /** Square, Circle, Triangle, Left and Right Flipper: a click places one with its top-left cell there. */
 final class PlaceGizmoTool implements ToolHandler {

@@ -1,6 +1,6 @@
 package gizmoball.editor;
 
-import gizmoball.model.Gizmo;
+import gizmoball.model.gizmo.Gizmo;
 import java.util.Optional;
 
 /** Rotate: a click turns a gizmo 90 degrees clockwise. */

@@ -1,8 +1,8 @@
 package gizmoball.editor;
 
 import gizmoball.model.Ball;
-import gizmoball.model.Gizmo;
 import gizmoball.model.TriggerSource;
+import gizmoball.model.gizmo.Gizmo;
 import java.util.Optional;
 
 /** Select / Move: a click selects a gizmo, a ball or the outer walls; a drag moves the gizmo or ball. */

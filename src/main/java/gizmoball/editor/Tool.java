@@ -1,7 +1,7 @@
 package gizmoball.editor;
 
 import gizmoball.boardfile.KeyCodes;
-import gizmoball.model.GizmoKind;
+import gizmoball.model.gizmo.GizmoKind;
 
 import java.awt.event.KeyEvent;
 import java.util.Arrays;

@@ -3,7 +3,7 @@
  * and gives each to the current tool's handler ({@code PlaceGizmoTool}, {@code SelectTool}, ...); what a tool
  * has half done is one {@link gizmoball.editor.PendingStep}. Edits go through the model's editing operations
  * inside the {@link gizmoball.editor.EditHistory} (undo, redo). Also the tools and the previews; gizmo kinds are
- * named as the model names them ({@link gizmoball.model.GizmoKind#displayName()}).
+ * named as the model names them ({@link gizmoball.model.gizmo.GizmoKind#displayName()}).
  *
  * <p>May use: the model, boardfile's key names, java.awt.event.KeyEvent's key codes. No Swing; the views in
  * gizmoball.view.editor read and drive it.

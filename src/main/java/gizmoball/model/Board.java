@@ -1,5 +1,12 @@
 package gizmoball.model;
 
+import gizmoball.model.gizmo.Absorber;
+import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Rgb;
+
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.Collections;

@@ -1,5 +1,9 @@
 package gizmoball.model;
 
+import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.Shape;
+
 import java.util.Collection;
 import java.util.List;
 import java.util.Set;

@@ -1,5 +1,8 @@
 package gizmoball.model;
 
+import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.GizmoBase;
+
 import physics.Circle;
 import physics.LineSegment;
 

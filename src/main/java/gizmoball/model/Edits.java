@@ -1,5 +1,11 @@
 package gizmoball.model;
 
+import gizmoball.model.gizmo.Absorber;
+import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Rgb;
+
 import java.util.List;
 import java.util.Optional;
 
@@ -123,7 +129,7 @@ final class Edits {
         refuseIfPresent(rules.problemFor(candidate, gizmo));
         registry.move(target, x, y);
         if (target instanceof Absorber absorber) {
-            absorber.held().forEach(held -> registry.ball(held).capture(absorber.holdingPosition()));
+            absorber.held().forEach(held -> registry.ball(held).capture(absorber.holdingPosition(Board.BALL_RADIUS)));
             play.captureFreeBallsIn(absorber);
         }
     }

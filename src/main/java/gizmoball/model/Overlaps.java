@@ -1,5 +1,7 @@
 package gizmoball.model;
 
+import gizmoball.model.gizmo.GizmoBase;
+
 import physics.Vect;
 
 /**

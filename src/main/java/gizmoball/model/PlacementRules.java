@@ -1,5 +1,9 @@
 package gizmoball.model;
 
+import gizmoball.model.gizmo.Absorber;
+import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.GizmoKind;
+
 import java.util.List;
 import java.util.Optional;
 

@@ -1,5 +1,10 @@
 package gizmoball.model;
 
+import gizmoball.model.gizmo.Absorber;
+import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.Surroundings;
+
 import java.util.ArrayList;
 import java.util.List;
 
@@ -7,11 +12,12 @@ import physics.Vect;
 
 /**
  * The actions of play: keys, triggers and captures. What a gizmo does when driven is its own
- * ({@link GizmoBase#act}, {@link GizmoBase#keyEdge}); this is what those actions do to the board around it: a flipper
- * that starts to swing wakes the balls in its box, an absorber fires only into a free spot. It also keeps the events
- * of play (for sound and flashes) until the tick reports them.
+ * ({@link GizmoBase#act}, {@link GizmoBase#keyDown}, {@link GizmoBase#keyUp}); this is what those actions do to the
+ * board around it, the {@link Surroundings} the gizmo is handed: a flipper that starts to swing wakes the balls in its
+ * box, an absorber fires only into a free spot. It also keeps the events of play (for sound and flashes) until the
+ * tick reports them.
  */
-final class Play {
+final class Play implements Surroundings {
     private final Registry registry;
     private final PlacementRules rules;
     private final Sleepers sleepers;
@@ -37,7 +43,11 @@ final class Play {
                 performAction(gizmo, now);
             } else if (binding.edge() == edge) {
                 gizmo.markTriggered(now);
-                gizmo.keyEdge(edge, this);
+                if (edge == KeyEdge.DOWN) {
+                    gizmo.keyDown(this);
+                } else {
+                    gizmo.keyUp(this);
+                }
             }
         }
     }
@@ -51,7 +61,8 @@ final class Play {
     /**
      * A flipper that starts to swing wakes every ball in its box (its whole sweep lies there) and what rests on them.
      */
-    void swung(Flipper flipper, boolean wasMoving) {
+    @Override
+    public void swung(Flipper flipper, boolean wasMoving) {
         if (flipper.isMoving() && !wasMoving) {
             recordEvent(new PlayEvent.Swing(flipper.name(), flipper.isActive()));
             wakeSweep(flipper);
@@ -69,14 +80,16 @@ final class Play {
      * Shoots the longest-held ball straight up from just above the top edge, if the spot there is free (inside
      * the board, no gizmo or free ball in the way); otherwise the ball stays held.
      */
-    void fire(Absorber absorber) {
-        String name = absorber.held().peekFirst();
-        if (name == null) {
+    @Override
+    public void fire(Absorber absorber) {
+        List<String> held = absorber.held();
+        if (held.isEmpty()) {
             return;
         }
-        Vect launch = absorber.launchPosition();
+        String name = held.get(0);
+        Vect launch = absorber.launchPosition(Board.BALL_RADIUS);
         if (rules.freeForBall(launch)) {
-            absorber.held().removeFirst();
+            absorber.letGo(name);
             registry.ball(name).release(launch, new Vect(0, -Board.ABSORBER_LAUNCH_SPEED));
             recordEvent(new PlayEvent.Fired(absorber.name()));
             double margin = 4 * Board.BALL_RADIUS;
@@ -86,8 +99,8 @@ final class Play {
 
     /** Holds the ball at the absorber's bottom-right corner, at rest, behind any it already holds. */
     void capture(Ball ball, Absorber absorber) {
-        ball.capture(absorber.holdingPosition());
-        absorber.held().addLast(ball.name());
+        ball.capture(absorber.holdingPosition(Board.BALL_RADIUS));
+        absorber.hold(ball.name());
     }
 
     /** An absorber placed or moved captures the free balls it now covers. */

@@ -1,5 +1,7 @@
 package gizmoball.model;
 
+import gizmoball.model.gizmo.GizmoKind;
+
 import physics.Vect;
 
 /** Something audible or visible that happened in play, reported with the tick it happened in (for sound, flashes). */

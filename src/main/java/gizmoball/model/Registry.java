@@ -1,5 +1,9 @@
 package gizmoball.model;
 
+import gizmoball.model.gizmo.Absorber;
+import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.GizmoBase;
+
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.HashSet;
@@ -112,7 +116,7 @@ final class Registry {
     void releaseFromAbsorber(Ball ball) {
         gizmos.values().stream()
                 .filter(g -> g instanceof Absorber)
-                .forEach(g -> ((Absorber) g).held().remove(ball.name()));
+                .forEach(g -> ((Absorber) g).letGo(ball.name()));
     }
 
     List<Flipper> flippers() {

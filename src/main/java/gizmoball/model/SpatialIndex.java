@@ -1,5 +1,7 @@
 package gizmoball.model;
 
+import gizmoball.model.gizmo.GizmoBase;
+
 import java.util.ArrayList;
 import java.util.List;
 

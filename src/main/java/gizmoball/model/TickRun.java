@@ -1,5 +1,10 @@
 package gizmoball.model;
 
+import gizmoball.model.gizmo.Absorber;
+import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.Shape;
+
 import java.util.ArrayList;
 import java.util.EnumMap;
 import java.util.HashMap;

@@ -1,7 +1,7 @@
 /**
  * The Gizmoball board without any Swing: gizmos, balls, connections, key bindings, the editing operations and
- * the six-stage physics loop (docs/design.md, "The tick"). It may use {@code physics} (only the listed API) and
- * the JDK; no AWT, no Swing.
+ * the six-stage physics loop (docs/design.md, "The tick"). It may use the gizmo kinds ({@code gizmoball.model.gizmo},
+ * which may not use this package), {@code physics} (only the listed API) and the JDK; no AWT, no Swing.
  *
  * <p>{@link gizmoball.model.Board} holds everything and is the only way to change it, a facade over parts with one
  * job each: {@code Registry} (the gizmos and balls by name), {@code PlacementRules} (bounds, overlaps, names),

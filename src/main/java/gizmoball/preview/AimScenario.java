@@ -4,7 +4,7 @@ import gizmoball.editor.Preview;
 import gizmoball.editor.Tool;
 import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
-import gizmoball.model.GizmoKind;
+import gizmoball.model.gizmo.GizmoKind;
 import java.util.Optional;
 
 /**

@@ -1,8 +1,8 @@
 package gizmoball.sound;
 
-import gizmoball.model.GizmoKind;
 import gizmoball.model.PlayEvent;
 import gizmoball.model.TriggerSource;
+import gizmoball.model.gizmo.GizmoKind;
 import java.util.Optional;
 
 /**

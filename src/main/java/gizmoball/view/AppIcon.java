@@ -1,7 +1,7 @@
 package gizmoball.view;
 
 import gizmoball.model.Board;
-import gizmoball.model.GizmoKind;
+import gizmoball.model.gizmo.GizmoKind;
 import java.awt.Graphics2D;
 import java.awt.Image;
 import java.awt.RenderingHints;

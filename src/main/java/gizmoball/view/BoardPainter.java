@@ -2,10 +2,10 @@ package gizmoball.view;
 
 import gizmoball.model.Ball;
 import gizmoball.model.Board;
-import gizmoball.model.Bumper;
-import gizmoball.model.Flipper;
-import gizmoball.model.Gizmo;
-import gizmoball.model.GizmoKind;
+import gizmoball.model.gizmo.Bumper;
+import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.GizmoKind;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;

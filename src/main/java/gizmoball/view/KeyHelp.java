@@ -2,10 +2,10 @@ package gizmoball.view;
 
 import gizmoball.boardfile.KeyCodes;
 import gizmoball.model.Board;
-import gizmoball.model.Gizmo;
-import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.GizmoKind;
 import java.util.EnumSet;
 import java.util.LinkedHashMap;
 import java.util.List;

@@ -142,15 +142,15 @@ class ApiOnlyTest {
         return found;
     }
 
-    private interface ClassFileVisitor {
+    interface ClassFileVisitor {
         void visit(String name, ClassFileReferences refs) throws IOException;
     }
 
     /**
      * Every class file of the game's main output: the directory or jar that the class loader took gizmoball.Main
-     * from, which is src/main/java's output under every Gradle version.
+     * from, which is src/main/java's output under every Gradle version. {@link PackageArrowsTest} reads them too.
      */
-    private static void forEachGameClassFile(ClassFileVisitor visitor) throws IOException, URISyntaxException {
+    static void forEachGameClassFile(ClassFileVisitor visitor) throws IOException, URISyntaxException {
         forEachClassFile(Path.of(Main.class.getProtectionDomain().getCodeSource().getLocation().toURI()), visitor);
     }
 

@@ -4,9 +4,9 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import gizmoball.model.Board;
-import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.TriggerSource;
+import gizmoball.model.gizmo.GizmoKind;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;

@@ -6,10 +6,10 @@ import static org.assertj.core.groups.Tuple.tuple;
 
 import gizmoball.model.Board;
 import gizmoball.model.Connection;
-import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.TriggerSource;
+import gizmoball.model.gizmo.GizmoKind;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;

@@ -3,10 +3,10 @@ package gizmoball.boardfile;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyEdge;
-import gizmoball.model.Rgb;
 import gizmoball.model.TriggerSource;
+import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Rgb;
 import java.util.List;
 import java.util.stream.Stream;
 import org.junit.jupiter.params.ParameterizedTest;

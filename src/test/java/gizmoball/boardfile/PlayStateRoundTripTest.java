@@ -4,10 +4,10 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.model.Ball;
 import gizmoball.model.Board;
-import gizmoball.model.Flipper;
-import gizmoball.model.Gizmo;
-import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.GizmoKind;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;

@@ -2,10 +2,10 @@ package gizmoball.boardfile;
 
 import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
-import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyEdge;
-import gizmoball.model.Rgb;
 import gizmoball.model.TriggerSource;
+import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Rgb;
 import java.util.List;
 import java.util.Optional;
 import java.util.Random;

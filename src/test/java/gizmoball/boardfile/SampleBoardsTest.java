@@ -4,10 +4,10 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.fail;
 
 import gizmoball.model.Board;
-import gizmoball.model.Flipper;
-import gizmoball.model.GizmoKind;
 import gizmoball.model.Invariants;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.GizmoKind;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;

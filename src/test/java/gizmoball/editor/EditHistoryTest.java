@@ -3,7 +3,7 @@ package gizmoball.editor;
 import gizmoball.boardfile.BoardContents;
 import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
-import gizmoball.model.GizmoKind;
+import gizmoball.model.gizmo.GizmoKind;
 import org.junit.jupiter.api.Test;
 
 import java.util.concurrent.atomic.AtomicInteger;

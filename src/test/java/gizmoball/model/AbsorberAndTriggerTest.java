@@ -4,6 +4,9 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.within;
 
+import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.GizmoKind;
+
 import org.junit.jupiter.api.Test;
 
 import physics.Vect;

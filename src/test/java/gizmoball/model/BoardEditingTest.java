@@ -3,6 +3,11 @@ package gizmoball.model;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import gizmoball.model.gizmo.Bumper;
+import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.GizmoKind;
+
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Consumer;

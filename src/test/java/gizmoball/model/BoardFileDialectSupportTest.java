@@ -3,6 +3,10 @@ package gizmoball.model;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Rgb;
+
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;

@@ -1,5 +1,7 @@
 package gizmoball.model;
 
+import gizmoball.model.gizmo.Flipper;
+
 import java.util.stream.Collectors;
 
 /** A complete textual description of a board's state, for comparing boards in tests. */

@@ -2,6 +2,9 @@ package gizmoball.model;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.GizmoKind;
+
 import java.util.List;
 import java.util.Random;
 

@@ -3,6 +3,8 @@ package gizmoball.model;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
+import gizmoball.model.gizmo.GizmoKind;
+
 import java.util.Random;
 
 import org.junit.jupiter.api.Test;

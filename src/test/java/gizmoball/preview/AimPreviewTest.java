@@ -5,7 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import gizmoball.editor.Preview;
 import gizmoball.editor.Tool;
 import gizmoball.model.Board;
-import gizmoball.model.GizmoKind;
+import gizmoball.model.gizmo.GizmoKind;
 import java.util.ArrayDeque;
 import java.util.Optional;
 import org.junit.jupiter.api.Test;

@@ -3,7 +3,7 @@ package gizmoball.session;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.model.Board;
-import gizmoball.model.GizmoKind;
+import gizmoball.model.gizmo.GizmoKind;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;

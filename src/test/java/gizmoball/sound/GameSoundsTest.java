@@ -4,9 +4,9 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
 import gizmoball.model.Board;
-import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.PlayEvent;
+import gizmoball.model.gizmo.GizmoKind;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;

@@ -2,7 +2,7 @@ package gizmoball.sound;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gizmoball.model.GizmoKind;
+import gizmoball.model.gizmo.GizmoKind;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;

@@ -3,7 +3,7 @@ package gizmoball.sound;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
-import gizmoball.model.GizmoKind;
+import gizmoball.model.gizmo.GizmoKind;
 import java.util.Arrays;
 import org.junit.jupiter.api.Test;
 

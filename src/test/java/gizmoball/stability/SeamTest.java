@@ -2,9 +2,9 @@ package gizmoball.stability;
 
 import gizmoball.model.Ball;
 import gizmoball.model.Board;
-import gizmoball.model.GizmoKind;
 import gizmoball.model.LoopMode;
 import gizmoball.model.LoopModes;
+import gizmoball.model.gizmo.GizmoKind;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 

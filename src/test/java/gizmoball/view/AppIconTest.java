@@ -2,7 +2,7 @@ package gizmoball.view;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gizmoball.model.GizmoKind;
+import gizmoball.model.gizmo.GizmoKind;
 import java.awt.Color;
 import java.awt.Image;
 import java.awt.image.BufferedImage;

@@ -3,7 +3,7 @@ package gizmoball.view;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.model.Board;
-import gizmoball.model.GizmoKind;
+import gizmoball.model.gizmo.GizmoKind;
 import java.awt.Color;
 import java.awt.Graphics2D;
 import java.awt.geom.Point2D;

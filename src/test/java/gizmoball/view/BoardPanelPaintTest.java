@@ -3,9 +3,9 @@ package gizmoball.view;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.model.Board;
-import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyEdge;
-import gizmoball.model.Rgb;
+import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Rgb;
 import java.awt.Color;
 import java.awt.Graphics2D;
 import java.awt.geom.Point2D;

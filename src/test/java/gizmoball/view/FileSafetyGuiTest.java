@@ -6,7 +6,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.app.Gizmoball;
 import gizmoball.boardfile.BoardFiles;
-import gizmoball.model.Gizmo;
+import gizmoball.model.gizmo.Gizmo;
 import java.awt.Component;
 import java.awt.Container;
 import java.awt.Robot;

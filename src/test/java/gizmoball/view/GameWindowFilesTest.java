@@ -7,7 +7,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import gizmoball.app.Gizmoball;
 import gizmoball.boardfile.BoardFiles;
 import gizmoball.model.Board;
-import gizmoball.model.Gizmo;
+import gizmoball.model.gizmo.Gizmo;
 import java.awt.Window;
 import java.nio.file.Files;
 import java.nio.file.Path;

@@ -3,8 +3,8 @@ package gizmoball.view;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.model.Board;
-import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.gizmo.GizmoKind;
 import java.awt.event.KeyEvent;
 import org.junit.jupiter.api.Test;
 

@@ -5,8 +5,8 @@ import static gizmoball.view.Gui.onEdt;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.app.Gizmoball;
-import gizmoball.model.Gizmo;
-import gizmoball.model.Rgb;
+import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.Rgb;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Optional;

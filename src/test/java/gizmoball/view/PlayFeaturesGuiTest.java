@@ -9,7 +9,7 @@ import gizmoball.app.Gizmoball;
 import gizmoball.app.PlayFeatures;
 import gizmoball.controller.Settings;
 import gizmoball.controller.Speed;
-import gizmoball.model.GizmoKind;
+import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.preview.AimPreview;
 import gizmoball.preview.Prediction;
 import java.awt.Rectangle;

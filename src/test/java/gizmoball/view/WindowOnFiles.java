@@ -4,7 +4,7 @@ import static gizmoball.view.Gui.await;
 import static gizmoball.view.Gui.onEdt;
 
 import gizmoball.app.Gizmoball;
-import gizmoball.model.Gizmo;
+import gizmoball.model.gizmo.Gizmo;
 import java.awt.Window;
 import java.nio.file.Files;
 import java.nio.file.Path;

@@ -6,10 +6,10 @@ import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.BoardChange;
 import gizmoball.model.Connection;
-import gizmoball.model.Gizmo;
 import gizmoball.model.KeyBinding;
-import gizmoball.model.Rgb;
 import gizmoball.model.TriggerSource;
+import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.Rgb;
 import gizmoball.view.BoardPainter;
 
 import javax.swing.BorderFactory;

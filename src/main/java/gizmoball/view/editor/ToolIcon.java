@@ -1,7 +1,7 @@
 package gizmoball.view.editor;
 
 import gizmoball.editor.Tool;
-import gizmoball.model.GizmoKind;
+import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.view.BoardPainter;
 
 import javax.swing.Icon;

@@ -6,10 +6,10 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.editor.Tool;
 import gizmoball.model.Board;
-import gizmoball.model.GizmoKind;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.TriggerSource;
+import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.view.Gui;
 import java.awt.Window;
 import java.awt.event.KeyEvent;

@@ -1,4 +1,4 @@
-package gizmoball.model;
+package gizmoball.model.gizmo;
 
 import java.util.List;
 
@@ -17,11 +17,14 @@ import physics.Vect;
  */
 public final class Flipper extends GizmoBase implements Gizmo {
     static final double RADIUS = 0.25;
-    static final double REFLECTION = 0.95;
-    static final double MAX_ANGLE = 90;
+    /** Its {@link #reflectionCoefficient()}, a constant for the loop's reflections off a swinging flipper. */
+    public static final double REFLECTION = 0.95;
+    /** Degrees from rest to the active stop. */
+    public static final double MAX_ANGLE = 90;
     static final double DEGREES_PER_SECOND = 1080;
-    /** Index of the pivot circle and of the tip circle in {@link Shape#circles()}. */
-    static final int PIVOT_CIRCLE = 0;
+    /** Index of the pivot circle in {@link Shape#circles()}: it turns in place, so the loop treats it as still. */
+    public static final int PIVOT_CIRCLE = 0;
+    /** Index of the tip circle in {@link Shape#circles()}. */
     static final int TIP_CIRCLE = 1;
     private static final double LIMIT_SNAP_DEGREES = 1e-9;
 
@@ -90,72 +93,86 @@ public final class Flipper extends GizmoBase implements Gizmo {
         return blocked;
     }
 
-    void activate() {
+    private void activate() {
         if (!active) {
             toggle();
         }
     }
 
-    void deactivate() {
+    private void deactivate() {
         if (active) {
             toggle();
         }
     }
 
     /** Sent the other way: whatever blocked it is behind it now. */
-    void toggle() {
+    private void toggle() {
         active = !active;
         blocked = false;
     }
 
     /** Triggered, it toggles: up if it was down or going down, else back down. */
     @Override
-    void act(Play play) {
+    public void act(Surroundings around) {
         boolean wasMoving = isMoving();
         toggle();
-        play.swung(this, wasMoving);
+        around.swung(this, wasMoving);
     }
 
-    /** A key swings it up while held: up on DOWN, back down on UP, whichever way it was going. */
+    /** A key swings it up while held: up when the key goes down, whichever way it was going. */
     @Override
-    void keyEdge(KeyEdge edge, Play play) {
+    public void keyDown(Surroundings around) {
         boolean wasMoving = isMoving();
-        if (edge == KeyEdge.DOWN) {
-            activate();
-        } else {
-            deactivate();
-        }
-        play.swung(this, wasMoving);
+        activate();
+        around.swung(this, wasMoving);
     }
 
-    /** Puts the flipper at an angle (0..90 degrees from rest), swinging toward its active stop or its rest. */
-    void setState(double degrees, boolean toActive) {
+    /** Back down when the held key goes up, whichever way it was going. */
+    @Override
+    public void keyUp(Surroundings around) {
+        boolean wasMoving = isMoving();
+        deactivate();
+        around.swung(this, wasMoving);
+    }
+
+    /**
+     * Puts the flipper at an angle (0..90 degrees from rest), swinging toward its active stop or its rest. For the
+     * board and its loop, not for views.
+     */
+    public void setState(double degrees, boolean toActive) {
         angle = degrees;
         active = toActive;
         blocked = false;
         currentShape = shapeAt(angle);
     }
 
-    /** A ball pinched between the flipper and something else stops it where it is. */
-    void block() {
+    /**
+     * A ball pinched between the flipper and something else stops it where it is. For the board and its loop, not for
+     * views.
+     */
+    public void block() {
         blocked = true;
     }
 
-    /** The ball that blocked it has gone: it swings on. */
-    void unblock() {
+    /** The ball that blocked it has gone: it swings on. For the board and its loop, not for views. */
+    public void unblock() {
         blocked = false;
     }
 
-    /** Seconds until the flipper reaches the limit it is swinging to (0 when still). */
-    double timeToStop() {
+    /**
+     * Seconds until the flipper reaches the limit it is swinging to (0 when still). For the board and its loop, not for
+     * views.
+     */
+    public double timeToStop() {
         return (active ? MAX_ANGLE - angle : angle) / DEGREES_PER_SECOND;
     }
 
     /**
-     * Signed angular velocity in radians per second in the library's sense (+x toward +y), 0 when still. A left
-     * flipper swings up from +y (hanging) to +x (the top edge): toward -; the right one mirrors it.
+     * Signed angular velocity in radians per second in the library's sense (+x toward +y), 0 when still. A left flipper
+     * swings up from +y (hanging) to +x (the top edge): toward -; the right one mirrors it. For the board and its loop,
+     * not for views.
      */
-    double angularVelocity() {
+    public double angularVelocity() {
         if (!isMoving()) {
             return 0;
         }
@@ -163,8 +180,11 @@ public final class Flipper extends GizmoBase implements Gizmo {
         return (active ? up : -up) * Math.toRadians(DEGREES_PER_SECOND);
     }
 
-    /** Swings for dt seconds toward the current limit, stopping exactly at it. */
-    void advance(double dt) {
+    /**
+     * Swings for dt seconds toward the current limit, stopping exactly at it. For the board and its loop, not for
+     * views.
+     */
+    public void advance(double dt) {
         if (!isMoving() || dt <= 0) {
             return;
         }
@@ -176,13 +196,13 @@ public final class Flipper extends GizmoBase implements Gizmo {
         currentShape = shapeAt(angle);
     }
 
-    /** The shape at the limit it is swinging to (where it will stop). */
-    Shape shapeAtStop() {
+    /** The shape at the limit it is swinging to (where it will stop). For the board and its loop, not for views. */
+    public Shape shapeAtStop() {
         return shapeAt(active ? MAX_ANGLE : 0);
     }
 
     @Override
-    Shape shape() {
+    public Shape shape() {
         return currentShape;
     }
 
@@ -218,12 +238,12 @@ public final class Flipper extends GizmoBase implements Gizmo {
     }
 
     @Override
-    double signedDistance(Vect p) {
+    public double signedDistance(Vect p) {
         return Solids.toCapsule(pivot(), tip(), RADIUS, p);
     }
 
     @Override
-    Flipper copy() {
+    public Flipper copy() {
         return new Flipper(this);
     }
 }

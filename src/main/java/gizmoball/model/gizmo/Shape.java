@@ -1,4 +1,4 @@
-package gizmoball.model;
+package gizmoball.model.gizmo;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -9,11 +9,12 @@ import physics.Vect;
 
 /**
  * The physical outline of a gizmo as the collision methods see it: line segments and circles. Polygons get a
- * zero-radius circle at every corner, so a ball hitting a corner reflects about the true contact normal.
+ * zero-radius circle at every corner, so a ball hitting a corner reflects about the true contact normal. The
+ * gizmos build their shapes; the board's loop reads them.
  */
-record Shape(List<LineSegment> segments, List<Circle> circles) {
+public record Shape(List<LineSegment> segments, List<Circle> circles) {
 
-    Shape {
+    public Shape {
         segments = List.copyOf(segments);
         circles = List.copyOf(circles);
     }

@@ -1,4 +1,4 @@
-package gizmoball.model;
+package gizmoball.model.gizmo;
 
 /**
  * A gizmo's own colour, as plain red, green and blue channels 0..255 (the model draws nothing, so no AWT type).

@@ -1,4 +1,4 @@
-package gizmoball.model;
+package gizmoball.model.gizmo;
 
 import java.util.Optional;
 
@@ -6,10 +6,11 @@ import physics.Vect;
 
 /**
  * What every gizmo holds: name, kind, footprint cell, rotation, last trigger time, and its physical shape, which is
- * rebuilt only when the gizmo is placed, moved or rotated (never per tick). Mutators are package-private: only
- * {@link Board} changes gizmos, after it has checked the change on a copy.
+ * rebuilt only when the gizmo is placed, moved or rotated (never per tick). Views see a gizmo as a {@link Gizmo}.
+ * The members the board and its loop need beyond that are public only because the board lives in another
+ * package; each says so: only the board changes gizmos, after it has checked the change on a copy.
  */
-abstract sealed class GizmoBase permits Bumper, Flipper, Absorber {
+public abstract sealed class GizmoBase permits Bumper, Flipper, Absorber {
     private final String name;
     private final GizmoKind kind;
     private int x;
@@ -73,36 +74,56 @@ abstract sealed class GizmoBase permits Bumper, Flipper, Absorber {
         return Optional.ofNullable(colour);
     }
 
-    void setColour(Optional<Rgb> newColour) {
+    /** Its own colour, or empty for the kind's. For the board and its loop, not for views. */
+    public void setColour(Optional<Rgb> newColour) {
         colour = newColour.orElse(null);
     }
 
-    /** The shape the collision detection uses now (for a flipper: at its current angle). */
-    Shape shape() {
+    /**
+     * The shape the collision detection uses now (for a flipper: at its current angle). For the board and its loop, not
+     * for views.
+     */
+    public Shape shape() {
         return shape;
     }
 
     /** Builds the static shape for the current footprint and rotation; called after every placement change. */
     abstract Shape buildShape();
 
-    /** Signed distance from p to the solid body of the gizmo as it is now (negative inside). */
-    abstract double signedDistance(Vect p);
+    /**
+     * Signed distance from p to the solid body of the gizmo as it is now (negative inside). For the board and its loop,
+     * not for views.
+     */
+    public abstract double signedDistance(Vect p);
 
-    /** A deep copy with all play state. */
-    abstract GizmoBase copy();
+    /**
+     * A deep copy with all play state (the board checks each change on one first). For the board and its loop, not for
+     * views.
+     */
+    public abstract GizmoBase copy();
 
-    /** Whether a quarter turn changes anything (not for circles and absorbers). */
-    boolean rotates() {
+    /**
+     * Whether a quarter turn changes anything (not for circles and absorbers). For the board and its loop, not for
+     * views.
+     */
+    public boolean rotates() {
         return kind != GizmoKind.CIRCLE && kind != GizmoKind.ABSORBER;
     }
 
-    void moveTo(int newX, int newY) {
+    /**
+     * Puts its top-left cell at (newX, newY) and rebuilds its shape there. For the board and its loop, not for views.
+     */
+    public void moveTo(int newX, int newY) {
         x = newX;
         y = newY;
         rebuildShape();
     }
 
-    void rotateClockwise() {
+    /**
+     * A quarter turn clockwise, if it {@link #rotates}, and its shape rebuilt. For the board and its loop, not for
+     * views.
+     */
+    public void rotateClockwise() {
         if (rotates()) {
             rotation = (rotation + 1) % 4;
             rebuildShape();
@@ -113,23 +134,32 @@ abstract sealed class GizmoBase permits Bumper, Flipper, Absorber {
         shape = buildShape();
     }
 
-    void markTriggered(double time) {
+    /** Records board time {@code time} as its last trigger or hit. For the board and its loop, not for views. */
+    public void markTriggered(double time) {
         lastTriggeredAt = time;
     }
 
     /**
      * Its action when it is triggered (by a hit on a source it is connected to, or a key's change binding), done
-     * through {@code play} where it reaches beyond the gizmo. A bumper has none: it only records the time.
+     * through {@code around} where it reaches beyond the gizmo. A bumper has none: it only records the time.
+     * For the board and its loop, not for views.
      */
-    void act(Play play) {
+    public void act(Surroundings around) {
     }
 
-    /** A key bound to {@code edge} of it went down or up: by default its action. */
-    void keyEdge(KeyEdge edge, Play play) {
-        act(play);
+    /** A key bound to its press went down: by default its action. For the board and its loop, not for views. */
+    public void keyDown(Surroundings around) {
+        act(around);
     }
 
-    /** Turns a point given for the unrotated footprint by the gizmo's rotation, clockwise about the footprint centre. */
+    /** A key bound to its release went up: by default its action. For the board and its loop, not for views. */
+    public void keyUp(Surroundings around) {
+        act(around);
+    }
+
+    /**
+     * Turns a point given for the unrotated footprint by the gizmo's rotation, clockwise about the footprint centre.
+     */
     Vect rotated(double px, double py) {
         double cx = x + width() / 2.0;
         double cy = y + height() / 2.0;

@@ -1,4 +1,4 @@
-package gizmoball.model;
+package gizmoball.model.gizmo;
 
 import java.util.List;
 
@@ -7,8 +7,9 @@ import physics.LineSegment;
 import physics.Vect;
 
 /**
- * Signed distances from a point to the solid bodies of gizmos (negative inside). Used to refuse overlapping
- * placements and by {@link Invariants}; collisions never use this, they go through physics.Geometry.
+ * Signed distances from a point to the solid bodies of gizmos (negative inside), behind each gizmo's
+ * {@code signedDistance}: the board refuses overlapping placements and checks its invariants with them; collisions
+ * never use this, they go through physics.Geometry.
  */
 final class Solids {
     private Solids() {

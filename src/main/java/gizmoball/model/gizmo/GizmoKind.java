@@ -1,4 +1,4 @@
-package gizmoball.model;
+package gizmoball.model.gizmo;
 
 import java.util.Locale;
 
@@ -36,9 +36,10 @@ public enum GizmoKind {
 
     /**
      * A new gizmo of this kind with its top-left cell at (x, y): the one place that maps a kind to its class. An
-     * absorber has a size of its own and is made from its corners ({@link Board#addAbsorber}).
+     * absorber has a size of its own and is made from its corners (the board's {@code addAbsorber}). For the board and
+     * its loop, not for views.
      */
-    GizmoBase create(String name, int x, int y) {
+    public GizmoBase create(String name, int x, int y) {
         return switch (this) {
             case SQUARE, CIRCLE, TRIANGLE -> new Bumper(this, name, x, y);
             case LEFT_FLIPPER, RIGHT_FLIPPER -> new Flipper(this, name, x, y);

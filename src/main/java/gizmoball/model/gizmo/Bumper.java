@@ -1,4 +1,4 @@
-package gizmoball.model;
+package gizmoball.model.gizmo;
 
 import java.util.List;
 
@@ -51,14 +51,14 @@ public final class Bumper extends GizmoBase implements Gizmo {
     }
 
     @Override
-    double signedDistance(Vect p) {
+    public double signedDistance(Vect p) {
         return kind() == GizmoKind.CIRCLE
                 ? Solids.toDisc(circle().getCenter(), CIRCLE_RADIUS, p)
                 : Solids.toConvexPolygon(outline(), p);
     }
 
     @Override
-    Bumper copy() {
+    public Bumper copy() {
         return new Bumper(this);
     }
 }

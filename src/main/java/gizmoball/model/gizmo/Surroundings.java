@@ -1,0 +1,18 @@
+package gizmoball.model.gizmo;
+
+/**
+ * What a driven gizmo's action does beyond the gizmo itself, to the board around it. The gizmo kinds may not see
+ * the board (this package does not use {@code gizmoball.model}), so the board's play rules implement this and hand
+ * it to {@link GizmoBase#act}, {@link GizmoBase#keyDown} and {@link GizmoBase#keyUp}.
+ */
+public interface Surroundings {
+
+    /** The absorber was triggered: it fires its longest-held ball, if the spot above it is free. */
+    void fire(Absorber absorber);
+
+    /**
+     * The flipper was driven ({@code wasMoving}: whether it was swinging before): one that starts to swing wakes
+     * the balls in its box, where all of its sweep lies.
+     */
+    void swung(Flipper flipper, boolean wasMoving);
+}

@@ -1,0 +1,70 @@
+package gizmoball.api;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.net.URISyntaxException;
+import java.util.ArrayList;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+
+import gizmoball.model.Board;
+import gizmoball.view.BoardPainter;
+
+/**
+ * The model's arrows run one way (docs/design.md, "Package map"): the gizmo kinds use nothing of the board they
+ * sit in, only the board uses the kinds, and neither uses AWT or Swing. Read from the constant pools of the
+ * game's compiled classes, which name every class a class uses (imports that only Javadoc uses leave none).
+ */
+class PackageArrowsTest {
+    private static final String GAME = "gizmoball/";
+    private static final String MODEL = "gizmoball/model/";
+    private static final String KINDS = "gizmoball/model/gizmo/";
+
+    @Test
+    void theKindsUseNothingOfTheGameOutsideThemAndTheModelNoAwtOrSwing() throws IOException, URISyntaxException {
+        List<String> kinds = new ArrayList<>();
+        List<String> violations = new ArrayList<>();
+        ApiOnlyTest.forEachGameClassFile((name, refs) -> {
+            if (name.startsWith(KINDS)) {
+                kinds.add(name);
+                violations.addAll(outsideTheKinds(name, refs));
+            }
+            if (name.startsWith(MODEL)) {
+                violations.addAll(awtOrSwing(name, refs));
+            }
+        });
+
+        // Not vacuous: the kinds were found where the package map puts them.
+        assertThat(kinds).contains(KINDS + "GizmoBase.class", KINDS + "Flipper.class", KINDS + "Absorber.class");
+        assertThat(violations).as("references against the package map's arrows").isEmpty();
+    }
+
+    /** Both checks can fail: the board's play rules use the rest of the model, the painter uses AWT. */
+    @Test
+    void theChecksReportAReferenceAgainstTheArrows() throws IOException {
+        ClassFileReferences play = read(Board.class, "Play.class");
+        assertThat(outsideTheKinds("Play.class", play)).contains("Play.class: " + MODEL + "Registry");
+        ClassFileReferences painter = read(BoardPainter.class, "BoardPainter.class");
+        assertThat(awtOrSwing("BoardPainter.class", painter)).contains("BoardPainter.class: java/awt/Graphics2D");
+    }
+
+    private static List<String> outsideTheKinds(String classFile, ClassFileReferences refs) {
+        return refs.classes.stream().filter(c -> c.startsWith(GAME) && !c.startsWith(KINDS)).distinct()
+                .map(c -> classFile + ": " + c).toList();
+    }
+
+    private static List<String> awtOrSwing(String classFile, ClassFileReferences refs) {
+        return refs.classes.stream().filter(c -> c.startsWith("java/awt/") || c.startsWith("javax/swing/"))
+                .distinct().map(c -> classFile + ": " + c).toList();
+    }
+
+    private static ClassFileReferences read(Class<?> neighbour, String classFile) throws IOException {
+        try (InputStream in = neighbour.getResourceAsStream(classFile)) {
+            assertThat(in).as("%s next to %s on the test classpath", classFile, neighbour).isNotNull();
+            return ClassFileReferences.read(in);
+        }
+    }
+}
