@@ -34,7 +34,7 @@ final class PlacementRules {
             return problemFor(new Absorber("", x, y, width, height), ignoring);
         }
         if (width != kind.width() || height != kind.height()) {
-            return Optional.of("a " + kind.displayName() + " is " + kind.width() + "x" + kind.height()
+            return Optional.of(kind.withArticle() + " is " + kind.width() + "x" + kind.height()
                     + " cells, not " + width + "x" + height);
         }
         GizmoBase candidate = kind.create("", x, y);
@@ -49,7 +49,7 @@ final class PlacementRules {
 
     /** Footprint inside the board, no other gizmo's cells (but the ignored one's), no free ball inside the shape. */
     Optional<String> problemFor(GizmoBase candidate, String ignoring) {
-        String what = (candidate.name().isEmpty() ? "a " + candidate.kind().displayName()
+        String what = (candidate.name().isEmpty() ? candidate.kind().withArticle()
                 : "gizmo " + candidate.name()) + " at (" + candidate.x() + "," + candidate.y() + ")";
         for (int cx = candidate.x(); cx < candidate.x() + candidate.width(); cx++) {
             for (int cy = candidate.y(); cy < candidate.y() + candidate.height(); cy++) {

@@ -499,6 +499,16 @@ class EditorTest {
         assertThat(board.gizmos()).hasSize(1);
     }
 
+    /** The preview names the kind with its article, as every message does: an absorber, not "a absorber". */
+    @Test
+    void aRefusedAbsorberIsNamedWithItsArticle() {
+        board.addGizmo(GizmoKind.SQUARE, "S1", 4, 18);
+        editor.setTool(Tool.ABSORBER);
+        drag(2.5, 18.5, 7.5, 19.5);
+        assertThat(lastMessage()).startsWith("an absorber at (2,18) would overlap gizmo S1");
+        assertThat(board.gizmos()).hasSize(1);
+    }
+
     /** Issue 12 item 11: a circle and an absorber look the same turned. */
     @Test
     void rotatingACircleOrAnAbsorberIsRefusedWithoutAnUndoStep() {
