@@ -7,6 +7,7 @@ import gizmoball.model.gizmo.Shape;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.DoubleFunction;
 
 import physics.Circle;
 import physics.Geometry;
@@ -70,6 +71,45 @@ final class Contacts {
             normalOf(ball, ref, normals);
         }
         return normals;
+    }
+
+    /** A still surface the ball touches as a contact, with what a bounce off it needs: its gizmo (null: a wall). */
+    record Touch(ContactRef ref, GizmoBase gizmo, Vect normal, DoubleFunction<Vect> reflect) {
+    }
+
+    /**
+     * One of {@code surfaces} other than {@code besides}, and other than a ball, that the ball touches and its
+     * velocity closes on faster than rounding; null if there is none.
+     */
+    Touch closing(Ball ball, List<ContactRef> surfaces, ContactRef besides) {
+        for (ContactRef ref : surfaces) {
+            if (ref.equals(besides) || ref instanceof ContactRef.OnBall) {
+                continue;
+            }
+            Vect normal = normal(ball, ref);   // null too for a part of a flipper now swinging
+            if (normal == null || ball.velocity().dot(normal) >= -Tolerances.ROUNDING_SPEED) {
+                continue;
+            }
+            if (ref instanceof ContactRef.Wall wall) {
+                LineSegment side = CollisionDetector.OUTER_WALLS.get(wall.side());
+                return new Touch(ref, null, normal, k -> Geometry.reflectWall(side, ball.velocity(), k));
+            }
+            ContactRef.Part part = (ContactRef.Part) ref;
+            GizmoBase gizmo = board.gizmoBase(part.gizmo());
+            if (part.circle()) {
+                Vect centre = gizmo.shape().circles().get(part.index()).getCenter();
+                return new Touch(ref, gizmo, normal,
+                        k -> Geometry.reflectCircle(centre, ball.position(), ball.velocity(), k));
+            }
+            LineSegment segment = gizmo.shape().segments().get(part.index());
+            return new Touch(ref, gizmo, normal, k -> Geometry.reflectWall(segment, ball.velocity(), k));
+        }
+        return null;
+    }
+
+    /** The normal of one of the ball's contacts as it is now; null if that contact has ended. */
+    Vect normal(Ball ball, ContactRef ref) {
+        return normalOf(ball, ref, new ArrayList<>());
     }
 
     /** The normals of the ball's contacts other than {@code surface}, as they are now. */
@@ -171,7 +211,8 @@ final class Contacts {
         }
         Shape shape = gizmo.shape();
         if (part.circle()) {
-            return part.index() < shape.circles().size() ? onCircle(ball, shape.circles().get(part.index()), gap) : null;
+            return part.index() < shape.circles().size() ? onCircle(ball, shape.circles().get(part.index()), gap)
+                    : null;
         }
         return part.index() < shape.segments().size() ? onSegment(ball, shape.segments().get(part.index()), gap)
                 : null;

@@ -35,9 +35,10 @@ import physics.Vect;
  *
  * <p>Energy: in CONTINUOUS mode the {@link ShadowEnergy} of the balls whose collisions were all elastic is kept.
  *
- * <p>At about 550 lines this class is over the project's 400: the six stages and the resolution of each kind of
- * contact read best together; the parts with a life of their own (contacts, sleepers, energy, the schedule) are
- * classes of their own.
+ * <p>At about 650 lines this class is over the project's 400: the six stages and the resolution of each kind of
+ * contact (bounces, resting, wedges, piles, strikes of a swinging flipper) read best together, since each
+ * resolution feeds the stage counters and the energy book; the parts with a life of their own (contacts, sleepers,
+ * energy, the schedule) are classes of their own.
  */
 final class TickRun {
     /** A collision sooner than this after the previous one counts as zero-time. */
@@ -53,6 +54,10 @@ final class TickRun {
     private static final int STRIKES_OF_A_PINCH = 2;
     /** A flipper striking the same ball this often in one tick, nothing in between, is pushing it. */
     private static final int STRIKES_OF_A_PUSH = 3;
+    /** Bounces among a ball's contacts in one collision: enough to leave a wedge of a hundredth of a degree. */
+    private static final int BOUNCES_AMONG_CONTACTS = 20_000;
+    /** Enough for the pair's velocities to settle to rounding: each step shrinks their closing several times. */
+    private static final int PRESS_STEPS = 64;
     private static final int MAX_COLLISIONS_BASE = 500;
     private static final int MAX_COLLISIONS_PER_BALL = 100;
 
@@ -78,6 +83,8 @@ final class TickRun {
     private final Map<Strike, Integer> strikes = new HashMap<>();
     /** Balls that met something else since a swinging flipper last struck them in this tick. */
     private final Set<Ball> metSinceStrike = new HashSet<>();
+    /** Surfaces a ball bounced off among its contacts within the collision just resolved, for stage 5. */
+    private final List<TriggerSource> alsoHit = new ArrayList<>();
     private final ShadowEnergy energy;
     private final EnumMap<Stage, Long> nanos = new EnumMap<>(Stage.class);
     private double elapsed;
@@ -136,8 +143,12 @@ final class TickRun {
             mark = lap(Stage.COLLISION_RESOLUTION, mark);
             if (hit instanceof TriggerSource source) {
                 stage5Triggering(source);
-                mark = lap(Stage.TRIGGERING, mark);
             }
+            for (TriggerSource source : alsoHit) {
+                stage5Triggering(source);
+            }
+            alsoHit.clear();
+            mark = lap(Stage.TRIGGERING, mark);
             if (board.loopMode() == LoopMode.SEED && finishes(collision)) {
                 finish(collision);
             }
@@ -293,18 +304,86 @@ final class TickRun {
      * into it would explain, resting contact.
      */
     private void hitStill(Ball ball, Contact contact, GizmoBase gizmo, Vect normal, DoubleFunction<Vect> reflect) {
+        ContactRef surface = Contacts.refOf(contact);
+        if (bounceOff(ball, surface, gizmo, normal, reflect)) {
+            bounceAmongContacts(ball, surface);
+        }
+    }
+
+    /** Resting contact or a bounce off a still surface; true if the ball bounced. */
+    private boolean bounceOff(Ball ball, ContactRef surface, GizmoBase gizmo, Vect normal,
+                              DoubleFunction<Vect> reflect) {
         double approach = -ball.velocity().dot(normal);
         board.recordEvent(new PlayEvent.Hit(gizmo == null ? TriggerSource.OUTER_WALLS
                 : TriggerSource.gizmo(gizmo.name()), gizmo == null ? null : gizmo.kind(), approach, ball.name(),
                 ball.position()));
-        ContactRef surface = Contacts.refOf(contact);
         if (approach <= restingSpeed(ball, normal, surface)) {
             comeToRest(ball, surface);
-            return;
+            return false;
         }
         double coefficient = gizmo == null ? 1.0 : gizmo.reflectionCoefficient();
-        ball.setVelocity(reflect.apply(coefficient));
+        Vect bounced = reflect.apply(coefficient);
+        if (wedged(ball, surface, normal, bounced)) {
+            comeToRest(ball, surface);
+            return false;
+        }
+        ball.setVelocity(bounced);
         energy.bounced(ball, normal, coefficient == 1.0);
+        return true;
+    }
+
+    /**
+     * A ball that has bounced off one still surface into another it lies on (a contact) meets it at once, and then
+     * the first again: in a narrow wedge an elastic ball turns back only after about 180 / (the wedge's angle in
+     * degrees) such bounces. They are the same bounces the loop would find one at a time at no time apart, resolved
+     * here, each one a hit that triggers as any hit does (stage 5 takes them after this collision's own).
+     */
+    private void bounceAmongContacts(Ball ball, ContactRef from) {
+        List<ContactRef> among = new ArrayList<>(ball.contacts());
+        if (!among.contains(from)) {
+            among.add(from);   // met just now, not lain on: the ball may come straight back to it
+        }
+        ContactRef last = from;
+        for (int bounce = 0; bounce < BOUNCES_AMONG_CONTACTS; bounce++) {
+            Contacts.Touch next = contacts.closing(ball, among, last);
+            if (next == null) {
+                return;
+            }
+            collisions++;
+            zeroTimeCollisions++;
+            GizmoBase gizmo = next.gizmo();
+            if (gizmo != null) {
+                gizmo.markTriggered(now());
+            }
+            alsoHit.add(gizmo == null ? TriggerSource.OUTER_WALLS : TriggerSource.gizmo(gizmo.name()));
+            if (!bounceOff(ball, next.ref(), gizmo, next.normal(), next.reflect())) {
+                return;
+            }
+            last = next.ref();
+        }
+        wedged++;   // guard (counted): bounces that do not end; at rest for the rest of this tick
+        ball.setVelocity(Vect.ZERO);
+        energy.lost(ball);
+    }
+
+    /**
+     * Whether the bounce off a surface only wedges the ball between it and what it lies on: those contacts take the
+     * bounce as resting contact (it meets each of them more slowly than it would bounce off), and what they leave of it
+     * still closes on the surface. Bouncing would go on in turn between the two without end, each time slower; it ends
+     * where the ball rests against both. A bounce fast enough to leave a contact is a bounce like any other.
+     */
+    private boolean wedged(Ball ball, ContactRef surface, Vect normal, Vect bounced) {
+        List<Vect> taking = new ArrayList<>();
+        for (ContactRef ref : ball.contacts()) {
+            Vect held = ref.equals(surface) ? null : contacts.normal(ball, ref);
+            if (held != null) {
+                if (-bounced.dot(held) > restingSpeed(ball, held, ref)) {
+                    return false;
+                }
+                taking.add(held);
+            }
+        }
+        return !taking.isEmpty() && Contacts.project(bounced, taking).dot(normal) < -Tolerances.ROUNDING_SPEED;
     }
 
     /** The ball keeps the surface as a contact and loses every part of its velocity that presses into its contacts. */
@@ -376,8 +455,9 @@ final class TickRun {
     /**
      * The flipper met the ball again within the tick after the ball met something else: it came straight back from
      * something it is squeezed against, and each further strike would pump it faster in a shrinking gap. (A ball
-     * struck again with nothing in between is only pushed on by a surface that moves faster further out.) The jammed ball blocks the flipper
-     * where it is and stops (counted); it keeps everything it touches, the flipper too, as contacts.
+     * struck again with nothing in between is only pushed on by a surface that moves faster further out.) The
+     * jammed ball blocks the flipper where it is and stops (counted); it keeps everything it touches, the flipper
+     * too, as contacts.
      */
     private void pinch(Ball ball, Flipper flipper) {
         pinched++;
@@ -403,11 +483,7 @@ final class TickRun {
             restAgainst(ball, other);
             restAgainst(other, ball);
             if (-ball.velocity().minus(other.velocity()).dot(normal) > Tolerances.ROUNDING_SPEED) {
-                // the support itself moves into the ball: they go on together along the normal, momentum kept
-                double common = (ball.velocity().dot(normal) + other.velocity().dot(normal)) / 2;
-                ball.setVelocity(ball.velocity().plus(normal.times(common - ball.velocity().dot(normal))));
-                other.setVelocity(other.velocity().plus(normal.times(common - other.velocity().dot(normal))));
-                energy.lost(other);
+                pressTogether(ball, other, normal);
             }
             restingContact = true;
             return new Struck.OtherBall(other.name());
@@ -426,6 +502,27 @@ final class TickRun {
         energy.bounced(other, normal.neg(), true);
         energy.met(ball, other);
         return new Struck.OtherBall(other.name());
+    }
+
+    /**
+     * The support itself moves into the ball: they go on together along the normal, momentum kept, and neither
+     * presses into what else holds it (the support's floor takes what the support cannot). Each of those steps may
+     * undo a little of the other, so they repeat until the pair closes no faster than rounding: the fixed point
+     * the loop would otherwise reach only through a chain of zero-time collisions, one step each.
+     */
+    private void pressTogether(Ball ball, Ball other, Vect normal) {
+        List<Vect> holdingBall = contacts.normalsBesides(ball, new ContactRef.OnBall(other.name()));
+        List<Vect> holdingOther = contacts.normalsBesides(other, new ContactRef.OnBall(ball.name()));
+        for (int step = 0; step < PRESS_STEPS
+                && -ball.velocity().minus(other.velocity()).dot(normal) > Tolerances.ROUNDING_SPEED; step++) {
+            double common = (ball.velocity().dot(normal) + other.velocity().dot(normal)) / 2;
+            ball.setVelocity(Contacts.project(ball.velocity().plus(normal.times(common - ball.velocity().dot(normal))),
+                    holdingBall));
+            other.setVelocity(Contacts.project(
+                    other.velocity().plus(normal.times(common - other.velocity().dot(normal))), holdingOther));
+        }
+        energy.lost(ball);
+        energy.lost(other);
     }
 
     /** The ball, awake, stops closing on a supporting ball and keeps it as a contact. */
