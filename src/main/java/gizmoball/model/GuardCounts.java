@@ -5,7 +5,9 @@ package gizmoball.model;
  * count above zero is a case the contact handling did not resolve on its own.
  *
  * @param wedged       a ball with more zero-time collisions in one tick than any real contact needs was stopped
- * @param pinched      a flipper hitting the same ball again and again in one tick was held where it was
+ * @param pinched      a ball squeezed out between a flipper and what it came back from, more often in one tick
+ *                     than any real squeeze needs, was stopped with the flipper (a jam, where no squeeze can get
+ *                     the ball out, is physics: {@link PlayEvent.Jammed})
  * @param collisionCap a tick with more collisions than its balls can need ended early
  */
 public record GuardCounts(long wedged, long pinched, long collisionCap) {

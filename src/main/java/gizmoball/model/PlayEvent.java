@@ -23,6 +23,13 @@ public sealed interface PlayEvent {
     record Fired(String absorber) implements PlayEvent {
     }
 
+    /**
+     * A ball the flipper could not squeeze out from between it and what the ball lay against stopped the flipper
+     * short of its stop (docs/design.md, "Pinched balls"): a stall, not a guard.
+     */
+    record Jammed(String flipper, String ball) implements PlayEvent {
+    }
+
     /** A flipper started swinging, {@code up} toward its active position or back down. */
     record Swing(String flipper, boolean up) implements PlayEvent {
     }

@@ -9,8 +9,10 @@ import java.util.ArrayList;
 import java.util.EnumMap;
 import java.util.HashMap;
 import java.util.HashSet;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Set;
 import java.util.function.DoubleFunction;
 
@@ -35,8 +37,8 @@ import physics.Vect;
  *
  * <p>Energy: in CONTINUOUS mode the {@link ShadowEnergy} of the balls whose collisions were all elastic is kept.
  *
- * <p>At about 650 lines this class is over the project's 400: the six stages and the resolution of each kind of
- * contact (bounces, resting, wedges, piles, strikes of a swinging flipper) read best together, since each
+ * <p>At about 700 lines this class is over the project's 400: the six stages and the resolution of each kind of
+ * contact (bounces, resting, wedges, piles, strikes and squeezes of a swinging flipper) read best together, since each
  * resolution feeds the stage counters and the energy book; the parts with a life of their own (contacts, sleepers,
  * energy, the schedule) are classes of their own.
  */
@@ -50,10 +52,12 @@ final class TickRun {
     /** Ticks a ball must lie still on its contacts before it falls asleep. */
     static final int SLEEP_TICKS = 30;
     private static final int ZERO_TIME_HITS_BEFORE_WEDGED = 32;
-    /** A flipper striking the same ball this often in one tick has it pinched against something. */
-    private static final int STRIKES_OF_A_PINCH = 2;
+    /** A flipper striking the same ball this often in one tick, after it came back from something, squeezes it. */
+    private static final int STRIKES_OF_A_SQUEEZE = 2;
     /** A flipper striking the same ball this often in one tick, nothing in between, is pushing it. */
     private static final int STRIKES_OF_A_PUSH = 3;
+    /** Squeezes of one ball in one tick, each sending it out between a flipper and what it came back from. */
+    private static final int SQUEEZES_BEFORE_PINCHED = 16;
     /** Bounces among a ball's contacts in one collision: enough to leave a wedge of a hundredth of a degree. */
     private static final int BOUNCES_AMONG_CONTACTS = 20_000;
     /** Enough for the pair's velocities to settle to rounding: each step shrinks their closing several times. */
@@ -83,6 +87,10 @@ final class TickRun {
     private final Map<Strike, Integer> strikes = new HashMap<>();
     /** Balls that met something else since a swinging flipper last struck them in this tick. */
     private final Set<Ball> metSinceStrike = new HashSet<>();
+    /** What each ball struck by a swinging flipper in this tick has met since then, other than swinging flippers. */
+    private final Map<Ball, Set<Contact>> metAfterStrike = new HashMap<>();
+    /** How often a squeeze has sent each ball out between a flipper and what it came back from, in this tick. */
+    private final Map<Ball, Integer> squeezed = new HashMap<>();
     /** Surfaces a ball bounced off among its contacts within the collision just resolved, for stage 5. */
     private final List<TriggerSource> alsoHit = new ArrayList<>();
     private final ShadowEnergy energy;
@@ -246,9 +254,9 @@ final class TickRun {
         restingContact = false;
         ball.setStillTicks(0);
         if (!(contact instanceof Contact.SwingingPart)) {
-            metSinceStrike.add(ball);
+            met(ball, contact);
             if (contact instanceof Contact.OtherBall other) {
-                metSinceStrike.add(other.other());
+                met(other.other(), new Contact.OtherBall(ball));
             }
         }
         Struck hit;
@@ -386,6 +394,15 @@ final class TickRun {
         return !taking.isEmpty() && Contacts.project(bounced, taking).dot(normal) < -Tolerances.ROUNDING_SPEED;
     }
 
+    /** The ball met a surface other than a swinging flipper. */
+    private void met(Ball ball, Contact surface) {
+        metSinceStrike.add(ball);
+        Set<Contact> met = metAfterStrike.get(ball);
+        if (met != null) {
+            met.add(surface);
+        }
+    }
+
     /** The ball keeps the surface as a contact and loses every part of its velocity that presses into its contacts. */
     private void comeToRest(Ball ball, ContactRef ref) {
         Contacts.attach(ball, ref);
@@ -417,16 +434,69 @@ final class TickRun {
         Circle circle = ball.circle();
         Vect before = ball.velocity();
         boolean cameBack = metSinceStrike.remove(ball);
+        Set<Contact> met = metAfterStrike.computeIfAbsent(ball, struck -> new LinkedHashSet<>());
         int strike = strikes.merge(new Strike(ball, flipper), 1, Integer::sum);
-        ball.setVelocity(strike >= STRIKES_OF_A_PUSH && !cameBack
+        Vect reflected = strike >= STRIKES_OF_A_PUSH && !cameBack
                 ? pushed(before, reflectOffSwinging(part, shape, pivot, omega, circle, Vect.ZERO))
-                : reflectOffSwinging(part, shape, pivot, omega, circle, before));
+                : reflectOffSwinging(part, shape, pivot, omega, circle, before);
+        boolean squeezedOut = strike >= STRIKES_OF_A_SQUEEZE && cameBack;
+        boolean endless = squeezedOut && squeezed.merge(ball, 1, Integer::sum) > SQUEEZES_BEFORE_PINCHED;
+        Optional<Vect> leaving = squeezedOut && !endless
+                ? Squeeze.leaving(reflected, squeezeSides(ball, part, shape, pivot, omega, met, reflected))
+                : Optional.of(reflected);
+        ball.setVelocity(endless ? Vect.ZERO : leaving.orElse(Vect.ZERO));
         board.recordEvent(new PlayEvent.Hit(TriggerSource.gizmo(flipper.name()), flipper.kind(),
                 ball.velocity().minus(before).length() / 2, ball.name(), ball.position()));
-        if (strike >= STRIKES_OF_A_PINCH && cameBack) {
-            pinch(ball, flipper);
+        if (endless) {
+            pinched++;   // guard (counted): squeezed out and back again without end
+            stall(ball, flipper);
+        } else if (leaving.isEmpty()) {
+            board.recordEvent(new PlayEvent.Jammed(flipper.name(), ball.name()));
+            stall(ball, flipper);
         }
         return TriggerSource.gizmo(flipper.name());
+    }
+
+    /**
+     * What a squeezed ball must leave: the flipper where it strikes, what the ball lies on, and everything it has met
+     * since the flipper first struck it in this tick, each taken where the ball is now.
+     */
+    private List<Squeeze.Side> squeezeSides(Ball ball, Contact.SwingingPart part, Shape shape, Vect pivot,
+                                            double omega, Set<Contact> met, Vect reflected) {
+        List<Squeeze.Side> sides = new ArrayList<>();
+        sides.add(flipperSide(ball, part, shape, pivot, omega, reflected));
+        contacts.normals(ball).forEach(normal -> sides.add(new Squeeze.Side(normal, 0)));
+        met.forEach(surface -> sides.add(sideOf(ball, surface)));
+        return sides;
+    }
+
+    /**
+     * The flipper where it strikes the ball, as a side of a {@link Squeeze}: the ball must leave it at least as fast
+     * along the normal as its bounce does. Leaving at only the surface's own speed would keep the ball on a surface
+     * that turns, and so speeds up under it further out: struck again at once, without end.
+     */
+    private static Squeeze.Side flipperSide(Ball ball, Contact.SwingingPart part, Shape shape, Vect pivot,
+                                            double omega, Vect bounced) {
+        Vect normal = part.circle()
+                ? ball.position().minus(shape.circles().get(part.index()).getCenter()).unitSize()
+                : normalFromSegment(ball, shape.segments().get(part.index()));
+        Vect touching = ball.position().minus(normal.times(Board.BALL_RADIUS));
+        double surface = CollisionDetector.surfaceVelocity(pivot, omega, touching).dot(normal);
+        return new Squeeze.Side(normal, Math.max(surface, bounced.dot(normal)));
+    }
+
+    /** A surface the ball came back from, taken where the ball is now, as a side of a {@link Squeeze}. */
+    private Squeeze.Side sideOf(Ball ball, Contact surface) {
+        if (surface instanceof Contact.OtherBall other) {
+            Vect normal = ball.position().minus(other.other().position()).unitSize();
+            return new Squeeze.Side(normal, detector.motion(other.other()).dot(normal));
+        }
+        if (surface instanceof Contact.Round round) {
+            return new Squeeze.Side(ball.position().minus(round.circle().getCenter()).unitSize(), 0);
+        }
+        LineSegment segment = surface instanceof Contact.Face face ? face.segment()
+                : ((Contact.OuterWall) surface).segment();
+        return new Squeeze.Side(normalFromSegment(ball, segment), 0);
     }
 
     private static Vect reflectOffSwinging(Contact.SwingingPart part, Shape shape, Vect pivot, double omega,
@@ -452,15 +522,14 @@ final class TickRun {
         Vect normal = fromRest.times(1 / speed);
         return before.minus(normal.times(before.dot(normal))).plus(fromRest);
     }
+
     /**
-     * The flipper met the ball again within the tick after the ball met something else: it came straight back from
-     * something it is squeezed against, and each further strike would pump it faster in a shrinking gap. (A ball
-     * struck again with nothing in between is only pushed on by a surface that moves faster further out.) The
-     * jammed ball blocks the flipper where it is and stops (counted); it keeps everything it touches, the flipper
-     * too, as contacts.
+     * The ball jams the flipper: no velocity within {@link Board#MAX_SPEED} leaves both it and what the ball is
+     * squeezed against (a {@link Squeeze}). The flipper stops where it is, a stall, as a real flipper's motor does;
+     * the ball stops where the flipper met it and keeps everything it touches, the flipper too, as contacts. The
+     * flipper goes on once no ball touches it, or when it is sent the other way.
      */
-    private void pinch(Ball ball, Flipper flipper) {
-        pinched++;
+    private void stall(Ball ball, Flipper flipper) {
         flipper.block();
         contacts.touchAll(ball);
         ball.setVelocity(Vect.ZERO);
