@@ -6,6 +6,7 @@ import gizmoball.boardfile.LoadResult;
 import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.GuardCounts;
+import gizmoball.model.PlayEvent;
 import gizmoball.model.Stage;
 import gizmoball.model.TickReport;
 import gizmoball.model.gizmo.GizmoKind;
@@ -100,8 +101,11 @@ final class SteadyState {
         }
     }
 
-    /** A board of the survey with the guards it fired; {@code failure} when a tick threw. */
-    record Surveyed(String board, int balls, GuardCounts guards, Optional<String> failure) {
+    /**
+     * A board of the survey with the guards it fired and its jams (a flipper stalled by a ball it cannot squeeze out:
+     * physics, reported beside the guards, not among them); {@code failure} when a tick threw.
+     */
+    record Surveyed(String board, int balls, GuardCounts guards, long jams, Optional<String> failure) {
     }
 
     record Survey(int ticks, int filesSeen, List<Surveyed> boards) {
@@ -112,6 +116,14 @@ final class SteadyState {
 
         GuardCounts totals() {
             return boards.stream().map(Surveyed::guards).reduce(GuardCounts.NONE, GuardCounts::plus);
+        }
+
+        long jams() {
+            return boards.stream().mapToLong(Surveyed::jams).sum();
+        }
+
+        long jamming() {
+            return boards.stream().filter(b -> b.jams() > 0).count();
         }
     }
 
@@ -383,13 +395,15 @@ final class SteadyState {
     private static Surveyed play(NamedBoard named, int ticks) {
         Board board = named.board();
         int balls = board.balls().size();
+        long jams = 0;
         try {
             for (int t = 0; t < ticks; t++) {
                 board.tick(DT);
+                jams += board.lastTick().events().stream().filter(e -> e instanceof PlayEvent.Jammed).count();
             }
-            return new Surveyed(named.name(), balls, board.guardsFired(), Optional.empty());
+            return new Surveyed(named.name(), balls, board.guardsFired(), jams, Optional.empty());
         } catch (RuntimeException e) {
-            return new Surveyed(named.name(), balls, board.guardsFired(),
+            return new Surveyed(named.name(), balls, board.guardsFired(), jams,
                     Optional.of("tick " + Math.round(board.time() / DT) + ": " + e));
         }
     }
@@ -484,6 +498,8 @@ final class SteadyState {
                 quickNote(w, Windows.FULL.surveyTicks()));
         out.printf(Locale.ROOT, "  boards on which a guard fired: %d; totals: wedged %d, pinched %d, collision cap %d%n",
                 firing.size(), t.wedged(), t.pinched(), t.collisionCap());
+        out.printf(Locale.ROOT, "  jams (a flipper stalled by a ball it cannot squeeze out; physics, not a guard): %d on %d "
+                + "boards%n", s.jams(), s.jamming());
         for (Surveyed b : firing.subList(0, Math.min(worst, firing.size()))) {
             out.printf(Locale.ROOT, "  %-80s balls %3d: wedged %d, pinched %d, cap %d%n", b.board(), b.balls(),
                     b.guards().wedged(), b.guards().pinched(), b.guards().collisionCap());
@@ -589,10 +605,10 @@ final class SteadyState {
 
     static void writeSurvey(Path file, Survey s) throws IOException {
         List<String> lines = new ArrayList<>();
-        lines.add("board,balls,ticks,guard_wedged,guard_pinched,guard_cap,failure");
+        lines.add("board,balls,ticks,guard_wedged,guard_pinched,guard_cap,jams,failure");
         for (Surveyed b : s.boards()) {
-            lines.add(String.format(Locale.ROOT, "%s,%d,%d,%d,%d,%d,%s", b.board(), b.balls(), s.ticks(),
-                    b.guards().wedged(), b.guards().pinched(), b.guards().collisionCap(),
+            lines.add(String.format(Locale.ROOT, "%s,%d,%d,%d,%d,%d,%d,%s", b.board(), b.balls(), s.ticks(),
+                    b.guards().wedged(), b.guards().pinched(), b.guards().collisionCap(), b.jams(),
                     b.failure().map(f -> '"' + f.replace("\"", "\"\"") + '"').orElse("")));
         }
         Files.write(file, lines);
