@@ -22,6 +22,12 @@ final class CollisionSchedule {
     /** Each free ball's known collisions, by its slot ({@link Ball#slot()}); null: not known, ask again. */
     private Known[] withScene = new Known[0];
     private Known[] withBalls = new Known[0];
+    /**
+     * By slot, the slots whose known ball collision has been with that ball (some since replaced): forgetting a ball
+     * looks only at those, not at every ball.
+     */
+    private int[][] pointedAtBy = new int[0][];
+    private int[] pointedAtCount = new int[0];
     private int filed;
     private final BallGrid grid;
     private final List<Ball> nearby = new ArrayList<>();
@@ -42,6 +48,8 @@ final class CollisionSchedule {
         filed = 0;
         withScene = new Known[free.size()];
         withBalls = new Known[free.size()];
+        pointedAtBy = new int[free.size()][];
+        pointedAtCount = new int[free.size()];
         for (Ball ball : free) {
             ball.setSlot(filed++);
             grid.add(ball);
@@ -81,20 +89,43 @@ final class CollisionSchedule {
         if (ball.isCaptured()) {
             return;   // filed no more: the capture filed the free balls afresh
         }
-        withScene[ball.slot()] = null;
-        withBalls[ball.slot()] = null;
-        for (int i = 0; i < filed; i++) {
-            Known known = withBalls[i];
-            if (known != null && known.collision() != null
-                    && ((Contact.OtherBall) known.collision().contact()).other() == ball) {
-                withBalls[i] = null;
+        int slot = ball.slot();
+        withScene[slot] = null;
+        withBalls[slot] = null;
+        int[] pointing = pointedAtBy[slot];
+        for (int k = 0; k < pointedAtCount[slot]; k++) {
+            Known known = withBalls[pointing[k]];
+            if (known != null && known.collision() != null && partner(known) == ball) {
+                withBalls[pointing[k]] = null;
             }
         }
+        pointedAtCount[slot] = 0;
     }
 
     void forgetAll() {
         Arrays.fill(withScene, null);
         Arrays.fill(withBalls, null);
+        Arrays.fill(pointedAtCount, 0);
+    }
+
+    private static Ball partner(Known known) {
+        return ((Contact.OtherBall) known.collision().contact()).other();
+    }
+
+    /** Files a ball's earliest known ball collision, noting it with its partner. */
+    private void knowWithBalls(int slot, Known known) {
+        withBalls[slot] = known;
+        if (known.collision() == null) {
+            return;
+        }
+        int partner = partner(known).slot();
+        int[] pointing = pointedAtBy[partner];
+        if (pointing == null || pointing.length == pointedAtCount[partner]) {
+            int grown = Math.max(4, 2 * pointedAtCount[partner]);
+            pointing = pointing == null ? new int[grown] : Arrays.copyOf(pointing, grown);
+            pointedAtBy[partner] = pointing;
+        }
+        pointing[pointedAtCount[partner]++] = slot;
     }
 
     /**
@@ -120,10 +151,10 @@ final class CollisionSchedule {
             earliest.offer(found.time(), ball, new Contact.OtherBall(other), true);
             Known theirs = withBalls[other.slot()];
             if (theirs != null && (theirs.collision() == null || elapsed + found.time() < theirs.at())) {
-                withBalls[other.slot()] = new Known(elapsed + found.time(), found, true);
+                knowWithBalls(other.slot(), new Known(elapsed + found.time(), found, true));
             }
         }
-        withBalls[ball.slot()] = known(earliest, elapsed);
+        knowWithBalls(ball.slot(), known(earliest, elapsed));
     }
 
     private static Known known(Earliest earliest, double elapsed) {

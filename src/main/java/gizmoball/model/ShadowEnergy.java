@@ -22,15 +22,20 @@ import physics.Vect;
 final class ShadowEnergy {
     private final double gravity;
     private final double dt;
-    private final Map<Ball, Double> atStart = new HashMap<>();
+    private final Map<Ball, Double> atStart;
     /** The normal of each ball's last elastic bounce, in order of first bounce (runs stay bit-identical). */
-    private final Map<Ball, Vect> elasticNormals = new LinkedHashMap<>();
-    private final Set<Ball> lost = new HashSet<>();
+    private final Map<Ball, Vect> elasticNormals;
+    private final Set<Ball> lost;
     private final List<List<Ball>> pairs = new ArrayList<>();
 
-    ShadowEnergy(double gravity, double dt) {
+    /** For a tick of {@code balls} balls: the books are sized for all of them, so a tick never regrows them. */
+    ShadowEnergy(double gravity, double dt, int balls) {
         this.gravity = gravity;
         this.dt = dt;
+        int capacity = 2 * balls + 16;
+        atStart = new HashMap<>(capacity);
+        elasticNormals = new LinkedHashMap<>(capacity);
+        lost = new HashSet<>(capacity);
     }
 
     /** After stage 1: right after the gravity kick, u = v - g dt/2 y. */

@@ -85,7 +85,7 @@ final class TickRun {
     private final List<Ball> awake = new ArrayList<>();
     private final Map<Ball, Integer> zeroTimeHits = new HashMap<>();
     private final Map<Strike, Integer> strikes = new HashMap<>();
-    /** Balls that met something else since a swinging flipper last struck them in this tick. */
+    /** Balls that met something else since a swinging flipper last struck them in this tick (struck balls only). */
     private final Set<Ball> metSinceStrike = new HashSet<>();
     /** What each ball struck by a swinging flipper in this tick has met since then, other than swinging flippers. */
     private final Map<Ball, Set<Contact>> metAfterStrike = new HashMap<>();
@@ -110,7 +110,7 @@ final class TickRun {
         this.startTime = board.time();
         this.gravity = board.gravity();
         this.contacts = new Contacts(board, dt);
-        this.energy = new ShadowEnergy(gravity, dt);
+        this.energy = new ShadowEnergy(gravity, dt, board.ballStates().size());
         this.detector = new CollisionDetector(board, heldFlippers, finished);
         this.schedule = new CollisionSchedule(detector, board.ballGrid());
         this.flippers = board.flippers();
@@ -394,11 +394,11 @@ final class TickRun {
         return !taking.isEmpty() && Contacts.project(bounced, taking).dot(normal) < -Tolerances.ROUNDING_SPEED;
     }
 
-    /** The ball met a surface other than a swinging flipper. */
+    /** The ball met a surface other than a swinging flipper: noted only for a ball a flipper has struck. */
     private void met(Ball ball, Contact surface) {
-        metSinceStrike.add(ball);
-        Set<Contact> met = metAfterStrike.get(ball);
+        Set<Contact> met = metAfterStrike.isEmpty() ? null : metAfterStrike.get(ball);
         if (met != null) {
+            metSinceStrike.add(ball);
             met.add(surface);
         }
     }
