@@ -21,10 +21,12 @@ import physics.Vect;
  * ({@link #tick(double)}, keys, triggers). It is the facade over parts with one job each: the {@link Registry} of
  * gizmos and balls, the {@link PlacementRules}, the {@link Edits} of gizmos and balls, the {@link Wiring} of
  * connections and keys, the actions of {@link Play} and the {@link Observers}; the physics loop itself is
- * {@link TickRun}.
+ * {@link TickRun}, which sees the board only through {@link LoopView} and acts on it only through
+ * {@link LoopActions}, both implemented here by one private adapter.
  *
- * <p>It is over 400 lines only because it is the model's whole public API plus the package-private access the loop
- * classes use; every method is an argument check, a delegation, or a constant of play (gravity, friction, time).
+ * <p>It is over 400 lines only because it is the model's whole public API plus that adapter (some 130 lines of
+ * one-line delegations, which need the board's private state); every method is an argument check, a delegation,
+ * or a constant of play (gravity, friction, time).
  */
 public final class Board {
     public static final int SIZE = 20;
@@ -55,6 +57,7 @@ public final class Board {
     private GuardCounts guardsFired = GuardCounts.NONE;
     private long lastRedrawNanos;
     private double nextCollisionLookAhead;
+    private final LoopAccess loop = new LoopAccess();
 
     /** An empty board with default gravity and friction at time 0. */
     public Board() {
@@ -117,15 +120,6 @@ public final class Board {
         List<String> overlapped = edits.addBallOverlappingBalls(name, x, y, vx, vy);
         edited();
         return overlapped;
-    }
-
-    /** See {@link Registry#passingThrough}. */
-    boolean passingThrough(Ball a, Ball b) {
-        return registry.passingThrough(a, b);
-    }
-
-    void forgetSeparatedPairs() {
-        registry.forgetSeparatedPairs();
     }
 
     /**
@@ -298,7 +292,7 @@ public final class Board {
         if (!Double.isFinite(dt) || dt < 0) {
             throw new IllegalArgumentException("tick length must be finite and not negative, got " + dt);
         }
-        lastTick = new TickRun(this, dt).run();
+        lastTick = new TickRun(loop, loop, dt).run();
         guardsFired = guardsFired.plus(lastTick.guards());
         long start = System.nanoTime();
         notifyObservers(BoardChange.TICK);
@@ -326,35 +320,6 @@ public final class Board {
         nextCollisionLookAhead = seconds;
     }
 
-    double nextCollisionLookAhead() {
-        return nextCollisionLookAhead;
-    }
-
-    long lastRedrawNanos() {
-        return lastRedrawNanos;
-    }
-
-    void recordEvent(PlayEvent event) {
-        play.recordEvent(event);
-    }
-
-    /** The events since the last tick's report, for this tick's. */
-    List<PlayEvent> drainEvents() {
-        return play.drainEvents();
-    }
-
-    Sleepers sleepers() {
-        return sleepers;
-    }
-
-    BallGrid ballGrid() {
-        return ballGrid;
-    }
-
-    List<Flipper> flippers() {
-        return registry.flippers();
-    }
-
     /**
      * Performs the actions bound to (keyCode, DOWN): flippers swing up, others perform their action; and those
      * bound to (keyCode, CHANGE): every gizmo performs its action (a flipper toggles).
@@ -378,19 +343,7 @@ public final class Board {
         if (target == null) {
             throw new IllegalArgumentException("cannot trigger " + gizmo + ": no gizmo named " + gizmo);
         }
-        performAction(target, time);
-    }
-
-    void performAction(GizmoBase gizmo, double now) {
-        play.performAction(gizmo, now);
-    }
-
-    void wakeSweep(Flipper flipper) {
-        play.wakeSweep(flipper);
-    }
-
-    void capture(Ball ball, Absorber absorber) {
-        play.capture(ball, absorber);
+        play.performAction(target, time);
     }
 
     public void addObserver(BoardObserver observer) {
@@ -431,10 +384,6 @@ public final class Board {
         spatialIndexEnabled = enabled;
     }
 
-    boolean spatialIndexEnabled() {
-        return spatialIndexEnabled;
-    }
-
     /** Sum over free balls of |v|^2/2 + gravity * (SIZE - y), unit mass. */
     public double energy() {
         double total = 0;
@@ -461,15 +410,136 @@ public final class Board {
         return registry.gizmo(name);
     }
 
-    Ball ballState(String name) {
-        return registry.ball(name);
+    /** The loop's view of this board (its detector's and contacts' too, in tests). */
+    LoopView loopView() {
+        return loop;
     }
 
-    SpatialIndex index() {
-        return registry.index();
-    }
+    /** The board as the loop sees it and acts on it: the one way in for a {@link TickRun}. */
+    private final class LoopAccess implements LoopView, LoopActions {
+        @Override
+        public Collection<Ball> balls() {
+            return registry.balls();
+        }
 
-    void advanceTime(double dt) {
-        time += dt;
+        @Override
+        public Collection<GizmoBase> gizmos() {
+            return registry.gizmos();
+        }
+
+        @Override
+        public GizmoBase gizmo(String name) {
+            return registry.gizmo(name);
+        }
+
+        @Override
+        public Ball ball(String name) {
+            return registry.ball(name);
+        }
+
+        @Override
+        public List<Flipper> flippers() {
+            return registry.flippers();
+        }
+
+        @Override
+        public List<Connection> connections() {
+            return Board.this.connections();
+        }
+
+        @Override
+        public SpatialIndex index() {
+            return registry.index();
+        }
+
+        @Override
+        public boolean spatialIndexEnabled() {
+            return spatialIndexEnabled;
+        }
+
+        @Override
+        public double gravity() {
+            return gravity;
+        }
+
+        @Override
+        public double mu() {
+            return mu;
+        }
+
+        @Override
+        public double mu2() {
+            return mu2;
+        }
+
+        @Override
+        public double time() {
+            return time;
+        }
+
+        @Override
+        public LoopMode loopMode() {
+            return loopMode;
+        }
+
+        @Override
+        public boolean passingThrough(Ball a, Ball b) {
+            return registry.passingThrough(a, b);
+        }
+
+        @Override
+        public double nextCollisionLookAhead() {
+            return nextCollisionLookAhead;
+        }
+
+        @Override
+        public long lastRedrawNanos() {
+            return lastRedrawNanos;
+        }
+
+        @Override
+        public Sleepers sleepers() {
+            return sleepers;
+        }
+
+        @Override
+        public BallGrid ballGrid() {
+            return ballGrid;
+        }
+
+        @Override
+        public void recordEvent(PlayEvent event) {
+            play.recordEvent(event);
+        }
+
+        @Override
+        public List<PlayEvent> drainEvents() {
+            return play.drainEvents();
+        }
+
+        @Override
+        public void trigger(GizmoBase gizmo, double now) {
+            play.performAction(gizmo, now);
+        }
+
+        @Override
+        public void capture(Ball ball, Absorber absorber) {
+            play.capture(ball, absorber);
+        }
+
+        @Override
+        public void wakeSweep(Flipper flipper) {
+            play.wakeSweep(flipper);
+        }
+
+        @Override
+        public void forgetSeparatedPairs() {
+            registry.forgetSeparatedPairs();
+        }
+
+        @Override
+        public void advanceTime(double dt) {
+            time += dt;
+        }
     }
 }

@@ -41,7 +41,7 @@ final class CollisionDetector {
             new LineSegment(Board.SIZE, Board.SIZE, 0, Board.SIZE),
             new LineSegment(0, Board.SIZE, 0, 0));
 
-    private final Board board;
+    private final LoopView view;
     private final Set<Flipper> heldFlippers;
     private final Set<Ball> finishedBalls;
 
@@ -49,8 +49,8 @@ final class CollisionDetector {
      * @param heldFlippers  flippers held still for the rest of the tick (a pinched ball), treated as fixed
      * @param finishedBalls balls that move no more this tick (SEED), treated as at rest
      */
-    CollisionDetector(Board board, Set<Flipper> heldFlippers, Set<Ball> finishedBalls) {
-        this.board = board;
+    CollisionDetector(LoopView view, Set<Flipper> heldFlippers, Set<Ball> finishedBalls) {
+        this.view = view;
         this.heldFlippers = heldFlippers;
         this.finishedBalls = finishedBalls;
     }
@@ -106,7 +106,7 @@ final class CollisionDetector {
         if (gap > speedBound(relative) * window + REACH_MARGIN) {
             return;   // cannot close the gap within the window
         }
-        if (board.passingThrough(ball, other)) {
+        if (view.passingThrough(ball, other)) {
             return;   // placed on each other (a loaded file may do that): they pass through until they are apart
         }
         double time = Geometry.timeUntilBallBallCollision(ball.circle(), mine, other.circle(), theirs);
@@ -120,13 +120,13 @@ final class CollisionDetector {
 
     /** The gizmos whose cells meet the box the ball sweeps in the window (all gizmos without the index). */
     private Collection<GizmoBase> reachable(Ball ball, Vect velocity, double window) {
-        if (!board.spatialIndexEnabled()) {
-            return board.gizmoBases();
+        if (!view.spatialIndexEnabled()) {
+            return view.gizmos();
         }
         Vect from = ball.position();
         Vect to = from.plus(velocity.times(window));
         double reach = Board.BALL_RADIUS + REACH_MARGIN;
-        return board.index().within(Math.min(from.x(), to.x()) - reach, Math.min(from.y(), to.y()) - reach,
+        return view.index().within(Math.min(from.x(), to.x()) - reach, Math.min(from.y(), to.y()) - reach,
                 Math.max(from.x(), to.x()) + reach, Math.max(from.y(), to.y()) + reach);
     }
 

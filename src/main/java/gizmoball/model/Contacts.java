@@ -26,7 +26,7 @@ final class Contacts {
     /** Penetration below this is rounding and left alone; deeper, the ball is put back to touching. */
     private static final double SNAP_DEPTH = Tolerances.CONTACT / 10;
 
-    private final Board board;
+    private final LoopView view;
     /** A contact the ball has drifted off by less than this, slower than {@link #holdSpeed}, still holds. */
     private final double holdGap;
     private final double holdSpeed;
@@ -36,9 +36,9 @@ final class Contacts {
      * slowly, drifts off by less than a tick of gravity would bring back ({@code g dt^2}), at less than half a tick of
      * gravity's speed: such a ball keeps the contact and loses that drift, as gravity would have done.
      */
-    Contacts(Board board, double dt) {
-        this.board = board;
-        double g = Math.abs(board.gravity());
+    Contacts(LoopView view, double dt) {
+        this.view = view;
+        double g = Math.abs(view.gravity());
         this.holdGap = Math.max(Tolerances.CONTACT, g * dt * dt);
         this.holdSpeed = g * dt / 2;
     }
@@ -95,7 +95,7 @@ final class Contacts {
                 return new Touch(ref, null, normal, k -> Geometry.reflectWall(side, ball.velocity(), k));
             }
             ContactRef.Part part = (ContactRef.Part) ref;
-            GizmoBase gizmo = board.gizmoBase(part.gizmo());
+            GizmoBase gizmo = view.gizmo(part.gizmo());
             if (part.circle()) {
                 Vect centre = gizmo.shape().circles().get(part.index()).getCenter();
                 return new Touch(ref, gizmo, normal,
@@ -204,7 +204,7 @@ final class Contacts {
     }
 
     private Vect onPart(Ball ball, ContactRef.Part part, double gap) {
-        GizmoBase gizmo = board.gizmoBase(part.gizmo());
+        GizmoBase gizmo = view.gizmo(part.gizmo());
         if (gizmo == null || gizmo instanceof Flipper flipper && flipper.isMoving()
                 && !(part.circle() && part.index() == Flipper.PIVOT_CIRCLE)) {
             return null;   // a swinging flipper holds nothing up, but its round end at the pivot does not move
@@ -219,7 +219,7 @@ final class Contacts {
     }
 
     private Vect onBall(Ball ball, ContactRef.OnBall on, double gap) {
-        Ball other = board.ballState(on.ball());
+        Ball other = view.ball(on.ball());
         return other == null || !supports(other, ball) ? null : onCircle(ball, other.circle(), gap);
     }
 
@@ -289,7 +289,7 @@ final class Contacts {
         }
         Vect p = ball.position();
         double reach = Board.BALL_RADIUS + Tolerances.CONTACT;
-        for (GizmoBase gizmo : board.index().within(p.x() - reach, p.y() - reach, p.x() + reach, p.y() + reach)) {
+        for (GizmoBase gizmo : view.index().within(p.x() - reach, p.y() - reach, p.x() + reach, p.y() + reach)) {
             if (gizmo instanceof Absorber || gizmo instanceof Flipper flipper && flipper.isMoving()) {
                 continue;   // an absorber captures what touches it; a swinging flipper is no support
             }

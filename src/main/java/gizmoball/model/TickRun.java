@@ -69,7 +69,8 @@ final class TickRun {
     private record Strike(Ball ball, Flipper flipper) {
     }
 
-    private final Board board;
+    private final LoopView view;
+    private final LoopActions actions;
     private final double dt;
     private final double startTime;
     private final double gravity;
@@ -104,25 +105,26 @@ final class TickRun {
     /** Whether the collision stage 4 resolved last was a resting contact rather than a bounce. */
     private boolean restingContact;
 
-    TickRun(Board board, double dt) {
-        this.board = board;
+    TickRun(LoopView view, LoopActions actions, double dt) {
+        this.view = view;
+        this.actions = actions;
         this.dt = dt;
-        this.startTime = board.time();
-        this.gravity = board.gravity();
-        this.contacts = new Contacts(board, dt);
-        this.energy = new ShadowEnergy(gravity, dt, board.ballStates().size());
-        this.detector = new CollisionDetector(board, heldFlippers, finished);
-        this.schedule = new CollisionSchedule(detector, board.ballGrid());
-        this.flippers = board.flippers();
+        this.startTime = view.time();
+        this.gravity = view.gravity();
+        this.contacts = new Contacts(view, dt);
+        this.energy = new ShadowEnergy(gravity, dt, view.balls().size());
+        this.detector = new CollisionDetector(view, heldFlippers, finished);
+        this.schedule = new CollisionSchedule(detector, view.ballGrid());
+        this.flippers = view.flippers();
     }
 
     /** A blocked flipper goes on once no ball touches it any more. */
     private void releaseBlockedFlippers() {
         for (Flipper flipper : flippers) {
-            if (flipper.isBlocked() && board.ballStates().stream().noneMatch(ball -> !ball.isCaptured()
+            if (flipper.isBlocked() && view.balls().stream().noneMatch(ball -> !ball.isCaptured()
                     && flipper.signedDistance(ball.position()) <= Board.BALL_RADIUS + Tolerances.CONTACT)) {
                 flipper.unblock();
-                board.wakeSweep(flipper);   // it swings on into whatever fell asleep in its way
+                actions.wakeSweep(flipper);   // it swings on into whatever fell asleep in its way
             }
         }
     }
@@ -157,7 +159,7 @@ final class TickRun {
             }
             alsoHit.clear();
             mark = lap(Stage.TRIGGERING, mark);
-            if (board.loopMode() == LoopMode.SEED && finishes(collision)) {
+            if (view.loopMode() == LoopMode.SEED && finishes(collision)) {
                 finish(collision);
             }
             if (++collisions >= maxCollisions) {
@@ -165,11 +167,11 @@ final class TickRun {
                 break;
             }
         }
-        if (board.loopMode() == LoopMode.CONTINUOUS) {
+        if (view.loopMode() == LoopMode.CONTINUOUS) {
             energy.restore();   // SEED stays the classic loop, lost time and all
         }
-        board.forgetSeparatedPairs();
-        board.advanceTime(dt);
+        actions.forgetSeparatedPairs();
+        actions.advanceTime(dt);
         return report();
     }
 
@@ -178,13 +180,13 @@ final class TickRun {
      * persistent contact loses what presses it into its surfaces; a ball still on them long enough falls asleep.
      */
     private void stage1FrictionAndGravity() {
-        for (Ball ball : board.ballStates()) {
+        for (Ball ball : view.balls()) {
             if (ball.isCaptured() || ball.isAsleep()) {
                 continue;
             }
             List<Vect> normals = contacts.refresh(ball);
             Vect v = ball.velocity();
-            double factor = Math.max(0, 1 - board.mu() * dt - board.mu2() * v.length() * dt);
+            double factor = Math.max(0, 1 - view.mu() * dt - view.mu2() * v.length() * dt);
             Vect free = v.times(factor).plus(new Vect(0, gravity * dt));
             Vect next = Contacts.project(free, normals);
             ball.setVelocity(next);
@@ -297,8 +299,8 @@ final class TickRun {
                                    DoubleFunction<Vect> reflect) {
         gizmo.markTriggered(now());
         if (gizmo instanceof Absorber absorber) {
-            board.recordEvent(new PlayEvent.Captured(absorber.name(), ball.name(), ball.position()));
-            board.capture(ball, absorber);
+            actions.recordEvent(new PlayEvent.Captured(absorber.name(), ball.name(), ball.position()));
+            actions.capture(ball, absorber);
             energy.lost(ball);
             sceneChanged();
         } else {
@@ -322,7 +324,7 @@ final class TickRun {
     private boolean bounceOff(Ball ball, ContactRef surface, GizmoBase gizmo, Vect normal,
                               DoubleFunction<Vect> reflect) {
         double approach = -ball.velocity().dot(normal);
-        board.recordEvent(new PlayEvent.Hit(gizmo == null ? TriggerSource.OUTER_WALLS
+        actions.recordEvent(new PlayEvent.Hit(gizmo == null ? TriggerSource.OUTER_WALLS
                 : TriggerSource.gizmo(gizmo.name()), gizmo == null ? null : gizmo.kind(), approach, ball.name(),
                 ball.position()));
         if (approach <= restingSpeed(ball, normal, surface)) {
@@ -445,13 +447,13 @@ final class TickRun {
                 ? Squeeze.leaving(reflected, squeezeSides(ball, part, shape, pivot, omega, met, reflected))
                 : Optional.of(reflected);
         ball.setVelocity(endless ? Vect.ZERO : leaving.orElse(Vect.ZERO));
-        board.recordEvent(new PlayEvent.Hit(TriggerSource.gizmo(flipper.name()), flipper.kind(),
+        actions.recordEvent(new PlayEvent.Hit(TriggerSource.gizmo(flipper.name()), flipper.kind(),
                 ball.velocity().minus(before).length() / 2, ball.name(), ball.position()));
         if (endless) {
             pinched++;   // guard (counted): squeezed out and back again without end
             stall(ball, flipper);
         } else if (leaving.isEmpty()) {
-            board.recordEvent(new PlayEvent.Jammed(flipper.name(), ball.name()));
+            actions.recordEvent(new PlayEvent.Jammed(flipper.name(), ball.name()));
             stall(ball, flipper);
         }
         return TriggerSource.gizmo(flipper.name());
@@ -545,7 +547,7 @@ final class TickRun {
     private Struck hitBall(Ball ball, Ball other) {
         Vect normal = ball.position().minus(other.position()).unitSize();
         double approach = -ball.velocity().minus(detector.motion(other)).dot(normal);
-        board.recordEvent(new PlayEvent.Hit(new Struck.OtherBall(other.name()), null, approach, ball.name(),
+        actions.recordEvent(new PlayEvent.Hit(new Struck.OtherBall(other.name()), null, approach, ball.name(),
                 ball.position()));
         boolean slow = approach <= Math.max(Tolerances.ROUNDING_SPEED, REST_TICKS_OF_GRAVITY * Math.abs(gravity) * dt);
         if (slow && (Contacts.supports(other, ball) || Contacts.supports(ball, other))) {
@@ -559,7 +561,7 @@ final class TickRun {
         }
         other.setStillTicks(0);
         if (other.isAsleep()) {
-            board.sleepers().wake(other);
+            view.sleepers().wake(other);
             findAwake();
             schedule.forgetAll();
         }
@@ -604,11 +606,11 @@ final class TickRun {
     /** Stage 5: the gizmo or the walls that were hit trigger every gizmo connected to them. */
     private void stage5Triggering(TriggerSource source) {
         double now = now();
-        for (Connection connection : board.connections()) {
+        for (Connection connection : view.connections()) {
             if (connection.source().equals(source)) {
-                GizmoBase target = board.gizmoBase(connection.target());
+                GizmoBase target = view.gizmo(connection.target());
                 if (target != null) {
-                    board.performAction(target, now);
+                    actions.trigger(target, now);
                     sceneChanged();   // a flipper turned round, an absorber fired, balls woke
                 }
             }
@@ -619,8 +621,8 @@ final class TickRun {
     private TickReport report() {
         int asleep = 0;
         List<BallReport> balls = new ArrayList<>();
-        double lookAhead = board.nextCollisionLookAhead();
-        for (Ball ball : board.ballStates()) {
+        double lookAhead = view.nextCollisionLookAhead();
+        for (Ball ball : view.balls()) {
             if (ball.isCaptured()) {
                 continue;
             }
@@ -629,9 +631,9 @@ final class TickRun {
                 balls.add(ballReport(ball, lookAhead));
             }
         }
-        nanos.put(Stage.REDRAWING, board.lastRedrawNanos());
-        return new TickReport(board.time(), nanos, collisions, zeroTimeCollisions, awake.size(), asleep,
-                new GuardCounts(wedged, pinched, capped), board.drainEvents(), balls);
+        nanos.put(Stage.REDRAWING, view.lastRedrawNanos());
+        return new TickReport(view.time(), nanos, collisions, zeroTimeCollisions, awake.size(), asleep,
+                new GuardCounts(wedged, pinched, capped), actions.drainEvents(), balls);
     }
 
     private BallReport ballReport(Ball ball, double lookAhead) {
@@ -641,7 +643,7 @@ final class TickRun {
         Vect at = null;
         if (!ball.isAsleep()) {
             Earliest earliest = detector.againstScene(ball, lookAhead);
-            for (Ball other : board.ballStates()) {
+            for (Ball other : view.balls()) {
                 if (other != ball && !other.isCaptured()) {
                     detector.againstBall(ball, other, lookAhead, earliest);
                 }
@@ -669,7 +671,7 @@ final class TickRun {
 
     private void findAwake() {
         awake.clear();
-        for (Ball ball : board.ballStates()) {
+        for (Ball ball : view.balls()) {
             if (!ball.isCaptured() && !ball.isAsleep()) {
                 awake.add(ball);
             }
@@ -678,7 +680,7 @@ final class TickRun {
 
     private List<Ball> freeBalls() {
         List<Ball> free = new ArrayList<>();
-        for (Ball ball : board.ballStates()) {
+        for (Ball ball : view.balls()) {
             if (!ball.isCaptured()) {
                 free.add(ball);
             }
