@@ -23,6 +23,25 @@ final class CollisionSchedule {
     private Known[] withScene = new Known[0];
     private Known[] withBalls = new Known[0];
     /**
+     * The same collisions' times and kinds side by side, so finding the earliest reads two arrays instead of a
+     * Known per ball: {@code at} (positive infinity: none) and whether it is with a circle.
+     */
+    private double[] sceneAt = new double[0];
+    private boolean[] sceneCircle = new boolean[0];
+    private double[] ballsAt = new double[0];
+    private boolean[] ballsCircle = new boolean[0];
+    /** The filed balls by slot. */
+    private Ball[] bySlot = new Ball[0];
+    /** The slots with a collision not known, in no order, each once: only they are asked again. */
+    private int[] unknown = new int[0];
+    private int unknownCount;
+    private boolean[] isUnknown = new boolean[0];
+    /** The awake balls' slots in board order (which is slot order), found again after the awake balls change. */
+    private int[] awakeSlots = new int[0];
+    private int awakeCount;
+    private boolean[] isAwake = new boolean[0];
+    private boolean awakeStale = true;
+    /**
      * By slot, the slots whose known ball collision has been with that ball (some since replaced): forgetting a ball
      * looks only at those, not at every ball.
      */
@@ -46,15 +65,33 @@ final class CollisionSchedule {
         filedAt = elapsed;
         fastest = 0;
         filed = 0;
-        withScene = new Known[free.size()];
-        withBalls = new Known[free.size()];
-        pointedAtBy = new int[free.size()][];
-        pointedAtCount = new int[free.size()];
+        int n = free.size();
+        withScene = new Known[n];
+        withBalls = new Known[n];
+        sceneAt = new double[n];
+        sceneCircle = new boolean[n];
+        ballsAt = new double[n];
+        ballsCircle = new boolean[n];
+        bySlot = new Ball[n];
+        unknown = new int[n];
+        isUnknown = new boolean[n];
+        awakeSlots = new int[n];
+        isAwake = new boolean[n];
+        pointedAtBy = new int[n][];
+        pointedAtCount = new int[n];
         for (Ball ball : free) {
+            bySlot[filed] = ball;
             ball.setSlot(filed++);
             grid.add(ball);
             sped(ball);
         }
+        forgetAll();
+        awakeStale = true;
+    }
+
+    /** Which balls are awake changed (a wake-up, a capture, a new filing): found again before the next search. */
+    void awakeChanged() {
+        awakeStale = true;
     }
 
     /** A ball's velocity changed: positions may go stale faster. */
@@ -62,26 +99,95 @@ final class CollisionSchedule {
         fastest = Math.max(fastest, CollisionDetector.speedBound(detector.motion(ball)));
     }
 
-    /** The earliest collision of the awake balls within the window, {@code elapsed} seconds into the tick. */
+    /**
+     * The earliest collision of the awake balls within the window, {@code elapsed} seconds into the tick. The balls
+     * whose collisions are not known are asked first, in slot order (asking about a ball may tell a later one of a
+     * sooner pair); then every awake ball's known collisions are offered in board order, near-ties going to
+     * circles as {@link Earliest} has it.
+     */
     Collision next(List<Ball> awake, double elapsed, double window) {
-        int n = awake.size();
-        for (int i = 0; i < n; i++) {
-            Ball ball = awake.get(i);
-            int slot = ball.slot();
+        if (awakeStale) {
+            findAwake(awake);
+        }
+        askTheUnknown(elapsed, window);
+        int best = -1;
+        boolean bestWithScene = false;
+        double bestTime = 0;
+        boolean bestCircle = false;
+        for (int k = 0; k < awakeCount; k++) {
+            int slot = awakeSlots[k];
+            if (sceneAt[slot] != Double.POSITIVE_INFINITY) {
+                double time = Math.min(Math.max(0, sceneAt[slot] - elapsed), window);
+                if (Earliest.better(time, sceneCircle[slot], best < 0, bestTime, bestCircle)) {
+                    best = slot;
+                    bestWithScene = true;
+                    bestTime = time;
+                    bestCircle = sceneCircle[slot];
+                }
+            }
+            if (ballsAt[slot] != Double.POSITIVE_INFINITY) {
+                double time = Math.min(Math.max(0, ballsAt[slot] - elapsed), window);
+                if (Earliest.better(time, ballsCircle[slot], best < 0, bestTime, bestCircle)) {
+                    best = slot;
+                    bestWithScene = false;
+                    bestTime = time;
+                    bestCircle = ballsCircle[slot];
+                }
+            }
+        }
+        if (best < 0) {
+            return null;
+        }
+        Collision found = (bestWithScene ? withScene[best] : withBalls[best]).collision();
+        return new Collision(bestTime, found.ball(), found.contact());
+    }
+
+    private void findAwake(List<Ball> awake) {
+        Arrays.fill(isAwake, false);
+        awakeCount = 0;
+        for (Ball ball : awake) {
+            awakeSlots[awakeCount++] = ball.slot();
+            isAwake[ball.slot()] = true;
+        }
+        awakeStale = false;
+    }
+
+    /** Asks about every awake ball whose collisions are not known, in slot order; a sleeping one waits to wake. */
+    private void askTheUnknown(double elapsed, double window) {
+        if (unknownCount == 0) {
+            return;
+        }
+        Arrays.sort(unknown, 0, unknownCount);
+        int kept = 0;
+        for (int k = 0; k < unknownCount; k++) {
+            int slot = unknown[k];
+            if (!isAwake[slot]) {
+                unknown[kept++] = slot;
+                continue;
+            }
+            Ball ball = bySlot[slot];
             if (withScene[slot] == null) {
-                withScene[slot] = known(detector.againstScene(ball, window), elapsed);
+                knowWithScene(slot, known(detector.againstScene(ball, window), elapsed));
             }
             if (withBalls[slot] == null) {
                 askAgainstBalls(ball, elapsed, window);
             }
+            isUnknown[slot] = false;
         }
-        Earliest earliest = new Earliest(window);
-        for (int i = 0; i < n; i++) {   // only now: asking about a ball may have told an earlier one of a sooner pair
-            int slot = awake.get(i).slot();
-            offer(earliest, withScene[slot], elapsed, window);
-            offer(earliest, withBalls[slot], elapsed, window);
+        unknownCount = kept;
+    }
+
+    private void markUnknown(int slot) {
+        if (!isUnknown[slot]) {
+            isUnknown[slot] = true;
+            unknown[unknownCount++] = slot;
         }
-        return earliest.collision();
+    }
+
+    private void knowWithScene(int slot, Known known) {
+        withScene[slot] = known;
+        sceneAt[slot] = known.at();
+        sceneCircle[slot] = known.circle();
     }
 
     /** The ball's velocity or position changed other than by moving on: ask again about it. */
@@ -92,11 +198,13 @@ final class CollisionSchedule {
         int slot = ball.slot();
         withScene[slot] = null;
         withBalls[slot] = null;
+        markUnknown(slot);
         int[] pointing = pointedAtBy[slot];
         for (int k = 0; k < pointedAtCount[slot]; k++) {
             Known known = withBalls[pointing[k]];
             if (known != null && known.collision() != null && partner(known) == ball) {
                 withBalls[pointing[k]] = null;
+                markUnknown(pointing[k]);
             }
         }
         pointedAtCount[slot] = 0;
@@ -106,6 +214,11 @@ final class CollisionSchedule {
         Arrays.fill(withScene, null);
         Arrays.fill(withBalls, null);
         Arrays.fill(pointedAtCount, 0);
+        Arrays.fill(isUnknown, true);
+        for (int slot = 0; slot < filed; slot++) {
+            unknown[slot] = slot;
+        }
+        unknownCount = filed;
     }
 
     private static Ball partner(Known known) {
@@ -115,6 +228,8 @@ final class CollisionSchedule {
     /** Files a ball's earliest known ball collision, noting it with its partner. */
     private void knowWithBalls(int slot, Known known) {
         withBalls[slot] = known;
+        ballsAt[slot] = known.at();
+        ballsCircle[slot] = known.circle();
         if (known.collision() == null) {
             return;
         }
@@ -163,12 +278,4 @@ final class CollisionSchedule {
                 : new Known(elapsed + collision.time(), collision, earliest.isCircle());
     }
 
-    /** Offers a known collision with its time from now, rounding of the bookkeeping kept within the window. */
-    private static void offer(Earliest earliest, Known known, double elapsed, double window) {
-        if (known.collision() == null) {
-            return;
-        }
-        double time = Math.min(Math.max(0, known.at() - elapsed), window);
-        earliest.offer(time, known.collision().ball(), known.collision().contact(), known.circle());
-    }
 }

@@ -21,16 +21,21 @@ final class Earliest {
         if (!(time >= 0 && time <= limit)) {
             return;   // also drops NaN and infinity
         }
-        boolean better = this.ball == null
-                || time < this.time - TIE
-                || (time <= this.time + TIE && isCircle && !circle);
-        if (better) {
+        if (better(time, isCircle, this.ball == null, this.time, circle)) {
             this.time = time;
             this.ball = ball;
             this.contact = contact;
             this.circle = isCircle;
             this.collision = null;
         }
+    }
+
+    /**
+     * Whether an offer at {@code time} beats the best so far ({@code none}: there is none yet): sooner by more than
+     * {@link #TIE}, or a circle tied with a segment. Also the rule of {@link CollisionSchedule}'s search.
+     */
+    static boolean better(double time, boolean isCircle, boolean none, double bestTime, boolean bestCircle) {
+        return none || time < bestTime - TIE || (time <= bestTime + TIE && isCircle && !bestCircle);
     }
 
     /** Offers later than this are dropped. */

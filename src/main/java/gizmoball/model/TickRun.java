@@ -670,6 +670,7 @@ final class TickRun {
     }
 
     private void findAwake() {
+        schedule.awakeChanged();
         awake.clear();
         for (Ball ball : view.balls()) {
             if (!ball.isCaptured() && !ball.isAsleep()) {
