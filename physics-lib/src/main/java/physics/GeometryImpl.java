@@ -14,6 +14,10 @@ import physics.Geometry.VectPair;
  * <p>
  * The static methods are closed forms in numerically stable forms. The rotating methods search the foresight
  * window {@code [0, maximumForesight]} and report only contacts inside it; see {@link RotatingContactSearch}.
+ * <p>
+ * At about 470 lines it is over the project's 400: it is the API's one implementation of the whole
+ * {@link GeometryInterface}, each method a closed form with its argument checks, which the API fixes in one
+ * class; the search of the rotating methods has a class of its own.
  */
 public class GeometryImpl implements GeometryInterface {
     /** Default foresight of the rotating methods, in seconds. */

@@ -42,16 +42,11 @@ final class CollisionDetector {
             new LineSegment(0, Board.SIZE, 0, 0));
 
     private final LoopView view;
-    private final Set<Flipper> heldFlippers;
     private final Set<Ball> finishedBalls;
 
-    /**
-     * @param heldFlippers  flippers held still for the rest of the tick (a pinched ball), treated as fixed
-     * @param finishedBalls balls that move no more this tick (SEED), treated as at rest
-     */
-    CollisionDetector(LoopView view, Set<Flipper> heldFlippers, Set<Ball> finishedBalls) {
+    /** @param finishedBalls balls that move no more this tick (SEED), treated as at rest */
+    CollisionDetector(LoopView view, Set<Ball> finishedBalls) {
         this.view = view;
-        this.heldFlippers = heldFlippers;
         this.finishedBalls = finishedBalls;
     }
 
@@ -66,10 +61,6 @@ final class CollisionDetector {
      */
     static double speedBound(Vect velocity) {
         return Math.sqrt(velocity.x() * velocity.x() + velocity.y() * velocity.y());
-    }
-
-    boolean isSwinging(Flipper flipper) {
-        return flipper.isMoving() && !heldFlippers.contains(flipper);
     }
 
     /** The ball's earliest collision with the outer walls or a gizmo within the window. */
@@ -88,7 +79,7 @@ final class CollisionDetector {
             }
         }
         for (GizmoBase gizmo : reachable(ball, velocity, window)) {
-            if (gizmo instanceof Flipper flipper && isSwinging(flipper)) {
+            if (gizmo instanceof Flipper flipper && flipper.isMoving()) {
                 againstSwingingFlipper(ball, flipper, window, earliest);
             } else if (!still) {
                 againstStillShape(ball, circle, velocity, 0, gizmo, gizmo.shape(), earliest);

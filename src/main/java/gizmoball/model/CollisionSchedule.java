@@ -110,36 +110,46 @@ final class CollisionSchedule {
             findAwake(awake);
         }
         askTheUnknown(elapsed, window);
-        int best = -1;
-        boolean bestWithScene = false;
-        double bestTime = 0;
-        boolean bestCircle = false;
+        Best best = new Best(elapsed, window);
         for (int k = 0; k < awakeCount; k++) {
             int slot = awakeSlots[k];
-            if (sceneAt[slot] != Double.POSITIVE_INFINITY) {
-                double time = Math.min(Math.max(0, sceneAt[slot] - elapsed), window);
-                if (Earliest.better(time, sceneCircle[slot], best < 0, bestTime, bestCircle)) {
-                    best = slot;
-                    bestWithScene = true;
-                    bestTime = time;
-                    bestCircle = sceneCircle[slot];
-                }
-            }
-            if (ballsAt[slot] != Double.POSITIVE_INFINITY) {
-                double time = Math.min(Math.max(0, ballsAt[slot] - elapsed), window);
-                if (Earliest.better(time, ballsCircle[slot], best < 0, bestTime, bestCircle)) {
-                    best = slot;
-                    bestWithScene = false;
-                    bestTime = time;
-                    bestCircle = ballsCircle[slot];
-                }
-            }
+            best.offer(slot, true, sceneAt[slot], sceneCircle[slot]);
+            best.offer(slot, false, ballsAt[slot], ballsCircle[slot]);
         }
-        if (best < 0) {
+        if (best.slot < 0) {
             return null;
         }
-        Collision found = (bestWithScene ? withScene[best] : withBalls[best]).collision();
-        return new Collision(bestTime, found.ball(), found.contact());
+        Collision found = (best.withScene ? withScene[best.slot] : withBalls[best.slot]).collision();
+        return new Collision(best.time, found.ball(), found.contact());
+    }
+
+    /** The earliest known collision offered so far, by slot: with the scene or with a ball. */
+    private static final class Best {
+        private final double elapsed;
+        private final double window;
+        private int slot = -1;
+        private boolean withScene;
+        private double time;
+        private boolean circle;
+
+        Best(double elapsed, double window) {
+            this.elapsed = elapsed;
+            this.window = window;
+        }
+
+        /** A known collision at {@code at} seconds since the tick began; positive infinity: none. */
+        void offer(int offered, boolean scene, double at, boolean isCircle) {
+            if (at == Double.POSITIVE_INFINITY) {
+                return;
+            }
+            double from = Math.min(Math.max(0, at - elapsed), window);   // from now, the rounding kept in the window
+            if (Earliest.better(from, isCircle, slot < 0, time, circle)) {
+                slot = offered;
+                withScene = scene;
+                time = from;
+                circle = isCircle;
+            }
+        }
     }
 
     private void findAwake(List<Ball> awake) {

@@ -75,7 +75,6 @@ final class TickRun {
     private final double startTime;
     private final double gravity;
     private final Contacts contacts;
-    private final Set<Flipper> heldFlippers = new HashSet<>();
     /** SEED: balls that have had their collision this tick and move no more. */
     private final Set<Ball> finished = new HashSet<>();
     /** SEED: balls a swinging flipper struck this tick, which move on to the end of it. */
@@ -113,7 +112,7 @@ final class TickRun {
         this.gravity = view.gravity();
         this.contacts = new Contacts(view, dt);
         this.energy = new ShadowEnergy(gravity, dt, view.balls().size());
-        this.detector = new CollisionDetector(view, heldFlippers, finished);
+        this.detector = new CollisionDetector(view, finished);
         this.schedule = new CollisionSchedule(detector, view.ballGrid());
         this.flippers = view.flippers();
     }
@@ -234,9 +233,7 @@ final class TickRun {
             }
         }
         for (Flipper flipper : flippers) {
-            if (!heldFlippers.contains(flipper)) {
-                flipper.advance(t);
-            }
+            flipper.advance(t);   // one at a stop, or blocked by a jammed ball, does not move
         }
         elapsed += t;
     }

@@ -41,7 +41,7 @@ class CollisionScheduleTest {
             }
         }
         List<Ball> free = new ArrayList<>(board.balls());
-        CollisionDetector detector = new CollisionDetector(board.loopView(), Set.of(), Set.of());
+        CollisionDetector detector = new CollisionDetector(board.loopView(), Set.of());
         CollisionSchedule schedule = new CollisionSchedule(detector, new BallGrid());
         schedule.file(free, 0);
         double tick = 0.25;

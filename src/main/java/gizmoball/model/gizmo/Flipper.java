@@ -30,7 +30,7 @@ public final class Flipper extends GizmoBase implements Gizmo {
 
     private double angle;
     private boolean active;
-    /** Stopped short of its stop by a ball pinched against something: still until it is sent the other way. */
+    /** Stopped short of its stop by a ball jammed against something: still until it is sent the other way. */
     private boolean blocked;
     private Shape restShape;
     private Shape activeShape;
@@ -88,7 +88,7 @@ public final class Flipper extends GizmoBase implements Gizmo {
         return !blocked && (active ? angle < MAX_ANGLE : angle > 0);
     }
 
-    /** True while a pinched ball holds the flipper short of its stop. */
+    /** True while a jammed ball holds the flipper short of its stop. */
     public boolean isBlocked() {
         return blocked;
     }
@@ -147,7 +147,7 @@ public final class Flipper extends GizmoBase implements Gizmo {
     }
 
     /**
-     * A ball pinched between the flipper and something else stops it where it is. For the board and its loop, not for
+     * A ball jammed between the flipper and something else stops it where it is. For the board and its loop, not for
      * views.
      */
     public void block() {
