@@ -13,6 +13,8 @@ import java.util.List;
  */
 final class SpatialIndex {
     private final GizmoBase[][] cells = new GizmoBase[Board.SIZE][Board.SIZE];
+    /** How many cells of each column are covered: a search skips the empty columns of its box. */
+    private final int[] coveredInColumn = new int[Board.SIZE];
 
     GizmoBase at(int cx, int cy) {
         return inside(cx, cy) ? cells[cx][cy] : null;
@@ -33,6 +35,7 @@ final class SpatialIndex {
     private void fill(GizmoBase gizmo, GizmoBase value) {
         for (int cx = gizmo.x(); cx < gizmo.x() + gizmo.width(); cx++) {
             for (int cy = gizmo.y(); cy < gizmo.y() + gizmo.height(); cy++) {
+                coveredInColumn[cx] += (value != null ? 1 : 0) - (cells[cx][cy] != null ? 1 : 0);
                 cells[cx][cy] = value;
             }
         }
@@ -40,12 +43,15 @@ final class SpatialIndex {
 
     /** The distinct gizmos covering any cell that meets the box [minX, maxX] x [minY, maxY] (board coordinates). */
     List<GizmoBase> within(double minX, double minY, double maxX, double maxY) {
-        List<GizmoBase> found = new ArrayList<>();
+        List<GizmoBase> found = new ArrayList<>(4);
         int x0 = clampCell(minX);
         int x1 = clampCell(maxX);
         int y0 = clampCell(minY);
         int y1 = clampCell(maxY);
         for (int cx = x0; cx <= x1; cx++) {
+            if (coveredInColumn[cx] == 0) {
+                continue;
+            }
             for (int cy = y0; cy <= y1; cy++) {
                 GizmoBase gizmo = cells[cx][cy];
                 if (gizmo != null && !found.contains(gizmo)) {
