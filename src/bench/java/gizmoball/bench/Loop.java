@@ -1,6 +1,6 @@
 package gizmoball.bench;
 
-import gizmoball.model.LoopMode;
+import gizmoball.model.loop.LoopMode;
 
 /** The stepping schemes compared: the model's two loops and the naive baseline. */
 enum Loop {

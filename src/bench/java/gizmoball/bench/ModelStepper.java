@@ -1,10 +1,10 @@
 package gizmoball.bench;
 
-import gizmoball.model.Ball;
 import gizmoball.model.BenchSwitches;
 import gizmoball.model.Board;
 import gizmoball.model.Invariants;
 import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.loop.Ball;
 
 import java.util.ArrayList;
 import java.util.List;

@@ -1,8 +1,8 @@
 package gizmoball.bench;
 
-import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.loop.Ball;
 import physics.Vect;
 
 import java.util.ArrayList;

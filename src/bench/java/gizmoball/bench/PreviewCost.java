@@ -1,8 +1,8 @@
 package gizmoball.bench;
 
 import gizmoball.boardfile.BoardFiles;
-import gizmoball.model.Ball;
 import gizmoball.model.Board;
+import gizmoball.model.loop.Ball;
 import gizmoball.preview.Prediction;
 import gizmoball.preview.Predictor;
 import java.io.IOException;

@@ -3,13 +3,13 @@ package gizmoball.bench;
 import gizmoball.boardfile.BoardFileException;
 import gizmoball.boardfile.BoardFiles;
 import gizmoball.boardfile.LoadResult;
-import gizmoball.model.Ball;
 import gizmoball.model.Board;
-import gizmoball.model.GuardCounts;
-import gizmoball.model.PlayEvent;
-import gizmoball.model.Stage;
-import gizmoball.model.TickReport;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.GuardCounts;
+import gizmoball.model.loop.PlayEvent;
+import gizmoball.model.loop.Stage;
+import gizmoball.model.loop.TickReport;
 import physics.Vect;
 
 import java.io.IOException;

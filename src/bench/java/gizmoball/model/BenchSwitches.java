@@ -1,5 +1,7 @@
 package gizmoball.model;
 
+import gizmoball.model.loop.LoopMode;
+
 /**
  * The benchmark's switches of the model's loop: the classic {@link LoopMode#SEED} loop, and a scan of every gizmo
  * instead of the spatial index, so that it can measure what the continuous loop and the index buy. The game never

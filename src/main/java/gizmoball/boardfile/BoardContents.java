@@ -1,12 +1,12 @@
 package gizmoball.boardfile;
 
-import gizmoball.model.Ball;
 import gizmoball.model.Board;
-import gizmoball.model.Connection;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
+import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.Connection;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;

@@ -1,12 +1,12 @@
 package gizmoball.boardfile;
 
-import gizmoball.model.Ball;
 import gizmoball.model.Board;
-import gizmoball.model.Connection;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.Connection;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;

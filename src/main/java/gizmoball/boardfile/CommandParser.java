@@ -2,8 +2,8 @@ package gizmoball.boardfile;
 
 import gizmoball.model.Board;
 import gizmoball.model.KeyEdge;
-import gizmoball.model.TriggerSource;
 import gizmoball.model.gizmo.Rgb;
+import gizmoball.model.loop.TriggerSource;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;

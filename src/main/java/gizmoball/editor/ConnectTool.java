@@ -1,6 +1,6 @@
 package gizmoball.editor;
 
-import gizmoball.model.TriggerSource;
+import gizmoball.model.loop.TriggerSource;
 import java.util.Optional;
 
 /** Connect and Disconnect: click the trigger source (a gizmo, or the outer walls), then the target. */

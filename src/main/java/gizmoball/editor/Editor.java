@@ -1,15 +1,15 @@
 package gizmoball.editor;
 
 import gizmoball.boardfile.KeyCodes;
-import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
-import gizmoball.model.TriggerSource;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
+import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.TriggerSource;
 import java.awt.event.KeyEvent;
 import java.util.ArrayList;
 import java.util.Comparator;

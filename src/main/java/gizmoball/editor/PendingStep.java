@@ -1,8 +1,8 @@
 package gizmoball.editor;
 
-import gizmoball.model.Ball;
-import gizmoball.model.TriggerSource;
 import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.TriggerSource;
 
 /**
  * The half-done step of a tool: what the next pointer or key event completes. Exactly one is pending at a time

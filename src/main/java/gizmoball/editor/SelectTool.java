@@ -1,8 +1,8 @@
 package gizmoball.editor;
 
-import gizmoball.model.Ball;
-import gizmoball.model.TriggerSource;
 import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.TriggerSource;
 import java.util.Optional;
 
 /** Select / Move: a click selects a gizmo, a ball or the outer walls; a drag moves the gizmo or ball. */

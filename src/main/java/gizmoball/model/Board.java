@@ -6,6 +6,20 @@ import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
+import gizmoball.model.loop.Arena;
+import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallGrid;
+import gizmoball.model.loop.Connection;
+import gizmoball.model.loop.GuardCounts;
+import gizmoball.model.loop.LoopActions;
+import gizmoball.model.loop.LoopMode;
+import gizmoball.model.loop.LoopView;
+import gizmoball.model.loop.PlayEvent;
+import gizmoball.model.loop.Sleepers;
+import gizmoball.model.loop.SpatialIndex;
+import gizmoball.model.loop.TickReport;
+import gizmoball.model.loop.TickRun;
+import gizmoball.model.loop.TriggerSource;
 
 import java.util.ArrayList;
 import java.util.Collection;
@@ -21,17 +35,20 @@ import physics.Vect;
  * ({@link #tick(double)}, keys, triggers). It is the facade over parts with one job each: the {@link Registry} of
  * gizmos and balls, the {@link PlacementRules}, the {@link Edits} of gizmos and balls, the {@link Wiring} of
  * connections and keys, the actions of {@link Play} and the {@link Observers}; the physics loop itself is
- * {@link TickRun}, which sees the board only through {@link LoopView} and acts on it only through
- * {@link LoopActions}, both implemented here by one private adapter.
+ * {@link TickRun}, in a package of its own that may not use this one: it sees the board only through
+ * {@link LoopView} and acts on it only through {@link LoopActions}, both implemented here by one private adapter.
  *
  * <p>It is over 400 lines only because it is the model's whole public API plus that adapter (some 130 lines of
  * one-line delegations, which need the board's private state); every method is an argument check, a delegation,
  * or a constant of play (gravity, friction, time).
  */
 public final class Board {
-    public static final int SIZE = 20;
-    public static final double BALL_RADIUS = 0.25;
-    public static final double MAX_SPEED = 200;
+    /** The side of the board in L and cells: the loop's {@link Arena#SIZE}, named here for the board's users. */
+    public static final int SIZE = Arena.SIZE;
+    /** L: {@link Arena#BALL_RADIUS}. */
+    public static final double BALL_RADIUS = Arena.BALL_RADIUS;
+    /** L/s: {@link Arena#MAX_SPEED}. */
+    public static final double MAX_SPEED = Arena.MAX_SPEED;
     public static final double DEFAULT_GRAVITY = 25;
     public static final double DEFAULT_MU = 0.025;
     public static final double DEFAULT_MU2 = 0.025;
@@ -410,7 +427,7 @@ public final class Board {
         return registry.gizmo(name);
     }
 
-    /** The loop's view of this board (its detector's and contacts' too, in tests). */
+    /** The loop's view of this board, for the loop's tests (through their fixture {@code LoopViews}). */
     LoopView loopView() {
         return loop;
     }

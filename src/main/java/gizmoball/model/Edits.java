@@ -5,6 +5,7 @@ import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
+import gizmoball.model.loop.Ball;
 
 import java.util.List;
 import java.util.Optional;

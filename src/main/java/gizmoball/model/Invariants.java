@@ -1,6 +1,8 @@
 package gizmoball.model;
 
 import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.Tolerances;
 
 import java.util.ArrayList;
 import java.util.Collection;

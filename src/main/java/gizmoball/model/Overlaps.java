@@ -1,6 +1,7 @@
 package gizmoball.model;
 
 import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.loop.Tolerances;
 
 import physics.Vect;
 

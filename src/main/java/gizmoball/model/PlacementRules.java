@@ -3,6 +3,9 @@ package gizmoball.model;
 import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.SpatialIndex;
+import gizmoball.model.loop.TriggerSource;
 
 import java.util.List;
 import java.util.Optional;

@@ -4,6 +4,9 @@ import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.Surroundings;
+import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.PlayEvent;
+import gizmoball.model.loop.Sleepers;
 
 import java.util.ArrayList;
 import java.util.List;

@@ -3,6 +3,9 @@ package gizmoball.model;
 import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.Sleepers;
+import gizmoball.model.loop.SpatialIndex;
 
 import java.util.ArrayList;
 import java.util.Collection;

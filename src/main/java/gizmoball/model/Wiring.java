@@ -1,5 +1,8 @@
 package gizmoball.model;
 
+import gizmoball.model.loop.Connection;
+import gizmoball.model.loop.TriggerSource;
+
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;

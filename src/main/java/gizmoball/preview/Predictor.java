@@ -1,11 +1,11 @@
 package gizmoball.preview;
 
-import gizmoball.model.Ball;
 import gizmoball.model.Board;
-import gizmoball.model.Connection;
-import gizmoball.model.PlayEvent;
-import gizmoball.model.Struck;
-import gizmoball.model.TriggerSource;
+import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.Connection;
+import gizmoball.model.loop.PlayEvent;
+import gizmoball.model.loop.Struck;
+import gizmoball.model.loop.TriggerSource;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;

@@ -2,7 +2,7 @@ package gizmoball.sound;
 
 import gizmoball.model.Board;
 import gizmoball.model.BoardChange;
-import gizmoball.model.PlayEvent;
+import gizmoball.model.loop.PlayEvent;
 
 /**
  * Makes a board audible: after each tick, the events of the model's tick report (hits with their impact

@@ -1,8 +1,8 @@
 package gizmoball.sound;
 
-import gizmoball.model.PlayEvent;
-import gizmoball.model.TriggerSource;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.loop.PlayEvent;
+import gizmoball.model.loop.TriggerSource;
 import java.util.Optional;
 
 /**

@@ -1,9 +1,9 @@
 package gizmoball.view;
 
-import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.BoardChange;
 import gizmoball.model.BoardObserver;
+import gizmoball.model.loop.Ball;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Graphics2D;

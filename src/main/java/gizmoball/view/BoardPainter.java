@@ -1,11 +1,11 @@
 package gizmoball.view;
 
-import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.gizmo.Bumper;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.loop.Ball;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;

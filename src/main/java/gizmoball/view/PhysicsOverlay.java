@@ -1,9 +1,9 @@
 package gizmoball.view;
 
-import gizmoball.model.BallReport;
 import gizmoball.model.Board;
-import gizmoball.model.Stage;
-import gizmoball.model.TickReport;
+import gizmoball.model.loop.BallReport;
+import gizmoball.model.loop.Stage;
+import gizmoball.model.loop.TickReport;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;

@@ -14,39 +14,53 @@ import gizmoball.model.Board;
 import gizmoball.view.BoardPainter;
 
 /**
- * The model's arrows run one way (docs/design.md, "Package map"): the gizmo kinds use nothing of the board they
- * sit in, only the board uses the kinds, and neither uses AWT or Swing. Read from the constant pools of the
- * game's compiled classes, which name every class a class uses (imports that only Javadoc uses leave none).
+ * The model's arrows run one way (docs/design.md, "Package map"): the board uses the loop, the loop uses the gizmo
+ * kinds, and never the other way round: the loop uses nothing of the board it runs on but the kinds, the kinds use
+ * nothing of the game outside them, and none of them uses AWT or Swing. Read from the constant pools of the game's
+ * compiled classes, which name every class a class uses (imports that only Javadoc uses leave none).
  */
 class PackageArrowsTest {
     private static final String GAME = "gizmoball/";
     private static final String MODEL = "gizmoball/model/";
     private static final String KINDS = "gizmoball/model/gizmo/";
+    private static final String LOOP = "gizmoball/model/loop/";
 
     @Test
-    void theKindsUseNothingOfTheGameOutsideThemAndTheModelNoAwtOrSwing() throws IOException, URISyntaxException {
+    void theKindsUseNothingOfTheGameOutsideThemTheLoopOnlyTheKindsAndTheModelNoAwtOrSwing()
+            throws IOException, URISyntaxException {
         List<String> kinds = new ArrayList<>();
+        List<String> loop = new ArrayList<>();
         List<String> violations = new ArrayList<>();
         ApiOnlyTest.forEachGameClassFile((name, refs) -> {
             if (name.startsWith(KINDS)) {
                 kinds.add(name);
                 violations.addAll(outsideTheKinds(name, refs));
             }
+            if (name.startsWith(LOOP)) {
+                loop.add(name);
+                violations.addAll(outsideTheLoopAndTheKinds(name, refs));
+            }
             if (name.startsWith(MODEL)) {
                 violations.addAll(awtOrSwing(name, refs));
             }
         });
 
-        // Not vacuous: the kinds were found where the package map puts them.
+        // Not vacuous: the kinds and the loop were found where the package map puts them.
         assertThat(kinds).contains(KINDS + "GizmoBase.class", KINDS + "Flipper.class", KINDS + "Absorber.class");
+        assertThat(loop).contains(LOOP + "TickRun.class", LOOP + "CollisionDetector.class", LOOP + "Ball.class");
         assertThat(violations).as("references against the package map's arrows").isEmpty();
     }
 
-    /** Both checks can fail: the board's play rules use the rest of the model, the painter uses AWT. */
+    /**
+     * Every check can fail: the board's play rules use the rest of the model (the loop's check reports that, and not
+     * their uses of the loop and the kinds), the painter uses AWT.
+     */
     @Test
     void theChecksReportAReferenceAgainstTheArrows() throws IOException {
         ClassFileReferences play = read(Board.class, "Play.class");
         assertThat(outsideTheKinds("Play.class", play)).contains("Play.class: " + MODEL + "Registry");
+        assertThat(outsideTheLoopAndTheKinds("Play.class", play)).contains("Play.class: " + MODEL + "Registry")
+                .doesNotContain("Play.class: " + LOOP + "Ball", "Play.class: " + KINDS + "Absorber");
         ClassFileReferences painter = read(BoardPainter.class, "BoardPainter.class");
         assertThat(awtOrSwing("BoardPainter.class", painter)).contains("BoardPainter.class: java/awt/Graphics2D");
     }
@@ -54,6 +68,11 @@ class PackageArrowsTest {
     private static List<String> outsideTheKinds(String classFile, ClassFileReferences refs) {
         return refs.classes.stream().filter(c -> c.startsWith(GAME) && !c.startsWith(KINDS)).distinct()
                 .map(c -> classFile + ": " + c).toList();
+    }
+
+    private static List<String> outsideTheLoopAndTheKinds(String classFile, ClassFileReferences refs) {
+        return refs.classes.stream().filter(c -> c.startsWith(GAME) && !c.startsWith(LOOP) && !c.startsWith(KINDS))
+                .distinct().map(c -> classFile + ": " + c).toList();
     }
 
     private static List<String> awtOrSwing(String classFile, ClassFileReferences refs) {

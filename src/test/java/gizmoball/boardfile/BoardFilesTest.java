@@ -5,8 +5,8 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import gizmoball.model.Board;
 import gizmoball.model.KeyEdge;
-import gizmoball.model.TriggerSource;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.loop.TriggerSource;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;

@@ -5,11 +5,11 @@ import static org.assertj.core.api.Assertions.catchThrowableOfType;
 import static org.assertj.core.groups.Tuple.tuple;
 
 import gizmoball.model.Board;
-import gizmoball.model.Connection;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
-import gizmoball.model.TriggerSource;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.loop.Connection;
+import gizmoball.model.loop.TriggerSource;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;

@@ -3,9 +3,9 @@ package gizmoball.boardfile;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.fail;
 
-import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.Invariants;
+import gizmoball.model.loop.Ball;
 import java.util.List;
 import java.util.Locale;
 import org.junit.jupiter.api.Test;

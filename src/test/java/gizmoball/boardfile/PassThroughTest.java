@@ -3,8 +3,8 @@ package gizmoball.boardfile;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
-import gizmoball.model.Ball;
 import gizmoball.model.Board;
+import gizmoball.model.loop.Ball;
 import org.junit.jupiter.api.Test;
 
 /**

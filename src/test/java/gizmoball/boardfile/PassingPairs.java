@@ -1,7 +1,7 @@
 package gizmoball.boardfile;
 
-import gizmoball.model.Ball;
 import gizmoball.model.Board;
+import gizmoball.model.loop.Ball;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Optional;

@@ -2,12 +2,12 @@ package gizmoball.boardfile;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.loop.Ball;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;

@@ -3,8 +3,8 @@ package gizmoball.controller;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.boardfile.BoardFiles;
-import gizmoball.model.Ball;
 import gizmoball.model.Board;
+import gizmoball.model.loop.Ball;
 import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;

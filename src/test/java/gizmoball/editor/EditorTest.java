@@ -1,16 +1,16 @@
 package gizmoball.editor;
 
 import gizmoball.boardfile.BoardContents;
-import gizmoball.model.Ball;
 import gizmoball.model.Board;
-import gizmoball.model.Connection;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
-import gizmoball.model.TriggerSource;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
+import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.Connection;
+import gizmoball.model.loop.TriggerSource;
 import org.junit.jupiter.api.BeforeEach;
 import physics.Vect;
 import org.junit.jupiter.api.Test;

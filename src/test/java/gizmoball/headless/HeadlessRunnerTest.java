@@ -4,8 +4,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.offset;
 
 import gizmoball.boardfile.BoardFiles;
-import gizmoball.model.Ball;
 import gizmoball.model.Board;
+import gizmoball.model.loop.Ball;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.PrintStream;

@@ -6,6 +6,8 @@ import static org.assertj.core.api.Assertions.within;
 
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.TriggerSource;
 
 import org.junit.jupiter.api.Test;
 

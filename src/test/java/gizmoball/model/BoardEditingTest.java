@@ -7,6 +7,9 @@ import gizmoball.model.gizmo.Bumper;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.Connection;
+import gizmoball.model.loop.TriggerSource;
 
 import java.util.ArrayList;
 import java.util.List;

@@ -1,5 +1,7 @@
 package gizmoball.model;
 
+import gizmoball.model.loop.LoopMode;
+
 /**
  * The loop mode of a board, for tests outside the model package (the stability tests play every scene in both
  * modes). The game always plays {@link LoopMode#CONTINUOUS}, so the switch is package-private on {@link Board}

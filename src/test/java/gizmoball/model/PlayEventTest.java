@@ -4,6 +4,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.loop.PlayEvent;
+import gizmoball.model.loop.TriggerSource;
 
 import java.util.ArrayList;
 import java.util.List;

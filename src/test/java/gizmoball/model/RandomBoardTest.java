@@ -4,6 +4,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.loop.LoopMode;
+import gizmoball.model.loop.TriggerSource;
 
 import java.util.List;
 import java.util.Random;

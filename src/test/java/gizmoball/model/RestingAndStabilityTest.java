@@ -4,6 +4,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.LoopMode;
 
 import java.util.Random;
 

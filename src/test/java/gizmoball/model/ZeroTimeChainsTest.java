@@ -5,6 +5,8 @@ import static org.assertj.core.api.Assertions.within;
 
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.GuardCounts;
 
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;

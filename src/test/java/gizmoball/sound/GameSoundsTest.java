@@ -5,8 +5,8 @@ import static org.assertj.core.api.Assertions.within;
 
 import gizmoball.model.Board;
 import gizmoball.model.KeyEdge;
-import gizmoball.model.PlayEvent;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.loop.PlayEvent;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;

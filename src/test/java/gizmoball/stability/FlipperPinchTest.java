@@ -1,12 +1,12 @@
 package gizmoball.stability;
 
-import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.KeyEdge;
-import gizmoball.model.LoopMode;
 import gizmoball.model.LoopModes;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.LoopMode;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;

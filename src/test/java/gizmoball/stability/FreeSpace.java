@@ -1,8 +1,8 @@
 package gizmoball.stability;
 
 import gizmoball.model.Board;
-import gizmoball.model.LoopMode;
 import gizmoball.model.LoopModes;
+import gizmoball.model.loop.LoopMode;
 
 /** Boards without gravity or friction, where the outcomes of the stability scenes are exact. */
 final class FreeSpace {

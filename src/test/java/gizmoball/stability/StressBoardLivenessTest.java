@@ -1,9 +1,9 @@
 package gizmoball.stability;
 
 import gizmoball.boardfile.BoardFiles;
-import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.Invariants;
+import gizmoball.model.loop.Ball;
 
 import java.nio.file.Path;
 import java.util.HashMap;

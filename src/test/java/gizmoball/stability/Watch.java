@@ -1,10 +1,10 @@
 package gizmoball.stability;
 
-import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.Invariants;
-import gizmoball.model.LoopMode;
 import gizmoball.model.LoopModes;
+import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.LoopMode;
 
 import java.time.Duration;
 import java.util.List;

@@ -4,11 +4,11 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import gizmoball.boardfile.BoardFiles;
-import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.gizmo.Bumper;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.loop.Ball;
 import java.awt.Color;
 import java.awt.Graphics2D;
 import java.awt.geom.Point2D;

@@ -3,9 +3,9 @@ package gizmoball.view;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
-import gizmoball.model.BallReport;
 import gizmoball.model.Board;
-import gizmoball.model.TickReport;
+import gizmoball.model.loop.BallReport;
+import gizmoball.model.loop.TickReport;
 import java.awt.Color;
 import java.awt.Graphics2D;
 import java.awt.geom.Point2D;

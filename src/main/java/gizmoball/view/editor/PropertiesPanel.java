@@ -2,14 +2,14 @@ package gizmoball.view.editor;
 
 import gizmoball.boardfile.KeyCodes;
 import gizmoball.editor.Editor;
-import gizmoball.model.Ball;
 import gizmoball.model.Board;
 import gizmoball.model.BoardChange;
-import gizmoball.model.Connection;
 import gizmoball.model.KeyBinding;
-import gizmoball.model.TriggerSource;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.Rgb;
+import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.Connection;
+import gizmoball.model.loop.TriggerSource;
 import gizmoball.view.BoardPainter;
 
 import javax.swing.BorderFactory;

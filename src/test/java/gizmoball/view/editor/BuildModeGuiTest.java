@@ -1,18 +1,18 @@
 package gizmoball.view.editor;
 
 import gizmoball.boardfile.BoardContents;
-import gizmoball.session.GameSession;
-import gizmoball.session.Mode;
 import gizmoball.editor.Tool;
 import gizmoball.model.Board;
-import gizmoball.model.Connection;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
-import gizmoball.model.TriggerSource;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
+import gizmoball.model.loop.Connection;
+import gizmoball.model.loop.TriggerSource;
+import gizmoball.session.GameSession;
+import gizmoball.session.Mode;
 import gizmoball.view.BoardPainter;
 import gizmoball.view.Gui;
 import org.junit.jupiter.api.AfterEach;

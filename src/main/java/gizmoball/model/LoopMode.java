@@ -1,8 +1,0 @@
-package gizmoball.model;
-
-/**
- * How {@link Board#tick(double)} spends a tick. SEED is the classic loop: one move and at most one collision per
- * tick (the time after that collision is lost). CONTINUOUS simulates the whole tick: after each collision,
- * detection and resolution repeat until the tick is used up.
- */
-public enum LoopMode { SEED, CONTINUOUS }

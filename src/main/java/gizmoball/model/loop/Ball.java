@@ -1,0 +1,167 @@
+package gizmoball.model.loop;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import physics.Circle;
+import physics.Vect;
+
+/**
+ * A ball: centre and velocity in L and L/s, radius {@link Arena#BALL_RADIUS}; captured while an absorber holds it.
+ * A free ball also carries its loop bookkeeping: the surfaces it is in persistent contact with, how many ticks it
+ * has been still on them, and whether it sleeps (docs/design.md, "Sleeping").
+ */
+public final class Ball {
+    /**
+     * L/s: components below this are rounding debris. Far below anything meaningful (resting-contact projections
+     * leave components near 1e-14 that decide whether a ball is still closing on a corner), far above the
+     * range where a collision time gap / speed overflows.
+     */
+    static final double NEGLIGIBLE_SPEED = 1e-100;
+    private final String name;
+    private Vect position;
+    private Vect velocity;
+    private boolean captured;
+    private final List<ContactRef> contacts = new ArrayList<>();
+    private int stillTicks;
+    private boolean asleep;
+    /** Index of the ball among the free balls of the tick running now (the collision schedule's bookkeeping). */
+    private int slot;
+
+    /** A free ball, awake, in contact with nothing. For the board, not for views. */
+    public Ball(String name, Vect position, Vect velocity) {
+        this.name = name;
+        this.position = position;
+        this.velocity = velocity;
+    }
+
+    /** A copy with the same state and contacts (for a copy of the board). For the board, not for views. */
+    public Ball copy() {
+        Ball copy = new Ball(name, position, velocity);
+        copy.captured = captured;
+        copy.contacts.addAll(contacts);
+        copy.stillTicks = stillTicks;
+        copy.asleep = asleep;
+        return copy;
+    }
+
+    public String name() {
+        return name;
+    }
+
+    public Vect position() {
+        return position;
+    }
+
+    public Vect velocity() {
+        return velocity;
+    }
+
+    public double radius() {
+        return Arena.BALL_RADIUS;
+    }
+
+    public boolean isCaptured() {
+        return captured;
+    }
+
+    /** True while the ball lies still in contact and the loop leaves it alone until something can reach it. */
+    public boolean isAsleep() {
+        return asleep;
+    }
+
+    /** How many surfaces (walls, gizmo parts, balls) the ball is in persistent contact with. */
+    public int contactCount() {
+        return contacts.size();
+    }
+
+    List<ContactRef> contacts() {
+        return contacts;
+    }
+
+    int stillTicks() {
+        return stillTicks;
+    }
+
+    void setStillTicks(int ticks) {
+        stillTicks = ticks;
+    }
+
+    int slot() {
+        return slot;
+    }
+
+    void setSlot(int index) {
+        slot = index;
+    }
+
+    void fallAsleep() {
+        asleep = true;
+        velocity = Vect.ZERO;
+    }
+
+    /** Awake again, contacts kept (the loop checks them at the next tick), stillness counted from zero. */
+    void wake() {
+        asleep = false;
+        stillTicks = 0;
+    }
+
+    /** Forgets every contact and wakes: the board changed under the ball. */
+    void disturb() {
+        contacts.clear();
+        wake();
+    }
+
+    Circle circle() {
+        return new Circle(position, Arena.BALL_RADIUS);
+    }
+
+    /** The centre moves there, the velocity kept. For the board and its loop, not for views. */
+    public void moveTo(Vect newPosition) {
+        position = newPosition;
+    }
+
+    /**
+     * Sets the velocity, its speed clamped to {@link Arena#MAX_SPEED}. A clamped velocity can measure a rounding
+     * error over the limit; it is kept as it is (the invariants the tests check allow for it), so clamping twice
+     * changes nothing and a saved ball reloads with exactly its velocity. Components below {@link #NEGLIGIBLE_SPEED}
+     * become 0: friction shrinks a leftover component geometrically toward the subnormal range, where the time
+     * until it crosses the board overflows (a 1e-308 L/s drift meets a wall after more than 1e308 s).
+     * For the board and its loop, not for views.
+     */
+    public void setVelocity(Vect newVelocity) {
+        double speed = newVelocity.length();
+        Vect clamped = speed > Arena.MAX_SPEED * (1 + 1e-12) ? newVelocity.times(Arena.MAX_SPEED / speed) : newVelocity;
+        velocity = new Vect(negligibleToZero(clamped.x()), negligibleToZero(clamped.y()));
+    }
+
+    private static double negligibleToZero(double component) {
+        return Math.abs(component) < NEGLIGIBLE_SPEED ? 0 : component;
+    }
+
+    void advance(double dt) {
+        position = new Vect(position.x() + velocity.x() * dt, position.y() + velocity.y() * dt);
+    }
+
+    /** An absorber holds it there, at rest, its contacts forgotten. For the board, not for views. */
+    public void capture(Vect holdingPosition) {
+        disturb();
+        captured = true;
+        position = holdingPosition;
+        velocity = Vect.ZERO;
+    }
+
+    /** Free again, at that place and velocity, its contacts forgotten. For the board, not for views. */
+    public void release(Vect launchPosition, Vect launchVelocity) {
+        disturb();
+        captured = false;
+        position = launchPosition;
+        setVelocity(launchVelocity);
+    }
+
+    @Override
+    public String toString() {
+        return "ball " + name + " at " + position + " moving " + velocity + (captured ? " (captured)" : "")
+                + (asleep ? " (asleep)" : "");
+    }
+}

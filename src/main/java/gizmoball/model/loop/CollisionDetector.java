@@ -1,0 +1,224 @@
+package gizmoball.model.loop;
+
+import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.Shape;
+
+import java.util.Collection;
+import java.util.List;
+import java.util.Set;
+
+import physics.Angle;
+import physics.Circle;
+import physics.Geometry;
+import physics.GeometryImpl;
+import physics.GeometryInterface;
+import physics.LineSegment;
+import physics.Vect;
+
+/**
+ * Stage 3 of the loop, for one ball: the time until it hits the outer walls, each gizmo shape it can reach, or
+ * another ball. All times come from physics.Geometry. A swinging flipper is asked through the rotating methods of
+ * a GeometryImpl whose foresight ends with its swing (the library's rotation goes on for ever; docs/design.md,
+ * "Rotation that stops"); after that it is a fixed shape at its stop.
+ *
+ * <p>A touch that does not close faster than {@link Tolerances#ROUNDING_SPEED} is a graze, not a collision: a
+ * ball rolling along a surface, across a seam or past a corner it only brushes is never stopped for it
+ * (docs/design.md, "Grazes").
+ */
+final class CollisionDetector {
+    /** Margin around a ball's swept box when asking the spatial index (touching shapes must be found). */
+    private static final double REACH_MARGIN = 1e-6;
+    /**
+     * Slices of a flipper's swing over which the rotating search bounds the ball's motion. Any value finds the
+     * same contacts; more slices take fewer search steps for fast balls. Ours, because the API has no constant.
+     */
+    private static final int ROTATING_SEARCH_SLICES = 16;
+
+    static final List<LineSegment> OUTER_WALLS = List.of(
+            new LineSegment(0, 0, Arena.SIZE, 0),
+            new LineSegment(Arena.SIZE, 0, Arena.SIZE, Arena.SIZE),
+            new LineSegment(Arena.SIZE, Arena.SIZE, 0, Arena.SIZE),
+            new LineSegment(0, Arena.SIZE, 0, 0));
+
+    private final LoopView view;
+    private final Set<Ball> finishedBalls;
+
+    /** @param finishedBalls balls that move no more this tick (SEED), treated as at rest */
+    CollisionDetector(LoopView view, Set<Ball> finishedBalls) {
+        this.view = view;
+        this.finishedBalls = finishedBalls;
+    }
+
+    /** The velocity the ball moves with for the rest of the tick: none while asleep or finished. */
+    Vect motion(Ball ball) {
+        return ball.isAsleep() || !finishedBalls.isEmpty() && finishedBalls.contains(ball) ? Vect.ZERO : ball.velocity();
+    }
+
+    /**
+     * A speed for a reach, which carries {@link #REACH_MARGIN}, far above the rounding: a plain square root, several
+     * times cheaper than the overflow-safe hypot behind {@link Vect#length()}.
+     */
+    static double speedBound(Vect velocity) {
+        return Math.sqrt(velocity.x() * velocity.x() + velocity.y() * velocity.y());
+    }
+
+    /** The ball's earliest collision with the outer walls or a gizmo within the window. */
+    Earliest againstScene(Ball ball, double window) {
+        Earliest earliest = new Earliest(window);
+        Circle circle = ball.circle();
+        Vect velocity = motion(ball);
+        boolean still = velocity.x() == 0 && velocity.y() == 0;
+        if (!still) {
+            for (int side = 0; side < OUTER_WALLS.size(); side++) {
+                LineSegment wall = OUTER_WALLS.get(side);
+                double time = Geometry.timeUntilWallCollision(wall, circle, velocity);
+                if (closesOnSegment(wall, ball, velocity, time)) {
+                    earliest.offer(time, ball, new Contact.OuterWall(side, wall), false);
+                }
+            }
+        }
+        for (GizmoBase gizmo : reachable(ball, velocity, window)) {
+            if (gizmo instanceof Flipper flipper && flipper.isMoving()) {
+                againstSwingingFlipper(ball, flipper, window, earliest);
+            } else if (!still) {
+                againstStillShape(ball, circle, velocity, 0, gizmo, gizmo.shape(), earliest);
+            }
+        }
+        return earliest;
+    }
+
+    /** The two balls' collision, if it comes within the window, offered to {@code earliest} as {@code ball}'s. */
+    void againstBall(Ball ball, Ball other, double window, Earliest earliest) {
+        Vect mine = motion(ball);
+        Vect theirs = motion(other);
+        Vect relative = mine.minus(theirs);
+        double gap = Math.sqrt(ball.position().distanceSquared(other.position())) - 2 * Arena.BALL_RADIUS;
+        if (gap > speedBound(relative) * window + REACH_MARGIN) {
+            return;   // cannot close the gap within the window
+        }
+        if (view.passingThrough(ball, other)) {
+            return;   // placed on each other (a loaded file may do that): they pass through until they are apart
+        }
+        double time = Geometry.timeUntilBallBallCollision(ball.circle(), mine, other.circle(), theirs);
+        if (time <= window) {
+            Vect normal = ball.position().plus(mine.times(time)).minus(other.position().plus(theirs.times(time)));
+            if (closingOnCircle(normal, relative)) {
+                earliest.offer(time, ball, new Contact.OtherBall(other), true);
+            }
+        }
+    }
+
+    /** The gizmos whose cells meet the box the ball sweeps in the window (all gizmos without the index). */
+    private Collection<GizmoBase> reachable(Ball ball, Vect velocity, double window) {
+        if (!view.spatialIndexEnabled()) {
+            return view.gizmos();
+        }
+        Vect from = ball.position();
+        Vect to = from.plus(velocity.times(window));
+        double reach = Arena.BALL_RADIUS + REACH_MARGIN;
+        return view.index().within(Math.min(from.x(), to.x()) - reach, Math.min(from.y(), to.y()) - reach,
+                Math.max(from.x(), to.x()) + reach, Math.max(from.y(), to.y()) + reach);
+    }
+
+    /** A shape that does not move; {@code delay}: the ball's circle is where the ball will be after that time. */
+    private void againstStillShape(Ball ball, Circle circle, Vect velocity, double delay, GizmoBase gizmo,
+                                   Shape shape, Earliest earliest) {
+        List<LineSegment> segments = shape.segments();
+        for (int i = 0; i < segments.size(); i++) {
+            double time = delay + Geometry.timeUntilWallCollision(segments.get(i), circle, velocity);
+            if (time <= earliest.limit() && closesOnSegment(segments.get(i), ball, velocity, time)) {
+                earliest.offer(time, ball, new Contact.Face(gizmo, i, segments.get(i)), false);
+            }
+        }
+        List<Circle> circles = shape.circles();
+        for (int i = 0; i < circles.size(); i++) {
+            double time = delay + Geometry.timeUntilCircleCollision(circles.get(i), circle, velocity);
+            if (time <= earliest.limit() && closingOnCircle(
+                    ball.position().plus(velocity.times(time)).minus(circles.get(i).getCenter()), velocity)) {
+                earliest.offer(time, ball, new Contact.Round(gizmo, i, circles.get(i)), true);
+            }
+        }
+    }
+
+    /**
+     * A swinging flipper: rotating contacts up to the time it stops, then the fixed shape at its stop met by the
+     * ball from where it will be at that time.
+     */
+    private void againstSwingingFlipper(Ball ball, Flipper flipper, double window, Earliest earliest) {
+        Circle circle = ball.circle();
+        Vect velocity = motion(ball);
+        double swingLeft = flipper.timeToStop();
+        double omega = flipper.angularVelocity();
+        Vect pivot = flipper.pivot();
+        Shape now = flipper.shape();
+        // The rotating search looks only as far as it must: to the end of the swing or of the window.
+        GeometryInterface rotating = new GeometryImpl(Math.min(swingLeft, window), ROTATING_SEARCH_SLICES);
+        for (int i = 0; i < now.segments().size(); i++) {
+            LineSegment side = now.segments().get(i);
+            double time = rotating.timeUntilRotatingWallCollision(side, pivot, omega, circle, velocity);
+            if (time <= swingLeft && time <= earliest.limit()) {
+                Vect centre = ball.position().plus(velocity.times(time));
+                LineSegment then = Geometry.rotateAround(side, pivot, new Angle(omega * time));
+                Vect foot = Geometry.perpendicularPointWholeLine(then, centre);
+                if (closing(centre.minus(foot), velocity.minus(surfaceVelocity(pivot, omega, foot)))) {
+                    earliest.offer(time, ball, new Contact.SwingingPart(flipper, false, i), false);
+                }
+            }
+        }
+        for (int i = 0; i < now.circles().size(); i++) {
+            Circle end = now.circles().get(i);
+            if (i == Flipper.PIVOT_CIRCLE) {
+                // Its centre is the pivot: it turns in place, a still circle to the ball.
+                double time = Geometry.timeUntilCircleCollision(end, circle, velocity);
+                if (time <= earliest.limit() && closingOnCircle(
+                        ball.position().plus(velocity.times(time)).minus(end.getCenter()), velocity)) {
+                    earliest.offer(time, ball, new Contact.Round(flipper, i, end), true);
+                }
+                continue;
+            }
+            double time = rotating.timeUntilRotatingCircleCollision(end, pivot, omega, circle, velocity);
+            if (time <= swingLeft && time <= earliest.limit()) {
+                Vect centre = ball.position().plus(velocity.times(time));
+                Vect endCentre = Geometry.rotateAround(end.getCenter(), pivot, new Angle(omega * time));
+                if (closingOnCircle(centre.minus(endCentre), velocity.minus(surfaceVelocity(pivot, omega, endCentre)))) {
+                    earliest.offer(time, ball, new Contact.SwingingPart(flipper, true, i), true);
+                }
+            }
+        }
+        boolean still = velocity.x() == 0 && velocity.y() == 0;
+        if (swingLeft < window && !still) {
+            Circle later = new Circle(circle.getCenter().plus(velocity.times(swingLeft)), circle.getRadius());
+            againstStillShape(ball, later, velocity, swingLeft, flipper, flipper.shapeAtStop(), earliest);
+        }
+    }
+
+    /** Velocity of the point of a body turning at omega about the pivot (the library's sense: +x toward +y). */
+    static Vect surfaceVelocity(Vect pivot, double omega, Vect point) {
+        return new Vect(-omega * (point.y() - pivot.y()), omega * (point.x() - pivot.x()));
+    }
+
+    private static boolean closesOnSegment(LineSegment segment, Ball ball, Vect velocity, double time) {
+        if (!(time < Double.POSITIVE_INFINITY)) {
+            return false;
+        }
+        Vect centre = ball.position().plus(velocity.times(time));
+        return closing(centre.minus(Geometry.perpendicularPointWholeLine(segment, centre)), velocity);
+    }
+
+    /**
+     * Whether a ball moving at {@code relative} to what it touches, on the side {@code away} points to, closes on
+     * it faster than rounding: otherwise the touch is a graze and no collision.
+     */
+    static boolean closing(Vect away, Vect relative) {
+        double length = away.length();
+        return length > 0 && -relative.dot(away) / length > Tolerances.ROUNDING_SPEED;
+    }
+
+    /** As {@link #closing}, for a circle: a touch within {@link Tolerances#GRAZE_ANGLE} of tangent is a graze. */
+    static boolean closingOnCircle(Vect away, Vect relative) {
+        double length = away.length();
+        double closing = length > 0 ? -relative.dot(away) / length : 0;
+        return closing > Math.max(Tolerances.ROUNDING_SPEED, Tolerances.GRAZE_ANGLE * relative.length());
+    }
+}

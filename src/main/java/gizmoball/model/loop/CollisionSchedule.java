@@ -1,0 +1,291 @@
+package gizmoball.model.loop;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Collection;
+import java.util.List;
+
+/**
+ * Stage 3 over the whole board: the earliest collision of any awake ball within the time left in the tick. It keeps
+ * each ball's earliest collision with the scene (walls and gizmos) and with the other balls, in seconds since the
+ * tick began, so that after a collision only the balls it changed are asked again, not every ball against
+ * everything. What a collision changes is forgotten by the loop: the balls involved, or everything when a
+ * trigger, a capture, a launch, a wake-up or a held flipper changes the scene. Ball pairs come from a
+ * {@link BallGrid}, so a ball is asked only about the balls it can reach.
+ */
+final class CollisionSchedule {
+    /** A ball's earliest known collision: {@code at} seconds since the tick began; none when collision is null. */
+    private record Known(double at, Collision collision, boolean circle) {
+    }
+
+    private final CollisionDetector detector;
+    /** Each free ball's known collisions, by its slot ({@link Ball#slot()}); null: not known, ask again. */
+    private Known[] withScene = new Known[0];
+    private Known[] withBalls = new Known[0];
+    /**
+     * The same collisions' times and kinds side by side, so finding the earliest reads two arrays instead of a
+     * Known per ball: {@code at} (positive infinity: none) and whether it is with a circle.
+     */
+    private double[] sceneAt = new double[0];
+    private boolean[] sceneCircle = new boolean[0];
+    private double[] ballsAt = new double[0];
+    private boolean[] ballsCircle = new boolean[0];
+    /** The filed balls by slot. */
+    private Ball[] bySlot = new Ball[0];
+    /** The slots with a collision not known, in no order, each once: only they are asked again. */
+    private int[] unknown = new int[0];
+    private int unknownCount;
+    private boolean[] isUnknown = new boolean[0];
+    /** The awake balls' slots in board order (which is slot order), found again after the awake balls change. */
+    private int[] awakeSlots = new int[0];
+    private int awakeCount;
+    private boolean[] isAwake = new boolean[0];
+    private boolean awakeStale = true;
+    /**
+     * By slot, the slots whose known ball collision has been with that ball (some since replaced): forgetting a ball
+     * looks only at those, not at every ball.
+     */
+    private int[][] pointedAtBy = new int[0][];
+    private int[] pointedAtCount = new int[0];
+    private int filed;
+    private final BallGrid grid;
+    private final List<Ball> nearby = new ArrayList<>();
+    /** When the grid was filled, and the highest speed of any ball since: how stale its positions can be. */
+    private double filedAt;
+    private double fastest;
+
+    CollisionSchedule(CollisionDetector detector, BallGrid grid) {
+        this.detector = detector;
+        this.grid = grid;
+    }
+
+    /** Files every free ball (awake or asleep) where it is now, {@code elapsed} seconds into the tick. */
+    void file(Collection<Ball> free, double elapsed) {
+        grid.clear();
+        filedAt = elapsed;
+        fastest = 0;
+        filed = 0;
+        int n = free.size();
+        withScene = new Known[n];
+        withBalls = new Known[n];
+        sceneAt = new double[n];
+        sceneCircle = new boolean[n];
+        ballsAt = new double[n];
+        ballsCircle = new boolean[n];
+        bySlot = new Ball[n];
+        unknown = new int[n];
+        isUnknown = new boolean[n];
+        awakeSlots = new int[n];
+        isAwake = new boolean[n];
+        pointedAtBy = new int[n][];
+        pointedAtCount = new int[n];
+        for (Ball ball : free) {
+            bySlot[filed] = ball;
+            ball.setSlot(filed++);
+            grid.add(ball);
+            sped(ball);
+        }
+        forgetAll();
+        awakeStale = true;
+    }
+
+    /** Which balls are awake changed (a wake-up, a capture, a new filing): found again before the next search. */
+    void awakeChanged() {
+        awakeStale = true;
+    }
+
+    /** A ball's velocity changed: positions may go stale faster. */
+    void sped(Ball ball) {
+        fastest = Math.max(fastest, CollisionDetector.speedBound(detector.motion(ball)));
+    }
+
+    /**
+     * The earliest collision of the awake balls within the window, {@code elapsed} seconds into the tick. The balls
+     * whose collisions are not known are asked first, in slot order (asking about a ball may tell a later one of a
+     * sooner pair); then every awake ball's known collisions are offered in board order, near-ties going to
+     * circles as {@link Earliest} has it.
+     */
+    Collision next(List<Ball> awake, double elapsed, double window) {
+        if (awakeStale) {
+            findAwake(awake);
+        }
+        askTheUnknown(elapsed, window);
+        Best best = new Best(elapsed, window);
+        for (int k = 0; k < awakeCount; k++) {
+            int slot = awakeSlots[k];
+            best.offer(slot, true, sceneAt[slot], sceneCircle[slot]);
+            best.offer(slot, false, ballsAt[slot], ballsCircle[slot]);
+        }
+        if (best.slot < 0) {
+            return null;
+        }
+        Collision found = (best.withScene ? withScene[best.slot] : withBalls[best.slot]).collision();
+        return new Collision(best.time, found.ball(), found.contact());
+    }
+
+    /** The earliest known collision offered so far, by slot: with the scene or with a ball. */
+    private static final class Best {
+        private final double elapsed;
+        private final double window;
+        private int slot = -1;
+        private boolean withScene;
+        private double time;
+        private boolean circle;
+
+        Best(double elapsed, double window) {
+            this.elapsed = elapsed;
+            this.window = window;
+        }
+
+        /** A known collision at {@code at} seconds since the tick began; positive infinity: none. */
+        void offer(int offered, boolean scene, double at, boolean isCircle) {
+            if (at == Double.POSITIVE_INFINITY) {
+                return;
+            }
+            double from = Math.min(Math.max(0, at - elapsed), window);   // from now, the rounding kept in the window
+            if (Earliest.better(from, isCircle, slot < 0, time, circle)) {
+                slot = offered;
+                withScene = scene;
+                time = from;
+                circle = isCircle;
+            }
+        }
+    }
+
+    private void findAwake(List<Ball> awake) {
+        Arrays.fill(isAwake, false);
+        awakeCount = 0;
+        for (Ball ball : awake) {
+            awakeSlots[awakeCount++] = ball.slot();
+            isAwake[ball.slot()] = true;
+        }
+        awakeStale = false;
+    }
+
+    /** Asks about every awake ball whose collisions are not known, in slot order; a sleeping one waits to wake. */
+    private void askTheUnknown(double elapsed, double window) {
+        if (unknownCount == 0) {
+            return;
+        }
+        Arrays.sort(unknown, 0, unknownCount);
+        int kept = 0;
+        for (int k = 0; k < unknownCount; k++) {
+            int slot = unknown[k];
+            if (!isAwake[slot]) {
+                unknown[kept++] = slot;
+                continue;
+            }
+            Ball ball = bySlot[slot];
+            if (withScene[slot] == null) {
+                knowWithScene(slot, known(detector.againstScene(ball, window), elapsed));
+            }
+            if (withBalls[slot] == null) {
+                askAgainstBalls(ball, elapsed, window);
+            }
+            isUnknown[slot] = false;
+        }
+        unknownCount = kept;
+    }
+
+    private void markUnknown(int slot) {
+        if (!isUnknown[slot]) {
+            isUnknown[slot] = true;
+            unknown[unknownCount++] = slot;
+        }
+    }
+
+    private void knowWithScene(int slot, Known known) {
+        withScene[slot] = known;
+        sceneAt[slot] = known.at();
+        sceneCircle[slot] = known.circle();
+    }
+
+    /** The ball's velocity or position changed other than by moving on: ask again about it. */
+    void forget(Ball ball) {
+        if (ball.isCaptured()) {
+            return;   // filed no more: the capture filed the free balls afresh
+        }
+        int slot = ball.slot();
+        withScene[slot] = null;
+        withBalls[slot] = null;
+        markUnknown(slot);
+        int[] pointing = pointedAtBy[slot];
+        for (int k = 0; k < pointedAtCount[slot]; k++) {
+            Known known = withBalls[pointing[k]];
+            if (known != null && known.collision() != null && partner(known) == ball) {
+                withBalls[pointing[k]] = null;
+                markUnknown(pointing[k]);
+            }
+        }
+        pointedAtCount[slot] = 0;
+    }
+
+    void forgetAll() {
+        Arrays.fill(withScene, null);
+        Arrays.fill(withBalls, null);
+        Arrays.fill(pointedAtCount, 0);
+        Arrays.fill(isUnknown, true);
+        for (int slot = 0; slot < filed; slot++) {
+            unknown[slot] = slot;
+        }
+        unknownCount = filed;
+    }
+
+    private static Ball partner(Known known) {
+        return ((Contact.OtherBall) known.collision().contact()).other();
+    }
+
+    /** Files a ball's earliest known ball collision, noting it with its partner. */
+    private void knowWithBalls(int slot, Known known) {
+        withBalls[slot] = known;
+        ballsAt[slot] = known.at();
+        ballsCircle[slot] = known.circle();
+        if (known.collision() == null) {
+            return;
+        }
+        int partner = partner(known).slot();
+        int[] pointing = pointedAtBy[partner];
+        if (pointing == null || pointing.length == pointedAtCount[partner]) {
+            int grown = Math.max(4, 2 * pointedAtCount[partner]);
+            pointing = pointing == null ? new int[grown] : Arrays.copyOf(pointing, grown);
+            pointedAtBy[partner] = pointing;
+        }
+        pointing[pointedAtCount[partner]++] = slot;
+    }
+
+    /**
+     * The ball against every ball it can reach in the window; a pair sooner than what the other ball knew becomes
+     * the other's too. A sleeping ball is a still target; it never asks.
+     */
+    private void askAgainstBalls(Ball ball, double elapsed, double window) {
+        Earliest earliest = new Earliest(window);
+        double speed = CollisionDetector.speedBound(detector.motion(ball));
+        double reach = 2 * Arena.BALL_RADIUS + (speed + fastest) * window + fastest * (elapsed - filedAt) + 1e-6;
+        nearby.clear();
+        grid.near(ball.position().x(), ball.position().y(), reach, nearby);
+        for (Ball other : nearby) {
+            if (other == ball || other.isCaptured()) {
+                continue;
+            }
+            Earliest pair = new Earliest(window);
+            detector.againstBall(other, ball, window, pair);
+            Collision found = pair.collision();
+            if (found == null) {
+                continue;
+            }
+            earliest.offer(found.time(), ball, new Contact.OtherBall(other), true);
+            Known theirs = withBalls[other.slot()];
+            if (theirs != null && (theirs.collision() == null || elapsed + found.time() < theirs.at())) {
+                knowWithBalls(other.slot(), new Known(elapsed + found.time(), found, true));
+            }
+        }
+        knowWithBalls(ball.slot(), known(earliest, elapsed));
+    }
+
+    private static Known known(Earliest earliest, double elapsed) {
+        Collision collision = earliest.collision();
+        return collision == null ? new Known(Double.POSITIVE_INFINITY, null, false)
+                : new Known(elapsed + collision.time(), collision, earliest.isCircle());
+    }
+
+}

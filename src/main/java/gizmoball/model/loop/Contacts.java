@@ -1,0 +1,311 @@
+package gizmoball.model.loop;
+
+import gizmoball.model.gizmo.Absorber;
+import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.Shape;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.DoubleFunction;
+
+import physics.Circle;
+import physics.Geometry;
+import physics.LineSegment;
+import physics.Vect;
+
+/**
+ * Persistent contacts (docs/design.md, "Resting and rolling contact"): whether a ball still touches what it lies on,
+ * the normals of those surfaces, and the velocity with every component pressing into them removed. A contact lasts
+ * while the ball stays within {@link Tolerances#CONTACT} of the surface; it ends where a segment ends, where a
+ * circle curves away from a ball moving straight on, or where the ball's velocity takes it off. A ball that loses a
+ * contact looks for the surfaces it now touches, so a ball rolling over a seam passes from one face to the next
+ * without a collision.
+ */
+final class Contacts {
+    /** Penetration below this is rounding and left alone; deeper, the ball is put back to touching. */
+    private static final double SNAP_DEPTH = Tolerances.CONTACT / 10;
+
+    private final LoopView view;
+    /** A contact the ball has drifted off by less than this, slower than {@link #holdSpeed}, still holds. */
+    private final double holdGap;
+    private final double holdSpeed;
+
+    /**
+     * A ball lying on something and nudged off it by a rounding of a wedge's projections, or rolling over a curve
+     * slowly, drifts off by less than a tick of gravity would bring back ({@code g dt^2}), at less than half a tick of
+     * gravity's speed: such a ball keeps the contact and loses that drift, as gravity would have done.
+     */
+    Contacts(LoopView view, double dt) {
+        this.view = view;
+        double g = Math.abs(view.gravity());
+        this.holdGap = Math.max(Tolerances.CONTACT, g * dt * dt);
+        this.holdSpeed = g * dt / 2;
+    }
+
+    /**
+     * Keeps the ball's contacts that still hold and returns their normals (unit, from the surface to the ball).
+     * A ball found slightly inside one is put back to touching it. If a contact ended, the surfaces the ball touches
+     * now become its contacts.
+     */
+    List<Vect> refresh(Ball ball) {
+        List<Vect> normals = new ArrayList<>();
+        boolean lost = ball.contacts().removeIf(ref -> normalOf(ball, ref, normals, true) == null);
+        if (lost) {
+            discover(ball, normals);
+        }
+        return normals;
+    }
+
+    /** Every still surface the ball touches now becomes a contact; returns the normals of all its contacts. */
+    List<Vect> touchAll(Ball ball) {
+        List<Vect> normals = refresh(ball);
+        discover(ball, normals);
+        return normals;
+    }
+
+    /** The normals of the ball's contacts as they are now, without changing them. */
+    List<Vect> normals(Ball ball) {
+        List<Vect> normals = new ArrayList<>();
+        for (ContactRef ref : ball.contacts()) {
+            normalOf(ball, ref, normals);
+        }
+        return normals;
+    }
+
+    /** A still surface the ball touches as a contact, with what a bounce off it needs: its gizmo (null: a wall). */
+    record Touch(ContactRef ref, GizmoBase gizmo, Vect normal, DoubleFunction<Vect> reflect) {
+    }
+
+    /**
+     * One of {@code surfaces} other than {@code besides}, and other than a ball, that the ball touches and its
+     * velocity closes on faster than rounding; null if there is none.
+     */
+    Touch closing(Ball ball, List<ContactRef> surfaces, ContactRef besides) {
+        for (ContactRef ref : surfaces) {
+            if (ref.equals(besides) || ref instanceof ContactRef.OnBall) {
+                continue;
+            }
+            Vect normal = normal(ball, ref);   // null too for a part of a flipper now swinging
+            if (normal == null || ball.velocity().dot(normal) >= -Tolerances.ROUNDING_SPEED) {
+                continue;
+            }
+            if (ref instanceof ContactRef.Wall wall) {
+                LineSegment side = CollisionDetector.OUTER_WALLS.get(wall.side());
+                return new Touch(ref, null, normal, k -> Geometry.reflectWall(side, ball.velocity(), k));
+            }
+            ContactRef.Part part = (ContactRef.Part) ref;
+            GizmoBase gizmo = view.gizmo(part.gizmo());
+            if (part.circle()) {
+                Vect centre = gizmo.shape().circles().get(part.index()).getCenter();
+                return new Touch(ref, gizmo, normal,
+                        k -> Geometry.reflectCircle(centre, ball.position(), ball.velocity(), k));
+            }
+            LineSegment segment = gizmo.shape().segments().get(part.index());
+            return new Touch(ref, gizmo, normal, k -> Geometry.reflectWall(segment, ball.velocity(), k));
+        }
+        return null;
+    }
+
+    /** The normal of one of the ball's contacts as it is now; null if that contact has ended. */
+    Vect normal(Ball ball, ContactRef ref) {
+        return normalOf(ball, ref, new ArrayList<>());
+    }
+
+    /** The normals of the ball's contacts other than {@code surface}, as they are now. */
+    List<Vect> normalsBesides(Ball ball, ContactRef surface) {
+        List<Vect> normals = new ArrayList<>();
+        for (ContactRef ref : ball.contacts()) {
+            if (!ref.equals(surface)) {
+                normalOf(ball, ref, normals);
+            }
+        }
+        return normals;
+    }
+
+    /** Adds a contact (if new). */
+    static void attach(Ball ball, ContactRef ref) {
+        if (!ball.contacts().contains(ref)) {
+            ball.contacts().add(ref);
+        }
+    }
+
+    /**
+     * The velocity nearest to v that closes on none of the surfaces: unchanged if it closes on none, else with the
+     * closing part along one normal removed if that leaves it closing on no other, else zero (wedged: in the plane,
+     * two independent surfaces hold a ball still).
+     */
+    static Vect project(Vect v, List<Vect> normals) {
+        Vect best = v;
+        double bestChange = Double.POSITIVE_INFINITY;
+        boolean closes = false;
+        for (Vect n : normals) {
+            double along = v.dot(n);
+            if (along >= 0) {
+                continue;
+            }
+            closes = true;
+            Vect candidate = v.minus(n.times(along));
+            if (-along < bestChange && closesOnNone(candidate, normals)) {
+                best = candidate;
+                bestChange = -along;
+            }
+        }
+        if (!closes) {
+            return v;
+        }
+        return bestChange < Double.POSITIVE_INFINITY ? best : Vect.ZERO;
+    }
+
+    private static boolean closesOnNone(Vect v, List<Vect> normals) {
+        double rounding = 1e-12 * v.length();
+        for (Vect n : normals) {
+            if (v.dot(n) < -rounding) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** The reference a collision's contact leaves behind when the ball comes to rest on it. */
+    static ContactRef refOf(Contact contact) {
+        if (contact instanceof Contact.OuterWall wall) {
+            return new ContactRef.Wall(wall.side());
+        } else if (contact instanceof Contact.Face face) {
+            return new ContactRef.Part(face.gizmo().name(), false, face.index());
+        } else if (contact instanceof Contact.Round round) {
+            return new ContactRef.Part(round.gizmo().name(), true, round.index());
+        } else if (contact instanceof Contact.OtherBall other) {
+            return new ContactRef.OnBall(other.other().name());
+        }
+        throw new IllegalArgumentException("nothing rests on a swinging flipper: " + contact);
+    }
+
+    /** Adds the normal of a contact that still holds to {@code normals} and returns it; null if it has ended. */
+    private Vect normalOf(Ball ball, ContactRef ref, List<Vect> normals) {
+        return normalOf(ball, ref, normals, false);
+    }
+
+    /** With {@code hold}, a contact the ball has only just drifted off is put back (see the constructor). */
+    private Vect normalOf(Ball ball, ContactRef ref, List<Vect> normals, boolean hold) {
+        double gap = hold ? holdGap : Tolerances.CONTACT;
+        Vect normal;
+        if (ref instanceof ContactRef.Wall wall) {
+            normal = onSegment(ball, CollisionDetector.OUTER_WALLS.get(wall.side()), gap);
+        } else if (ref instanceof ContactRef.Part part) {
+            normal = onPart(ball, part, gap);
+        } else {
+            normal = onBall(ball, (ContactRef.OnBall) ref, gap);
+        }
+        if (normal != null) {
+            normals.add(normal);
+        }
+        return normal;
+    }
+
+    private Vect onPart(Ball ball, ContactRef.Part part, double gap) {
+        GizmoBase gizmo = view.gizmo(part.gizmo());
+        if (gizmo == null || gizmo instanceof Flipper flipper && flipper.isMoving()
+                && !(part.circle() && part.index() == Flipper.PIVOT_CIRCLE)) {
+            return null;   // a swinging flipper holds nothing up, but its round end at the pivot does not move
+        }
+        Shape shape = gizmo.shape();
+        if (part.circle()) {
+            return part.index() < shape.circles().size() ? onCircle(ball, shape.circles().get(part.index()), gap)
+                    : null;
+        }
+        return part.index() < shape.segments().size() ? onSegment(ball, shape.segments().get(part.index()), gap)
+                : null;
+    }
+
+    private Vect onBall(Ball ball, ContactRef.OnBall on, double gap) {
+        Ball other = view.ball(on.ball());
+        return other == null || !supports(other, ball) ? null : onCircle(ball, other.circle(), gap);
+    }
+
+    /**
+     * A ball supports another while it lies still (asleep) or lies on something other than that ball: two balls
+     * leaning only on each other hold nothing up.
+     */
+    static boolean supports(Ball support, Ball ball) {
+        if (support.isCaptured()) {
+            return false;
+        }
+        if (support.isAsleep()) {
+            return true;
+        }
+        ContactRef back = new ContactRef.OnBall(ball.name());
+        for (ContactRef ref : support.contacts()) {
+            if (!ref.equals(back)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private Vect onSegment(Ball ball, LineSegment segment, double gap) {
+        Vect p = ball.position();
+        Vect foot = Geometry.perpendicularPoint(segment, p);
+        if (foot == null) {
+            return null;   // past the end: the corner circle or the next face takes over
+        }
+        return touching(ball, foot, 0, gap);
+    }
+
+    private Vect onCircle(Ball ball, Circle circle, double gap) {
+        return touching(ball, circle.getCenter(), circle.getRadius(), gap);
+    }
+
+    /**
+     * The normal away from a surface point (or circle centre) the ball touches, or null. A ball found slightly inside
+     * is put back to touching; one that drifted off by more than the contact tolerance but less than {@code gap},
+     * slowly, from a surface below or beside it, keeps the contact and loses the drift. It is not moved back: that
+     * could push it into its other neighbours; it lies a hair above the surface instead (at most g dt^2).
+     */
+    private Vect touching(Ball ball, Vect from, double radius, double gap) {
+        Vect offset = ball.position().minus(from);
+        double distance = offset.length();
+        double touch = radius + Arena.BALL_RADIUS;
+        if (distance == 0 || distance - touch > gap) {
+            return null;
+        }
+        Vect normal = offset.times(1 / distance);
+        if (distance - touch > Tolerances.CONTACT) {
+            double leaving = ball.velocity().dot(normal);
+            if (leaving > holdSpeed || normal.y() > 0) {
+                return null;
+            }
+            ball.setVelocity(ball.velocity().minus(normal.times(Math.max(0, leaving))));
+        } else if (touch - distance > SNAP_DEPTH) {
+            ball.moveTo(from.plus(normal.times(touch)));
+        }
+        return normal;
+    }
+
+    /** Every still surface the ball touches now becomes a contact of it. */
+    private void discover(Ball ball, List<Vect> normals) {
+        for (int side = 0; side < CollisionDetector.OUTER_WALLS.size(); side++) {
+            consider(ball, new ContactRef.Wall(side), normals);
+        }
+        Vect p = ball.position();
+        double reach = Arena.BALL_RADIUS + Tolerances.CONTACT;
+        for (GizmoBase gizmo : view.index().within(p.x() - reach, p.y() - reach, p.x() + reach, p.y() + reach)) {
+            if (gizmo instanceof Absorber || gizmo instanceof Flipper flipper && flipper.isMoving()) {
+                continue;   // an absorber captures what touches it; a swinging flipper is no support
+            }
+            Shape shape = gizmo.shape();
+            for (int i = 0; i < shape.segments().size(); i++) {
+                consider(ball, new ContactRef.Part(gizmo.name(), false, i), normals);
+            }
+            for (int i = 0; i < shape.circles().size(); i++) {
+                consider(ball, new ContactRef.Part(gizmo.name(), true, i), normals);
+            }
+        }
+    }
+
+    private void consider(Ball ball, ContactRef ref, List<Vect> normals) {
+        if (!ball.contacts().contains(ref) && normalOf(ball, ref, normals) != null) {
+            ball.contacts().add(ref);
+        }
+    }
+}

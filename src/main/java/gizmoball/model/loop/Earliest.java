@@ -1,0 +1,57 @@
+package gizmoball.model.loop;
+
+/** Keeps the earliest collision offered within a time limit; near-ties go to circles (segment ends, corners). */
+final class Earliest {
+    /** Collisions this close in time count as simultaneous. */
+    static final double TIE = 1e-12;
+
+    private final double limit;
+    /** The earliest offer so far (ball null: none); its {@link Collision} is made only when asked for. */
+    private double time;
+    private Ball ball;
+    private Contact contact;
+    private boolean circle;
+    private Collision collision;
+
+    Earliest(double limit) {
+        this.limit = limit;
+    }
+
+    void offer(double time, Ball ball, Contact contact, boolean isCircle) {
+        if (!(time >= 0 && time <= limit)) {
+            return;   // also drops NaN and infinity
+        }
+        if (better(time, isCircle, this.ball == null, this.time, circle)) {
+            this.time = time;
+            this.ball = ball;
+            this.contact = contact;
+            this.circle = isCircle;
+            this.collision = null;
+        }
+    }
+
+    /**
+     * Whether an offer at {@code time} beats the best so far ({@code none}: there is none yet): sooner by more than
+     * {@link #TIE}, or a circle tied with a segment. Also the rule of {@link CollisionSchedule}'s search.
+     */
+    static boolean better(double time, boolean isCircle, boolean none, double bestTime, boolean bestCircle) {
+        return none || time < bestTime - TIE || (time <= bestTime + TIE && isCircle && !bestCircle);
+    }
+
+    /** Offers later than this are dropped. */
+    double limit() {
+        return ball == null ? limit : Math.min(limit, time + TIE);
+    }
+
+    /** The earliest offer, or null. */
+    Collision collision() {
+        if (collision == null && ball != null) {
+            collision = new Collision(time, ball, contact);
+        }
+        return collision;
+    }
+
+    boolean isCircle() {
+        return circle;
+    }
+}

@@ -1,0 +1,36 @@
+package gizmoball.model.loop;
+
+import gizmoball.model.gizmo.GizmoKind;
+
+import physics.Vect;
+
+/** Something audible or visible that happened in play, reported with the tick it happened in (for sound, flashes). */
+public sealed interface PlayEvent {
+
+    /**
+     * A ball hit {@code struck}: a gizmo (of {@code kind}), the outer walls or another ball ({@code kind} null for
+     * both), closing at {@code speed} L/s along the contact normal. {@code ball} is the ball that hit, {@code at} its
+     * centre at the moment of the hit (the aim preview marks it).
+     */
+    record Hit(Struck struck, GizmoKind kind, double speed, String ball, Vect at) implements PlayEvent {
+    }
+
+    /** An absorber captured {@code ball}, whose centre was at {@code at} when it touched the absorber. */
+    record Captured(String absorber, String ball, Vect at) implements PlayEvent {
+    }
+
+    /** An absorber fired a ball. */
+    record Fired(String absorber) implements PlayEvent {
+    }
+
+    /**
+     * A ball the flipper could not squeeze out from between it and what the ball lay against stopped the flipper
+     * short of its stop (docs/design.md, "Pinched balls"): a stall, not a guard.
+     */
+    record Jammed(String flipper, String ball) implements PlayEvent {
+    }
+
+    /** A flipper started swinging, {@code up} toward its active position or back down. */
+    record Swing(String flipper, boolean up) implements PlayEvent {
+    }
+}

@@ -1,0 +1,60 @@
+package gizmoball.model.loop;
+
+import java.util.ArrayDeque;
+import java.util.Collection;
+import java.util.Deque;
+
+/**
+ * Wakes sleeping balls (docs/design.md, "Sleeping"). A ball that wakes may have been the support of others asleep
+ * on it, so waking spreads along persistent contacts: nothing is left asleep on a ball that may move away.
+ */
+public final class Sleepers {
+    private final Collection<Ball> balls;
+
+    /**
+     * Over a live view of the board's balls, which it reads at each wake-up. For the board, not for views.
+     */
+    public Sleepers(Collection<Ball> balls) {
+        this.balls = balls;
+    }
+
+    /** Wakes the ball and every sleeping ball that rests on it, directly or through others. */
+    void wake(Ball ball) {
+        Deque<Ball> woken = new ArrayDeque<>();
+        if (ball.isAsleep()) {
+            ball.wake();
+        }
+        woken.add(ball);
+        while (!woken.isEmpty()) {
+            String support = woken.poll().name();
+            for (Ball other : balls) {
+                if (other.isAsleep() && other.contacts().contains(new ContactRef.OnBall(support))) {
+                    other.wake();
+                    woken.add(other);
+                }
+            }
+        }
+    }
+
+    /**
+     * Wakes every free ball whose disc meets the box (and, through them, what rests on them). For the board, not for
+     * views.
+     */
+    public void wakeWithin(double minX, double minY, double maxX, double maxY) {
+        double r = Arena.BALL_RADIUS + Tolerances.CONTACT;
+        for (Ball ball : balls) {
+            double x = ball.position().x();
+            double y = ball.position().y();
+            if (ball.isAsleep() && x + r >= minX && x - r <= maxX && y + r >= minY && y - r <= maxY) {
+                wake(ball);
+            }
+        }
+    }
+
+    /**
+     * The board changed under every ball: each forgets its contacts and wakes. For the board, not for views.
+     */
+    public void disturbAll() {
+        balls.forEach(Ball::disturb);
+    }
+}

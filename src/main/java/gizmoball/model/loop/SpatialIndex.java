@@ -1,0 +1,76 @@
+package gizmoball.model.loop;
+
+import gizmoball.model.gizmo.GizmoBase;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * A uniform grid over the 20x20 cells: each cell knows the gizmo whose footprint covers it (gizmos never overlap,
+ * so there is at most one). It answers "which cell is taken by whom" for editing, and "which gizmos can a ball
+ * reach" for collision detection: the gizmos covering the cells of the box a ball sweeps in the time considered.
+ * Every gizmo's shape lies inside its footprint (a swinging flipper's too), so no reachable shape is missed.
+ * The board keeps one up to date as it edits; its members are for the board and its loop, not for views.
+ */
+public final class SpatialIndex {
+    private final GizmoBase[][] cells = new GizmoBase[Arena.SIZE][Arena.SIZE];
+    /** How many cells of each column are covered: a search skips the empty columns of its box. */
+    private final int[] coveredInColumn = new int[Arena.SIZE];
+
+    /** The gizmo covering cell (cx, cy), or null (also outside the board). For the board, not for views. */
+    public GizmoBase at(int cx, int cy) {
+        return inside(cx, cy) ? cells[cx][cy] : null;
+    }
+
+    /** Whether (cx, cy) is a cell of the board. For the board, not for views. */
+    public static boolean inside(int cx, int cy) {
+        return cx >= 0 && cy >= 0 && cx < Arena.SIZE && cy < Arena.SIZE;
+    }
+
+    /** The gizmo covers its footprint's cells. For the board, not for views. */
+    public void put(GizmoBase gizmo) {
+        fill(gizmo, gizmo);
+    }
+
+    /** The gizmo's footprint's cells are free. For the board, not for views. */
+    public void remove(GizmoBase gizmo) {
+        fill(gizmo, null);
+    }
+
+    private void fill(GizmoBase gizmo, GizmoBase value) {
+        for (int cx = gizmo.x(); cx < gizmo.x() + gizmo.width(); cx++) {
+            for (int cy = gizmo.y(); cy < gizmo.y() + gizmo.height(); cy++) {
+                coveredInColumn[cx] += (value != null ? 1 : 0) - (cells[cx][cy] != null ? 1 : 0);
+                cells[cx][cy] = value;
+            }
+        }
+    }
+
+    /**
+     * The distinct gizmos covering any cell that meets the box [minX, maxX] x [minY, maxY] (board coordinates), in
+     * column order. For the board and its loop, not for views.
+     */
+    public List<GizmoBase> within(double minX, double minY, double maxX, double maxY) {
+        List<GizmoBase> found = new ArrayList<>(4);
+        int x0 = clampCell(minX);
+        int x1 = clampCell(maxX);
+        int y0 = clampCell(minY);
+        int y1 = clampCell(maxY);
+        for (int cx = x0; cx <= x1; cx++) {
+            if (coveredInColumn[cx] == 0) {
+                continue;
+            }
+            for (int cy = y0; cy <= y1; cy++) {
+                GizmoBase gizmo = cells[cx][cy];
+                if (gizmo != null && !found.contains(gizmo)) {
+                    found.add(gizmo);
+                }
+            }
+        }
+        return found;
+    }
+
+    private static int clampCell(double coordinate) {
+        return (int) Math.max(0, Math.min(Arena.SIZE - 1, Math.floor(coordinate)));
+    }
+}

@@ -1,0 +1,32 @@
+package gizmoball.model.loop;
+
+import java.util.Collections;
+import java.util.EnumMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * What the last tick did, read-only, taken at stage 6 before the observers are told (docs/design.md, "The tick").
+ *
+ * @param stageNanos time spent in each stage; stages 2-5 repeat within a tick and are summed. The redrawing stage
+ *                   is the observers' time, which is known only after they return: it is the previous tick's.
+ * @param collisions collisions resolved (zero-time ones included)
+ * @param zeroTimeCollisions collisions resolved at the very moment of the one before
+ * @param balls      the free balls, with their next collision when the board's look-ahead is on, else empty
+ */
+public record TickReport(double time, Map<Stage, Long> stageNanos, int collisions, int zeroTimeCollisions,
+                         int ballsAwake, int ballsAsleep, GuardCounts guards, List<PlayEvent> events,
+                         List<BallReport> balls) {
+    public static final TickReport NONE = new TickReport(0, new EnumMap<>(Stage.class), 0, 0, 0, 0,
+            GuardCounts.NONE, List.of(), List.of());
+
+    public TickReport {
+        EnumMap<Stage, Long> times = new EnumMap<>(Stage.class);
+        for (Stage stage : Stage.values()) {
+            times.put(stage, stageNanos.getOrDefault(stage, 0L));
+        }
+        stageNanos = Collections.unmodifiableMap(times);
+        events = List.copyOf(events);
+        balls = List.copyOf(balls);
+    }
+}

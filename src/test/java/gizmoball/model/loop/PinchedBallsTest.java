@@ -1,0 +1,108 @@
+package gizmoball.model.loop;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
+
+import gizmoball.model.Board;
+import gizmoball.model.Invariants;
+import gizmoball.model.KeyEdge;
+import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.GizmoKind;
+
+import org.junit.jupiter.api.Test;
+
+import physics.Vect;
+
+/**
+ * A ball between a swinging flipper and what it came back from (docs/design.md, "Pinched balls"): squeezed out
+ * where a way out exists, jamming the flipper where none does; no guard either way.
+ */
+class PinchedBallsTest {
+    private static final double DT = 1.0 / 60;
+    private static final double OMEGA = Math.toRadians(1080);
+
+    private static int jams(Board board) {
+        return (int) board.lastTick().events().stream().filter(e -> e instanceof PlayEvent.Jammed).count();
+    }
+
+    /**
+     * The flipper's tip bats a ball into the face of a square beside it; the ball comes straight back and the
+     * flipper, still swinging, meets it again. There is a way out, along the face, faster than any point of the
+     * flipper moves (the seed squeezed from between two fingers): the ball takes it and the flipper swings on to
+     * its stop on time, (90 - 10) / 1080 s.
+     */
+    @Test
+    void aBallBetweenTheTipAndAFaceIsSqueezedOutAndTheFlipperSwingsOn() {
+        Board board = new Board();
+        board.addGizmo(GizmoKind.LEFT_FLIPPER, "F", 4, 16);
+        board.addGizmo(GizmoKind.SQUARE, "W", 6, 17);
+        board.setFlipperState("F", 10, true);
+        board.addBall("B", 5.6, 17.2, 0, 0);
+        Flipper flipper = (Flipper) board.gizmo("F").orElseThrow();
+        double fastestUp = 0;
+        int jams = 0;
+        for (int t = 0; t < 30; t++) {
+            board.tick(DT);
+            assertThat(Invariants.violations(board)).as("tick %d", t).isEmpty();
+            jams += jams(board);
+            fastestUp = Math.max(fastestUp, -board.ball("B").orElseThrow().velocity().y());
+            if (t == (int) Math.ceil(80.0 / 1080 / DT)) {
+                assertThat(flipper.angleFromRest()).as("on time").isEqualTo(90.0);
+            }
+        }
+        assertThat(jams).isZero();
+        assertThat(board.guardsFired()).isEqualTo(GuardCounts.NONE);
+        assertThat(fastestUp).isGreaterThan(OMEGA * (1.5 + flipper.radius())).isLessThanOrEqualTo(Board.MAX_SPEED);
+    }
+
+    /**
+     * A ball lying in the pocket between two circle bumpers and a square's corner, in the path of the flipper's tip
+     * swinging down: no way out, so the flipper stops where it meets the ball, once, and stays there, the ball still,
+     * until it is sent the other way.
+     */
+    @Test
+    void aBallInAPocketJamsTheFlipperUntilItIsSentBack() {
+        Board board = new Board();
+        board.addGizmo(GizmoKind.LEFT_FLIPPER, "LF", 4, 16);
+        board.addGizmo(GizmoKind.CIRCLE, "C3_17", 3, 17);
+        board.addGizmo(GizmoKind.SQUARE, "S3_18", 3, 18);
+        board.addGizmo(GizmoKind.CIRCLE, "C4_18", 4, 18);
+        board.bindKey(90, KeyEdge.DOWN, "LF");
+        board.bindKey(90, KeyEdge.UP, "LF");
+        board.setFlipperState("LF", 90, true);
+        double offset = Board.BALL_RADIUS / Math.sqrt(2);   // touching the square's corner (4, 18), on the diagonal
+        board.addBall("B", 4 + offset, 18 - offset, 0, 0);
+        for (int t = 0; t < TickRun.SLEEP_TICKS + 5; t++) {
+            board.tick(DT);
+        }
+        Vect lying = board.ball("B").orElseThrow().position();
+        board.keyUp(90);
+        Flipper flipper = (Flipper) board.gizmo("LF").orElseThrow();
+        int jams = 0;
+        double jammedAt = Double.NaN;
+        Vect held = null;
+        for (int t = 0; t < 120; t++) {
+            board.tick(DT);
+            assertThat(Invariants.violations(board)).as("tick %d", t).isEmpty();
+            jams += jams(board);
+            Vect now = board.ball("B").orElseThrow().position();
+            if (jams == 1 && held == null) {
+                jammedAt = flipper.angleFromRest();
+                held = now;
+            } else if (held != null) {
+                assertThat(now).as("tick %d: held where it jammed", t).isEqualTo(held);
+            }
+        }
+        assertThat(jams).isEqualTo(1);
+        assertThat(jammedAt).isStrictlyBetween(0.0, 90.0);
+        assertThat(flipper.angleFromRest()).isEqualTo(jammedAt);
+        // the strike that found the jam may nudge the ball within the pocket, no more
+        assertThat(held.minus(lying).length()).isLessThan(0.01);
+        assertThat(board.guardsFired()).isEqualTo(GuardCounts.NONE);
+        board.keyDown(90);
+        for (int t = 0; t < 10; t++) {
+            board.tick(DT);
+        }
+        assertThat(flipper.angleFromRest()).isEqualTo(90.0);
+    }
+}
