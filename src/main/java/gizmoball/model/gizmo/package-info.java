@@ -6,8 +6,8 @@
  * {@link gizmoball.model.gizmo.Shape} each builds when placed, moved or rotated, the signed distances to their
  * solid bodies, and their colours ({@link gizmoball.model.gizmo.Rgb}).
  *
- * <p>May use: {@code physics} (only the listed API) and the JDK; no AWT, no Swing, and not {@code gizmoball.model}:
- * the board uses the kinds, never the other way round. What a triggered gizmo does to the board around it goes
+ * <p>May use: {@code physics} (only the listed API) and the JDK; no AWT, no Swing, and not {@code gizmoball.model}
+ * or {@code gizmoball.model.loop}: the board and its loop use the kinds, never the other way round. What a triggered gizmo does to the board around it goes
  * through {@link gizmoball.model.gizmo.Surroundings}, which the board's play rules implement. The members the board
  * and its loop need beyond what views see (moving, rotating, triggering, a flipper's swing and block, an absorber's
  * held balls) are public because the board is in another package; their Javadoc says they are for the board and
