@@ -413,7 +413,7 @@ public final class Board {
         return total;
     }
 
-    // ---------------------------------------------------------------- for the loop and the invariants
+    // ---------------------------------------------------------------- for the invariants and the loop's tests
 
     Collection<GizmoBase> gizmoBases() {
         return registry.gizmos();
@@ -421,10 +421,6 @@ public final class Board {
 
     Collection<Ball> ballStates() {
         return registry.balls();
-    }
-
-    GizmoBase gizmoBase(String name) {
-        return registry.gizmo(name);
     }
 
     /** The loop's view of this board, for the loop's tests (through their fixture {@code LoopViews}). */

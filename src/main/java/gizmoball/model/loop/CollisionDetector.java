@@ -52,7 +52,8 @@ final class CollisionDetector {
 
     /** The velocity the ball moves with for the rest of the tick: none while asleep or finished. */
     Vect motion(Ball ball) {
-        return ball.isAsleep() || !finishedBalls.isEmpty() && finishedBalls.contains(ball) ? Vect.ZERO : ball.velocity();
+        boolean finished = !finishedBalls.isEmpty() && finishedBalls.contains(ball);
+        return ball.isAsleep() || finished ? Vect.ZERO : ball.velocity();
     }
 
     /**
@@ -181,7 +182,8 @@ final class CollisionDetector {
             if (time <= swingLeft && time <= earliest.limit()) {
                 Vect centre = ball.position().plus(velocity.times(time));
                 Vect endCentre = Geometry.rotateAround(end.getCenter(), pivot, new Angle(omega * time));
-                if (closingOnCircle(centre.minus(endCentre), velocity.minus(surfaceVelocity(pivot, omega, endCentre)))) {
+                Vect relative = velocity.minus(surfaceVelocity(pivot, omega, endCentre));
+                if (closingOnCircle(centre.minus(endCentre), relative)) {
                     earliest.offer(time, ball, new Contact.SwingingPart(flipper, true, i), true);
                 }
             }

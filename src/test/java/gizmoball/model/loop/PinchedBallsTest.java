@@ -1,7 +1,6 @@
 package gizmoball.model.loop;
 
 import static org.assertj.core.api.Assertions.assertThat;
-import static org.assertj.core.api.Assertions.within;
 
 import gizmoball.model.Board;
 import gizmoball.model.Invariants;

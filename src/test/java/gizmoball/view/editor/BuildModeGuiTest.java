@@ -14,7 +14,6 @@ import gizmoball.model.loop.TriggerSource;
 import gizmoball.session.GameSession;
 import gizmoball.session.Mode;
 import gizmoball.view.BoardPainter;
-import gizmoball.view.Gui;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -30,7 +29,6 @@ import java.awt.Color;
 import java.awt.Dimension;
 import java.awt.Point;
 import java.awt.Robot;
-import java.awt.Toolkit;
 import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.util.ArrayList;
@@ -43,7 +41,6 @@ import static gizmoball.view.Gui.await;
 import static gizmoball.view.Gui.onEdt;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 /**
  * Build mode in a real window (under Xvfb in CI): palette buttons are clicked, mouse events arrive at the
