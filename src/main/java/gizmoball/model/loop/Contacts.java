@@ -49,19 +49,99 @@ final class Contacts {
      * now become its contacts.
      */
     List<Vect> refresh(Ball ball) {
+        if (onACorner(ball)) {
+            // the face a corner may be the end of is found and takes over, before the corner's hold can act
+            discover(ball, new ArrayList<>());
+            List<ContactRef> refs = ball.contacts();
+            refs.removeIf(ref -> isFlushCorner(refs, ref));
+        }
         List<Vect> normals = new ArrayList<>();
         boolean lost = ball.contacts().removeIf(ref -> normalOf(ball, ref, normals, true) == null);
         if (lost) {
             discover(ball, normals);
+            dropFlushCorners(ball, normals);
         }
         return normals;
+    }
+
+    private boolean onACorner(Ball ball) {
+        for (ContactRef ref : ball.contacts()) {
+            if (cornerOf(ref) != null) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** Every still surface the ball touches now becomes a contact; returns the normals of all its contacts. */
     List<Vect> touchAll(Ball ball) {
         List<Vect> normals = refresh(ball);
         discover(ball, normals);
+        dropFlushCorners(ball, normals);
         return normals;
+    }
+
+    /**
+     * A corner (a circle of radius 0) lying on a face the ball also lies on is the end of that face, or of the face
+     * beside it at a seam: flush with the surface, it adds nothing to it. Kept as a contact of its own it would,
+     * once the ball rolls on past it, pull the ball back toward it (its normal tilts backwards) and slow it at
+     * every seam. {@code normals} is in the order of the ball's contacts and stays so.
+     */
+    private void dropFlushCorners(Ball ball, List<Vect> normals) {
+        List<ContactRef> refs = ball.contacts();
+        for (int i = refs.size() - 1; i >= 0; i--) {
+            if (isFlushCorner(refs, refs.get(i))) {
+                refs.remove(i);
+                normals.remove(i);
+            }
+        }
+    }
+
+    private boolean isFlushCorner(List<ContactRef> refs, ContactRef ref) {
+        Vect corner = cornerOf(ref);
+        return corner != null && onAFaceOf(refs, corner);
+    }
+
+    private boolean onAFaceOf(List<ContactRef> refs, Vect point) {
+        for (ContactRef ref : refs) {
+            LineSegment face = faceOf(ref);
+            if (face != null && Geometry.perpendicularPoint(face, point) != null
+                    && point.distanceSquared(Geometry.perpendicularPointWholeLine(face, point))
+                    <= Tolerances.CONTACT * Tolerances.CONTACT) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** The still segment a contact names; null for a circle, a ball or a part that is gone or swinging. */
+    private LineSegment faceOf(ContactRef ref) {
+        if (ref instanceof ContactRef.Wall wall) {
+            return CollisionDetector.OUTER_WALLS.get(wall.side());
+        }
+        if (ref instanceof ContactRef.Part part && !part.circle()) {
+            GizmoBase gizmo = stillGizmo(part);
+            return gizmo == null || part.index() >= gizmo.shape().segments().size() ? null
+                    : gizmo.shape().segments().get(part.index());
+        }
+        return null;
+    }
+
+    /** The point of a corner contact (a part's circle of radius 0); null for anything else. */
+    private Vect cornerOf(ContactRef ref) {
+        if (ref instanceof ContactRef.Part part && part.circle()) {
+            GizmoBase gizmo = stillGizmo(part);
+            if (gizmo != null && part.index() < gizmo.shape().circles().size()) {
+                Circle circle = gizmo.shape().circles().get(part.index());
+                return circle.getRadius() == 0 ? circle.getCenter() : null;
+            }
+        }
+        return null;
+    }
+
+    private GizmoBase stillGizmo(ContactRef.Part part) {
+        GizmoBase gizmo = view.gizmo(part.gizmo());
+        return gizmo instanceof Flipper flipper && flipper.isMoving() ? null : gizmo;
     }
 
     /** The normals of the ball's contacts as they are now, without changing them. */

@@ -12,6 +12,8 @@ import java.util.ArrayList;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 
 import physics.Vect;
 
@@ -156,6 +158,29 @@ class SleepAndContactTest {
         assertThat(Invariants.violations(board)).isEmpty();
         List<Vect> after = board.balls().stream().map(Ball::position).toList();
         assertThat(after).isEqualTo(settled);
+    }
+
+    /**
+     * Without friction nothing acts along a level floor, so a ball rolling over seams keeps its speed exactly, however
+     * slowly it rolls and wherever it starts, on a seam too: the corner at a seam is flush with the faces and holds
+     * nothing back (a corner kept as a contact of its own would tilt its normal backwards once the ball is past it).
+     */
+    @ParameterizedTest(name = "{0} L/s from x = {1}")
+    @CsvSource({"0.2, 6.5", "0.5, 6.5", "1, 6.5", "1, 7", "1, 6.99", "2, 7", "3, 6.25"})
+    void aSlowBallRollingOverSeamsKeepsItsSpeed(double speed, double x) {
+        Board board = new Board();
+        board.setFriction(0, 0);
+        for (int cell = 0; cell < Board.SIZE; cell++) {
+            board.addGizmo(GizmoKind.SQUARE, "S" + cell, cell, 18);
+        }
+        board.addBall("B", x, 18 - R, speed, 0);
+        int ticks = (int) Math.ceil(5 / (speed * DT));   // five seams' worth of rolling, short of the right wall
+        for (int t = 0; t < ticks; t++) {
+            board.tick(DT);
+            Ball ball = ball(board, "B");
+            assertThat(ball.velocity().x()).as("tick %d at x = %s", t, ball.position().x()).isEqualTo(speed);
+            assertThat(ball.position().y()).as("tick %d", t).isEqualTo(18 - R);
+        }
     }
 
     /** After the first tick's landing, rolling over the nine seams of ten squares takes no collision at all. */
