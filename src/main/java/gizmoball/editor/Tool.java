@@ -9,12 +9,12 @@ import java.util.Optional;
 
 /** The build-mode tools, in palette order, each with the key that selects it and the hint the status line shows. */
 public enum Tool {
-    SQUARE("Square", KeyEvent.VK_S, GizmoKind.SQUARE, "click a cell to place a square bumper"),
-    CIRCLE("Circle", KeyEvent.VK_C, GizmoKind.CIRCLE, "click a cell to place a circle bumper"),
-    TRIANGLE("Triangle", KeyEvent.VK_T, GizmoKind.TRIANGLE, "click a cell to place a triangle bumper"),
-    LEFT_FLIPPER("Left Flipper", KeyEvent.VK_L, GizmoKind.LEFT_FLIPPER, "click the top-left cell of a 2x2 box"),
-    RIGHT_FLIPPER("Right Flipper", KeyEvent.VK_R, GizmoKind.RIGHT_FLIPPER, "click the top-left cell of a 2x2 box"),
-    ABSORBER("Absorber", KeyEvent.VK_A, GizmoKind.ABSORBER, "drag out a rectangle of cells"),
+    SQUARE(KeyEvent.VK_S, GizmoKind.SQUARE, "click a cell to place a square bumper"),
+    CIRCLE(KeyEvent.VK_C, GizmoKind.CIRCLE, "click a cell to place a circle bumper"),
+    TRIANGLE(KeyEvent.VK_T, GizmoKind.TRIANGLE, "click a cell to place a triangle bumper"),
+    LEFT_FLIPPER(KeyEvent.VK_L, GizmoKind.LEFT_FLIPPER, "click the top-left cell of a 2x2 box"),
+    RIGHT_FLIPPER(KeyEvent.VK_R, GizmoKind.RIGHT_FLIPPER, "click the top-left cell of a 2x2 box"),
+    ABSORBER(KeyEvent.VK_A, GizmoKind.ABSORBER, "drag out a rectangle of cells"),
     BALL("Ball", KeyEvent.VK_B, null, "click to place a ball; drag before releasing to give it a velocity"),
     SELECT("Select / Move", KeyEvent.VK_M, null, "click to select, drag a gizmo or ball to move it"),
     ROTATE("Rotate", KeyEvent.VK_O, null, "click a gizmo to turn it 90 degrees clockwise"),
@@ -35,6 +35,20 @@ public enum Tool {
         this.shortcut = shortcut;
         this.kind = kind;
         this.hint = hint;
+    }
+
+    /** A placement tool, labelled with its kind's name in title case: "Left Flipper". */
+    Tool(int shortcut, GizmoKind kind, String hint) {
+        this(titleCase(kind.displayName()), shortcut, kind, hint);
+    }
+
+    private static String titleCase(String words) {
+        StringBuilder title = new StringBuilder(words.length());
+        for (String word : words.split(" ")) {
+            title.append(title.length() == 0 ? "" : " ").append(Character.toUpperCase(word.charAt(0)))
+                    .append(word.substring(1));
+        }
+        return title.toString();
     }
 
     public String label() {

@@ -20,6 +20,8 @@ import physics.Vect;
 class FlipperCollisionTest {
     private static final double DT = Board.DEFAULT_TICK;
     private static final double R = Board.BALL_RADIUS;
+    /** A flipper's coefficient of reflection, from the product description's table of gizmos. */
+    private static final double FLIPPER_REFLECTION = 0.95;
 
     @ParameterizedTest
     @EnumSource(LoopMode.class)
@@ -65,7 +67,7 @@ class FlipperCollisionTest {
         double ny = toBall * Math.sin(phi) / reach;
         double kx = cap + R * nx;
         double ky = R * ny;
-        double speed = (1 + Flipper.REFLECTION) * w * (-ky * nx + kx * ny);
+        double speed = (1 + FLIPPER_REFLECTION) * w * (-ky * nx + kx * ny);
         // On the board the bar points from straight down (0, 1) turned by a towards +x; "turning" is (cos a, -sin a).
         double a = Math.atan2(6.5 - 5.25, 11.75 - 10.25) - phi;
         double downward = nx * Math.cos(a) - ny * Math.sin(a);

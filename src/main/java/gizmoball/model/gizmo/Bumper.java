@@ -12,7 +12,7 @@ public final class Bumper extends GizmoBase implements Gizmo {
     Bumper(GizmoKind kind, String name, int x, int y) {
         super(name, kind, x, y);
         if (kind != GizmoKind.SQUARE && kind != GizmoKind.CIRCLE && kind != GizmoKind.TRIANGLE) {
-            throw new IllegalArgumentException(kind + " is not a bumper");
+            throw new IllegalArgumentException(kind.withArticle() + " is not a bumper");
         }
         rebuildShape();
     }
@@ -40,7 +40,7 @@ public final class Bumper extends GizmoBase implements Gizmo {
     /** The circle of a CIRCLE bumper: centred in its cell, radius 0.5. */
     public Circle circle() {
         if (kind() != GizmoKind.CIRCLE) {
-            throw new IllegalStateException(name() + " is a " + kind() + ", not a circle");
+            throw new IllegalStateException(name() + " is " + kind().withArticle() + ", not a circle");
         }
         return new Circle(x() + 0.5, y() + 0.5, CIRCLE_RADIUS);
     }

@@ -17,8 +17,8 @@ import physics.Vect;
  */
 public final class Flipper extends GizmoBase implements Gizmo {
     static final double RADIUS = 0.25;
-    /** Its {@link #reflectionCoefficient()}, a constant for the loop's reflections off a swinging flipper. */
-    public static final double REFLECTION = 0.95;
+    /** Its {@link #reflectionCoefficient()}, still or swinging. */
+    private static final double REFLECTION = 0.95;
     /** Degrees from rest to the active stop. */
     public static final double MAX_ANGLE = 90;
     static final double DEGREES_PER_SECOND = 1080;
@@ -39,7 +39,7 @@ public final class Flipper extends GizmoBase implements Gizmo {
     Flipper(GizmoKind kind, String name, int x, int y) {
         super(name, kind, x, y);
         if (kind != GizmoKind.LEFT_FLIPPER && kind != GizmoKind.RIGHT_FLIPPER) {
-            throw new IllegalArgumentException(kind + " is not a flipper");
+            throw new IllegalArgumentException(kind.withArticle() + " is not a flipper");
         }
         rebuildShape();
     }

@@ -505,11 +505,12 @@ public final class TickRun {
 
     private static Vect reflectOffSwinging(Contact.SwingingPart part, Shape shape, Vect pivot, double omega,
                                            Circle circle, Vect velocity) {
+        double coefficient = part.flipper().reflectionCoefficient();
         return part.circle()
                 ? Geometry.reflectRotatingCircle(shape.circles().get(part.index()), pivot, omega, circle, velocity,
-                        Flipper.REFLECTION)
+                        coefficient)
                 : Geometry.reflectRotatingWall(shape.segments().get(part.index()), pivot, omega, circle, velocity,
-                        Flipper.REFLECTION);
+                        coefficient);
     }
 
     /**
