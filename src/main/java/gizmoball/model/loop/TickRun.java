@@ -89,6 +89,8 @@ public final class TickRun {
     private final Set<Ball> metSinceStrike = new HashSet<>();
     /** What each ball struck by a swinging flipper in this tick has met since then, other than swinging flippers. */
     private final Map<Ball, Set<Contact>> metAfterStrike = new HashMap<>();
+    /** The part of a swinging flipper that last struck each ball in this tick. */
+    private final Map<Ball, Contact.SwingingPart> lastStrike = new HashMap<>();
     /** How often a squeeze has sent each ball out between a flipper and what it came back from, in this tick. */
     private final Map<Ball, Integer> squeezed = new HashMap<>();
     /** Surfaces a ball bounced off among its contacts within the collision just resolved, for stage 5. */
@@ -437,6 +439,10 @@ public final class TickRun {
         Vect pivot = flipper.pivot();
         Circle circle = ball.circle();
         Vect before = ball.velocity();
+        Contact.SwingingPart previous = lastStrike.put(ball, part);
+        if (previous != null && previous.flipper() != flipper) {
+            met(ball, previous);   // struck by another flipper since: it came back from that one
+        }
         boolean cameBack = metSinceStrike.remove(ball);
         Set<Contact> met = metAfterStrike.computeIfAbsent(ball, struck -> new LinkedHashSet<>());
         int strike = strikes.merge(new Strike(ball, flipper), 1, Integer::sum);
@@ -468,29 +474,36 @@ public final class TickRun {
     private List<Squeeze.Side> squeezeSides(Ball ball, Contact.SwingingPart part, Shape shape, Vect pivot,
                                             double omega, Set<Contact> met, Vect reflected) {
         List<Squeeze.Side> sides = new ArrayList<>();
-        sides.add(flipperSide(ball, part, shape, pivot, omega, reflected));
+        // The striking flipper: the ball must leave it at least as fast along the normal as its bounce does. Leaving
+        // at only the surface's own speed would keep the ball on a surface that turns, and so speeds up under it
+        // further out: struck again at once, without end.
+        Squeeze.Side striking = flipperSide(ball, part, shape, pivot, omega);
+        sides.add(new Squeeze.Side(striking.normal(),
+                Math.max(striking.speed(), reflected.dot(striking.normal()))));
         contacts.normals(ball).forEach(normal -> sides.add(new Squeeze.Side(normal, 0)));
         met.forEach(surface -> sides.add(sideOf(ball, surface)));
         return sides;
     }
 
     /**
-     * The flipper where it strikes the ball, as a side of a {@link Squeeze}: the ball must leave it at least as fast
-     * along the normal as its bounce does. Leaving at only the surface's own speed would keep the ball on a surface
-     * that turns, and so speeds up under it further out: struck again at once, without end.
+     * A part of a swinging flipper, taken where the ball is now, as a side of a {@link Squeeze}: its normal and the
+     * speed of its surface along it there.
      */
     private static Squeeze.Side flipperSide(Ball ball, Contact.SwingingPart part, Shape shape, Vect pivot,
-                                            double omega, Vect bounced) {
+                                            double omega) {
         Vect normal = part.circle()
                 ? ball.position().minus(shape.circles().get(part.index()).getCenter()).unitSize()
                 : normalFromSegment(ball, shape.segments().get(part.index()));
         Vect touching = ball.position().minus(normal.times(Arena.BALL_RADIUS));
-        double surface = CollisionDetector.surfaceVelocity(pivot, omega, touching).dot(normal);
-        return new Squeeze.Side(normal, Math.max(surface, bounced.dot(normal)));
+        return new Squeeze.Side(normal, CollisionDetector.surfaceVelocity(pivot, omega, touching).dot(normal));
     }
 
     /** A surface the ball came back from, taken where the ball is now, as a side of a {@link Squeeze}. */
     private Squeeze.Side sideOf(Ball ball, Contact surface) {
+        if (surface instanceof Contact.SwingingPart part) {
+            Flipper other = part.flipper();
+            return flipperSide(ball, part, other.shape(), other.pivot(), other.angularVelocity());
+        }
         if (surface instanceof Contact.OtherBall other) {
             Vect normal = ball.position().minus(other.other().position()).unitSize();
             return new Squeeze.Side(normal, detector.motion(other.other()).dot(normal));

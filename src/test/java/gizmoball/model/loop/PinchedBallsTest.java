@@ -8,7 +8,14 @@ import gizmoball.model.KeyEdge;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.GizmoKind;
 
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Stream;
+
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
 
 import physics.Vect;
 
@@ -103,5 +110,39 @@ class PinchedBallsTest {
             board.tick(DT);
         }
         assertThat(flipper.angleFromRest()).isEqualTo(90.0);
+    }
+
+    /**
+     * Two flippers side by side swinging up together close on a ball between them like tongs. Bounced from one to
+     * the other in a closing gap it would be struck ever faster; coming back from the other flipper is coming back
+     * from something, so it is squeezed out, or jams the pair. No guard, a handful of collisions a tick at most.
+     */
+    @ParameterizedTest(name = "ball at ({0}, {1})")
+    @MethodSource("betweenTheTongs")
+    void aBallBetweenTwoFlippersClosingOnItIsSqueezedOutOrJamsThem(double x, double y) {
+        Board board = new Board();
+        board.setGravity(0);
+        board.addGizmo(GizmoKind.LEFT_FLIPPER, "L", 8, 10);
+        board.addGizmo(GizmoKind.RIGHT_FLIPPER, "R", 10, 10);
+        board.addBall("B", x, y, 0, 0);
+        board.bindKey(32, KeyEdge.DOWN, "L");
+        board.bindKey(32, KeyEdge.DOWN, "R");
+        board.keyDown(32);
+        for (int t = 0; t < 30; t++) {
+            board.tick(DT);
+            assertThat(Invariants.violations(board)).as("tick %d", t).isEmpty();
+            assertThat(board.lastTick().collisions()).as("tick %d", t).isLessThanOrEqualTo(20);
+        }
+        assertThat(board.guardsFired()).isEqualTo(GuardCounts.NONE);
+    }
+
+    static Stream<Arguments> betweenTheTongs() {
+        List<Arguments> starts = new ArrayList<>();
+        for (int i = 0; i <= 8; i++) {
+            for (int j = 0; j <= 8; j++) {
+                starts.add(Arguments.of(9.6 + 0.1 * i, 10.5 + 0.15 * j));
+            }
+        }
+        return starts.stream();
     }
 }
