@@ -59,7 +59,10 @@ final class CollisionSchedule {
         this.grid = grid;
     }
 
-    /** Files every free ball (awake or asleep) where it is now, {@code elapsed} seconds into the tick. */
+    /**
+     * Files every free ball (awake or asleep) where it is now, {@code elapsed} seconds into the tick; every known
+     * collision is forgotten.
+     */
     void file(Collection<Ball> free, double elapsed) {
         grid.clear();
         filedAt = elapsed;

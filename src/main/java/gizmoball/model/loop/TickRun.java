@@ -681,8 +681,7 @@ public final class TickRun {
     /** A trigger, a capture or a held flipper changed the scene: which balls move, and what they can hit. */
     private void sceneChanged() {
         findAwake();
-        schedule.file(freeBalls(), elapsed);
-        schedule.forgetAll();
+        schedule.file(freeBalls(), elapsed);   // filing forgets every known collision
     }
 
     private void findAwake() {
