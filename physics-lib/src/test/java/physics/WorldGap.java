@@ -125,6 +125,37 @@ final class WorldGap {
         return Double.POSITIVE_INFINITY;
     }
 
+    /** How a contact that touches at time 0 goes on, as the oracle sees it. */
+    enum Start {
+        /** The ball is inside the obstacle (for a wall: on its face, foot on the segment) at every probe time. */
+        CLOSING,
+        /** The ball is clear of the obstacle (for a wall: of its face) at every probe time. */
+        OPENING,
+        /** Neither: the scene is too close to call and is not used. */
+        UNCLEAR
+    }
+
+    /** Probe times of {@link #start}: {@value #START_PROBES} halvings from {@link #START_HORIZON} s. */
+    static final double START_HORIZON = 1e-3;
+    static final int START_PROBES = 11;
+
+    /**
+     * Whether a ball touching the obstacle at time 0 closes on it or leaves it: the gap (for a wall, the face's:
+     * the foot must lie on the segment) at the times START_HORIZON / 2^k, k &lt; START_PROBES (1e-3 s down to
+     * about 1e-6 s), must have one sign at all of them. Those times are long enough for a quadratic start to show
+     * far above rounding, and short enough that the motion cannot turn back in between.
+     */
+    Start start() {
+        int inside = 0;
+        for (int k = 0; k < START_PROBES; k++) {
+            double t = START_HORIZON / (1 << k);
+            if (segment == null ? at(t) < 0 : footBeyond(t) == 0 && faceGap(t) < 0) {
+                inside++;
+            }
+        }
+        return inside == START_PROBES ? Start.CLOSING : inside == 0 ? Start.OPENING : Start.UNCLEAR;
+    }
+
     private double turnedX(Vect p, double cos, double sin) {
         return pivot.x() + (p.x() - pivot.x()) * cos - (p.y() - pivot.y()) * sin;
     }
