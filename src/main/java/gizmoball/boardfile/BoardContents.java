@@ -5,7 +5,7 @@ import gizmoball.model.KeyBinding;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import java.util.ArrayList;
 import java.util.List;
@@ -61,7 +61,7 @@ public record BoardContents(List<GizmoState> gizmos, List<BallState> balls, List
         return new GizmoState(g.name(), g.kind(), g.x(), g.y(), g.width(), g.height(), g.rotation(), g.colour());
     }
 
-    private static BallState state(Ball b) {
+    private static BallState state(BallView b) {
         return new BallState(b.name(), b.position().x(), b.position().y(), b.velocity().x(), b.velocity().y(),
                 b.isCaptured());
     }

@@ -2,10 +2,10 @@ package gizmoball.boardfile;
 
 import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
-import gizmoball.model.gizmo.Absorber;
-import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.AbsorberView;
+import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import java.util.ArrayList;
 import java.util.Collections;
@@ -29,7 +29,7 @@ final class BoardWriter {
     static List<Command> commands(Board board) {
         List<Command> commands = new ArrayList<>();
         for (Gizmo gizmo : board.gizmos()) {
-            commands.add(gizmo instanceof Absorber
+            commands.add(gizmo instanceof AbsorberView
                     ? new Command.AddAbsorber(gizmo.name(), gizmo.x(), gizmo.y(),
                             gizmo.x() + gizmo.width(), gizmo.y() + gizmo.height())
                     : new Command.AddGizmo(gizmo.kind(), gizmo.name(), gizmo.x(), gizmo.y()));
@@ -42,11 +42,11 @@ final class BoardWriter {
         }
         for (Gizmo gizmo : board.gizmos()) {
             // Only where play moved it: a board as built is written as before, and other implementations skip it.
-            if (gizmo instanceof Flipper flipper && (flipper.angleFromRest() != 0 || flipper.isActive())) {
+            if (gizmo instanceof FlipperView flipper && (flipper.angleFromRest() != 0 || flipper.isActive())) {
                 commands.add(new Command.FlipperState(flipper.name(), flipper.angleFromRest(), flipper.isActive()));
             }
         }
-        for (Ball ball : board.balls()) {
+        for (BallView ball : board.balls()) {
             // A captured ball sits at its absorber's corner with no velocity; written there, it is captured again.
             commands.add(new Command.AddBall(ball.name(), ball.position().x(), ball.position().y(),
                     ball.velocity().x(), ball.velocity().y()));

@@ -9,6 +9,7 @@ import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Ball;
 import gizmoball.model.loop.BallGrid;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import gizmoball.model.loop.GuardCounts;
 import gizmoball.model.loop.LoopActions;
@@ -265,11 +266,12 @@ public final class Board {
         return Optional.ofNullable(registry.index().at(cx, cy)).map(Board::asGizmo);
     }
 
-    public List<Ball> balls() {
-        return Collections.unmodifiableList(new ArrayList<>(registry.balls()));
+    /** The balls in board order, read only: the board and its loop change them. */
+    public List<BallView> balls() {
+        return List.copyOf(registry.balls());
     }
 
-    public Optional<Ball> ball(String name) {
+    public Optional<BallView> ball(String name) {
         return Optional.ofNullable(registry.ball(name));
     }
 
