@@ -81,14 +81,9 @@ final class RotatingContactSearch {
     private double faceGap;
     private double faceRate;
     private double faceAcceleration;
-    /**
-     * Wall: the signed distance x of q from the line and its rate; where q's foot lies along the segment from a,
-     * its rate, and how far it lies beyond the segment.
-     */
+    /** Wall: the signed distance x of q from the line, its rate, and how far q's foot lies beyond the segment. */
     private double offset;
     private double offsetRate;
-    private double along;
-    private double alongRate;
     private double beyond;
 
     private RotatingContactSearch(boolean wall, Vect a, Vect b, double contactDistance, Vect pivot,
@@ -182,32 +177,22 @@ final class RotatingContactSearch {
     }
 
     /**
-     * Whether the touching ball closes on the obstacle now: its gap falls over the next touching step, by the
-     * second-order expansion faceRate + faceAcceleration h / 2 &lt; 0 of the gap's mean rate over that step. A
-     * contact that touches at zero closing speed (to rounding) closes when the acceleration does: the side of a
-     * flipper taking a ball over from its round end, a surface turning into a ball that slides along it. One that
-     * approaches the tolerance's worth of a rate and is turned around within the step does not. Without curvature
-     * the motion is straight and the convex gap closes only if its rate is negative.
+     * Whether the touching ball closes on the obstacle now, at a rate that the next touching step h resolves: the
+     * gap's rate is below -|faceAcceleration| h / 2, the most the second-order term can change the gap's mean rate
+     * over that step. A contact whose rate is above that is grazing and is not reported yet. One that approaches by
+     * a rounding's worth of a rate and is turned around within the step is then no contact (reported, a reflection
+     * would send a ball that is leaving back in). One that touches at zero closing speed and is then closed on (the
+     * side of a flipper taking a ball over from its round end, a surface turning into a ball that slides along it)
+     * is reported within a touching step or two, about 1e-10 L deep at most, with a closing speed for a reflection to
+     * act on. Reported at the instant of zero closing speed, a caller that reflects and asks again would get the
+     * same contact at time 0, without end. Without curvature the motion is straight and the convex gap closes only
+     * if its rate is negative.
      */
     private boolean closing(double curvature) {
         if (curvature == 0) {
             return faceRate < 0;
         }
-        double step = touchingStep(curvature);
-        double secondOrder = faceAcceleration * step / 2;
-        if (!(faceRate + secondOrder < 0)) {
-            return false;
-        }
-        // A grazing wall contact closes on the face only if the foot stays on the segment: one whose foot leaves
-        // it over an end closes in the band beyond that end, which is the end circle's contact.
-        boolean grazing = Math.abs(faceRate) <= Math.abs(secondOrder);
-        return !(wall && grazing && footLeavesWithin(step / 2));
-    }
-
-    /** Whether, moving at its current rate, the foot of q is off the segment after the time. */
-    private boolean footLeavesWithin(double time) {
-        double later = along + alongRate * time;
-        return later < 0 || later > length;
+        return faceRate < -Math.abs(faceAcceleration) * touchingStep(curvature) / 2;
     }
 
     /**
@@ -297,8 +282,8 @@ final class RotatingContactSearch {
     /** The face's gaps from q - a, q' and q''. */
     private void evaluateFace(double relX, double relY, double rateX, double rateY, double accelerationX,
                               double accelerationY) {
-        along = relX * alongX + relY * alongY;
-        alongRate = rateX * alongX + rateY * alongY;
+        double along = relX * alongX + relY * alongY;
+        double alongRate = rateX * alongX + rateY * alongY;
         offset = relY * alongX - relX * alongY; // along the normal (-alongY, alongX)
         offsetRate = rateY * alongX - rateX * alongY;
         double beyondRate;
