@@ -33,6 +33,15 @@ public sealed interface Command {
         return Optional.empty();
     }
 
+    /**
+     * The fact of the board that the line states, so that a save can tell the lines of what did not change from
+     * the lines of what did (see {@link Subject}). A command that is one element of a set (a connection, a key
+     * binding, and any command without a subject of its own) is its own subject.
+     */
+    default Subject subject() {
+        return Subject.line(toLine());
+    }
+
     /** Square, Circle, Triangle, LeftFlipper or RightFlipper with the top-left cell of its footprint. */
     record AddGizmo(GizmoKind kind, String name, int x, int y) implements Command {
         public void applyTo(Board board) {
@@ -45,6 +54,10 @@ public sealed interface Command {
 
         public Optional<String> defines() {
             return Optional.of(name);
+        }
+
+        public Subject subject() {
+            return Subject.thing(name);
         }
     }
 
@@ -60,6 +73,10 @@ public sealed interface Command {
 
         public Optional<String> defines() {
             return Optional.of(name);
+        }
+
+        public Subject subject() {
+            return Subject.thing(name);
         }
     }
 
@@ -81,6 +98,10 @@ public sealed interface Command {
         AddBall named(String newName) {
             return new AddBall(newName, x, y, vx, vy);
         }
+
+        public Subject subject() {
+            return Subject.thing(name);
+        }
     }
 
     record Rotate(String name) implements Command {
@@ -94,6 +115,10 @@ public sealed interface Command {
 
         public List<String> references() {
             return List.of(name);
+        }
+
+        public Subject subject() {
+            return new Subject("rotation", name);
         }
     }
 
@@ -181,6 +206,10 @@ public sealed interface Command {
         public List<String> references() {
             return List.of(name);
         }
+
+        public Subject subject() {
+            return new Subject("colour", name);
+        }
     }
 
     /**
@@ -200,6 +229,10 @@ public sealed interface Command {
         public List<String> references() {
             return List.of(name);
         }
+
+        public Subject subject() {
+            return new Subject("flipper state", name);
+        }
     }
 
     record Gravity(double g) implements Command {
@@ -210,6 +243,10 @@ public sealed interface Command {
         public String toLine() {
             return CommandWord.GRAVITY.spelling() + " " + format(g);
         }
+
+        public Subject subject() {
+            return new Subject("gravity", "");
+        }
     }
 
     record Friction(double mu, double mu2) implements Command {
@@ -219,6 +256,10 @@ public sealed interface Command {
 
         public String toLine() {
             return CommandWord.FRICTION.spelling() + " " + format(mu) + " " + format(mu2);
+        }
+
+        public Subject subject() {
+            return new Subject("friction", "");
         }
     }
 }
