@@ -2,10 +2,11 @@ package gizmoball.boardfile;
 
 import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
+import gizmoball.model.game.GameRules;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import java.util.ArrayList;
 import java.util.Comparator;
@@ -19,7 +20,7 @@ import java.util.Optional;
  * from play) altered the design, and the tests to compare boards read, written and edited.
  */
 public record BoardContents(List<GizmoState> gizmos, List<BallState> balls, List<Connection> connections,
-                     List<KeyBinding> keyBindings, double gravity, double mu, double mu2) {
+                     List<KeyBinding> keyBindings, double gravity, double mu, double mu2, GameRules game) {
 
     public record GizmoState(String name, GizmoKind kind, int x, int y, int width, int height, int rotation,
                       Optional<Rgb> colour) {
@@ -52,6 +53,7 @@ public record BoardContents(List<GizmoState> gizmos, List<BallState> balls, List
         compare("connection", connections, other.connections, differences);
         compare("key binding", keyBindings, other.keyBindings, differences);
         compare("constants", List.of(gravity, mu, mu2), List.of(other.gravity, other.mu, other.mu2), differences);
+        compare("game rules", List.of(game), List.of(other.game), differences);
         return differences;
     }
 
@@ -70,14 +72,14 @@ public record BoardContents(List<GizmoState> gizmos, List<BallState> balls, List
                 board.gizmos().stream().map(BoardContents::state).toList(),
                 board.balls().stream().map(BoardContents::state).toList(),
                 List.copyOf(board.connections()), List.copyOf(board.keyBindings()),
-                board.gravity(), board.mu(), board.mu2());
+                board.gravity(), board.mu(), board.mu2(), board.gameRules());
     }
 
     private static GizmoState state(Gizmo g) {
         return new GizmoState(g.name(), g.kind(), g.x(), g.y(), g.width(), g.height(), g.rotation(), g.colour());
     }
 
-    private static BallState state(Ball b) {
+    private static BallState state(BallView b) {
         return new BallState(b.name(), b.position().x(), b.position().y(), b.velocity().x(), b.velocity().y(),
                 b.isCaptured());
     }

@@ -11,6 +11,7 @@ import gizmoball.model.loop.TriggerSource;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
+import java.util.OptionalLong;
 
 /**
  * One parsed board-file command: {@link #applyTo} performs it on a board through the board's own editing
@@ -49,7 +50,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.of(kind).spelling() + " " + name + " " + x + " " + y;
+            return CommandWord.of(kind).written() + " " + name + " " + x + " " + y;
         }
 
         public Optional<String> defines() {
@@ -68,7 +69,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.ABSORBER.spelling() + " " + name + " " + x1 + " " + y1 + " " + x2 + " " + y2;
+            return CommandWord.ABSORBER.written() + " " + name + " " + x1 + " " + y1 + " " + x2 + " " + y2;
         }
 
         public Optional<String> defines() {
@@ -86,7 +87,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.BALL.spelling() + " " + name + " " + format(x) + " " + format(y)
+            return CommandWord.BALL.written() + " " + name + " " + format(x) + " " + format(y)
                     + " " + format(vx) + " " + format(vy);
         }
 
@@ -110,7 +111,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.ROTATE.spelling() + " " + name;
+            return CommandWord.ROTATE.written() + " " + name;
         }
 
         public List<String> references() {
@@ -128,7 +129,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.DELETE.spelling() + " " + name;
+            return CommandWord.DELETE.written() + " " + name;
         }
 
         public List<String> references() {
@@ -154,7 +155,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.MOVE.spelling() + " " + name + " " + format(x) + " " + format(y);
+            return CommandWord.MOVE.written() + " " + name + " " + format(x) + " " + format(y);
         }
 
         public List<String> references() {
@@ -169,7 +170,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.CONNECT.spelling() + " " + source.name() + " " + target;
+            return CommandWord.CONNECT.written() + " " + source.name() + " " + target;
         }
 
         public List<String> references() {
@@ -183,7 +184,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.KEY_CONNECT.spelling() + " key " + keyCode + " " + edge.name().toLowerCase(Locale.ROOT)
+            return CommandWord.KEY_CONNECT.written() + " key " + keyCode + " " + edge.name().toLowerCase(Locale.ROOT)
                     + " " + gizmo;
         }
 
@@ -199,7 +200,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.COLOUR.spelling() + " " + name + " " + colour.red() + " " + colour.green() + " "
+            return CommandWord.COLOUR.written() + " " + name + " " + colour.red() + " " + colour.green() + " "
                     + colour.blue();
         }
 
@@ -222,7 +223,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.FLIPPER_STATE.spelling() + " " + name + " " + format(degrees) + " "
+            return CommandWord.FLIPPER_STATE.written() + " " + name + " " + format(degrees) + " "
                     + (active ? "up" : "down");
         }
 
@@ -241,7 +242,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.GRAVITY.spelling() + " " + format(g);
+            return CommandWord.GRAVITY.written() + " " + format(g);
         }
 
         public Subject subject() {
@@ -255,7 +256,59 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.FRICTION.spelling() + " " + format(mu) + " " + format(mu2);
+            return CommandWord.FRICTION.written() + " " + format(mu) + " " + format(mu2);
+        }
+    }
+
+    /** {@code #@Balls <n>}: how many balls a game on the board has. */
+    record BallsPerGame(int balls) implements Command {
+        public void applyTo(Board board) {
+            board.setBallsPerGame(balls);
+        }
+
+        public String toLine() {
+            return CommandWord.BALLS.written() + " " + balls;
+        }
+    }
+
+    /** {@code #@ExtraBall <score>}: reaching that score gives one more ball, once a game. */
+    record ExtraBall(long score) implements Command {
+        public void applyTo(Board board) {
+            board.setExtraBallAt(OptionalLong.of(score));
+        }
+
+        public String toLine() {
+            return CommandWord.EXTRA_BALL.written() + " " + score;
+        }
+    }
+
+    /** {@code #@Drain <absorber>}: a ball the absorber captures is lost. */
+    record Drain(String absorber) implements Command {
+        public void applyTo(Board board) {
+            board.setDrain(absorber, true);
+        }
+
+        public String toLine() {
+            return CommandWord.DRAIN.written() + " " + absorber;
+        }
+
+        public List<String> references() {
+            return List.of(absorber);
+        }
+    }
+
+    /** {@code #@Points <gizmo> <points>}: what a real hit on the gizmo scores. */
+    record Points(String gizmo, int points) implements Command {
+        public void applyTo(Board board) {
+            board.setPoints(gizmo, points);
+        }
+
+        public String toLine() {
+            return CommandWord.POINTS.written() + " " + gizmo + " " + points;
+        }
+
+        public List<String> references() {
+            return List.of(gizmo);
         }
 
         public Subject subject() {

@@ -5,7 +5,7 @@ import static org.assertj.core.api.Assertions.offset;
 
 import gizmoball.boardfile.BoardFiles;
 import gizmoball.model.Board;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.PrintStream;
@@ -47,7 +47,7 @@ class HeadlessRunnerTest {
 
         assertThat(run("--headless", "--ticks", "60", "--dt", String.valueOf(1.0 / 120), file.toString())).isZero();
 
-        Ball ball = BoardFiles.load("stdout", stdout()).ball("B").orElseThrow();
+        BallView ball = BoardFiles.load("stdout", stdout()).ball("B").orElseThrow();
         assertThat(ball.position().x()).isCloseTo(7.0, offset(1e-9));
         assertThat(ball.position().y()).isCloseTo(4.0, offset(1e-9));
         assertThat(ball.velocity().x()).isEqualTo(4.0);
