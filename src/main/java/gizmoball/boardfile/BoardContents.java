@@ -37,7 +37,7 @@ public record BoardContents(List<GizmoState> gizmos, List<BallState> balls, List
     public BoardContents withSetsSorted() {
         return new BoardContents(gizmos, balls,
                 connections.stream().sorted(Comparator.comparing(Connection::toString)).toList(),
-                keyBindings.stream().sorted(Comparator.comparing(KeyBinding::toString)).toList(), gravity, mu, mu2);
+                keyBindings.stream().sorted(Comparator.comparing(KeyBinding::toString)).toList(), gravity, mu, mu2, game);
     }
 
     /** The same design: equal contents, the connections and key bindings in any order. */

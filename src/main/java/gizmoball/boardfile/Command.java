@@ -258,6 +258,10 @@ public sealed interface Command {
         public String toLine() {
             return CommandWord.FRICTION.written() + " " + format(mu) + " " + format(mu2);
         }
+
+        public Subject subject() {
+            return new Subject("friction", "");
+        }
     }
 
     /** {@code #@Balls <n>}: how many balls a game on the board has. */
@@ -269,6 +273,10 @@ public sealed interface Command {
         public String toLine() {
             return CommandWord.BALLS.written() + " " + balls;
         }
+
+        public Subject subject() {
+            return new Subject("balls per game", "");
+        }
     }
 
     /** {@code #@ExtraBall <score>}: reaching that score gives one more ball, once a game. */
@@ -279,6 +287,10 @@ public sealed interface Command {
 
         public String toLine() {
             return CommandWord.EXTRA_BALL.written() + " " + score;
+        }
+
+        public Subject subject() {
+            return new Subject("extra ball", "");
         }
     }
 
@@ -312,7 +324,7 @@ public sealed interface Command {
         }
 
         public Subject subject() {
-            return new Subject("friction", "");
+            return new Subject("points", gizmo);
         }
     }
 }

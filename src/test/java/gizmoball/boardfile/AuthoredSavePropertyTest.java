@@ -9,12 +9,13 @@ import gizmoball.model.KeyEdge;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import gizmoball.model.loop.TriggerSource;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import java.util.OptionalLong;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 
@@ -87,8 +88,8 @@ class AuthoredSavePropertyTest {
 
     private void oneEdit(Board board) {
         List<String> gizmos = board.gizmos().stream().map(Gizmo::name).toList();
-        List<String> balls = board.balls().stream().map(Ball::name).toList();
-        switch (random.nextInt(14)) {
+        List<String> balls = board.balls().stream().map(BallView::name).toList();
+        switch (random.nextInt(18)) {
             case 0 -> board.addGizmo(KINDS[random.nextInt(KINDS.length)], "N" + random.nextInt(1000),
                     random.nextInt(20), random.nextInt(20));
             case 1 -> board.moveGizmo(pick(gizmos), random.nextInt(20), random.nextInt(20));
@@ -112,6 +113,11 @@ class AuthoredSavePropertyTest {
                 board.unbindKey(k.keyCode(), k.edge(), k.gizmo());
             }
             case 12 -> board.setGravity(random.nextInt(50));
+            case 13 -> board.setBallsPerGame(1 + random.nextInt(5));
+            case 14 -> board.setExtraBallAt(random.nextBoolean() ? OptionalLong.empty()
+                    : OptionalLong.of(1000L * random.nextInt(10)));
+            case 15 -> board.setDrain(pick(gizmos), random.nextBoolean());
+            case 16 -> board.setPoints(pick(gizmos), random.nextInt(200));
             default -> board.setFriction(random.nextInt(10) / 100.0, random.nextInt(10) / 100.0);
         }
     }
