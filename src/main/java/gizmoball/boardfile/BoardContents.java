@@ -9,6 +9,7 @@ import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
 import java.util.Objects;
 import java.util.Optional;
@@ -27,6 +28,21 @@ public record BoardContents(List<GizmoState> gizmos, List<BallState> balls, List
 
     /** Doubles compared exactly (records use Double.compare semantics), so a lost bit shows. */
     public record BallState(String name, double x, double y, double vx, double vy, boolean captured) {
+    }
+
+    /**
+     * The same contents with the connections and key bindings in one fixed order: they are sets, whose order a
+     * board file does not say (a connection taken away and made again is the same board, though listed last).
+     */
+    public BoardContents withSetsSorted() {
+        return new BoardContents(gizmos, balls,
+                connections.stream().sorted(Comparator.comparing(Connection::toString)).toList(),
+                keyBindings.stream().sorted(Comparator.comparing(KeyBinding::toString)).toList(), gravity, mu, mu2, game);
+    }
+
+    /** The same design: equal contents, the connections and key bindings in any order. */
+    public static boolean sameDesign(Board a, Board b) {
+        return of(a).withSetsSorted().equals(of(b).withSetsSorted());
     }
 
     /** What differs from {@code other}, element by element, so a failure names the one ball or gizmo at fault. */

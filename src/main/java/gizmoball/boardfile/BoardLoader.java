@@ -33,7 +33,7 @@ final class BoardLoader {
 
     /** A new board with every applicable command, an error for each other line, and the notes. */
     static LoadResult loadSkippingBadLines(String source, String content) {
-        return new Run(source, ParsedFile.parse(source, content)).result();
+        return new Run(source, ParsedFile.parse(source, content)).result(content);
     }
 
     /** A new board, only if every line of the file is good. */
@@ -91,10 +91,10 @@ final class BoardLoader {
             neverDefined.forEach(this::apply);
         }
 
-        LoadResult result() {
+        LoadResult result(String content) {
             errors.sort(Comparator.comparingInt(BoardFileError::line));
             notes.sort(Comparator.comparingInt(BoardFileNote::line));
-            return new LoadResult(board, errors, notes);
+            return new LoadResult(board, errors, notes, new AuthoredText(content, board, errors));
         }
 
         /**

@@ -34,6 +34,15 @@ public sealed interface Command {
         return Optional.empty();
     }
 
+    /**
+     * The fact of the board that the line states, so that a save can tell the lines of what did not change from
+     * the lines of what did (see {@link Subject}). A command that is one element of a set (a connection, a key
+     * binding, and any command without a subject of its own) is its own subject.
+     */
+    default Subject subject() {
+        return Subject.line(toLine());
+    }
+
     /** Square, Circle, Triangle, LeftFlipper or RightFlipper with the top-left cell of its footprint. */
     record AddGizmo(GizmoKind kind, String name, int x, int y) implements Command {
         public void applyTo(Board board) {
@@ -46,6 +55,10 @@ public sealed interface Command {
 
         public Optional<String> defines() {
             return Optional.of(name);
+        }
+
+        public Subject subject() {
+            return Subject.thing(name);
         }
     }
 
@@ -61,6 +74,10 @@ public sealed interface Command {
 
         public Optional<String> defines() {
             return Optional.of(name);
+        }
+
+        public Subject subject() {
+            return Subject.thing(name);
         }
     }
 
@@ -82,6 +99,10 @@ public sealed interface Command {
         AddBall named(String newName) {
             return new AddBall(newName, x, y, vx, vy);
         }
+
+        public Subject subject() {
+            return Subject.thing(name);
+        }
     }
 
     record Rotate(String name) implements Command {
@@ -95,6 +116,10 @@ public sealed interface Command {
 
         public List<String> references() {
             return List.of(name);
+        }
+
+        public Subject subject() {
+            return new Subject("rotation", name);
         }
     }
 
@@ -182,6 +207,10 @@ public sealed interface Command {
         public List<String> references() {
             return List.of(name);
         }
+
+        public Subject subject() {
+            return new Subject("colour", name);
+        }
     }
 
     /**
@@ -201,6 +230,10 @@ public sealed interface Command {
         public List<String> references() {
             return List.of(name);
         }
+
+        public Subject subject() {
+            return new Subject("flipper state", name);
+        }
     }
 
     record Gravity(double g) implements Command {
@@ -211,6 +244,10 @@ public sealed interface Command {
         public String toLine() {
             return CommandWord.GRAVITY.written() + " " + format(g);
         }
+
+        public Subject subject() {
+            return new Subject("gravity", "");
+        }
     }
 
     record Friction(double mu, double mu2) implements Command {
@@ -220,6 +257,10 @@ public sealed interface Command {
 
         public String toLine() {
             return CommandWord.FRICTION.written() + " " + format(mu) + " " + format(mu2);
+        }
+
+        public Subject subject() {
+            return new Subject("friction", "");
         }
     }
 
@@ -232,6 +273,10 @@ public sealed interface Command {
         public String toLine() {
             return CommandWord.BALLS.written() + " " + balls;
         }
+
+        public Subject subject() {
+            return new Subject("balls per game", "");
+        }
     }
 
     /** {@code #@ExtraBall <score>}: reaching that score gives one more ball, once a game. */
@@ -242,6 +287,10 @@ public sealed interface Command {
 
         public String toLine() {
             return CommandWord.EXTRA_BALL.written() + " " + score;
+        }
+
+        public Subject subject() {
+            return new Subject("extra ball", "");
         }
     }
 
@@ -272,6 +321,10 @@ public sealed interface Command {
 
         public List<String> references() {
             return List.of(gizmo);
+        }
+
+        public Subject subject() {
+            return new Subject("points", gizmo);
         }
     }
 }

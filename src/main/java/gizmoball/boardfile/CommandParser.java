@@ -28,6 +28,13 @@ final class CommandParser {
     private static final String EXTENSION = "an extension of another implementation" + NOT_THE_FORMAT;
     /** Gizmos of the MIT 6.170 3-D variant: name, x y z and a size. */
     private static final Set<String> MIT_3D_GIZMOS = Set.of("trianglea", "cube", "wall");
+    /**
+     * The first words that other implementations' files really use for commands of their own (the peer boards'
+     * extensions: gizmos, connections of the mouse, settings); any other unknown word is simply unknown.
+     */
+    private static final Set<String> PEER_EXTENSIONS = Set.of("sink", "spawner", "accelerator", "booster",
+            "teleporter", "portal", "rhombus", "octagon", "multiball", "gate", "spinner", "deathsquare",
+            "outerwall", "mouseconnect", "timeperupdate");
     private static final Pattern AXES = Pattern.compile("[XYZ]{2}", Pattern.CASE_INSENSITIVE);
     private static final Pattern WORD = Pattern.compile("[A-Za-z][A-Za-z0-9_]*");
     private static final Pattern HEX_COLOUR = Pattern.compile("#[0-9a-fA-F]{6}");
@@ -270,24 +277,23 @@ final class CommandParser {
     }
 
     /**
-     * Why a first word is not known: a gizmo or command of another implementation's extension, an MIT 3-D gizmo,
-     * or simply unknown.
+     * Why a first word is not known: a command of another implementation's extension, an MIT 3-D gizmo, or an
+     * unknown command, with the nearest command of the format when the word is close to one (a misspelling).
      */
     private static Refusal unknownCommand(List<String> words) {
         String word = words.get(0);
+        String lowerCase = word.toLowerCase(Locale.ROOT);
         List<String> args = words.subList(1, words.size());
-        if (MIT_3D_GIZMOS.contains(word.toLowerCase(Locale.ROOT)) && args.size() == 5
-                && allNumbers(args.subList(1, 5))) {
+        if (MIT_3D_GIZMOS.contains(lowerCase) && args.size() == 5 && allNumbers(args.subList(1, 5))) {
             return mit3d("a gizmo with x y z and a size");
         }
-        if (WORD.matcher(word).matches() && word.toLowerCase(Locale.ROOT).endsWith("connect")) {
-            return new Refusal(word + ": " + EXTENSION);
+        if (PEER_EXTENSIONS.contains(lowerCase)) {
+            boolean named = !args.isEmpty() && Decimals.parse(args.get(0)).isEmpty()
+                    && WORD.matcher(word).matches() && !lowerCase.endsWith("connect");
+            return new Refusal((named ? word + " " + args.get(0) : word) + ": " + EXTENSION);
         }
-        if (WORD.matcher(word).matches() && !args.isEmpty() && Decimals.parse(args.get(0)).isEmpty()
-                && allNumbers(args.subList(1, args.size()))) {
-            return new Refusal(word + " " + args.get(0) + ": " + EXTENSION);
-        }
-        return new Refusal("unknown command '" + word + "'");
+        return new Refusal("unknown command '" + word + "'"
+                + NearestWord.among(word, CommandWord.spellings()).map(w -> " (did you mean " + w + "?)").orElse(""));
     }
 
     private static boolean allNumbers(List<String> words) {

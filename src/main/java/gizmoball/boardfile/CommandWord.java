@@ -2,6 +2,7 @@ package gizmoball.boardfile;
 
 import gizmoball.model.gizmo.GizmoKind;
 import java.util.Arrays;
+import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
@@ -65,6 +66,11 @@ enum CommandWord {
         this.kind = kind;
         this.ours = ours;
         this.usage = (ours ? OURS : "") + spelling + " " + arguments;
+    }
+
+    /** The canonical spellings of all the commands (for the nearest one to a misspelling). */
+    static List<String> spellings() {
+        return Arrays.stream(values()).map(CommandWord::spelling).toList();
     }
 
     /** The command that adds a gizmo of that kind. */
