@@ -4,7 +4,7 @@ import gizmoball.model.BenchSwitches;
 import gizmoball.model.Board;
 import gizmoball.model.Invariants;
 import gizmoball.model.gizmo.Gizmo;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -37,7 +37,7 @@ final class ModelStepper implements Stepper {
     @Override
     public List<BallState> balls() {
         List<BallState> balls = new ArrayList<>();
-        for (Ball b : board.balls()) {
+        for (BallView b : board.balls()) {
             balls.add(new BallState(b.position(), b.velocity(), b.radius(), b.isCaptured()));
         }
         return balls;

@@ -2,7 +2,7 @@ package gizmoball.bench;
 
 import gizmoball.model.Board;
 import gizmoball.model.gizmo.Gizmo;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import physics.Vect;
 
 import java.util.ArrayList;
@@ -28,7 +28,7 @@ final class NaiveStepper implements Stepper {
     private final double[] radius;
 
     NaiveStepper(Board scene) {
-        List<Ball> balls = scene.balls();
+        List<BallView> balls = scene.balls();
         int n = balls.size();
         x = new double[n];
         y = new double[n];
@@ -37,7 +37,7 @@ final class NaiveStepper implements Stepper {
         radius = new double[n];
         gizmosOnly = scene.copy();
         for (int i = 0; i < n; i++) {
-            Ball b = balls.get(i);
+            BallView b = balls.get(i);
             x[i] = b.position().x();
             y[i] = b.position().y();
             vx[i] = b.velocity().x();

@@ -2,7 +2,7 @@ package gizmoball.bench;
 
 import gizmoball.boardfile.BoardFiles;
 import gizmoball.model.Board;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.preview.Prediction;
 import gizmoball.preview.Predictor;
 import java.io.IOException;
@@ -47,7 +47,7 @@ final class PreviewCost {
             } catch (Exception e) {
                 throw new IOException("cannot load " + file + ": " + e.getMessage(), e);
             }
-            List<Ball> balls = board.balls();
+            List<BallView> balls = board.balls();
             if (balls.isEmpty()) {
                 continue;
             }
@@ -60,7 +60,7 @@ final class PreviewCost {
             double shortestSlice = Predictor.HORIZON_SECONDS;
             int k = 0;
             for (int s = 0; s < samples; s++) {
-                for (Ball ball : balls) {
+                for (BallView ball : balls) {
                     long cpuStart = THREADS.getCurrentThreadCpuTime();
                     long start = System.nanoTime();
                     predictor.predict(board, ball.name(), Predictor.HORIZON_SECONDS, Board.DEFAULT_TICK, Long.MAX_VALUE);

@@ -5,7 +5,7 @@ import gizmoball.boardfile.BoardFiles;
 import gizmoball.boardfile.LoadResult;
 import gizmoball.model.Board;
 import gizmoball.model.gizmo.GizmoKind;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.GuardCounts;
 import gizmoball.model.loop.PlayEvent;
 import gizmoball.model.loop.Stage;
@@ -345,7 +345,7 @@ final class SteadyState {
             empty.tick(DT);
         }
         int asleepAfterSettle = pile.lastTick().ballsAsleep();
-        List<Vect> settled = pile.balls().stream().map(Ball::position).toList();
+        List<Vect> settled = pile.balls().stream().map(BallView::position).toList();
         int block = 1_000;
         long pileNanos = 0;
         long emptyNanos = 0;

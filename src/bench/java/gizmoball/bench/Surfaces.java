@@ -1,8 +1,8 @@
 package gizmoball.bench;
 
 import gizmoball.model.Board;
-import gizmoball.model.gizmo.Bumper;
-import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.BumperView;
+import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
 import physics.Vect;
 
@@ -24,10 +24,10 @@ final class Surfaces {
 
     /** Nearest point of a gizmo's solid; absorbers are not solids here (they capture on contact). */
     static Nearest nearest(Gizmo g, double px, double py) {
-        if (g instanceof Flipper f) {
+        if (g instanceof FlipperView f) {
             return fromSegment(f.pivot(), f.tip(), px, py, f.radius());
         }
-        if (g instanceof Bumper b) {
+        if (g instanceof BumperView b) {
             List<Vect> outline = b.outline();
             if (outline.isEmpty()) {
                 Vect c = b.circle().getCenter();

@@ -2,10 +2,11 @@ package gizmoball.boardfile;
 
 import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
-import gizmoball.model.gizmo.Absorber;
-import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.game.GameRules;
+import gizmoball.model.gizmo.AbsorberView;
+import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import java.util.ArrayList;
 import java.util.Collections;
@@ -14,8 +15,10 @@ import java.util.stream.Collectors;
 
 /**
  * The canonical form of a board: one command per line, gizmos (in the board's order), then rotations, the
- * colours of gizmos that have their own, the play state of flippers play has moved, balls, connections, key bindings, gravity and friction. Reading it back
- * gives an equal board.
+ * colours of gizmos that have their own, the play state of flippers play has moved, balls, connections, key bindings,
+ * gravity and friction, then the game: balls per game, the extra-ball score, the drains and the gizmos' own points
+ * (each only where the board has it, so a board without them is written as the standard format has it). Reading it
+ * back gives an equal board.
  */
 final class BoardWriter {
 
@@ -29,7 +32,7 @@ final class BoardWriter {
     static List<Command> commands(Board board) {
         List<Command> commands = new ArrayList<>();
         for (Gizmo gizmo : board.gizmos()) {
-            commands.add(gizmo instanceof Absorber
+            commands.add(gizmo instanceof AbsorberView
                     ? new Command.AddAbsorber(gizmo.name(), gizmo.x(), gizmo.y(),
                             gizmo.x() + gizmo.width(), gizmo.y() + gizmo.height())
                     : new Command.AddGizmo(gizmo.kind(), gizmo.name(), gizmo.x(), gizmo.y()));
@@ -42,11 +45,11 @@ final class BoardWriter {
         }
         for (Gizmo gizmo : board.gizmos()) {
             // Only where play moved it: a board as built is written as before, and other implementations skip it.
-            if (gizmo instanceof Flipper flipper && (flipper.angleFromRest() != 0 || flipper.isActive())) {
+            if (gizmo instanceof FlipperView flipper && (flipper.angleFromRest() != 0 || flipper.isActive())) {
                 commands.add(new Command.FlipperState(flipper.name(), flipper.angleFromRest(), flipper.isActive()));
             }
         }
-        for (Ball ball : board.balls()) {
+        for (BallView ball : board.balls()) {
             // A captured ball sits at its absorber's corner with no velocity; written there, it is captured again.
             commands.add(new Command.AddBall(ball.name(), ball.position().x(), ball.position().y(),
                     ball.velocity().x(), ball.velocity().y()));
@@ -59,6 +62,21 @@ final class BoardWriter {
         }
         commands.add(new Command.Gravity(board.gravity()));
         commands.add(new Command.Friction(board.mu(), board.mu2()));
+        commands.addAll(game(board));
+        return commands;
+    }
+
+    private static List<Command> game(Board board) {
+        GameRules rules = board.gameRules();
+        List<Command> commands = new ArrayList<>();
+        if (rules.isGame() || rules.ballsPerGame() != GameRules.DEFAULT_BALLS) {
+            commands.add(new Command.BallsPerGame(rules.ballsPerGame()));
+        }
+        rules.extraBallAt().ifPresent(score -> commands.add(new Command.ExtraBall(score)));
+        board.gizmos().stream().filter(g -> rules.isDrain(g.name()))
+                .forEach(g -> commands.add(new Command.Drain(g.name())));
+        board.gizmos().stream().filter(g -> rules.ownPoints().containsKey(g.name()))
+                .forEach(g -> commands.add(new Command.Points(g.name(), rules.ownPoints().get(g.name()))));
         return commands;
     }
 }

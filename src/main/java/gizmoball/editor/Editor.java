@@ -8,7 +8,7 @@ import gizmoball.model.KeyEdge;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.TriggerSource;
 import java.awt.event.KeyEvent;
 import java.util.ArrayList;
@@ -138,7 +138,7 @@ public final class Editor {
         return selected().flatMap(board::gizmo);
     }
 
-    public Optional<Ball> selectedBall() {
+    public Optional<BallView> selectedBall() {
         return selected().flatMap(board::ball);
     }
 
@@ -261,12 +261,12 @@ public final class Editor {
 
     /** Sets a ball's centre and velocity (one undo step); the ball keeps its place in the board's order. */
     public boolean setBall(String name, double x, double y, double vx, double vy) {
-        Optional<Ball> ball = board.ball(name);
+        Optional<BallView> ball = board.ball(name);
         if (ball.isEmpty()) {
             say("No ball named " + name);
             return false;
         }
-        Ball b0 = ball.get();
+        BallView b0 = ball.get();
         boolean samePlace = b0.position().x() == x && b0.position().y() == y;
         boolean sameVelocity = b0.velocity().x() == vx && b0.velocity().y() == vy;
         if (samePlace && sameVelocity) {
@@ -428,7 +428,7 @@ public final class Editor {
     /** Moves the selected gizmo one cell, or the selected ball a quarter cell, in the direction (dx, dy). */
     public boolean nudgeSelected(int dx, int dy) {
         Optional<Gizmo> gizmo = selectedGizmo();
-        Optional<Ball> ball = selectedBall();
+        Optional<BallView> ball = selectedBall();
         if (gizmo.isPresent()) {
             Gizmo g = gizmo.get();
             int x = g.x() + dx;
@@ -436,7 +436,7 @@ public final class Editor {
             return edit("Moved " + g.name() + " to (" + x + "," + y + ")", b -> b.moveGizmo(g.name(), x, y));
         }
         if (ball.isPresent()) {
-            Ball b0 = ball.get();
+            BallView b0 = ball.get();
             double x = b0.position().x() + dx * BALL_SNAP;
             double y = b0.position().y() + dy * BALL_SNAP;
             return edit("Moved " + b0.name() + " to (" + x + ", " + y + ")", b -> b.moveBall(b0.name(), x, y));
@@ -527,7 +527,7 @@ public final class Editor {
         return board.gizmoAt(cell(x), cell(y));
     }
 
-    Optional<Ball> ballNear(double x, double y) {
+    Optional<BallView> ballNear(double x, double y) {
         return board.balls().stream()
                 .filter(b -> Math.hypot(b.position().x() - x, b.position().y() - y) <= BALL_PICK_DISTANCE)
                 .min(Comparator.comparingDouble(b -> Math.hypot(b.position().x() - x, b.position().y() - y)));
@@ -535,7 +535,7 @@ public final class Editor {
 
     /** The name of the ball or else the gizmo under the point: a ball first, as it may sit on a gizmo's cell. */
     Optional<String> ballOrGizmoAt(double x, double y) {
-        return ballNear(x, y).map(Ball::name).or(() -> gizmoAt(x, y).map(Gizmo::name));
+        return ballNear(x, y).map(BallView::name).or(() -> gizmoAt(x, y).map(Gizmo::name));
     }
 
     boolean isWall(double x, double y) {

@@ -1,7 +1,7 @@
 package gizmoball.editor;
 
 import gizmoball.model.gizmo.Gizmo;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.TriggerSource;
 
 /**
@@ -24,7 +24,7 @@ public sealed interface PendingStep {
     record MovingGizmo(Gizmo gizmo, int grabDx, int grabDy) implements PendingStep { }
 
     /** Select: dragging a ball grabbed at (pressX, pressY). */
-    record MovingBall(Ball ball, double pressX, double pressY) implements PendingStep { }
+    record MovingBall(BallView ball, double pressX, double pressY) implements PendingStep { }
 
     /** Connect or Disconnect: the source (a gizmo or the outer walls) is chosen, the target is next. */
     record ConnectingFrom(TriggerSource source) implements PendingStep { }

@@ -1,7 +1,7 @@
 package gizmoball.editor;
 
 import gizmoball.model.gizmo.Gizmo;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.TriggerSource;
 import java.util.Optional;
 
@@ -20,7 +20,7 @@ final class SelectTool implements ToolHandler {
 
     @Override
     public void press(double x, double y) {
-        Optional<Ball> ball = editor.ballNear(x, y);
+        Optional<BallView> ball = editor.ballNear(x, y);
         Optional<Gizmo> gizmo = editor.gizmoAt(x, y);
         if (ball.isPresent()) {
             editor.selectQuietly(ball.get().name());
@@ -67,7 +67,7 @@ final class SelectTool implements ToolHandler {
         }
         if (editor.step() instanceof PendingStep.MovingBall m
                 && Math.hypot(x - m.pressX(), y - m.pressY()) >= Editor.DRAG_THRESHOLD) {
-            Ball ball = m.ball();
+            BallView ball = m.ball();
             double tx = Editor.snap(ball.position().x() + x - m.pressX());
             double ty = Editor.snap(ball.position().y() + y - m.pressY());
             return new Preview.BallPlacement(tx, ty, ball.velocity().x(), ball.velocity().y(),

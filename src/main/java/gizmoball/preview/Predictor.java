@@ -1,7 +1,7 @@
 package gizmoball.preview;
 
 import gizmoball.model.Board;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import gizmoball.model.loop.PlayEvent;
 import gizmoball.model.loop.Struck;
@@ -87,7 +87,7 @@ public final class Predictor {
                 for (PlayEvent event : copy.lastTick().events()) {
                     captured |= hitBy(event);
                 }
-                Ball b = copy.ball(ball).orElseThrow();
+                BallView b = copy.ball(ball).orElseThrow();
                 path.add(new Prediction.Point(b.position(), !b.isCaptured() && !captured));
             }
             return new Prediction(ball, path, collisions, trigger, (path.size() - 1) * dt, !isDone());
@@ -120,7 +120,7 @@ public final class Predictor {
             return event instanceof PlayEvent.Captured;
         }
 
-        private static Prediction.Point point(Ball b) {
+        private static Prediction.Point point(BallView b) {
             return new Prediction.Point(b.position(), !b.isCaptured());
         }
     }

@@ -3,7 +3,7 @@ package gizmoball.view;
 import gizmoball.model.Board;
 import gizmoball.model.BoardChange;
 import gizmoball.model.BoardObserver;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Graphics2D;
@@ -64,7 +64,7 @@ public final class BallTrails implements BoardOverlay {
             return;
         }
         trails.keySet().removeIf(name -> b.ball(name).isEmpty());
-        for (Ball ball : b.balls()) {
+        for (BallView ball : b.balls()) {
             if (ball.isCaptured()) {
                 trails.remove(ball.name());
                 continue;

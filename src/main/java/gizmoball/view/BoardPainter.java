@@ -1,11 +1,11 @@
 package gizmoball.view;
 
 import gizmoball.model.Board;
-import gizmoball.model.gizmo.Bumper;
-import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.BumperView;
+import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
@@ -80,7 +80,7 @@ public final class BoardPainter {
                 paintGrid(g, pixel);
             }
             for (Gizmo gizmo : board.gizmos()) {
-                if (!(gizmo instanceof Flipper)) {
+                if (!(gizmo instanceof FlipperView)) {
                     paintShape(g, shapeOf(gizmo), colourOf(gizmo), pixel);
                 }
             }
@@ -102,15 +102,15 @@ public final class BoardPainter {
                 double glow = flash(board.time() - gizmo.lastTriggeredAt());
                 Color fill = lit(colourOf(gizmo), glow);
                 if (glow > 0) {
-                    paintHalo(g, gizmo instanceof Flipper flipper ? outline(flipper) : shapeOf(gizmo), glow);
+                    paintHalo(g, gizmo instanceof FlipperView flipper ? outline(flipper) : shapeOf(gizmo), glow);
                 }
-                if (gizmo instanceof Flipper flipper) {
+                if (gizmo instanceof FlipperView flipper) {
                     paintFlipper(g, flipper, fill, pixel);
                 } else if (glow > 0) {
                     paintShape(g, shapeOf(gizmo), fill, pixel);
                 }
             }
-            for (Ball ball : board.balls()) {
+            for (BallView ball : board.balls()) {
                 paintShape(g, circle(new Circle(ball.position(), ball.radius())), BALL, pixel);
             }
             paintHeldCounts(g, board);
@@ -121,8 +121,8 @@ public final class BoardPainter {
 
     /** Balls held by an absorber all sit in its corner, one on another: the top one shows how many there are. */
     private static void paintHeldCounts(Graphics2D g, Board board) {
-        Map<Vect, Long> held = board.balls().stream().filter(Ball::isCaptured)
-                .collect(Collectors.groupingBy(Ball::position, LinkedHashMap::new, Collectors.counting()));
+        Map<Vect, Long> held = board.balls().stream().filter(BallView::isCaptured)
+                .collect(Collectors.groupingBy(BallView::position, LinkedHashMap::new, Collectors.counting()));
         Font font = new Font(Font.SANS_SERIF, Font.BOLD, 1).deriveFont(HELD_COUNT_FONT);
         g.setColor(HELD_COUNT);
         held.forEach((at, count) -> {
@@ -152,7 +152,7 @@ public final class BoardPainter {
     }
 
     private static Shape shapeOf(Gizmo gizmo) {
-        if (gizmo instanceof Bumper bumper) {
+        if (gizmo instanceof BumperView bumper) {
             return bumper.kind() == GizmoKind.CIRCLE ? circle(bumper.circle()) : polygon(bumper.outline());
         }
         return new Rectangle2D.Double(gizmo.x(), gizmo.y(), gizmo.width(), gizmo.height());
@@ -167,7 +167,7 @@ public final class BoardPainter {
         g.draw(shape);
     }
 
-    private static void paintFlipper(Graphics2D g, Flipper f, Color fill, float pixel) {
+    private static void paintFlipper(Graphics2D g, FlipperView f, Color fill, float pixel) {
         Line2D bar = new Line2D.Double(f.pivot().toPoint2D(), f.tip().toPoint2D());
         g.setColor(fill.darker());
         g.setStroke(new BasicStroke((float) (2 * f.radius()), BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
@@ -202,7 +202,7 @@ public final class BoardPainter {
     }
 
     /** The flipper's outline: its bar with round ends, as wide as the flipper. */
-    private static Shape outline(Flipper f) {
+    private static Shape outline(FlipperView f) {
         Line2D bar = new Line2D.Double(f.pivot().toPoint2D(), f.tip().toPoint2D());
         return new BasicStroke((float) (2 * f.radius()), BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND)
                 .createStrokedShape(bar);

@@ -5,7 +5,7 @@ import static org.assertj.core.api.Assertions.fail;
 
 import gizmoball.model.Board;
 import gizmoball.model.Invariants;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import java.util.List;
 import java.util.Locale;
 import org.junit.jupiter.api.Test;
@@ -63,7 +63,7 @@ class OverlappingBallsStabilityTest {
     }
 
     private static double speeds(Board board) {
-        return board.balls().stream().filter(b -> !b.isCaptured()).map(Ball::velocity)
+        return board.balls().stream().filter(b -> !b.isCaptured()).map(BallView::velocity)
                 .mapToDouble(v -> v.length()).sum();
     }
 }

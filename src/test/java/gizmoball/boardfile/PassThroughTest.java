@@ -4,7 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
 import gizmoball.model.Board;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -21,8 +21,8 @@ class PassThroughTest {
         for (int tick = 0; tick < 60; tick++) {
             board.tick(DT);
         }
-        Ball a = board.ball("A").orElseThrow();
-        Ball b = board.ball("B").orElseThrow();
+        BallView a = board.ball("A").orElseThrow();
+        BallView b = board.ball("B").orElseThrow();
         assertThat(a.velocity().x()).isEqualTo(1);
         assertThat(b.velocity().x()).isEqualTo(-1);
         assertThat(a.position().x()).isCloseTo(11, within(1e-9));

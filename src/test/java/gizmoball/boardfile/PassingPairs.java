@@ -1,7 +1,7 @@
 package gizmoball.boardfile;
 
 import gizmoball.model.Board;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Optional;
@@ -20,7 +20,7 @@ final class PassingPairs {
 
     /** The overlapping pairs of the board as loaded. */
     PassingPairs(Board board) {
-        List<Ball> free = board.balls().stream().filter(b -> !b.isCaptured()).toList();
+        List<BallView> free = board.balls().stream().filter(b -> !b.isCaptured()).toList();
         for (int i = 0; i < free.size(); i++) {
             for (int j = i + 1; j < free.size(); j++) {
                 if (overlap(free.get(i), free.get(j))) {
@@ -33,7 +33,7 @@ final class PassingPairs {
     /** Forgets the pairs that have separated (or of which a ball was captured or is gone). */
     void update(Board board) {
         pairs.removeIf(pair -> {
-            List<Ball> balls = pair.stream().map(board::ball).flatMap(Optional::stream).toList();
+            List<BallView> balls = pair.stream().map(board::ball).flatMap(Optional::stream).toList();
             return balls.size() < 2 || balls.get(0).isCaptured() || balls.get(1).isCaptured()
                     || !overlap(balls.get(0), balls.get(1));
         });
@@ -43,7 +43,7 @@ final class PassingPairs {
         return Set.copyOf(pairs);
     }
 
-    private static boolean overlap(Ball a, Ball b) {
+    private static boolean overlap(BallView a, BallView b) {
         return Math.sqrt(a.position().distanceSquared(b.position())) < 2 * Board.BALL_RADIUS - TOUCHING;
     }
 }

@@ -8,11 +8,11 @@ import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
-import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import gizmoball.model.loop.TriggerSource;
 import java.awt.event.KeyEvent;
@@ -138,7 +138,7 @@ class PeerFormsTest {
     @Test
     void aChangeKeyTogglesAFlipperAsAHitDoesAndIsSavedAsChange() throws IOException, BoardFileException {
         Board board = strict("key-spellings.txt").board();
-        Flipper right = (Flipper) board.gizmo("RF112").orElseThrow();
+        FlipperView right = (FlipperView) board.gizmo("RF112").orElseThrow();
         board.keyDown(87);
         board.keyUp(87);
         assertThat(right.isActive()).isTrue();
@@ -182,7 +182,7 @@ class PeerFormsTest {
     @Test
     void aBallWithoutVelocityStartsAtRest() throws IOException, BoardFileException {
         LoadResult result = strict("ball-at-rest.txt");
-        Ball ball = result.board().ball("B").orElseThrow();
+        BallView ball = result.board().ball("B").orElseThrow();
         assertThat(ball.position()).isEqualTo(new Vect(1, 11));
         assertThat(ball.velocity()).isEqualTo(Vect.ZERO);
         assertThat(notesOn(result, 1)).containsExactly("no velocity given: the ball starts at rest");
@@ -192,7 +192,7 @@ class PeerFormsTest {
     void ballsWithOneNameAreRenamedUniquelyButGizmosWithOneNameStayAnError() throws IOException {
         LoadResult result = BoardFiles.loadSkippingBadLines("f", fixture("duplicate-ball-names.txt"));
 
-        assertThat(result.board().balls()).extracting(Ball::name, b -> b.position().x())
+        assertThat(result.board().balls()).extracting(BallView::name, b -> b.position().x())
                 .containsExactly(tuple("B", 2.5), tuple("B_3", 4.5), tuple("B_2", 6.5), tuple("B_4", 8.5));
         assertThat(result.board().ball("B").orElseThrow().position().y()).as("Move B moves the first B").isEqualTo(5.5);
         assertThat(notesOn(result, 2)).containsExactly("ball B renamed B_3: line 1 has a ball of that name");
@@ -206,7 +206,7 @@ class PeerFormsTest {
             BoardFileException {
         LoadResult result = strict("overlapping-balls.txt");
 
-        assertThat(result.board().balls()).extracting(Ball::name).containsExactly("A", "B", "C", "D", "E");
+        assertThat(result.board().balls()).extracting(BallView::name).containsExactly("A", "B", "C", "D", "E");
         assertThat(result.notes()).extracting(BoardFileNote::line, BoardFileNote::note).containsExactly(
                 tuple(3, "ball B overlaps ball A: loaded; the two pass through each other until they separate"),
                 tuple(4, "ball C overlaps ball A: loaded; the two pass through each other until they separate"),

@@ -4,10 +4,10 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.model.Board;
 import gizmoball.model.KeyEdge;
-import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
@@ -26,12 +26,12 @@ class PlayStateRoundTripTest {
     private record State(List<String> balls, List<String> flippers) {
         static State of(Board board) {
             List<String> balls = new ArrayList<>();
-            for (Ball ball : board.balls()) {
+            for (BallView ball : board.balls()) {
                 balls.add(ball.name() + " " + ball.position() + " " + ball.velocity() + " " + ball.isCaptured());
             }
             List<String> flippers = new ArrayList<>();
             for (Gizmo gizmo : board.gizmos()) {
-                if (gizmo instanceof Flipper flipper) {
+                if (gizmo instanceof FlipperView flipper) {
                     flippers.add(flipper.name() + " " + flipper.angleFromRest() + " " + flipper.isActive());
                 }
             }

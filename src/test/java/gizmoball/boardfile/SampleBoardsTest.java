@@ -6,7 +6,7 @@ import static org.assertj.core.api.Assertions.fail;
 import gizmoball.model.Board;
 import gizmoball.model.Invariants;
 import gizmoball.model.KeyEdge;
-import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.GizmoKind;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -36,7 +36,7 @@ class SampleBoardsTest {
     @Test
     void theDefaultBoardHasKeyedFlippersAKeyedAbsorberBumperTriggersAndABall() throws Exception {
         Board board = BoardFiles.load(BOARDS.resolve("default.txt"));
-        assertThat(board.gizmos()).filteredOn(g -> g instanceof Flipper).extracting(g -> g.name())
+        assertThat(board.gizmos()).filteredOn(g -> g instanceof FlipperView).extracting(g -> g.name())
                 .containsExactly("LF", "RF");
         assertThat(board.keyBindings()).extracting(k -> k.keyCode() + " " + k.edge() + " " + k.gizmo())
                 .contains("90 DOWN LF", "90 UP LF", "47 DOWN RF", "47 UP RF", "32 DOWN A");

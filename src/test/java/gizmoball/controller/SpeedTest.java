@@ -4,7 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.boardfile.BoardFiles;
 import gizmoball.model.Board;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;
@@ -35,9 +35,9 @@ class SpeedTest {
 
     @Test
     void theSameNumberOfTicksGivesTheSamePositionsAtEverySpeed() throws Exception {
-        List<Ball> atOneX = ballsAfter(600, Speed.NORMAL);
+        List<BallView> atOneX = ballsAfter(600, Speed.NORMAL);
         for (Speed speed : Speed.values()) {
-            List<Ball> balls = ballsAfter(600, speed);
+            List<BallView> balls = ballsAfter(600, speed);
             assertThat(balls).hasSameSizeAs(atOneX);
             for (int i = 0; i < balls.size(); i++) {
                 assertThat(balls.get(i).position()).as(speed.label()).isEqualTo(atOneX.get(i).position());
@@ -47,7 +47,7 @@ class SpeedTest {
     }
 
     /** Plays multiball.txt at {@code speed} until {@code ticks} ticks have run, as the timer would. */
-    private static List<Ball> ballsAfter(int ticks, Speed speed) throws Exception {
+    private static List<BallView> ballsAfter(int ticks, Speed speed) throws Exception {
         Board board = BoardFiles.load(Path.of("boards", "multiball.txt"));
         int[] ticked = new int[1];
         board.addObserver((b, change) -> ticked[0]++);

@@ -4,11 +4,11 @@ import gizmoball.boardfile.BoardContents;
 import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
-import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import gizmoball.model.loop.TriggerSource;
 import org.junit.jupiter.api.BeforeEach;
@@ -102,7 +102,7 @@ class EditorTest {
         // (12, -9) L/s at 10 L/s per L.
         drag(5.1, 5.1, 6.3, 4.2);
 
-        Ball b = board.ball("B1").orElseThrow();
+        BallView b = board.ball("B1").orElseThrow();
         assertThat(b.position().x()).isEqualTo(5.0);
         assertThat(b.position().y()).isEqualTo(5.0);
         assertThat(b.velocity().x()).isCloseTo(12, within(1e-9));
@@ -114,7 +114,7 @@ class EditorTest {
     void aClickWithTheBallToolPlacesABallAtRestEvenOffTheSnapPoints() {
         editor.setTool(Tool.BALL);
         drag(7.37, 7.62, 7.4, 7.6);
-        Ball b = board.ball("B1").orElseThrow();
+        BallView b = board.ball("B1").orElseThrow();
         assertThat(List.of(b.position().x(), b.position().y())).containsExactly(7.25, 7.5);
         assertThat(List.of(b.velocity().x(), b.velocity().y())).containsExactly(0.0, 0.0);
     }
@@ -149,7 +149,7 @@ class EditorTest {
         editor.setTool(Tool.SELECT);
         drag(3.1, 2.9, 8.2, 10.9);
 
-        Ball b = board.ball("B1").orElseThrow();
+        BallView b = board.ball("B1").orElseThrow();
         // 3.0 + (8.2 - 3.1) = 8.1 -> 8.0;  3.0 + (10.9 - 2.9) = 11.0
         assertThat(b.position().x()).isCloseTo(8.0, within(1e-9));
         assertThat(b.position().y()).isCloseTo(11.0, within(1e-9));
@@ -313,7 +313,7 @@ class EditorTest {
         board.keyDown(KeyEvent.VK_SPACE);
         // 1080 deg/s for 0.1 s would be 108 degrees: the flipper has reached its 90-degree stop.
         board.tick(0.1);
-        Flipper lf = (Flipper) gizmo("LF1");
+        FlipperView lf = (FlipperView) gizmo("LF1");
         assertThat(lf.isActive()).isTrue();
         assertThat(lf.angleFromRest()).isCloseTo(90, within(1e-9));
     }
@@ -461,7 +461,7 @@ class EditorTest {
     void theSelectedBallsPositionAndVelocityCanBeTypedIn() {
         board.addBall("B1", 3, 3, 0, 0);
         assertThat(editor.setBall("B1", 4.5, 6, -3, 7.25)).isTrue();
-        Ball b = board.ball("B1").orElseThrow();
+        BallView b = board.ball("B1").orElseThrow();
         assertThat(List.of(b.position().x(), b.position().y(), b.velocity().x(), b.velocity().y()))
                 .containsExactly(4.5, 6.0, -3.0, 7.25);
 
@@ -480,7 +480,7 @@ class EditorTest {
         board.addBall("B1", 3, 3, 0, 0);
         board.addBall("B2", 6, 6, 0, 0);
         assertThat(editor.setBall("B1", 3, 3, 5, -5)).isTrue();
-        assertThat(board.balls()).extracting(Ball::name).containsExactly("B1", "B2");
+        assertThat(board.balls()).extracting(BallView::name).containsExactly("B1", "B2");
         assertThat(board.ball("B1").orElseThrow().velocity()).isEqualTo(new Vect(5, -5));
     }
 
@@ -680,7 +680,7 @@ class EditorTest {
         editor.setTool(Tool.BALL);
         // Snapped to (5.5, 5.0): 0.41 L from A's centre, less than the two radii.
         drag(5.6, 4.9, 5.6, 4.9);
-        assertThat(board.balls()).extracting(Ball::name).containsExactly("A", "A2");
+        assertThat(board.balls()).extracting(BallView::name).containsExactly("A", "A2");
         assertThat(lastMessage()).contains("would overlap ball A");
     }
 }

@@ -5,7 +5,7 @@ import static org.assertj.core.api.Assertions.offset;
 
 import gizmoball.boardfile.BoardFiles;
 import gizmoball.model.Board;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.PrintStream;
@@ -47,7 +47,7 @@ class HeadlessRunnerTest {
 
         assertThat(run("--headless", "--ticks", "60", "--dt", String.valueOf(1.0 / 120), file.toString())).isZero();
 
-        Ball ball = BoardFiles.load("stdout", stdout()).ball("B").orElseThrow();
+        BallView ball = BoardFiles.load("stdout", stdout()).ball("B").orElseThrow();
         assertThat(ball.position().x()).isCloseTo(7.0, offset(1e-9));
         assertThat(ball.position().y()).isCloseTo(4.0, offset(1e-9));
         assertThat(ball.velocity().x()).isEqualTo(4.0);
@@ -77,11 +77,11 @@ class HeadlessRunnerTest {
 
     @Test
     void aBadBoardExitsTwoWithEveryBadLineOnStandardError() throws Exception {
-        Path file = board("Square S 1 1\nSquare S 2 2\nBumper X 1 1\n");
+        Path file = board("Square S 1 1\nSquare S 2 2\nSpinner X 1 1\n");
         assertThat(run("--headless", "--ticks", "10", file.toString())).isEqualTo(HeadlessRunner.BAD_INPUT);
         assertThat(stdout()).isEmpty();
         assertThat(stderr()).contains(file + ":2: name S is already used: Square S 2 2",
-                file + ":3: Bumper X: an extension of another implementation, not part of the format: Bumper X 1 1");
+                file + ":3: Spinner X: an extension of another implementation, not part of the format: Spinner X 1 1");
     }
 
     @Test

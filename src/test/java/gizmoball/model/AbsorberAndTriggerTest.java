@@ -4,9 +4,9 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.within;
 
-import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.GizmoKind;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.TriggerSource;
 
 import org.junit.jupiter.api.Test;
@@ -35,7 +35,7 @@ class AbsorberAndTriggerTest {
         Board board = boardWithAbsorber();
         board.addBall("B", 6, 10, 2, 0);
         tickUntilCaptured(board, "B");
-        Ball ball = board.ball("B").orElseThrow();
+        BallView ball = board.ball("B").orElseThrow();
         assertThat(ball.position()).isEqualTo(new Vect(19.75, 19.75));
         assertThat(ball.velocity()).isEqualTo(Vect.ZERO);
         assertThat(board.gizmo("A").orElseThrow().lastTriggeredAt()).isFinite();
@@ -57,7 +57,7 @@ class AbsorberAndTriggerTest {
         Board board = boardWithAbsorber();
         board.addBall("B", 5, 19, 0, 0);
         board.addBall("C", 8, 19, 0, 0);
-        assertThat(board.balls()).allMatch(Ball::isCaptured);
+        assertThat(board.balls()).allMatch(BallView::isCaptured);
         board.trigger("A");
         assertThat(board.ball("B").orElseThrow().isCaptured()).isFalse();
         assertThat(board.ball("C").orElseThrow().isCaptured()).isTrue();
@@ -82,7 +82,7 @@ class AbsorberAndTriggerTest {
         boolean firedUp = false;
         for (int i = 0; i < 120; i++) {
             board.tick(DT);
-            Ball ball = board.ball("B").orElseThrow();
+            BallView ball = board.ball("B").orElseThrow();
             assertThat(ball.isCaptured()).as("tick %d", i).isFalse();
             lowest = Math.max(lowest, ball.position().y());
             firedUp |= ball.velocity().y() < -45 && ball.position().x() == 19.75;
@@ -108,7 +108,7 @@ class AbsorberAndTriggerTest {
         board.addGizmo(GizmoKind.LEFT_FLIPPER, "F", 2, 2);
         board.connect(TriggerSource.gizmo("S"), "F");
         board.addBall("B", 10.5, 8, 0, 0);
-        Flipper flipper = (Flipper) board.gizmo("F").orElseThrow();
+        FlipperView flipper = (FlipperView) board.gizmo("F").orElseThrow();
         for (int i = 0; i < 60 && !flipper.isActive(); i++) {
             board.tick(DT);
         }
@@ -124,7 +124,7 @@ class AbsorberAndTriggerTest {
         board.connect(TriggerSource.OUTER_WALLS, "F");
         board.addBall("B", 19.5, 10, 30, 0);   // reaches the wall at x = 19.75 after 1/120 s
         board.tick(DT);
-        assertThat(((Flipper) board.gizmo("F").orElseThrow()).isActive()).isTrue();
+        assertThat(((FlipperView) board.gizmo("F").orElseThrow()).isActive()).isTrue();
     }
 
     @Test
@@ -135,7 +135,7 @@ class AbsorberAndTriggerTest {
         board.bindKey(32, KeyEdge.DOWN, "F");
         board.bindKey(32, KeyEdge.UP, "F");
         board.bindKey(10, KeyEdge.DOWN, "A");
-        Flipper flipper = (Flipper) board.gizmo("F").orElseThrow();
+        FlipperView flipper = (FlipperView) board.gizmo("F").orElseThrow();
         board.keyDown(32);
         assertThat(flipper.isActive()).isTrue();
         board.keyDown(32);   // auto-repeat: still up
@@ -153,7 +153,7 @@ class AbsorberAndTriggerTest {
     void triggeringAFlipperTogglesIt() {
         Board board = new Board();
         board.addGizmo(GizmoKind.RIGHT_FLIPPER, "F", 2, 2);
-        Flipper flipper = (Flipper) board.gizmo("F").orElseThrow();
+        FlipperView flipper = (FlipperView) board.gizmo("F").orElseThrow();
         board.trigger("F");
         assertThat(flipper.isActive()).isTrue();
         board.trigger("F");
@@ -167,7 +167,7 @@ class AbsorberAndTriggerTest {
     void aFlipperReachesNinetyDegreesAfterExactlyATwelfthOfASecondAndStops() {
         Board board = new Board();
         board.addGizmo(GizmoKind.LEFT_FLIPPER, "F", 4, 6);
-        Flipper flipper = (Flipper) board.gizmo("F").orElseThrow();
+        FlipperView flipper = (FlipperView) board.gizmo("F").orElseThrow();
         board.keyDown(1);   // unbound
         board.trigger("F");
         for (int i = 1; i <= 4; i++) {
@@ -195,7 +195,7 @@ class AbsorberAndTriggerTest {
     void aRightFlipperSwingsTheMirrorWay() {
         Board board = new Board();
         board.addGizmo(GizmoKind.RIGHT_FLIPPER, "F", 4, 6);
-        Flipper flipper = (Flipper) board.gizmo("F").orElseThrow();
+        FlipperView flipper = (FlipperView) board.gizmo("F").orElseThrow();
         board.trigger("F");
         board.tick(DT * 2.5);   // 45 degrees: the tip is 1.5 L from the pivot, down and to the left
         Vect offset = flipper.tip().minus(flipper.pivot());

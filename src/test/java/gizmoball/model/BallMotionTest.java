@@ -4,7 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
 import gizmoball.model.gizmo.GizmoKind;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.LoopMode;
 
 import java.util.ArrayList;
@@ -38,7 +38,7 @@ class BallMotionTest {
         }
         // stage 1 first: v_k = vy0 + k g dt, and the ball moves v_k dt in tick k, so
         // y_n = y0 + n vy0 dt + g dt^2 n(n+1)/2
-        Ball ball = board.ball("B").orElseThrow();
+        BallView ball = board.ball("B").orElseThrow();
         assertThat(ball.velocity().y()).isCloseTo(vy0 + n * g * DT, within(1e-9));
         assertThat(ball.velocity().x()).isCloseTo(vx, within(1e-12));
         assertThat(ball.position().y()).isCloseTo(y0 + n * vy0 * DT + g * DT * DT * n * (n + 1) / 2.0, within(1e-9));
@@ -61,7 +61,7 @@ class BallMotionTest {
             speed = speed * (1 - mu * DT - mu2 * speed * DT);
             travelled += speed * DT;
         }
-        Ball ball = board.ball("B").orElseThrow();
+        BallView ball = board.ball("B").orElseThrow();
         assertThat(ball.velocity().length()).isCloseTo(speed, within(1e-9));
         assertThat(ball.velocity().x() / ball.velocity().y()).isCloseTo(12.0 / 5, within(1e-12));
         assertThat(ball.position().minus(new Vect(2, 10)).length()).isCloseTo(travelled, within(1e-9));
@@ -85,7 +85,7 @@ class BallMotionTest {
         board.addBall("B", 3.3, 8.1, vx, vy);
         for (int i = 1; i <= 600; i++) {
             board.tick(DT);
-            Ball ball = board.ball("B").orElseThrow();
+            BallView ball = board.ball("B").orElseThrow();
             double t = i * DT;
             assertThat(ball.position().x()).as("tick %d", i).isCloseTo(folded(3.3, vx, t), within(1e-9));
             assertThat(ball.position().y()).as("tick %d", i).isCloseTo(folded(8.1, vy, t), within(1e-9));
@@ -142,7 +142,7 @@ class BallMotionTest {
         double maxVy = 2;
         for (int i = 0; i < 100_000; i++) {
             board.tick(DT);
-            for (Ball ball : board.balls()) {
+            for (BallView ball : board.balls()) {
                 maxVy = Math.max(maxVy, Math.abs(ball.velocity().y()));
             }
             assertThat(board.energy()).as("tick %d", i).isLessThanOrEqualTo(e0 + g * DT * 2 * maxVy + 1e-9);
@@ -160,7 +160,7 @@ class BallMotionTest {
         double previousVy = 0;
         for (int i = 0; i < 60 * 60; i++) {
             board.tick(DT);
-            Ball ball = board.ball("B").orElseThrow();
+            BallView ball = board.ball("B").orElseThrow();
             if (previousVy < 0 && ball.velocity().y() >= 0) {
                 apexes.add(ball.position().y());
             }

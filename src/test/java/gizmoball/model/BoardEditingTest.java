@@ -3,11 +3,11 @@ package gizmoball.model;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import gizmoball.model.gizmo.Bumper;
-import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.BumperView;
+import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import gizmoball.model.loop.TriggerSource;
 
@@ -62,7 +62,7 @@ class BoardEditingTest {
     @Test
     void aBallPlacedOnAnAbsorberIsCapturedAtItsBottomRightCorner() {
         Board board = sample();
-        Ball ball = board.ball("B2").orElseThrow();
+        BallView ball = board.ball("B2").orElseThrow();
         assertThat(ball.isCaptured()).isTrue();
         assertThat(ball.position()).isEqualTo(new Vect(20 - 0.25, 20 - 0.25));
         assertThat(ball.velocity()).isEqualTo(Vect.ZERO);
@@ -84,7 +84,7 @@ class BoardEditingTest {
     void triangleCornersTurnClockwiseAboutTheCellCentre() {
         Board board = new Board();
         board.addGizmo(GizmoKind.TRIANGLE, "T", 3, 4);
-        Bumper triangle = (Bumper) board.gizmo("T").orElseThrow();
+        BumperView triangle = (BumperView) board.gizmo("T").orElseThrow();
         assertThat(triangle.outline()).containsExactly(new Vect(3, 4), new Vect(4, 4), new Vect(3, 5));
         board.rotate("T");
         assertThat(triangle.rotation()).isEqualTo(1);
@@ -99,10 +99,10 @@ class BoardEditingTest {
     @Test
     void squareOutlineAndCircleShape() {
         Board board = sample();
-        Bumper square = (Bumper) board.gizmo("S1").orElseThrow();
+        BumperView square = (BumperView) board.gizmo("S1").orElseThrow();
         assertThat(square.outline()).containsExactly(new Vect(2, 3), new Vect(3, 3), new Vect(3, 4), new Vect(2, 4));
         assertThatThrownBy(square::circle).isInstanceOf(IllegalStateException.class);
-        Bumper circle = (Bumper) board.gizmo("C1").orElseThrow();
+        BumperView circle = (BumperView) board.gizmo("C1").orElseThrow();
         assertThat(circle.outline()).isEmpty();
         assertThat(circle.circle().getCenter()).isEqualTo(new Vect(5.5, 5.5));
         assertThat(circle.circle().getRadius()).isEqualTo(0.5);
@@ -115,8 +115,8 @@ class BoardEditingTest {
         Board board = new Board();
         board.addGizmo(GizmoKind.LEFT_FLIPPER, "L", 4, 6);
         board.addGizmo(GizmoKind.RIGHT_FLIPPER, "R", 8, 6);
-        Flipper left = (Flipper) board.gizmo("L").orElseThrow();
-        Flipper right = (Flipper) board.gizmo("R").orElseThrow();
+        FlipperView left = (FlipperView) board.gizmo("L").orElseThrow();
+        FlipperView right = (FlipperView) board.gizmo("R").orElseThrow();
         assertThat(left.pivot()).isEqualTo(new Vect(4.25, 6.25));
         assertThat(left.tip()).isEqualTo(new Vect(4.25, 7.75));
         assertThat(right.pivot()).isEqualTo(new Vect(9.75, 6.25));
@@ -154,8 +154,8 @@ class BoardEditingTest {
         Board board = sample();
         board.addBall("B3", 10.5, 6.5, 0, 0);
         board.setBallVelocity("B1", -7, 2.5);
-        assertThat(board.balls()).extracting(Ball::name).containsExactly("B1", "B2", "B3");
-        Ball ball = board.ball("B1").orElseThrow();
+        assertThat(board.balls()).extracting(BallView::name).containsExactly("B1", "B2", "B3");
+        BallView ball = board.ball("B1").orElseThrow();
         assertThat(ball.position()).isEqualTo(new Vect(1.5, 1.5));
         assertThat(ball.velocity()).isEqualTo(new Vect(-7, 2.5));
         // B2 is held by the absorber: zero is its only velocity.
@@ -175,7 +175,7 @@ class BoardEditingTest {
         board.moveGizmo("A", 0, 17);
         assertThat(board.ball("B2").orElseThrow().position()).isEqualTo(new Vect(19.75, 18.75));
         board.moveBall("B2", 10, 13);
-        Ball ball = board.ball("B2").orElseThrow();
+        BallView ball = board.ball("B2").orElseThrow();
         assertThat(ball.isCaptured()).isFalse();
         assertThat(ball.position()).isEqualTo(new Vect(10, 13));
         board.moveBall("B2", 3, 18.5);
@@ -184,7 +184,7 @@ class BoardEditingTest {
         board.moveGizmo("S1", 0, 0);
         assertThat(board.gizmoAt(0, 0)).map(Gizmo::name).contains("S1");
         assertThat(board.gizmoAt(2, 3)).isEmpty();
-        assertThat(((Bumper) board.gizmo("S1").orElseThrow()).outline()).first().isEqualTo(new Vect(0, 0));
+        assertThat(((BumperView) board.gizmo("S1").orElseThrow()).outline()).first().isEqualTo(new Vect(0, 0));
     }
 
     @Test
@@ -361,6 +361,6 @@ class BoardEditingTest {
         Vect point = new Vect(x, y);
         return board.balls().stream()
                 .filter(b -> b.position().distanceSquared(point) <= b.radius() * b.radius())
-                .map(Ball::name).toList();
+                .map(BallView::name).toList();
     }
 }

@@ -3,7 +3,7 @@ package gizmoball.model;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
 
@@ -56,7 +56,7 @@ class BoardFileDialectSupportTest {
         board.addBall("B", 4, 19.5, 0, 0);
         board.bindKey(70, KeyEdge.CHANGE, "F");
         board.bindKey(65, KeyEdge.CHANGE, "A");
-        Flipper flipper = (Flipper) board.gizmo("F").orElseThrow();
+        FlipperView flipper = (FlipperView) board.gizmo("F").orElseThrow();
         board.keyDown(70);
         assertThat(flipper.isActive()).isTrue();
         board.keyUp(70);   // a release does nothing: the press was the trigger

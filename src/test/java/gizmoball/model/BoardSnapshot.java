@@ -1,6 +1,6 @@
 package gizmoball.model;
 
-import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.FlipperView;
 
 import java.util.stream.Collectors;
 
@@ -13,7 +13,7 @@ final class BoardSnapshot {
         String gizmos = board.gizmos().stream().map(g -> {
             String base = g.kind() + " " + g.name() + " " + g.x() + "," + g.y() + " " + g.width() + "x" + g.height()
                     + " r" + g.rotation() + " t" + g.lastTriggeredAt();
-            if (g instanceof Flipper f) {
+            if (g instanceof FlipperView f) {
                 base += " angle " + f.angleFromRest() + " active " + f.isActive();
             }
             return base;

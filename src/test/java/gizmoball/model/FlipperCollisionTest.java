@@ -3,9 +3,9 @@ package gizmoball.model;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
-import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.GizmoKind;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.LoopMode;
 
 import java.util.Random;
@@ -34,7 +34,7 @@ class FlipperCollisionTest {
         board.tick(DT);
         board.bindKey(32, KeyEdge.DOWN, "F");
         board.keyDown(32);
-        Flipper flipper = (Flipper) board.gizmo("F").orElseThrow();
+        FlipperView flipper = (FlipperView) board.gizmo("F").orElseThrow();
         double fastestUp = 0;
         for (int i = 0; i < 20; i++) {
             board.tick(DT);
@@ -92,7 +92,7 @@ class FlipperCollisionTest {
             }
         }
         // the bounce tick: gravity first (v + g dt), then the bounce keeps 0.95 of it, reversed
-        Ball ball = board.ball("B").orElseThrow();
+        BallView ball = board.ball("B").orElseThrow();
         assertThat(ball.velocity().y()).isCloseTo(-0.95 * (before + board.gravity() * DT), within(1e-9));
         assertThat(ball.velocity().x()).isCloseTo(0, within(1e-12));
     }
@@ -120,7 +120,7 @@ class FlipperCollisionTest {
         board.addGizmo(GizmoKind.LEFT_FLIPPER, "F", 0, 0);   // swings up to lie against the top wall
         board.addBall("B", 1.2, 0.6, 0, -1);
         board.trigger("F");
-        Flipper flipper = (Flipper) board.gizmo("F").orElseThrow();
+        FlipperView flipper = (FlipperView) board.gizmo("F").orElseThrow();
         for (int i = 0; i < 600; i++) {
             if (i % 60 == 59) {
                 board.trigger("F");
@@ -177,7 +177,7 @@ class FlipperCollisionTest {
             board.tick(DT);
             assertThat(Invariants.violations(board)).as("tick %d", i).isEmpty();
         }
-        Ball ball = board.ball("B").orElseThrow();
+        BallView ball = board.ball("B").orElseThrow();
         assertThat(ball.position().minus(new Vect(5.25, 10.25)).length()).isGreaterThan(0.5 - 1e-9);
     }
 }

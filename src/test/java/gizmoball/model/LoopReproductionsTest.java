@@ -3,9 +3,9 @@ package gizmoball.model;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
-import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.GizmoKind;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.GuardCounts;
 
 import org.junit.jupiter.params.ParameterizedTest;
@@ -47,13 +47,13 @@ class LoopReproductionsTest {
         Board board = flipperWithBall(kind, 8.25, 7.75);
         Vect start = board.ball("B").orElseThrow().position();
         board.keyDown(90);
-        Flipper flipper = (Flipper) board.gizmo("F").orElseThrow();
+        FlipperView flipper = (FlipperView) board.gizmo("F").orElseThrow();
         for (int tick = 1; tick <= 5; tick++) {
             board.tick(DT);
             assertThat(flipper.angleFromRest()).as("tick %d", tick).isCloseTo(18.0 * tick, within(1e-9));
         }
         assertThat(flipper.angleFromRest()).isEqualTo(90.0);
-        Ball ball = board.ball("B").orElseThrow();
+        BallView ball = board.ball("B").orElseThrow();
         assertThat(ball.position()).isEqualTo(start);
         assertThat(ball.velocity()).isEqualTo(Vect.ZERO);
         assertThat(board.guardsFired()).isEqualTo(GuardCounts.NONE);
@@ -71,7 +71,7 @@ class LoopReproductionsTest {
     void aBallTouchingThePivotEndInTheSweepIsBattedAndTheFlipperReachesItsStop(GizmoKind kind) {
         Board board = flipperWithBall(kind, 8.7424038765061050, 8.1631759111665350);
         board.keyDown(90);
-        Flipper flipper = (Flipper) board.gizmo("F").orElseThrow();
+        FlipperView flipper = (FlipperView) board.gizmo("F").orElseThrow();
         for (int tick = 1; tick <= 5; tick++) {
             board.tick(DT);
             assertThat(Invariants.violations(board)).as("tick %d", tick).isEmpty();
@@ -94,7 +94,7 @@ class LoopReproductionsTest {
         for (int tick = 1; tick <= 120; tick++) {
             board.tick(DT);
         }
-        Ball ball = board.ball("B").orElseThrow();
+        BallView ball = board.ball("B").orElseThrow();
         assertThat(ball.velocity().x()).isCloseTo(-0.6, within(1e-12));
         // back from the wall for 45 of the 120 ticks (less the part of tick 75 before the bounce)
         assertThat(ball.position().x()).isCloseTo(19.75 - 0.6 * 45 * DT, within(0.6 * DT));

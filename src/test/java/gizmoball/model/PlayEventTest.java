@@ -50,4 +50,30 @@ class PlayEventTest {
         assertThat(captured.at().x()).isCloseTo(7.5, within(1e-9));
         assertThat(captured.at().y()).isCloseTo(19 - Board.BALL_RADIUS, within(1e-9));
     }
+
+    /**
+     * A ball let go 1e-4 L above a square meets it at sqrt(2 g h) = 0.071 L/s, far below the resting speed of two ticks
+     * of gravity (2 g dt = 0.83 L/s): it comes to rest, which is no hit for the sound or the score.
+     */
+    @Test
+    void aBallComingToRestOnASurfaceIsNoHit() {
+        board.addGizmo(GizmoKind.SQUARE, "S", 10, 10);
+        board.addBall("B", 10.5, 10 - Board.BALL_RADIUS - 1e-4, 0, 0);
+        for (int i = 0; i < 120; i++) {
+            board.tick(Board.DEFAULT_TICK);
+        }
+        assertThat(board.ball("B").orElseThrow().position().y()).isCloseTo(10 - Board.BALL_RADIUS, within(1e-9));
+        assertThat(events).noneMatch(PlayEvent.Hit.class::isInstance);
+    }
+
+    /** A ball settling slowly onto another that lies on the floor rests on it: no hit either. */
+    @Test
+    void aBallSettlingOnAnotherIsNoHit() {
+        board.addBall("Low", 10.5, Board.SIZE - Board.BALL_RADIUS, 0, 0);
+        board.addBall("High", 10.5, Board.SIZE - 3 * Board.BALL_RADIUS - 1e-4, 0, 0);
+        for (int i = 0; i < 120; i++) {
+            board.tick(Board.DEFAULT_TICK);
+        }
+        assertThat(events).noneMatch(PlayEvent.Hit.class::isInstance);
+    }
 }

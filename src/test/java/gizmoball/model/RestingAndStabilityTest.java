@@ -4,7 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
 import gizmoball.model.gizmo.GizmoKind;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.LoopMode;
 
 import java.util.Random;
@@ -23,7 +23,7 @@ class RestingAndStabilityTest {
     private static void assertStaysAtRest(Board board, Vect where, int ticks) {
         for (int i = 0; i < ticks; i++) {
             board.tick(DT);
-            Ball ball = board.ball("B").orElseThrow();
+            BallView ball = board.ball("B").orElseThrow();
             assertThat(ball.position().x()).as("x, tick %d", i).isCloseTo(where.x(), within(1e-9));
             assertThat(ball.position().y()).as("y, tick %d", i).isCloseTo(where.y(), within(1e-9));
             assertThat(ball.velocity().length()).as("speed, tick %d", i).isLessThan(1e-9);
@@ -90,7 +90,7 @@ class RestingAndStabilityTest {
             board.tick(DT);
             assertThat(Invariants.violations(board)).as("tick %d", i).isEmpty();
         }
-        Ball ball = board.ball("B").orElseThrow();
+        BallView ball = board.ball("B").orElseThrow();
         assertThat(ball.position().x()).isBetween(9.0, 10 - R + 1e-9);
     }
 
@@ -108,7 +108,7 @@ class RestingAndStabilityTest {
         while (board.ball("B").orElseThrow().position().x() < 12.5) {
             board.tick(DT);
             ticks++;
-            Ball ball = board.ball("B").orElseThrow();
+            BallView ball = board.ball("B").orElseThrow();
             assertThat(ball.position().y()).as("tick %d", ticks).isCloseTo(10 - R, within(1e-9));
             assertThat(ball.velocity().x()).as("tick %d", ticks).isCloseTo(6, within(1e-9));
             assertThat(ball.velocity().y()).as("tick %d", ticks).isCloseTo(0, within(1e-9));
@@ -129,7 +129,7 @@ class RestingAndStabilityTest {
             board.addBall("B", x0, 15, 200 * Math.cos(angle), -200 * Math.sin(angle));
             for (int i = 0; i < 120; i++) {
                 board.tick(DT);
-                Ball ball = board.ball("B").orElseThrow();
+                BallView ball = board.ball("B").orElseThrow();
                 assertThat(ball.position().y()).as("seed 14 run %d tick %d", run, i).isGreaterThan(10);
                 assertThat(Invariants.violations(board)).as("seed 14 run %d tick %d", run, i).isEmpty();
             }
@@ -197,7 +197,7 @@ class RestingAndStabilityTest {
         board.setFriction(0, 0);
         board.addBall("B", 1, 1, -30, -30);   // reaches (0.25, 0.25), touching both walls at once, at t = 0.025
         board.tick(0.03);
-        Ball ball = board.ball("B").orElseThrow();
+        BallView ball = board.ball("B").orElseThrow();
         assertThat(ball.velocity().x()).isCloseTo(30, within(1e-9));
         assertThat(ball.velocity().y()).isCloseTo(30, within(1e-9));
         assertThat(ball.position().x()).isCloseTo(R + 30 * 0.005, within(1e-9));

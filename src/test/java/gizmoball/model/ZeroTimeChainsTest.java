@@ -5,7 +5,7 @@ import static org.assertj.core.api.Assertions.within;
 
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.GizmoKind;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.GuardCounts;
 
 import org.junit.jupiter.params.ParameterizedTest;
@@ -104,7 +104,7 @@ class ZeroTimeChainsTest {
             assertThat(Invariants.violations(board)).as("tick %d", t).isEmpty();
             assertThat(board.lastTick().zeroTimeCollisions()).as("tick %d", t).isLessThanOrEqualTo(3);
         }
-        Ball ball = board.ball("B").orElseThrow();
+        BallView ball = board.ball("B").orElseThrow();
         assertThat(ball.velocity()).isEqualTo(Vect.ZERO);
         assertThat(ball.position().x()).isCloseTo(tip.x() - dx, within(1e-9));
         assertThat(ball.position().y()).isCloseTo(18 - R, within(1e-9));

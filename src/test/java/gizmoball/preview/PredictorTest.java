@@ -9,7 +9,7 @@ import gizmoball.editor.Preview;
 import gizmoball.editor.Tool;
 import gizmoball.model.Board;
 import gizmoball.model.gizmo.GizmoKind;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.TriggerSource;
 import gizmoball.session.GameSession;
 import gizmoball.session.Mode;
@@ -198,6 +198,6 @@ class PredictorTest {
     }
 
     private static Vect position(Board board, String ball) {
-        return board.ball(ball).map(Ball::position).orElseThrow();
+        return board.ball(ball).map(BallView::position).orElseThrow();
     }
 }

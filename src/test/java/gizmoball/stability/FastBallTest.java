@@ -4,7 +4,7 @@ import gizmoball.model.Board;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.LoopModes;
 import gizmoball.model.gizmo.GizmoKind;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.LoopMode;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
@@ -40,8 +40,8 @@ class FastBallTest {
         board.addBall("atCorner", 5, 13.95, Board.MAX_SPEED, 0);
         // 3 ticks = 0.05 s: each ball has hit its corner (after 0.034 s and 0.024 s) and no wall yet.
         new Watch("200 L/s at thin corners", board, DT).run(3, (tick, b) -> {
-            Ball atTip = b.balls().get(0);
-            Ball atCorner = b.balls().get(1);
+            BallView atTip = b.balls().get(0);
+            BallView atCorner = b.balls().get(1);
             assertThat(atTip.position().x()).as("tip ball stays right of the tip at tick " + tick).isGreaterThan(11);
             assertThat(atCorner.position().x()).as("corner ball stays left of the square at tick " + tick).isLessThan(10);
         });

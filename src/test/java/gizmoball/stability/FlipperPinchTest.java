@@ -3,9 +3,9 @@ package gizmoball.stability;
 import gizmoball.model.Board;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.LoopModes;
-import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.GizmoKind;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.LoopMode;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
@@ -102,8 +102,8 @@ class FlipperPinchTest {
 
     /** Our own check, independent of the model's Invariants: the ball clears the flipper's capsule. */
     private static void assertOutsideFlipper(Board board, int tick) {
-        Flipper f = (Flipper) board.gizmo("F").orElseThrow();
-        for (Ball ball : board.balls()) {
+        FlipperView f = (FlipperView) board.gizmo("F").orElseThrow();
+        for (BallView ball : board.balls()) {
             if (!ball.isCaptured()) {
                 assertThat(Shapes.toSegment(f.pivot(), f.tip(), ball.position()))
                         .as("ball centre to flipper axis at tick " + tick + " (angle " + f.angleFromRest() + ", ball at "

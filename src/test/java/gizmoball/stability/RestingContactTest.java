@@ -3,7 +3,7 @@ package gizmoball.stability;
 import gizmoball.model.Board;
 import gizmoball.model.LoopModes;
 import gizmoball.model.gizmo.GizmoKind;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.LoopMode;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
@@ -42,7 +42,7 @@ class RestingContactTest {
                         return;   // one collision per tick: the other resting balls fall for that tick (see Watch)
                     }
                     for (int i = 0; i < restY.length; i++) {
-                        Ball ball = b.balls().get(i);
+                        BallView ball = b.balls().get(i);
                         assertThat(ball.position().y()).as(ball.name() + " height at tick " + tick)
                                 .isBetween(restY[i] - hop - 1e-9, restY[i] + 1e-6);
                         assertThat(ball.velocity().length()).as(ball.name() + " speed at tick " + tick)
@@ -62,7 +62,7 @@ class RestingContactTest {
         new Watch("rolling along the floor", board, DT)
                 .allowEnergyGainOfOneTickAt(board.gravity() * DT)
                 .run(1200, (tick, b) -> {
-                    Ball ball = b.balls().get(0);
+                    BallView ball = b.balls().get(0);
                     assertThat(ball.position().y()).as("height at tick " + tick)
                             .isBetween(Board.SIZE - R - hop - 1e-9, Board.SIZE - R + 1e-6);
                     assertThat(Math.abs(ball.velocity().y())).as("vertical speed at tick " + tick)
@@ -78,7 +78,7 @@ class RestingContactTest {
         board.addBall("glider", R, 1, 0, 9);
         // 120 ticks: 18 L down the wall, short of the floor.
         new Watch("gliding along the left wall", board, DT).run(120, (tick, b) -> {
-            Ball ball = b.balls().get(0);
+            BallView ball = b.balls().get(0);
             assertThat(ball.position().x()).as("distance from the wall at tick " + tick).isCloseTo(R, within(1e-12));
             assertThat(ball.velocity().x()).as("sideways speed at tick " + tick).isCloseTo(0, within(1e-12));
         });

@@ -3,7 +3,7 @@ package gizmoball.stability;
 import gizmoball.model.Board;
 import gizmoball.model.LoopModes;
 import gizmoball.model.gizmo.GizmoKind;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.LoopMode;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
@@ -46,7 +46,7 @@ class SeamTest {
         board.addBall("glider", 4.5, 12 - R, 6, 0);
         // 90 ticks = 1.5 s: 9 L along the row, across nine seams, still above it.
         new Watch("gliding across seams", board, DT).run(90, (tick, b) -> {
-            Ball ball = b.balls().get(0);
+            BallView ball = b.balls().get(0);
             assertThat(ball.position().y()).as("height at tick " + tick).isCloseTo(12 - R, within(TANGENT));
             assertThat(ball.velocity().x()).as("vx at tick " + tick).isCloseTo(6, within(TANGENT));
             assertThat(ball.velocity().y()).as("vy at tick " + tick).isCloseTo(0, within(TANGENT));
@@ -63,7 +63,7 @@ class SeamTest {
         double hop = g * DT * DT;
         double[] expectedVx = {6};
         new Watch("rolling across seams", board, DT).allowEnergyGainOfOneTickAt(6 + g * DT).run(90, (tick, b) -> {
-            Ball ball = b.balls().get(0);
+            BallView ball = b.balls().get(0);
             assertThat(ball.position().y()).as("height at tick " + tick).isBetween(12 - R - hop - 1e-9, 12 - R + 1e-6);
             assertThat(Math.abs(ball.velocity().y())).as("vertical speed at tick " + tick).isLessThanOrEqualTo(g * DT + 1e-9);
             // Friction alone, SPEC's V (1 - mu dt - mu2 |V| dt) each tick; |V| includes the small vertical
@@ -89,7 +89,7 @@ class SeamTest {
         board.addBall("glider", 7.3 + off, 11.3 - off, v / Math.sqrt(2), v / Math.sqrt(2));
         // 50 ticks = 0.83 s: 2.5 L down the slope, to just short of the bottom of the V at (10, 14).
         new Watch("gliding down a slope of triangles", board, DT).run(50, (tick, b) -> {
-            Ball ball = b.balls().get(0);
+            BallView ball = b.balls().get(0);
             double distance = (ball.position().x() + 4 - ball.position().y()) / Math.sqrt(2);
             assertThat(distance).as("distance from the slope at tick " + tick).isCloseTo(R, within(TANGENT));
             assertThat(ball.velocity().x()).as("vx at tick " + tick).isCloseTo(v / Math.sqrt(2), within(TANGENT));

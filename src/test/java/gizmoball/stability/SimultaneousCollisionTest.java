@@ -2,7 +2,7 @@ package gizmoball.stability;
 
 import gizmoball.model.Board;
 import gizmoball.model.gizmo.GizmoKind;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.LoopMode;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
@@ -29,7 +29,7 @@ class SimultaneousCollisionTest {
         Board board = FreeSpace.board(mode);
         board.addBall("B", 15.3, 15.3, 6, 6);
         new Watch("board corner", board, DT).run(180, (tick, b) -> {
-            Ball ball = b.balls().get(0);
+            BallView ball = b.balls().get(0);
             assertThat(ball.position().x()).as("on the diagonal at tick " + tick).isCloseTo(ball.position().y(), within(1e-9));
         });
         // 180 ticks = 3 s: 4.45 L in, 13.55 L back out along the diagonal.
@@ -49,13 +49,13 @@ class SimultaneousCollisionTest {
         board.addGizmo(GizmoKind.SQUARE, "B", 10, 9);
         board.addBall("ball", 12.4, 12.4, -5, -5);
         new Watch("corner between squares", board, DT).run(60, (tick, b) -> {
-            Ball ball = b.balls().get(0);
+            BallView ball = b.balls().get(0);
             assertThat(ball.position().x()).as("on the diagonal at tick " + tick).isCloseTo(ball.position().y(), within(1e-9));
             assertThat(Math.min(ball.position().x(), ball.position().y())).as("outside both squares at tick " + tick)
                     .isGreaterThanOrEqualTo(10 + R - 1e-6);
         });
         // 60 ticks = 1 s: 2.15 L in at 5 L/s per axis, then back out.
-        Ball ball = board.balls().get(0);
+        BallView ball = board.balls().get(0);
         assertThat(ball.velocity().x()).isCloseTo(5, within(1e-9));
         assertThat(ball.velocity().y()).isCloseTo(5, within(1e-9));
     }
@@ -72,7 +72,7 @@ class SimultaneousCollisionTest {
         // 60 ticks = 1 s: contact after about 0.46 s; nobody reaches a wall before 1 s.
         new Watch("striking two touching balls", board, DT).run(60, (tick, b) -> {
             Vect momentum = Vect.ZERO;
-            for (Ball ball : b.balls()) {
+            for (BallView ball : b.balls()) {
                 momentum = momentum.plus(ball.velocity());
             }
             assertThat(momentum.x()).as("momentum x at tick " + tick).isCloseTo(10, within(1e-9));

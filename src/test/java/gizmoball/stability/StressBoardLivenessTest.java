@@ -3,7 +3,7 @@ package gizmoball.stability;
 import gizmoball.boardfile.BoardFiles;
 import gizmoball.model.Board;
 import gizmoball.model.Invariants;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 
 import java.nio.file.Path;
 import java.util.HashMap;
@@ -38,7 +38,7 @@ class StressBoardLivenessTest {
         for (int tick = 1; tick <= TICKS; tick++) {
             board.tick(DT);
             assertThat(Invariants.violations(board)).as("tick %d", tick).isEmpty();
-            for (Ball ball : board.balls()) {
+            for (BallView ball : board.balls()) {
                 Vect before = lastPosition.put(ball.name(), ball.position());
                 boolean frozen = !ball.isCaptured() && ball.position().equals(before)
                         && ball.velocity().length() > CLEAR_SPEED;

@@ -2,7 +2,7 @@ package gizmoball.stability;
 
 import gizmoball.model.Board;
 import gizmoball.model.LoopModes;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.LoopMode;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
@@ -67,7 +67,7 @@ class TouchingBallsTest {
             if (mode == LoopMode.SEED) {
                 return;   // one collision per tick: the other resting balls fall for that tick (see Watch)
             }
-            for (Ball ball : b.balls()) {
+            for (BallView ball : b.balls()) {
                 assertThat(ball.velocity().length()).as(ball.name() + " speed at tick " + tick)
                         .isLessThanOrEqualTo(2 * g * DT + 1e-9);
             }

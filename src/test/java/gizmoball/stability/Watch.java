@@ -3,7 +3,7 @@ package gizmoball.stability;
 import gizmoball.model.Board;
 import gizmoball.model.Invariants;
 import gizmoball.model.LoopModes;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.LoopMode;
 
 import java.time.Duration;
@@ -70,7 +70,7 @@ final class Watch {
                 String where = name + ", tick " + tick + " of " + ticks + " (dt " + dt + ", " + LoopModes.of(board) + ")";
                 List<String> violations = Invariants.violations(board);
                 assertThat(violations).as(where + ": model invariants").isEmpty();
-                for (Ball ball : board.balls()) {
+                for (BallView ball : board.balls()) {
                     assertInside(where, ball);
                 }
                 if (LoopModes.of(board) == LoopMode.CONTINUOUS) {
@@ -83,7 +83,7 @@ final class Watch {
         return this;
     }
 
-    private static void assertInside(String where, Ball ball) {
+    private static void assertInside(String where, BallView ball) {
         double x = ball.position().x();
         double y = ball.position().y();
         assertThat(Double.isFinite(x) && Double.isFinite(y)

@@ -3,7 +3,7 @@ package gizmoball.stability;
 import gizmoball.model.Board;
 import gizmoball.model.LoopModes;
 import gizmoball.model.gizmo.GizmoKind;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.LoopMode;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
@@ -45,7 +45,7 @@ class ZeroVelocityTest {
 
         new Watch("balls at rest, no gravity", board, DT).run(600, (tick, b) -> {
             assertThat(positions(b)).as("tick " + tick).isEqualTo(start);
-            for (Ball ball : b.balls()) {
+            for (BallView ball : b.balls()) {
                 assertThat(ball.velocity().length()).as(ball.name() + " speed at tick " + tick).isZero();
             }
         });
@@ -83,10 +83,10 @@ class ZeroVelocityTest {
     }
 
     static List<Vect> positions(Board board) {
-        return board.balls().stream().map(Ball::position).toList();
+        return board.balls().stream().map(BallView::position).toList();
     }
 
     static List<Vect> velocities(Board board) {
-        return board.balls().stream().map(Ball::velocity).toList();
+        return board.balls().stream().map(BallView::velocity).toList();
     }
 }

@@ -5,10 +5,10 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import gizmoball.boardfile.BoardFiles;
 import gizmoball.model.Board;
-import gizmoball.model.gizmo.Bumper;
+import gizmoball.model.gizmo.BumperView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import java.awt.Color;
 import java.awt.Graphics2D;
 import java.awt.geom.Point2D;
@@ -70,12 +70,12 @@ class BoardFilesPaintTest {
             if (gizmo.kind() == GizmoKind.LEFT_FLIPPER || gizmo.kind() == GizmoKind.RIGHT_FLIPPER) {
                 continue;
             }
-            Vect inside = gizmo instanceof Bumper b && gizmo.kind() == GizmoKind.TRIANGLE ? centroid(b.outline())
+            Vect inside = gizmo instanceof BumperView b && gizmo.kind() == GizmoKind.TRIANGLE ? centroid(b.outline())
                     : new Vect(gizmo.x() + gizmo.width() / 2.0, gizmo.y() + gizmo.height() / 2.0);
             assertThat(pixel(image, t, inside)).as("%s: %s at %s", file, gizmo.name(), inside)
                     .isEqualTo(BoardPainter.colourOf(gizmo));
         }
-        for (Ball ball : board.balls()) {
+        for (BallView ball : board.balls()) {
             // Several balls held in one corner carry a count label; balls loaded on each other cross outlines.
             if (board.balls().stream().noneMatch(other -> other != ball
                     && other.position().distanceSquared(ball.position()) < 4 * Board.BALL_RADIUS * Board.BALL_RADIUS)) {

@@ -10,7 +10,7 @@ import gizmoball.app.Gizmoball;
 import gizmoball.session.Mode;
 import gizmoball.model.Board;
 import gizmoball.model.KeyEdge;
-import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.GizmoKind;
 import java.awt.Point;
 import java.awt.Robot;
@@ -57,8 +57,8 @@ class GameWindowTest {
         return onEdt(() -> window.session().board().time());
     }
 
-    private Flipper flipper() {
-        return onEdt(() -> (Flipper) window.session().board().gizmo("LF").orElseThrow());
+    private FlipperView flipper() {
+        return onEdt(() -> (FlipperView) window.session().board().gizmo("LF").orElseThrow());
     }
 
     @Test

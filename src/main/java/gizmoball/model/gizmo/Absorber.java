@@ -10,7 +10,7 @@ import physics.Vect;
  * A rectangle of whole cells that captures every ball touching it, holds captured balls at its bottom-right
  * corner and, when triggered, fires the longest-held one straight up.
  */
-public final class Absorber extends GizmoBase implements Gizmo {
+public final class Absorber extends GizmoBase implements AbsorberView {
     private final int width;
     private final int height;
     /** Names of the balls held, in capture order (names keep deep copies of the board simple). */

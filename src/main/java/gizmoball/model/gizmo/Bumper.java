@@ -6,7 +6,7 @@ import physics.Circle;
 import physics.Vect;
 
 /** A square, circle or triangle bumper: reflects with coefficient 1.0, has no action of its own. */
-public final class Bumper extends GizmoBase implements Gizmo {
+public final class Bumper extends GizmoBase implements BumperView {
     static final double CIRCLE_RADIUS = 0.5;
 
     Bumper(GizmoKind kind, String name, int x, int y) {

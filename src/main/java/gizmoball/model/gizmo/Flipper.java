@@ -15,7 +15,7 @@ import physics.Vect;
  * are built once per placement, so a flipper at a stop is as static as a bumper; only a swinging flipper builds
  * the shape of its current angle.
  */
-public final class Flipper extends GizmoBase implements Gizmo {
+public final class Flipper extends GizmoBase implements FlipperView {
     static final double RADIUS = 0.25;
     /** Its {@link #reflectionCoefficient()}, still or swinging. */
     private static final double REFLECTION = 0.95;

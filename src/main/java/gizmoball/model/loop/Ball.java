@@ -11,7 +11,7 @@ import physics.Vect;
  * A free ball also carries its loop bookkeeping: the surfaces it is in persistent contact with, how many ticks it
  * has been still on them, and whether it sleeps (docs/design.md, "Sleeping").
  */
-public final class Ball {
+public final class Ball implements BallView {
     /**
      * L/s: components below this are rounding debris. Far below anything meaningful (resting-contact projections
      * leave components near 1e-14 that decide whether a ball is still closing on a corner), far above the
@@ -68,11 +68,6 @@ public final class Ball {
     /** True while the ball lies still in contact and the loop leaves it alone until something can reach it. */
     public boolean isAsleep() {
         return asleep;
-    }
-
-    /** How many surfaces (walls, gizmo parts, balls) the ball is in persistent contact with. */
-    public int contactCount() {
-        return contacts.size();
     }
 
     List<ContactRef> contacts() {

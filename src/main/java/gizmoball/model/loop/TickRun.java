@@ -95,6 +95,11 @@ public final class TickRun {
     private final Map<Ball, Integer> squeezed = new HashMap<>();
     /** Surfaces a ball bounced off among its contacts within the collision just resolved, for stage 5. */
     private final List<TriggerSource> alsoHit = new ArrayList<>();
+    /**
+     * The surfaces whose hit the collision being resolved has reported: the bounces among a ball's contacts within one
+     * collision (a wedge takes about 180 / its angle of them) are one hit each for the sound and the score.
+     */
+    private final Set<ContactRef> reported = new HashSet<>();
     private final ShadowEnergy energy;
     private final EnumMap<Stage, Long> nanos = new EnumMap<>(Stage.class);
     private double elapsed;
@@ -258,6 +263,7 @@ public final class TickRun {
         Ball ball = collision.ball();
         Contact contact = collision.contact();
         restingContact = false;
+        reported.clear();
         ball.setStillTicks(0);
         if (!(contact instanceof Contact.SwingingPart)) {
             met(ball, contact);
@@ -328,9 +334,6 @@ public final class TickRun {
     private boolean bounceOff(Ball ball, ContactRef surface, GizmoBase gizmo, Vect normal,
                               DoubleFunction<Vect> reflect) {
         double approach = -ball.velocity().dot(normal);
-        actions.recordEvent(new PlayEvent.Hit(gizmo == null ? TriggerSource.OUTER_WALLS
-                : TriggerSource.gizmo(gizmo.name()), gizmo == null ? null : gizmo.kind(), approach, ball.name(),
-                ball.position()));
         if (approach <= restingSpeed(ball, normal, surface)) {
             comeToRest(ball, surface);
             return false;
@@ -340,6 +343,11 @@ public final class TickRun {
         if (wedged(ball, surface, normal, bounced)) {
             comeToRest(ball, surface);
             return false;
+        }
+        if (reported.add(surface)) {   // a bounce, not a rest: one hit per surface and collision
+            actions.recordEvent(new PlayEvent.Hit(gizmo == null ? TriggerSource.OUTER_WALLS
+                    : TriggerSource.gizmo(gizmo.name()), gizmo == null ? null : gizmo.kind(), approach, ball.name(),
+                    ball.position()));
         }
         ball.setVelocity(bounced);
         energy.bounced(ball, normal, coefficient == 1.0);
@@ -563,8 +571,6 @@ public final class TickRun {
     private Struck hitBall(Ball ball, Ball other) {
         Vect normal = ball.position().minus(other.position()).unitSize();
         double approach = -ball.velocity().minus(detector.motion(other)).dot(normal);
-        actions.recordEvent(new PlayEvent.Hit(new Struck.OtherBall(other.name()), null, approach, ball.name(),
-                ball.position()));
         boolean slow = approach <= Math.max(Tolerances.ROUNDING_SPEED, REST_TICKS_OF_GRAVITY * Math.abs(gravity) * dt);
         if (slow && (Contacts.supports(other, ball) || Contacts.supports(ball, other))) {
             restAgainst(ball, other);
@@ -575,6 +581,8 @@ public final class TickRun {
             restingContact = true;
             return new Struck.OtherBall(other.name());
         }
+        actions.recordEvent(new PlayEvent.Hit(new Struck.OtherBall(other.name()), null, approach, ball.name(),
+                ball.position()));
         other.setStillTicks(0);
         if (other.isAsleep()) {
             view.sleepers().wake(other);

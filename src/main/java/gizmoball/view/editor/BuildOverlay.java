@@ -6,7 +6,7 @@ import gizmoball.editor.Preview;
 import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.gizmo.Gizmo;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import gizmoball.model.loop.TriggerSource;
 import gizmoball.view.BoardOverlay;
@@ -103,14 +103,14 @@ public final class BuildOverlay implements BoardOverlay {
                 ? new BasicStroke(LINE, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[]{6f, 4f}, 0f)
                 : new BasicStroke(LINE + 1));
         Optional<Gizmo> gizmo = board.gizmo(name);
-        Optional<Ball> ball = board.ball(name);
+        Optional<BallView> ball = board.ball(name);
         if (TriggerSource.named(name) instanceof TriggerSource.OuterWalls) {
             g.draw(screenRect(t, 0, 0, Board.SIZE, Board.SIZE, -2));
         } else if (gizmo.isPresent()) {
             Gizmo z = gizmo.get();
             g.draw(screenRect(t, z.x(), z.y(), z.width(), z.height(), OUTLINE_GROW));
         } else if (ball.isPresent()) {
-            Ball b = ball.get();
+            BallView b = ball.get();
             double r = b.radius() + 0.12;
             g.draw(screenEllipse(t, b.position().x(), b.position().y(), r));
         }

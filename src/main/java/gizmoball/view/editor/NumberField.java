@@ -15,7 +15,6 @@ import javax.swing.border.Border;
 final class NumberField extends JTextField {
     static final Color MARK = new Color(0xD0, 0x20, 0x20);
     private final Border normal;
-    private boolean marked;
 
     NumberField(String name) {
         super(7);
@@ -28,7 +27,6 @@ final class NumberField extends JTextField {
         String text = getText().strip();
         OptionalDouble value = Decimals.parse(text);
         if (value.isEmpty()) {
-            marked = true;
             setBorder(BorderFactory.createLineBorder(MARK, 2));
             setToolTipText("\"" + text + "\" is not a number a board file can hold: write a finite decimal such as "
                     + "25, -0.5 or 1e-3");
@@ -44,12 +42,7 @@ final class NumberField extends JTextField {
         unmark();
     }
 
-    boolean isMarked() {
-        return marked;
-    }
-
     private void unmark() {
-        marked = false;
         setBorder(normal);
         setToolTipText(null);
     }

@@ -7,7 +7,7 @@ import gizmoball.model.BoardChange;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.Rgb;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import gizmoball.model.loop.TriggerSource;
 import gizmoball.view.BoardPainter;
@@ -133,7 +133,7 @@ public final class PropertiesPanel extends JPanel {
 
         shownSelection = controller.selected().orElse(null);
         Optional<Gizmo> gizmo = controller.selectedGizmo();
-        Optional<Ball> ball = controller.selectedBall();
+        Optional<BallView> ball = controller.selectedBall();
         selection.setText(describe(gizmo, ball));
         // The ball's and the colour's rows keep their room when they do not apply, so that nothing below jumps.
         for (NumberField f : new NumberField[]{ballX, ballY, ballVx, ballVy}) {
@@ -300,7 +300,7 @@ public final class PropertiesPanel extends JPanel {
     }
 
     private void applyBall() {
-        Optional<Ball> ball = controller.selectedBall();
+        Optional<BallView> ball = controller.selectedBall();
         Optional<double[]> v = values(ballX, ballY, ballVx, ballVy);
         if (ball.isPresent() && v.isPresent()
                 && controller.setBall(ball.get().name(), v.get()[0], v.get()[1], v.get()[2], v.get()[3])) {
@@ -340,14 +340,14 @@ public final class PropertiesPanel extends JPanel {
         });
     }
 
-    private String describe(Optional<Gizmo> gizmo, Optional<Ball> ball) {
+    private String describe(Optional<Gizmo> gizmo, Optional<BallView> ball) {
         if (gizmo.isPresent()) {
             Gizmo g = gizmo.get();
             return named(g.name(), g.kind().displayName() + " " + g.width() + "x" + g.height() + " at (" + g.x()
                     + "," + g.y() + ")" + (g.rotation() == 0 ? "" : ", " + g.rotation() * 90 + "\u00b0"));
         }
         if (ball.isPresent()) {
-            Ball b = ball.get();
+            BallView b = ball.get();
             return named(b.name(), "ball" + (b.isCaptured() ? " (held by an absorber)" : ""));
         }
         return controller.wallsSelected()

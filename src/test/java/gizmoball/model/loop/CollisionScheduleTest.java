@@ -43,7 +43,7 @@ class CollisionScheduleTest {
                 // overlapping: one ball fewer
             }
         }
-        List<Ball> free = new ArrayList<>(board.balls());
+        List<Ball> free = new ArrayList<>(LoopViews.of(board).balls());
         CollisionDetector detector = new CollisionDetector(LoopViews.of(board), Set.of());
         CollisionSchedule schedule = new CollisionSchedule(detector, new BallGrid());
         schedule.file(free, 0);

@@ -32,7 +32,7 @@ class SleepAndContactTest {
         }
     }
 
-    private static Ball ball(Board board, String name) {
+    private static BallView ball(Board board, String name) {
         return board.ball(name).orElseThrow();
     }
 
@@ -78,7 +78,7 @@ class SleepAndContactTest {
         assertThat(ball(board, "B").isAsleep()).isTrue();
         board.keyDown(32);
         run(board, 10);
-        Ball ball = ball(board, "B");
+        BallView ball = ball(board, "B");
         assertThat(ball.isAsleep()).isFalse();
         // batted: far faster than anything resting contact leaves (two ticks of gravity)
         assertThat(ball.velocity().length()).isGreaterThan(2 * board.gravity() * DT);
@@ -148,7 +148,7 @@ class SleepAndContactTest {
         }
         run(board, 300);
         List<Vect> settled = new ArrayList<>();
-        for (Ball ball : board.balls()) {
+        for (BallView ball : board.balls()) {
             assertThat(ball.isAsleep()).as(ball.name()).isTrue();
             settled.add(ball.position());
         }
@@ -156,7 +156,7 @@ class SleepAndContactTest {
             board.tick(DT);
         }
         assertThat(Invariants.violations(board)).isEmpty();
-        List<Vect> after = board.balls().stream().map(Ball::position).toList();
+        List<Vect> after = board.balls().stream().map(BallView::position).toList();
         assertThat(after).isEqualTo(settled);
     }
 
@@ -177,7 +177,7 @@ class SleepAndContactTest {
         int ticks = (int) Math.ceil(5 / (speed * DT));   // five seams' worth of rolling, short of the right wall
         for (int t = 0; t < ticks; t++) {
             board.tick(DT);
-            Ball ball = ball(board, "B");
+            BallView ball = ball(board, "B");
             assertThat(ball.velocity().x()).as("tick %d at x = %s", t, ball.position().x()).isEqualTo(speed);
             assertThat(ball.position().y()).as("tick %d", t).isEqualTo(18 - R);
         }
@@ -219,7 +219,7 @@ class SleepAndContactTest {
         double g = board.gravity();
         for (int tick = 2; ball(board, "B").position().x() > 3; tick++) {
             board.tick(DT);
-            Ball ball = ball(board, "B");
+            BallView ball = ball(board, "B");
             assertThat(board.lastTick().collisions()).as("tick %d", tick).isZero();
             double distance = (ball.position().x() + ball.position().y() - 18) / -Math.sqrt(2);
             assertThat(distance).as("tick %d", tick).isCloseTo(R, within(1e-9));

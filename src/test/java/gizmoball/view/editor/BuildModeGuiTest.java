@@ -5,7 +5,7 @@ import gizmoball.editor.Tool;
 import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
-import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
@@ -173,7 +173,7 @@ class BuildModeGuiTest {
             board.keyDown(KeyEvent.VK_SPACE);
             board.tick(0.1);
         });
-        Flipper lf1 = (Flipper) board.gizmo("LF1").orElseThrow();
+        FlipperView lf1 = (FlipperView) board.gizmo("LF1").orElseThrow();
         assertThat(lf1.angleFromRest()).isCloseTo(90, within(1e-9));
     }
 

@@ -7,9 +7,9 @@ import gizmoball.model.Board;
 import gizmoball.model.Invariants;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
-import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import gizmoball.model.loop.TriggerSource;
 import gizmoball.session.Mode;
@@ -55,7 +55,7 @@ class DefaultBoardFromScratchGuiTest {
                 place(g);
                 editorName.put(g.name(), w.build.controller().selected().orElseThrow());
             }
-            for (Ball b : target.balls()) {
+            for (BallView b : target.balls()) {
                 w.clickTool(Tool.BALL);
                 w.drag(b.position().x(), b.position().y(), b.position().x() + b.velocity().x() / 10,
                         b.position().y() + b.velocity().y() / 10);
@@ -98,7 +98,7 @@ class DefaultBoardFromScratchGuiTest {
                 built.tick(Board.DEFAULT_TICK);
             }
         });
-        assertThat(((Flipper) built.gizmo(leftFlipper).orElseThrow()).angleFromRest()).isCloseTo(90, within(1e-9));
+        assertThat(((FlipperView) built.gizmo(leftFlipper).orElseThrow()).angleFromRest()).isCloseTo(90, within(1e-9));
         assertThat(onEdt(() -> Invariants.violations(built))).isEmpty();
         // In that second the ball fell 1.5 L from (19.75, 17.5) into the absorber along the bottom.
         assertThat(onEdt(() -> built.balls().get(0).isCaptured())).isTrue();
@@ -156,6 +156,6 @@ class DefaultBoardFromScratchGuiTest {
                 d.connections().stream().map(c -> new Connection(TriggerSource.named(name.get(c.source().name())),
                         name.get(c.target()))).toList(),
                 d.keyBindings().stream().map(k -> new KeyBinding(k.keyCode(), k.edge(), name.get(k.gizmo()))).toList(),
-                d.gravity(), d.mu(), d.mu2());
+                d.gravity(), d.mu(), d.mu2(), d.game());
     }
 }

@@ -1,0 +1,27 @@
+package gizmoball.model.gizmo;
+
+import physics.Vect;
+
+/** What views, controllers and the editor see of a flipper: where it is and how it swings, read only. */
+public sealed interface FlipperView extends Gizmo permits Flipper {
+    /** Centre of the round end at the pivot. */
+    Vect pivot();
+
+    /** Centre of the other round end, at the current angle. */
+    Vect tip();
+
+    /** Radius of both round ends. */
+    double radius();
+
+    /** Degrees swung from rest, 0..90. */
+    double angleFromRest();
+
+    /** True while the flipper is up or swinging up. */
+    boolean isActive();
+
+    /** True while it swings toward a stop. */
+    boolean isMoving();
+
+    /** True while a jammed ball holds the flipper short of its stop. */
+    boolean isBlocked();
+}
