@@ -4,7 +4,7 @@ import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.Gizmo;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 
 import java.util.List;
 import java.util.SplittableRandom;
@@ -66,7 +66,7 @@ final class BallPlacer {
     private Point spot() {
         int how = random.nextInt(20);
         List<Gizmo> gizmos = board.gizmos();
-        List<Ball> balls = board.balls().stream().filter(b -> !b.isCaptured()).toList();
+        List<BallView> balls = board.balls().stream().filter(b -> !b.isCaptured()).toList();
         if (how < 6 || gizmos.isEmpty()) {
             return anywhere();
         }
@@ -80,7 +80,7 @@ final class BallPlacer {
             }
         }
         if (how < 18 && !balls.isEmpty()) {
-            Ball other = balls.get(random.nextInt(balls.size()));
+            BallView other = balls.get(random.nextInt(balls.size()));
             return around(new Point(other.position().x(), other.position().y()), 2 * R + gap());
         }
         // Somewhere in a cell: its centre, or against one of its sides.

@@ -8,7 +8,7 @@ import gizmoball.model.Invariants;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import gizmoball.model.loop.TriggerSource;
 
@@ -53,7 +53,7 @@ class DenseBoardsTest {
             assertThat(new TickChecker(c.board()).check(c.board(), 0)).as("seed %d", c.seed()).isEmpty();
             long balls = c.board().balls().size();
             assertThat(balls).as("seed %d", c.seed()).isBetween(5L, 40L);
-            for (Ball ball : c.board().balls()) {
+            for (BallView ball : c.board().balls()) {
                 assertThat(ball.velocity().length()).as("seed %d %s", c.seed(), ball).isLessThanOrEqualTo(BallPlacer.MAX_SPEED);
             }
         }
@@ -123,9 +123,9 @@ class DenseBoardsTest {
         int still = 0;
         Set<Integer> counts = new HashSet<>();
         for (FuzzCase c : CASES) {
-            List<Ball> balls = c.board().balls().stream().filter(b -> !b.isCaptured()).toList();
+            List<BallView> balls = c.board().balls().stream().filter(b -> !b.isCaptured()).toList();
             counts.add(c.board().balls().size());
-            for (Ball ball : balls) {
+            for (BallView ball : balls) {
                 double x = ball.position().x();
                 double y = ball.position().y();
                 for (Gizmo g : c.board().gizmos()) {
@@ -133,7 +133,7 @@ class DenseBoardsTest {
                     touchingGizmo += touches ? 1 : 0;
                     touchingFlipper += touches && g instanceof Flipper ? 1 : 0;
                 }
-                for (Ball other : balls) {
+                for (BallView other : balls) {
                     double d = Math.hypot(x - other.position().x(), y - other.position().y());
                     touchingBall += other != ball && Math.abs(d - 2 * Board.BALL_RADIUS) < 1e-9 ? 1 : 0;
                 }

@@ -4,7 +4,7 @@ import gizmoball.model.Board;
 import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.Gizmo;
-import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
 
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -57,7 +57,7 @@ public final class TickChecker {
     }
 
     /** A board of these gizmos and constants whose balls are now {@code balls}. */
-    TickChecker(List<? extends Gizmo> gizmos, double gravity, double mu, double mu2, List<Ball> balls) {
+    TickChecker(List<? extends Gizmo> gizmos, double gravity, double mu, double mu2, List<BallView> balls) {
         for (int i = 0; i < SIZE * SIZE; i++) {
             cells.add(new ArrayList<>());
         }
@@ -106,10 +106,10 @@ public final class TickChecker {
     }
 
     /** As {@link #check(Board, int)} for the board's balls as they are now. */
-    List<Violation> check(List<Ball> balls, int tick) {
+    List<Violation> check(List<BallView> balls, int tick) {
         List<Violation> found = new ArrayList<>();
-        List<Ball> free = new ArrayList<>();
-        for (Ball ball : balls) {
+        List<BallView> free = new ArrayList<>();
+        for (BallView ball : balls) {
             if (!finite(ball)) {
                 found.add(new Violation(Violation.Kind.NOT_A_NUMBER, tick, ball.name(), Double.NaN, ball.toString()));
             } else if (!ball.isCaptured()) {
@@ -140,13 +140,13 @@ public final class TickChecker {
         return found;
     }
 
-    private static boolean finite(Ball ball) {
+    private static boolean finite(BallView ball) {
         return Double.isFinite(ball.position().x()) && Double.isFinite(ball.position().y())
                 && Double.isFinite(ball.velocity().x()) && Double.isFinite(ball.velocity().y());
     }
 
     /** Walls, still gizmos and flippers; returns the ball's gap to the nearest of them (negative: inside). */
-    private double checkAgainstBoard(Ball ball, List<Body> moving, int tick, List<Violation> found) {
+    private double checkAgainstBoard(BallView ball, List<Body> moving, int tick, List<Violation> found) {
         double x = ball.position().x();
         double y = ball.position().y();
         double wallGap = Math.min(Math.min(x - R, SIZE - R - x), Math.min(y - R, SIZE - R - y));
@@ -168,7 +168,7 @@ public final class TickChecker {
         return gap;
     }
 
-    private static double against(Ball ball, Body body, int tick, List<Violation> found) {
+    private static double against(BallView ball, Body body, int tick, List<Violation> found) {
         double gap = body.solid().signedDistance(ball.position().x(), ball.position().y()) - R;
         if (gap < -TOLERANCE) {
             found.add(new Violation(Violation.Kind.INSIDE_GIZMO, tick, ball.name(), -gap, "inside " + body.name()));
@@ -176,11 +176,11 @@ public final class TickChecker {
         return gap;
     }
 
-    private static void checkPairs(List<Ball> free, double[] gaps, int tick, List<Violation> found) {
+    private static void checkPairs(List<BallView> free, double[] gaps, int tick, List<Violation> found) {
         for (int i = 0; i < free.size(); i++) {
-            Ball a = free.get(i);
+            BallView a = free.get(i);
             for (int j = i + 1; j < free.size(); j++) {
-                Ball b = free.get(j);
+                BallView b = free.get(j);
                 double dx = a.position().x() - b.position().x();
                 double dy = a.position().y() - b.position().y();
                 if (Math.abs(dx) > 2 * R + TOUCH_GAP || Math.abs(dy) > 2 * R + TOUCH_GAP) {
@@ -201,7 +201,7 @@ public final class TickChecker {
      * exactly where it was (the loop stopped it in mid-air). Hovering: such a ball at rest under gravity, still where it
      * was two ticks ago (at the top of a vertical throw a ball may keep its place for one tick, never for two).
      */
-    private void checkStill(Ball ball, double gap, int tick, List<Violation> found) {
+    private void checkStill(BallView ball, double gap, int tick, List<Violation> found) {
         BallAt last = before.get(ball.name());
         if (last == null || last.captured() || ball.isAsleep() || gap <= TOUCH_GAP
                 || ball.position().x() != last.x() || ball.position().y() != last.y()) {
@@ -217,9 +217,9 @@ public final class TickChecker {
         }
     }
 
-    private static double kinetic(List<Ball> free) {
+    private static double kinetic(List<BallView> free) {
         double sum = 0;
-        for (Ball ball : free) {
+        for (BallView ball : free) {
             double vx = ball.velocity().x();
             double vy = ball.velocity().y();
             sum += (vx * vx + vy * vy) / 2;
@@ -227,11 +227,11 @@ public final class TickChecker {
         return sum;
     }
 
-    private void remember(List<Ball> balls) {
+    private void remember(List<BallView> balls) {
         Map<String, BallAt> last = new HashMap<>(before);
         before.clear();
-        List<Ball> free = new ArrayList<>();
-        for (Ball ball : balls) {
+        List<BallView> free = new ArrayList<>();
+        for (BallView ball : balls) {
             double x = ball.position().x();
             double y = ball.position().y();
             BallAt was = last.get(ball.name());
