@@ -1,5 +1,6 @@
 package gizmoball.app;
 
+import gizmoball.boardfile.BoardContents;
 import gizmoball.session.GameSession;
 import gizmoball.session.Mode;
 import gizmoball.view.editor.BoardInput;
@@ -45,7 +46,7 @@ public final class BuildModeInstaller {
 
         Editor controller = Editor.of(session.board());
         controller.setMessageSink(window.statusLine()::showMessage);
-        controller.addEditListener(session::markModified);
+        controller.addEditListener(() -> session.designEdited(BoardContents::sameDesign));
         controller.addStateListener(panel::repaint);
         Runnable cursor = () -> panel.setCursor(building.getAsBoolean() ? cursorFor(controller.tool())
                 : Cursor.getDefaultCursor());

@@ -189,12 +189,13 @@ public final class PlayFeatures {
         return item;
     }
 
-    /** The file chooser starts where the player last opened or saved a board, in this run or an earlier one. */
+    /**
+     * The file chooser starts where the player last chose a board to open or save, in this run or an earlier one
+     * (the board opened at launch is no choice of the player's).
+     */
     private void rememberFolder() {
         settings.lastFolder().ifPresent(files::startIn);
-        session.addStateListener(() -> session.file()
-                .map(f -> f.toAbsolutePath().getParent())
-                .ifPresent(this::folderUsed));
+        files.addFolderListener(this::folderUsed);
     }
 
     private void folderUsed(Path folder) {
@@ -203,12 +204,15 @@ public final class PlayFeatures {
         }
     }
 
-    /** The window opens where it was closed, at the same size, if that place is still on a screen. */
+    /**
+     * The window opens where it was closed, at the same size, if that place is still on a screen. Kept however the
+     * window closes: by its title bar, File > Quit or Ctrl+Q (which dispose it without a closing event).
+     */
     private void rememberPlace() {
         settings.windowBounds().filter(PlayFeatures::onSomeScreen).ifPresent(window::setBounds);
         window.addWindowListener(new WindowAdapter() {
             @Override
-            public void windowClosing(WindowEvent e) {
+            public void windowClosed(WindowEvent e) {
                 settings.setWindowBounds(window.getBounds());
             }
         });

@@ -8,13 +8,12 @@ import java.util.regex.Pattern;
  * Splits board-file text into numbered command lines and whitespace-separated words.
  * Tolerates what real files contain: CR LF (even CR CR LF) line ends, a byte-order mark,
  * blank lines, {@code #} comment lines, leading, trailing and repeated whitespace, no final newline. A line that
- * starts with {@code #@} is no comment to us: it carries play state ({@link CommandWord#FLIPPER_STATE}), which
- * other implementations skip as the comment it looks like.
+ * starts with {@code #@} and a letter is no comment to us: it is one of our additions to the format
+ * ({@link CommandWord#OURS}), which other implementations skip as the comment it looks like.
  */
 final class BoardFileLexer {
     private static final Pattern WHITESPACE = Pattern.compile("\\s+");
     private static final char BYTE_ORDER_MARK = '\uFEFF';
-    static final String PLAY_STATE = "#@";
 
     private BoardFileLexer() {
     }
@@ -29,17 +28,20 @@ final class BoardFileLexer {
         for (int i = 0; i < raw.length; i++) {
             String line = raw[i].replace("\r", "");
             String stripped = line.strip();
-            if (!stripped.isEmpty() && (!stripped.startsWith("#") || isPlayState(stripped))) {
+            if (!stripped.isEmpty() && (!stripped.startsWith("#") || isOurs(stripped))) {
                 lines.add(new SourceLine(i + 1, line));
             }
         }
         return lines;
     }
 
-    /** A {@code #@} line naming a play-state command; any other {@code #} line is a comment. */
-    private static boolean isPlayState(String stripped) {
-        return stripped.startsWith(PLAY_STATE)
-                && CommandWord.lookup(words(stripped).get(0)).filter(word -> word == CommandWord.FLIPPER_STATE).isPresent();
+    /**
+     * {@code #@Word ...}: a command of ours (an unknown word is then an error of its line, as an unknown command is);
+     * {@code #@ text} and any other {@code #} line are comments.
+     */
+    private static boolean isOurs(String stripped) {
+        return stripped.startsWith(CommandWord.OURS) && stripped.length() > CommandWord.OURS.length()
+                && Character.isLetter(stripped.charAt(CommandWord.OURS.length()));
     }
 
     static List<String> words(String line) {

@@ -46,6 +46,19 @@ public final class BoardFiles {
         AtomicFileWriter.write(file, out -> out.write(text));
     }
 
+    /**
+     * Writes the text of a save over an authored text (see {@link AuthoredText#saving}), unless the file already
+     * holds exactly that text: a board saved unchanged leaves its file alone. If the write fails the file that was
+     * there is left untouched. Returns whether anything was written.
+     */
+    public static boolean save(SavePlan plan, Path file) throws IOException {
+        if (Files.isRegularFile(file) && read(file).equals(plan.text())) {
+            return false;
+        }
+        AtomicFileWriter.write(file, out -> out.write(plan.text()));
+        return true;
+    }
+
     private static String read(Path file) throws IOException {
         // Undecodable bytes become U+FFFD and then fail as a bad line, with its number, instead of the whole file.
         return new String(Files.readAllBytes(file), StandardCharsets.UTF_8);

@@ -25,14 +25,15 @@ final class BoardLoader {
 
     /** The commands that name gizmos or balls instead of adding them. */
     private static final Set<CommandWord> REFERENCING = Set.of(CommandWord.ROTATE, CommandWord.DELETE,
-            CommandWord.MOVE, CommandWord.CONNECT, CommandWord.KEY_CONNECT, CommandWord.COLOUR);
+            CommandWord.MOVE, CommandWord.CONNECT, CommandWord.KEY_CONNECT, CommandWord.COLOUR,
+            CommandWord.FLIPPER_STATE, CommandWord.DRAIN, CommandWord.POINTS);
 
     private BoardLoader() {
     }
 
     /** A new board with every applicable command, an error for each other line, and the notes. */
     static LoadResult loadSkippingBadLines(String source, String content) {
-        return new Run(source, ParsedFile.parse(source, content)).result();
+        return new Run(source, ParsedFile.parse(source, content)).result(content);
     }
 
     /** A new board, only if every line of the file is good. */
@@ -90,10 +91,10 @@ final class BoardLoader {
             neverDefined.forEach(this::apply);
         }
 
-        LoadResult result() {
+        LoadResult result(String content) {
             errors.sort(Comparator.comparingInt(BoardFileError::line));
             notes.sort(Comparator.comparingInt(BoardFileNote::line));
-            return new LoadResult(board, errors, notes);
+            return new LoadResult(board, errors, notes, new AuthoredText(content, board, errors));
         }
 
         /**

@@ -2,6 +2,7 @@ package gizmoball.boardfile;
 
 import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
+import gizmoball.model.game.GameRules;
 import gizmoball.model.gizmo.AbsorberView;
 import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
@@ -14,8 +15,10 @@ import java.util.stream.Collectors;
 
 /**
  * The canonical form of a board: one command per line, gizmos (in the board's order), then rotations, the
- * colours of gizmos that have their own, the play state of flippers play has moved, balls, connections, key bindings, gravity and friction. Reading it back
- * gives an equal board.
+ * colours of gizmos that have their own, the play state of flippers play has moved, balls, connections, key bindings,
+ * gravity and friction, then the game: balls per game, the extra-ball score, the drains and the gizmos' own points
+ * (each only where the board has it, so a board without them is written as the standard format has it). Reading it
+ * back gives an equal board.
  */
 final class BoardWriter {
 
@@ -59,6 +62,21 @@ final class BoardWriter {
         }
         commands.add(new Command.Gravity(board.gravity()));
         commands.add(new Command.Friction(board.mu(), board.mu2()));
+        commands.addAll(game(board));
+        return commands;
+    }
+
+    private static List<Command> game(Board board) {
+        GameRules rules = board.gameRules();
+        List<Command> commands = new ArrayList<>();
+        if (rules.isGame() || rules.ballsPerGame() != GameRules.DEFAULT_BALLS) {
+            commands.add(new Command.BallsPerGame(rules.ballsPerGame()));
+        }
+        rules.extraBallAt().ifPresent(score -> commands.add(new Command.ExtraBall(score)));
+        board.gizmos().stream().filter(g -> rules.isDrain(g.name()))
+                .forEach(g -> commands.add(new Command.Drain(g.name())));
+        board.gizmos().stream().filter(g -> rules.ownPoints().containsKey(g.name()))
+                .forEach(g -> commands.add(new Command.Points(g.name(), rules.ownPoints().get(g.name()))));
         return commands;
     }
 }

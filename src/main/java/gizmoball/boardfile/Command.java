@@ -11,6 +11,7 @@ import gizmoball.model.loop.TriggerSource;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
+import java.util.OptionalLong;
 
 /**
  * One parsed board-file command: {@link #applyTo} performs it on a board through the board's own editing
@@ -33,6 +34,15 @@ public sealed interface Command {
         return Optional.empty();
     }
 
+    /**
+     * The fact of the board that the line states, so that a save can tell the lines of what did not change from
+     * the lines of what did (see {@link Subject}). A command that is one element of a set (a connection, a key
+     * binding, and any command without a subject of its own) is its own subject.
+     */
+    default Subject subject() {
+        return Subject.line(toLine());
+    }
+
     /** Square, Circle, Triangle, LeftFlipper or RightFlipper with the top-left cell of its footprint. */
     record AddGizmo(GizmoKind kind, String name, int x, int y) implements Command {
         public void applyTo(Board board) {
@@ -40,11 +50,15 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.of(kind).spelling() + " " + name + " " + x + " " + y;
+            return CommandWord.of(kind).written() + " " + name + " " + x + " " + y;
         }
 
         public Optional<String> defines() {
             return Optional.of(name);
+        }
+
+        public Subject subject() {
+            return Subject.thing(name);
         }
     }
 
@@ -55,11 +69,15 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.ABSORBER.spelling() + " " + name + " " + x1 + " " + y1 + " " + x2 + " " + y2;
+            return CommandWord.ABSORBER.written() + " " + name + " " + x1 + " " + y1 + " " + x2 + " " + y2;
         }
 
         public Optional<String> defines() {
             return Optional.of(name);
+        }
+
+        public Subject subject() {
+            return Subject.thing(name);
         }
     }
 
@@ -69,7 +87,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.BALL.spelling() + " " + name + " " + format(x) + " " + format(y)
+            return CommandWord.BALL.written() + " " + name + " " + format(x) + " " + format(y)
                     + " " + format(vx) + " " + format(vy);
         }
 
@@ -81,6 +99,10 @@ public sealed interface Command {
         AddBall named(String newName) {
             return new AddBall(newName, x, y, vx, vy);
         }
+
+        public Subject subject() {
+            return Subject.thing(name);
+        }
     }
 
     record Rotate(String name) implements Command {
@@ -89,11 +111,15 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.ROTATE.spelling() + " " + name;
+            return CommandWord.ROTATE.written() + " " + name;
         }
 
         public List<String> references() {
             return List.of(name);
+        }
+
+        public Subject subject() {
+            return new Subject("rotation", name);
         }
     }
 
@@ -103,7 +129,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.DELETE.spelling() + " " + name;
+            return CommandWord.DELETE.written() + " " + name;
         }
 
         public List<String> references() {
@@ -129,7 +155,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.MOVE.spelling() + " " + name + " " + format(x) + " " + format(y);
+            return CommandWord.MOVE.written() + " " + name + " " + format(x) + " " + format(y);
         }
 
         public List<String> references() {
@@ -144,7 +170,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.CONNECT.spelling() + " " + source.name() + " " + target;
+            return CommandWord.CONNECT.written() + " " + source.name() + " " + target;
         }
 
         public List<String> references() {
@@ -158,7 +184,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.KEY_CONNECT.spelling() + " key " + keyCode + " " + edge.name().toLowerCase(Locale.ROOT)
+            return CommandWord.KEY_CONNECT.written() + " key " + keyCode + " " + edge.name().toLowerCase(Locale.ROOT)
                     + " " + gizmo;
         }
 
@@ -174,12 +200,16 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.COLOUR.spelling() + " " + name + " " + colour.red() + " " + colour.green() + " "
+            return CommandWord.COLOUR.written() + " " + name + " " + colour.red() + " " + colour.green() + " "
                     + colour.blue();
         }
 
         public List<String> references() {
             return List.of(name);
+        }
+
+        public Subject subject() {
+            return new Subject("colour", name);
         }
     }
 
@@ -193,12 +223,16 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.FLIPPER_STATE.spelling() + " " + name + " " + format(degrees) + " "
+            return CommandWord.FLIPPER_STATE.written() + " " + name + " " + format(degrees) + " "
                     + (active ? "up" : "down");
         }
 
         public List<String> references() {
             return List.of(name);
+        }
+
+        public Subject subject() {
+            return new Subject("flipper state", name);
         }
     }
 
@@ -208,7 +242,11 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.GRAVITY.spelling() + " " + format(g);
+            return CommandWord.GRAVITY.written() + " " + format(g);
+        }
+
+        public Subject subject() {
+            return new Subject("gravity", "");
         }
     }
 
@@ -218,7 +256,75 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.FRICTION.spelling() + " " + format(mu) + " " + format(mu2);
+            return CommandWord.FRICTION.written() + " " + format(mu) + " " + format(mu2);
+        }
+
+        public Subject subject() {
+            return new Subject("friction", "");
+        }
+    }
+
+    /** {@code #@Balls <n>}: how many balls a game on the board has. */
+    record BallsPerGame(int balls) implements Command {
+        public void applyTo(Board board) {
+            board.setBallsPerGame(balls);
+        }
+
+        public String toLine() {
+            return CommandWord.BALLS.written() + " " + balls;
+        }
+
+        public Subject subject() {
+            return new Subject("balls per game", "");
+        }
+    }
+
+    /** {@code #@ExtraBall <score>}: reaching that score gives one more ball, once a game. */
+    record ExtraBall(long score) implements Command {
+        public void applyTo(Board board) {
+            board.setExtraBallAt(OptionalLong.of(score));
+        }
+
+        public String toLine() {
+            return CommandWord.EXTRA_BALL.written() + " " + score;
+        }
+
+        public Subject subject() {
+            return new Subject("extra ball", "");
+        }
+    }
+
+    /** {@code #@Drain <absorber>}: a ball the absorber captures is lost. */
+    record Drain(String absorber) implements Command {
+        public void applyTo(Board board) {
+            board.setDrain(absorber, true);
+        }
+
+        public String toLine() {
+            return CommandWord.DRAIN.written() + " " + absorber;
+        }
+
+        public List<String> references() {
+            return List.of(absorber);
+        }
+    }
+
+    /** {@code #@Points <gizmo> <points>}: what a real hit on the gizmo scores. */
+    record Points(String gizmo, int points) implements Command {
+        public void applyTo(Board board) {
+            board.setPoints(gizmo, points);
+        }
+
+        public String toLine() {
+            return CommandWord.POINTS.written() + " " + gizmo + " " + points;
+        }
+
+        public List<String> references() {
+            return List.of(gizmo);
+        }
+
+        public Subject subject() {
+            return new Subject("points", gizmo);
         }
     }
 }

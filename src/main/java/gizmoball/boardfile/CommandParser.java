@@ -5,12 +5,14 @@ import gizmoball.model.KeyEdge;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.TriggerSource;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.OptionalDouble;
 import java.util.OptionalInt;
 import java.util.Set;
 import java.util.regex.Pattern;
+import java.util.stream.Collectors;
 
 /**
  * Turns one command line into a {@link Command}, or says precisely why it cannot. Besides the canonical form it
@@ -26,6 +28,13 @@ final class CommandParser {
     private static final String EXTENSION = "an extension of another implementation" + NOT_THE_FORMAT;
     /** Gizmos of the MIT 6.170 3-D variant: name, x y z and a size. */
     private static final Set<String> MIT_3D_GIZMOS = Set.of("trianglea", "cube", "wall");
+    /**
+     * The first words that other implementations' files really use for commands of their own (the peer boards'
+     * extensions: gizmos, connections of the mouse, settings); any other unknown word is simply unknown.
+     */
+    private static final Set<String> PEER_EXTENSIONS = Set.of("sink", "spawner", "accelerator", "booster",
+            "teleporter", "portal", "rhombus", "octagon", "multiball", "gate", "spinner", "deathsquare",
+            "outerwall", "mouseconnect", "timeperupdate");
     private static final Pattern AXES = Pattern.compile("[XYZ]{2}", Pattern.CASE_INSENSITIVE);
     private static final Pattern WORD = Pattern.compile("[A-Za-z][A-Za-z0-9_]*");
     private static final Pattern HEX_COLOUR = Pattern.compile("#[0-9a-fA-F]{6}");
@@ -55,7 +64,9 @@ final class CommandParser {
 
     static Parsed parse(String line) throws Refusal {
         List<String> notes = new ArrayList<>();
-        List<String> words = BoardFileLexer.words(line);
+        List<String> written = BoardFileLexer.words(line);
+        boolean markedOurs = written.get(0).startsWith(CommandWord.OURS);
+        List<String> words = markedOurs ? ours(written) : written;
         String first = words.get(0).toLowerCase(Locale.ROOT);
         if ((first.equals("left") || first.equals("right")) && words.size() > 1
                 && words.get(1).equalsIgnoreCase("flipper")) {
@@ -71,7 +82,27 @@ final class CommandParser {
             return new Parsed(colour(words, notes), notes);
         }
         CommandWord word = CommandWord.lookup(words.get(0)).orElseThrow(() -> unknownCommand(words));
+        if (word.ours() && !markedOurs) {
+            throw new Refusal(word.spelling() + " is an addition of this game to the format: it is written "
+                    + word.written() + ", which other implementations skip as a comment");
+        }
         return new Parsed(parse(word, words.subList(1, words.size()), notes), notes);
+    }
+
+    /**
+     * A {@code #@} line without its mark: one of our commands, or a standard one about something only we have (the
+     * extension gizmos), which a loader of the standard format must skip with it.
+     */
+    private static List<String> ours(List<String> written) throws Refusal {
+        String word = written.get(0).substring(CommandWord.OURS.length());
+        if (CommandWord.lookup(word).isEmpty()) {
+            throw new Refusal("unknown command '" + written.get(0) + "' (a line starting #@ and a word is a command"
+                    + " of this game: " + Arrays.stream(CommandWord.values()).filter(CommandWord::ours)
+                    .map(CommandWord::written).collect(Collectors.joining(", ")) + ")");
+        }
+        List<String> words = new ArrayList<>(written);
+        words.set(0, word);
+        return words;
     }
 
     private static Command parse(CommandWord word, List<String> given, List<String> notes) throws Refusal {
@@ -86,7 +117,7 @@ final class CommandParser {
             args = args.subList(0, 4);
         }
         if (args.size() != word.argumentCount()) {
-            throw new Refusal("wrong number of arguments: " + word.spelling() + " takes " + word.argumentCount()
+            throw new Refusal("wrong number of arguments: " + word.written() + " takes " + word.argumentCount()
                     + " (" + word.usage() + "), found " + args.size());
         }
         return switch (word) {
@@ -104,6 +135,10 @@ final class CommandParser {
                     direction(args.get(2)));
             case GRAVITY -> new Command.Gravity(number("gravity", args.get(0)));
             case FRICTION -> new Command.Friction(number("mu", args.get(0)), number("mu2", args.get(1)));
+            case BALLS -> new Command.BallsPerGame(wholeNumber("balls per game", args.get(0)));
+            case EXTRA_BALL -> new Command.ExtraBall(score(args.get(0)));
+            case DRAIN -> new Command.Drain(args.get(0));
+            case POINTS -> new Command.Points(args.get(0), wholeNumber("points", args.get(1)));
             case COLOUR -> throw new IllegalStateException("colours are read by colour(), in any spelling");
         };
     }
@@ -242,24 +277,23 @@ final class CommandParser {
     }
 
     /**
-     * Why a first word is not known: a gizmo or command of another implementation's extension, an MIT 3-D gizmo,
-     * or simply unknown.
+     * Why a first word is not known: a command of another implementation's extension, an MIT 3-D gizmo, or an
+     * unknown command, with the nearest command of the format when the word is close to one (a misspelling).
      */
     private static Refusal unknownCommand(List<String> words) {
         String word = words.get(0);
+        String lowerCase = word.toLowerCase(Locale.ROOT);
         List<String> args = words.subList(1, words.size());
-        if (MIT_3D_GIZMOS.contains(word.toLowerCase(Locale.ROOT)) && args.size() == 5
-                && allNumbers(args.subList(1, 5))) {
+        if (MIT_3D_GIZMOS.contains(lowerCase) && args.size() == 5 && allNumbers(args.subList(1, 5))) {
             return mit3d("a gizmo with x y z and a size");
         }
-        if (WORD.matcher(word).matches() && word.toLowerCase(Locale.ROOT).endsWith("connect")) {
-            return new Refusal(word + ": " + EXTENSION);
+        if (PEER_EXTENSIONS.contains(lowerCase)) {
+            boolean named = !args.isEmpty() && Decimals.parse(args.get(0)).isEmpty()
+                    && WORD.matcher(word).matches() && !lowerCase.endsWith("connect");
+            return new Refusal((named ? word + " " + args.get(0) : word) + ": " + EXTENSION);
         }
-        if (WORD.matcher(word).matches() && !args.isEmpty() && Decimals.parse(args.get(0)).isEmpty()
-                && allNumbers(args.subList(1, args.size()))) {
-            return new Refusal(word + " " + args.get(0) + ": " + EXTENSION);
-        }
-        return new Refusal("unknown command '" + word + "'");
+        return new Refusal("unknown command '" + word + "'"
+                + NearestWord.among(word, CommandWord.spellings()).map(w -> " (did you mean " + w + "?)").orElse(""));
     }
 
     private static boolean allNumbers(List<String> words) {
@@ -291,6 +325,15 @@ final class CommandParser {
             throw new Refusal(what + " coordinate " + word + " is far outside the " + Board.SIZE + "x" + Board.SIZE
                     + " board: pixel coordinates, it seems, but the format counts in L (cells)");
         }
+    }
+
+    /** A score: a whole number, up to far more than any game reaches. */
+    private static long score(String word) throws Refusal {
+        double value = number("score", word);
+        if (value != Math.rint(value) || Math.abs(value) > 1e15) {
+            throw new Refusal("score " + word + " is not a whole number");
+        }
+        return (long) value;
     }
 
     private static int wholeNumber(String what, String word) throws Refusal {

@@ -2,13 +2,18 @@ package gizmoball.boardfile;
 
 import gizmoball.model.gizmo.GizmoKind;
 import java.util.Arrays;
+import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.function.Function;
 import java.util.stream.Collectors;
 
-/** The first word of each board-file command: its canonical spelling and the arguments it takes. */
+/**
+ * The first word of each board-file command: its canonical spelling and the arguments it takes. The commands of the
+ * standard format are written bare; our additions to it ({@link #ours()}) always with {@link #OURS} before the word
+ * (README, "Board files": a loader that knows only the standard format skips them as comments).
+ */
 enum CommandWord {
     SQUARE("Square", GizmoKind.SQUARE, "<name> <x> <y>"),
     CIRCLE("Circle", GizmoKind.CIRCLE, "<name> <x> <y>"),
@@ -24,9 +29,20 @@ enum CommandWord {
     KEY_CONNECT("KeyConnect", null, "key <keycode> down|up|change <name>"),
     COLOUR("Colour", null, "<name> <red> <green> <blue>"),
     /** Play state: a flipper's angle and direction, written by a save during play. */
-    FLIPPER_STATE(BoardFileLexer.PLAY_STATE + "FlipperAngle", null, "<name> <degrees> up|down"),
+    FLIPPER_STATE("FlipperAngle", null, "<name> <degrees> up|down", true),
     GRAVITY("Gravity", null, "<g>"),
-    FRICTION("Friction", null, "<mu> <mu2>");
+    FRICTION("Friction", null, "<mu> <mu2>"),
+    /** The game: balls per game. */
+    BALLS("Balls", null, "<balls>", true),
+    /** The game: the score that gives an extra ball. */
+    EXTRA_BALL("ExtraBall", null, "<score>", true),
+    /** The game: an absorber whose captured balls are lost. */
+    DRAIN("Drain", null, "<name>", true),
+    /** The game: what a hit on the gizmo scores. */
+    POINTS("Points", null, "<name> <points>", true);
+
+    /** What comes before the word of each of our commands: no space, so that {@code #@ text} stays a comment. */
+    static final String OURS = "#@";
 
     private static final Map<String, CommandWord> BY_LOWER_CASE = Arrays.stream(values())
             .collect(Collectors.toUnmodifiableMap(w -> w.spelling.toLowerCase(Locale.ROOT), Function.identity()));
@@ -34,12 +50,27 @@ enum CommandWord {
     private final String spelling;
     private final GizmoKind kind;
     private final String usage;
+    private final boolean ours;
 
-    /** @param kind the gizmo the command adds, or null for the other commands */
+    /** A command of the standard format. */
     CommandWord(String spelling, GizmoKind kind, String arguments) {
+        this(spelling, kind, arguments, false);
+    }
+
+    /**
+     * @param kind the gizmo the command adds, or null for the other commands
+     * @param ours an addition of this game to the standard format, written {@code #@Word}
+     */
+    CommandWord(String spelling, GizmoKind kind, String arguments, boolean ours) {
         this.spelling = spelling;
         this.kind = kind;
-        this.usage = spelling + " " + arguments;
+        this.ours = ours;
+        this.usage = (ours ? OURS : "") + spelling + " " + arguments;
+    }
+
+    /** The canonical spellings of all the commands (for the nearest one to a misspelling). */
+    static List<String> spellings() {
+        return Arrays.stream(values()).map(CommandWord::spelling).toList();
     }
 
     /** The command that adds a gizmo of that kind. */
@@ -47,9 +78,13 @@ enum CommandWord {
         return Arrays.stream(values()).filter(word -> word.kind == kind).findFirst().orElseThrow();
     }
 
-    /** The command word in any letter case (files from other implementations vary). */
+    /**
+     * The command word in any letter case (files from other implementations vary), with or without {@link #OURS}
+     * before it (whether it belongs there is the parser's question).
+     */
     static Optional<CommandWord> lookup(String word) {
-        return Optional.ofNullable(BY_LOWER_CASE.get(word.toLowerCase(Locale.ROOT)));
+        String bare = word.startsWith(OURS) ? word.substring(OURS.length()) : word;
+        return Optional.ofNullable(BY_LOWER_CASE.get(bare.toLowerCase(Locale.ROOT)));
     }
 
     /** The gizmo this command adds (Square ... RightFlipper, Absorber). */
@@ -60,8 +95,19 @@ enum CommandWord {
         return kind;
     }
 
+    /** The word without {@link #OURS}. */
     String spelling() {
         return spelling;
+    }
+
+    /** An addition of this game to the standard format: always written with {@link #OURS} before it. */
+    boolean ours() {
+        return ours;
+    }
+
+    /** The word as the writer writes it: {@code #@Drain}, {@code Square}. */
+    String written() {
+        return ours ? OURS + spelling : spelling;
     }
 
     /** How the command is written, for error messages. */

@@ -9,8 +9,10 @@ import java.util.List;
  * @param board        a new board holding every command of the file that could be applied
  * @param skippedLines exactly the lines left out, and why, in line order; empty when the file was clean
  * @param notes        how lines written in another implementation's way were understood, in line order
+ * @param authored     the text as read, for a save that keeps what its author wrote
  */
-public record LoadResult(Board board, List<BoardFileError> skippedLines, List<BoardFileNote> notes) {
+public record LoadResult(Board board, List<BoardFileError> skippedLines, List<BoardFileNote> notes,
+                         AuthoredText authored) {
     public LoadResult {
         skippedLines = List.copyOf(skippedLines);
         notes = List.copyOf(notes);

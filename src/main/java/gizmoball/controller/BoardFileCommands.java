@@ -1,11 +1,12 @@
 package gizmoball.controller;
 
+import gizmoball.boardfile.AuthoredText;
 import gizmoball.boardfile.BoardFileError;
-import gizmoball.boardfile.BoardFileException;
 import gizmoball.boardfile.BoardFiles;
 import gizmoball.boardfile.FileErrors;
 import gizmoball.boardfile.LoadResult;
 import gizmoball.boardfile.SampleBoards;
+import gizmoball.boardfile.SavePlan;
 import gizmoball.session.GameSession;
 import gizmoball.model.Board;
 import gizmoball.view.LoadProblemsDialog;
@@ -13,18 +14,20 @@ import java.awt.Component;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Consumer;
 import java.util.Optional;
 import javax.swing.JFileChooser;
 import javax.swing.JOptionPane;
 import javax.swing.SwingUtilities;
-import javax.swing.filechooser.FileNameExtensionFilter;
 
 /**
  * The File menu's work: choosing files, loading and saving through gizmoball.boardfile, and asking the
  * player before unsaved changes are lost. Every failure is shown to the player; a failed load leaves
- * the current board exactly as it was.
+ * the current board exactly as it was. A save keeps what the author wrote in the file the board came from
+ * (its comments, blank lines and order: {@link AuthoredText}) and writes nothing when nothing changed; a new
+ * board is written in the canonical form.
  */
 public final class BoardFileCommands {
     private final Component window;
@@ -37,8 +40,10 @@ public final class BoardFileCommands {
     private static final String CANCEL = "Cancel";
 
     private final JFileChooser chooser = new JFileChooser(Path.of("boards").toAbsolutePath().toFile());
-    private final FileNameExtensionFilter boardFiles =
-            new FileNameExtensionFilter("Board files (.txt, .gizmo)", BOARD_EXTENSION, "gizmo");
+    private final BoardFileFilter boardFiles = new BoardFileFilter();
+    /** The text the shown board was read from or last saved as; null for a new board (saved canonically). */
+    private AuthoredText authored;
+    private final List<Consumer<Path>> folderListeners = new ArrayList<>();
 
     /** Dialogs open over {@code window}; outcomes are told to {@code status} (the status line). */
     public BoardFileCommands(Component window, Consumer<String> status, GameSession session, GameLoop loop) {
@@ -54,10 +59,19 @@ public final class BoardFileCommands {
         chooser.setCurrentDirectory(folder.toFile());
     }
 
+    /**
+     * Told the folder of each file the player chose in the file chooser (to open or to save): the folder the
+     * chooser opens in next time. A board opened otherwise (at launch, a sample) is no choice of a folder.
+     */
+    public void addFolderListener(Consumer<Path> listener) {
+        folderListeners.add(listener);
+    }
+
     public void newBoard() {
         if (confirmDiscard("start a new board")) {
             loop.stop();
             session.newBoard();
+            authored = null;
             status.accept("New board");
         }
     }
@@ -65,8 +79,27 @@ public final class BoardFileCommands {
     public void open() {
         if (confirmDiscard("open another board")
                 && chooser.showOpenDialog(window) == JFileChooser.APPROVE_OPTION) {
-            open(chooser.getSelectedFile().toPath());
+            Path file = existing(chooser.getSelectedFile().toPath());
+            chose(file);
+            open(file);
         }
+    }
+
+    /**
+     * The file meant by a name typed in the chooser: as typed if it exists, else with the extension Save As would
+     * have given it ("xyz" for the "xyz.txt" saved as "xyz").
+     */
+    static Path existing(Path typed) {
+        Path withExtension = withBoardExtension(typed, true);
+        return !Files.exists(typed) && Files.isRegularFile(withExtension) ? withExtension : typed;
+    }
+
+    private void chose(Path file) {
+        Path folder = file.toAbsolutePath().getParent();
+        if (folder != null) {
+            folderListeners.forEach(l -> l.accept(folder));
+        }
+        chooser.setSelectedFile(file.toFile());
     }
 
     /** Reload means "throw my changes away": asked as that, with Cancel the default, so Enter reverts nothing. */
@@ -94,7 +127,7 @@ public final class BoardFileCommands {
         }
         List<BoardFileError> bad = result.skippedLines();
         if (bad.isEmpty()) {
-            show(result.board(), file, 0, "Loaded " + name);
+            show(result, file, "Loaded " + name);
             showNotes(name, result);
             return true;
         }
@@ -103,7 +136,7 @@ public final class BoardFileCommands {
             status.accept("Kept the current board; " + name + " has bad lines");
             return false;
         }
-        show(result.board(), file, bad.size(), "Loaded " + name + " without its " + lines(bad.size()));
+        show(result, file, "Loaded " + name + " without its " + lines(bad.size()));
         return true;
     }
 
@@ -120,14 +153,16 @@ public final class BoardFileCommands {
             error("there is no sample board " + name + " inside this build of the game");
             return false;
         }
-        try {
-            show(BoardFiles.load(name, text.get()), null, 0, "Opened the sample board " + name
-                    + "; Save As keeps a copy");
-            return true;
-        } catch (BoardFileException e) {
-            error("the sample board " + name + " does not load: " + e.getMessage());
+        LoadResult result = BoardFiles.loadSkippingBadLines(name, text.get());
+        if (!result.skippedLines().isEmpty()) {
+            error("the sample board " + name + " does not load: " + result.skippedLines().get(0));
             return false;
         }
+        loop.stop();
+        session.loadSample(result.board(), name);
+        authored = result.authored();
+        status.accept("Opened the sample board " + name + "; Save As keeps a copy");
+        return true;
     }
 
     /**
@@ -139,7 +174,7 @@ public final class BoardFileCommands {
         try {
             LoadResult result = BoardFiles.loadSkippingBadLines(file);
             if (result.skippedLines().isEmpty()) {
-                show(result.board(), file, 0, "Loaded " + name);
+                show(result, file, "Loaded " + name);
                 SwingUtilities.invokeLater(() -> showNotes(name, result));
                 return;
             }
@@ -157,44 +192,55 @@ public final class BoardFileCommands {
     }
 
     /**
-     * Saves to the board's file, or asks for one. A board loaded without some of its lines would remove them
-     * from its file: that is asked first, offering Save As. Returns whether the board was saved.
+     * Saves to the board's file, or asks for one. A save that would remove lines of the file beyond those of what
+     * the player deleted (lines left out when it was loaded; comments it cannot keep) is asked first, naming every
+     * line that would go and offering Save As. Returns whether the board was saved.
      */
     public boolean save() {
         Optional<Path> file = session.file();
         if (file.isEmpty()) {
             return saveAs();
         }
-        int lost = session.linesLostBySaving();
-        if (lost > 0) {
+        SavePlan plan = plan();
+        SavePlan.LostLines lost = plan.lost();
+        if (lost.total() > 0) {
             String name = String.valueOf(file.get().getFileName());
-            int choice = ask(name + " was loaded without " + lines(lost) + ". Saving over it removes "
-                    + (lost == 1 ? "that line" : "those " + lost + " lines") + " from the file.",
-                    "Save would lose lines", SAVE_AS, "Save and lose " + lines(lost), CANCEL);
+            String why = lost.badLines() == lost.total() ? "left out when it was loaded"
+                    : "that the edited board cannot be written around";
+            int choice = ask("Saving over " + name + " removes " + lost.describe() + " from it, " + why + ".",
+                    "Save would lose lines", SAVE_AS, "Save and lose " + lost.describe(), CANCEL);
             return switch (choice) {
                 case 0 -> saveAs();
-                case 1 -> saveTo(file.get());
+                case 1 -> saveTo(file.get(), plan);
                 default -> false;
             };
         }
-        return saveTo(file.get());
+        return saveTo(file.get(), plan);
     }
 
     /**
      * Asks for a file and saves there. A name without an extension gets .txt while the board-files filter is
-     * chosen; an existing file is replaced only if the player says so.
+     * chosen; an existing file is replaced only if the player says so, and otherwise the chooser comes back for
+     * another name.
      */
     public boolean saveAs() {
-        session.file().ifPresent(f -> chooser.setSelectedFile(f.toFile()));
-        if (chooser.showSaveDialog(window) != JFileChooser.APPROVE_OPTION) {
-            return false;
+        chooser.setSelectedFile(session.file().map(Path::toFile)
+                .orElseGet(() -> chooser.getCurrentDirectory().toPath().resolve(session.suggestedFileName()).toFile()));
+        while (chooser.showSaveDialog(window) == JFileChooser.APPROVE_OPTION) {
+            Path file = withBoardExtension(chooser.getSelectedFile().toPath(), chooser.getFileFilter() == boardFiles);
+            if (!Files.exists(file) || ask(file.getFileName() + " already exists. Replace it?", "Save As",
+                    "Replace", CANCEL) == 0) {
+                chose(file);
+                return saveTo(file, plan());
+            }
         }
-        Path file = withBoardExtension(chooser.getSelectedFile().toPath(), chooser.getFileFilter() == boardFiles);
-        if (Files.exists(file) && ask(file.getFileName() + " already exists. Replace it?", "Save As",
-                "Replace", CANCEL) != 0) {
-            return false;
-        }
-        return saveTo(file);
+        return false;
+    }
+
+    /** What saving the design writes: over the text it came from, or canonical for a new board. */
+    private SavePlan plan() {
+        Board board = session.boardToSave();
+        return authored == null ? SavePlan.canonical(board) : authored.saving(board);
     }
 
     /** {@code file} with ".txt" added if it has no extension and {@code boardFilter} (the chooser's) applies. */
@@ -223,11 +269,13 @@ public final class BoardFileCommands {
         };
     }
 
-    private boolean saveTo(Path file) {
+    private boolean saveTo(Path file, SavePlan plan) {
         try {
-            BoardFiles.save(session.boardToSave(), file);
+            boolean wrote = BoardFiles.save(plan, file);
             session.saved(file);
-            status.accept("Saved " + file.getFileName());
+            authored = plan.saved();
+            status.accept(wrote ? "Saved " + file.getFileName() : file.getFileName() + " already holds this board:"
+                    + " nothing to write");
             return true;
         } catch (IOException e) {
             error(FileErrors.cannotSave(file, e) + (Files.exists(file) ? ". The file on disk is unchanged." : ""));
@@ -235,9 +283,10 @@ public final class BoardFileCommands {
         }
     }
 
-    private void show(Board board, Path file, int skippedLines, String message) {
+    private void show(LoadResult loaded, Path file, String message) {
         loop.stop();
-        session.loadWithout(board, file, skippedLines);
+        session.loadWithout(loaded.board(), file, loaded.skippedLines().size());
+        authored = loaded.authored();
         status.accept(message);
     }
 

@@ -1,5 +1,10 @@
 package gizmoball.model;
 
+import gizmoball.model.game.Game;
+import gizmoball.model.game.GameProgress;
+import gizmoball.model.game.GameRules;
+import gizmoball.model.game.KeyPress;
+import gizmoball.model.game.Playfield;
 import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.Gizmo;
@@ -27,6 +32,8 @@ import java.util.Collection;
 import java.util.Collections;
 import java.util.List;
 import java.util.Optional;
+import java.util.OptionalLong;
+import java.util.function.Supplier;
 
 import physics.Vect;
 
@@ -69,6 +76,10 @@ public final class Board {
     private double mu = DEFAULT_MU;
     private double mu2 = DEFAULT_MU2;
     private double time;
+    /** Ticks run since construction or {@link #clear()}: the clock games, key scripts and replays count in. */
+    private long ticks;
+    private GameRules gameRules = GameRules.DEFAULT;
+    private final Game game = new Game(new GameField());
     private boolean spatialIndexEnabled = true;
     private LoopMode loopMode = LoopMode.CONTINUOUS;
     private TickReport lastTick = TickReport.NONE;
@@ -103,6 +114,9 @@ public final class Board {
         mu = source.mu;
         mu2 = source.mu2;
         time = source.time;
+        ticks = source.ticks;
+        gameRules = source.gameRules;
+        game.copyFrom(source.game);
         loopMode = source.loopMode;
         spatialIndexEnabled = source.spatialIndexEnabled;
     }
@@ -162,6 +176,7 @@ public final class Board {
      */
     public void delete(String name) {
         edits.delete(name);
+        gameRules = gameRules.without(name);
         edited();
     }
 
@@ -239,7 +254,61 @@ public final class Board {
         mu = DEFAULT_MU;
         mu2 = DEFAULT_MU2;
         time = 0;
+        ticks = 0;
+        gameRules = GameRules.DEFAULT;
+        game.reset();
         notifyObservers(BoardChange.REPLACE);
+    }
+
+    // ---------------------------------------------------------------- the game (docs/design.md, "The game")
+
+    /** How many balls a game has (1 to {@link GameRules#MAX_BALLS}; three until said otherwise). */
+    public void setBallsPerGame(int balls) {
+        changeRules(() -> gameRules.withBallsPerGame(balls));
+    }
+
+    /** Makes an absorber a drain (a ball it captures is lost) or an ordinary absorber again. */
+    public void setDrain(String absorber, boolean drain) {
+        GizmoBase gizmo = registry.requireGizmo(absorber);
+        if (drain && !(gizmo instanceof Absorber)) {
+            throw new BoardEditException("only an absorber can be a drain: " + absorber + " is "
+                    + gizmo.kind().withArticle() + ", which captures no ball");
+        }
+        changeRules(() -> gameRules.withDrain(absorber, drain));
+    }
+
+    /** What a real hit on the gizmo scores (its kind's value unless set; within plus or minus a million). */
+    public void setPoints(String gizmo, int points) {
+        GizmoKind kind = registry.requireGizmo(gizmo).kind();
+        changeRules(() -> gameRules.withPoints(gizmo, kind, points));
+    }
+
+    /** The score at which a game gives one extra ball, once; empty for none. */
+    public void setExtraBallAt(OptionalLong score) {
+        changeRules(() -> gameRules.withExtraBallAt(score));
+    }
+
+    private void changeRules(Supplier<GameRules> changed) {
+        try {
+            gameRules = changed.get();
+        } catch (IllegalArgumentException refused) {
+            throw new BoardEditException(refused.getMessage());
+        }
+        edited();
+    }
+
+    public GameRules gameRules() {
+        return gameRules;
+    }
+
+    /** The game on this board: score, balls left, drains, game over (a sandbox scores too). */
+    public GameProgress game() {
+        return game;
+    }
+
+    /** Ticks run since the board was made or cleared: the clock of games, key scripts and replays. */
+    public long ticks() {
+        return ticks;
     }
 
     /**
@@ -312,6 +381,8 @@ public final class Board {
             throw new IllegalArgumentException("tick length must be finite and not negative, got " + dt);
         }
         lastTick = new TickRun(loop, loop, dt).run();
+        ticks++;
+        game.afterTick(ticks, lastTick.events());
         guardsFired = guardsFired.plus(lastTick.guards());
         long start = System.nanoTime();
         notifyObservers(BoardChange.TICK);
@@ -341,7 +412,8 @@ public final class Board {
 
     /**
      * Performs the actions bound to (keyCode, DOWN): flippers swing up, others perform their action; and those
-     * bound to (keyCode, CHANGE): every gizmo performs its action (a flipper toggles).
+     * bound to (keyCode, CHANGE): every gizmo performs its action (a flipper toggles). The game records the key with
+     * the tick ({@link GameProgress#keys()}), as it does every release.
      */
     public void keyDown(int keyCode) {
         keyAction(keyCode, KeyEdge.DOWN);
@@ -353,6 +425,7 @@ public final class Board {
     }
 
     private void keyAction(int keyCode, KeyEdge edge) {
+        game.keyPressed(ticks, edge == KeyEdge.DOWN ? KeyPress.Motion.DOWN : KeyPress.Motion.UP, keyCode);
         play.keyAction(wiring.keyBindings(), keyCode, edge, time);
     }
 
@@ -428,6 +501,24 @@ public final class Board {
     /** The loop's view of this board, for the loop's tests (through their fixture {@code LoopViews}). */
     LoopView loopView() {
         return loop;
+    }
+
+    /** The board as its game sees it: the rules, and the balls, which a game may take off when they drain. */
+    private final class GameField implements Playfield {
+        @Override
+        public GameRules rules() {
+            return gameRules;
+        }
+
+        @Override
+        public int ballCount() {
+            return registry.balls().size();
+        }
+
+        @Override
+        public void removeBall(String ball) {
+            registry.remove(registry.ball(ball));
+        }
     }
 
     /** The board as the loop sees it and acts on it: the one way in for a {@link TickRun}. */

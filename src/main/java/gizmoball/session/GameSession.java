@@ -5,6 +5,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import java.util.function.BiPredicate;
 import java.util.function.Consumer;
 
 /**
@@ -16,9 +17,13 @@ import java.util.function.Consumer;
 public final class GameSession {
     private final Board board = new Board();
     private Board design = board.copy();
+    /** The design as last loaded or saved, to tell an edit that brings it back (an undo) from one that changes it. */
+    private Board saved = design.copy();
     private Mode mode = Mode.PLAY;
     private boolean modified;
     private Path file;
+    /** The sample board shown, for a board that has no file but came with the game; else null. */
+    private String sample;
     /** Lines of {@link #file} that the design lacks because they were skipped when it was loaded. */
     private int linesLeftOut;
     private final List<Consumer<Mode>> modeListeners = new ArrayList<>();
@@ -61,8 +66,20 @@ public final class GameSession {
     }
 
     public void markModified() {
-        if (!modified) {
-            modified = true;
+        setModified(true);
+    }
+
+    /**
+     * The design was edited: it is unsaved unless {@code sameDesign} finds it as it was last loaded or saved (an
+     * undo back to there; a board loaded without some of its file's lines stays unsaved).
+     */
+    public void designEdited(BiPredicate<Board, Board> sameDesign) {
+        setModified(linesLeftOut > 0 || !sameDesign.test(boardToSave(), saved));
+    }
+
+    private void setModified(boolean now) {
+        if (modified != now) {
+            modified = now;
             fireStateChanged();
         }
     }
@@ -71,9 +88,17 @@ public final class GameSession {
         return Optional.ofNullable(file);
     }
 
-    /** The name players see: the file name, or "untitled" for a board never saved. */
+    /** The name players see: the file name, the sample's ("default.txt (sample)"), or "untitled". */
     public String boardName() {
-        return file == null ? "untitled" : String.valueOf(file.getFileName());
+        if (file != null) {
+            return String.valueOf(file.getFileName());
+        }
+        return sample == null ? "untitled" : sample + " (sample)";
+    }
+
+    /** The name Save As offers for a board without a file: the sample's, or untitled.txt. */
+    public String suggestedFileName() {
+        return sample == null ? "untitled.txt" : sample;
     }
 
     /** What Save writes: the design. In play mode that is the board as built, not the balls in flight. */
@@ -84,8 +109,10 @@ public final class GameSession {
     /** Shows {@code loaded} (read from {@code from}) as the new, unmodified design, in the current mode. */
     public void load(Board loaded, Path from) {
         design = loaded.copy();
+        saved = loaded.copy();
         board.replaceContents(loaded);
         file = from;
+        sample = null;
         modified = false;
         linesLeftOut = 0;
         fireStateChanged();
@@ -107,6 +134,13 @@ public final class GameSession {
         return linesLeftOut;
     }
 
+    /** Shows the sample board {@code name} that came with the game: it has no file of its own. */
+    public void loadSample(Board loaded, String name) {
+        load(loaded, null);
+        sample = name;
+        fireStateChanged();
+    }
+
     /** An empty, unsaved board. */
     public void newBoard() {
         load(new Board(), null);
@@ -114,7 +148,9 @@ public final class GameSession {
 
     /** The design was written to {@code to}. */
     public void saved(Path to) {
+        saved = boardToSave().copy();
         file = to;
+        sample = null;
         modified = false;
         linesLeftOut = 0;
         fireStateChanged();

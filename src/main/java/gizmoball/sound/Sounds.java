@@ -8,12 +8,11 @@ import java.util.Optional;
 /**
  * What the game sounds like: the cue for each game event. A hit clicks at a pitch of its own for each kind of
  * gizmo (walls lowest, balls highest) and as loud as the impact was fast; hits slower than
- * {@link #QUIET_SPEED} (a ball settling, rolling contact) make no sound.
+ * {@link PlayEvent.Hit#REAL_IMPACT_SPEED} (a ball settling, rolling contact; they score nothing either) make no sound.
  */
 public final class Sounds {
     /** Impact speed (L/s) of the loudest click; faster hits are no louder. */
     static final double FULL_SPEED = 40;
-    static final double QUIET_SPEED = 1;
     private static final double WALL_HZ = 220;
     private static final double BALL_HZ = 1320;
     private static final double SWISH_GAIN = 0.45;
@@ -78,7 +77,7 @@ public final class Sounds {
     }
 
     private static Optional<Cue> click(double hz, double impactSpeed) {
-        if (!(impactSpeed >= QUIET_SPEED)) {
+        if (!(impactSpeed >= PlayEvent.Hit.REAL_IMPACT_SPEED)) {
             return Optional.empty();
         }
         return Optional.of(new Cue(Cue.Kind.CLICK, hz, Math.min(1, impactSpeed / FULL_SPEED)));

@@ -16,7 +16,8 @@ import gizmoball.view.BoardPainter;
 /**
  * The model's arrows run one way (docs/design.md, "Package map"): the board uses the loop, the loop uses the gizmo
  * kinds, and never the other way round: the loop uses nothing of the board it runs on but the kinds, the kinds use
- * nothing of the game outside them, and none of them uses AWT or Swing. Read from the constant pools of the game's
+ * nothing of the game outside them, the game rules nothing but the loop and the kinds, and none of them uses AWT or
+ * Swing. Read from the constant pools of the game's
  * compiled classes, which name every class a class uses (imports that only Javadoc uses leave none).
  */
 class PackageArrowsTest {
@@ -24,12 +25,14 @@ class PackageArrowsTest {
     private static final String MODEL = "gizmoball/model/";
     private static final String KINDS = "gizmoball/model/gizmo/";
     private static final String LOOP = "gizmoball/model/loop/";
+    private static final String GAME_RULES = "gizmoball/model/game/";
 
     @Test
     void theKindsUseNothingOfTheGameOutsideThemTheLoopOnlyTheKindsAndTheModelNoAwtOrSwing()
             throws IOException, URISyntaxException {
         List<String> kinds = new ArrayList<>();
         List<String> loop = new ArrayList<>();
+        List<String> gameRules = new ArrayList<>();
         List<String> violations = new ArrayList<>();
         ApiOnlyTest.forEachGameClassFile((name, refs) -> {
             if (name.startsWith(KINDS)) {
@@ -40,6 +43,10 @@ class PackageArrowsTest {
                 loop.add(name);
                 violations.addAll(outsideTheLoopAndTheKinds(name, refs));
             }
+            if (name.startsWith(GAME_RULES)) {
+                gameRules.add(name);
+                violations.addAll(outsideTheGameRulesTheLoopAndTheKinds(name, refs));
+            }
             if (name.startsWith(MODEL)) {
                 violations.addAll(awtOrSwing(name, refs));
             }
@@ -48,6 +55,7 @@ class PackageArrowsTest {
         // Not vacuous: the kinds and the loop were found where the package map puts them.
         assertThat(kinds).contains(KINDS + "GizmoBase.class", KINDS + "Flipper.class", KINDS + "Absorber.class");
         assertThat(loop).contains(LOOP + "TickRun.class", LOOP + "CollisionDetector.class", LOOP + "Ball.class");
+        assertThat(gameRules).contains(GAME_RULES + "Game.class", GAME_RULES + "GameRules.class");
         assertThat(violations).as("references against the package map's arrows").isEmpty();
     }
 
@@ -61,6 +69,8 @@ class PackageArrowsTest {
         assertThat(outsideTheKinds("Play.class", play)).contains("Play.class: " + MODEL + "Registry");
         assertThat(outsideTheLoopAndTheKinds("Play.class", play)).contains("Play.class: " + MODEL + "Registry")
                 .doesNotContain("Play.class: " + LOOP + "Ball", "Play.class: " + KINDS + "Absorber");
+        assertThat(outsideTheGameRulesTheLoopAndTheKinds("Play.class", play)).contains("Play.class: " + MODEL + "Registry")
+                .doesNotContain("Play.class: " + LOOP + "Ball");
         ClassFileReferences painter = read(BoardPainter.class, "BoardPainter.class");
         assertThat(awtOrSwing("BoardPainter.class", painter)).contains("BoardPainter.class: java/awt/Graphics2D");
     }
@@ -73,6 +83,11 @@ class PackageArrowsTest {
     private static List<String> outsideTheLoopAndTheKinds(String classFile, ClassFileReferences refs) {
         return refs.classes.stream().filter(c -> c.startsWith(GAME) && !c.startsWith(LOOP) && !c.startsWith(KINDS))
                 .distinct().map(c -> classFile + ": " + c).toList();
+    }
+
+    private static List<String> outsideTheGameRulesTheLoopAndTheKinds(String classFile, ClassFileReferences refs) {
+        return refs.classes.stream().filter(c -> c.startsWith(GAME) && !c.startsWith(GAME_RULES) && !c.startsWith(LOOP)
+                        && !c.startsWith(KINDS)).distinct().map(c -> classFile + ": " + c).toList();
     }
 
     private static List<String> awtOrSwing(String classFile, ClassFileReferences refs) {

@@ -1,6 +1,9 @@
 package gizmoball.boardfile;
 
 import gizmoball.model.Board;
+import gizmoball.model.game.GameRules;
+import gizmoball.model.game.Points;
+import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.gizmo.GizmoKind;
@@ -8,6 +11,7 @@ import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.TriggerSource;
 import java.util.List;
 import java.util.Optional;
+import java.util.OptionalLong;
 import java.util.Random;
 
 /** Random boards built through the board's own editing operations, for property tests. */
@@ -64,7 +68,27 @@ final class RandomBoards {
         if (random.nextBoolean()) {
             board.setFriction(random.nextDouble() * 0.1, random.nextDouble() * 0.1);
         }
+        addGame(board);
         return board;
+    }
+
+    /** Drawn last, so that the rest of each board is what it was before boards had games. */
+    private void addGame(Board board) {
+        if (random.nextBoolean()) {
+            return;
+        }
+        board.setBallsPerGame(1 + random.nextInt(GameRules.MAX_BALLS));
+        if (random.nextBoolean()) {
+            board.setExtraBallAt(OptionalLong.of(1 + random.nextInt(100_000)));
+        }
+        for (Gizmo gizmo : board.gizmos()) {
+            if (gizmo.kind() == GizmoKind.ABSORBER && random.nextBoolean()) {
+                board.setDrain(gizmo.name(), true);
+            }
+            if (random.nextInt(4) == 0) {
+                board.setPoints(gizmo.name(), random.nextInt(2 * Points.LIMIT + 1) - Points.LIMIT);
+            }
+        }
     }
 
     private void addGizmo(Board board) {

@@ -177,40 +177,4 @@ class FileSafetyGuiTest extends WindowOnFiles {
         await("the reload", () -> window.session().board().gizmos().size() == 2);
         assertThat(onEdt(() -> window.session().isModified())).isFalse();
     }
-
-    private static JFileChooser awaitChooser() {
-        JDialog dialog = awaitDialog(d -> Gui.find(d.getContentPane(), JFileChooser.class, c -> true).isPresent());
-        return onEdt(() -> Gui.find(dialog.getContentPane(), JFileChooser.class, c -> true).orElseThrow());
-    }
-
-    /** As if the player typed the name and pressed Save, with the chooser's filter as it is. */
-    private static void approve(JFileChooser chooser, File file) {
-        onEdt(() -> {
-            chooser.setSelectedFile(file);
-            chooser.approveSelection();
-        });
-    }
-
-    private static List<String> buttons(JDialog dialog) {
-        return onEdt(() -> all(dialog, JButton.class).stream().map(JButton::getText)
-                .filter(t -> t != null && !t.isEmpty()).toList());
-    }
-
-    private static String text(JDialog dialog) {
-        return onEdt(() -> all(dialog, JLabel.class).stream().map(JLabel::getText).collect(Collectors.joining("\n"))
-                + all(dialog, JTextArea.class).stream().map(JTextArea::getText).collect(Collectors.joining("\n")));
-    }
-
-    private static <C extends Component> List<C> all(Container root, Class<C> type) {
-        List<C> found = new ArrayList<>();
-        for (Component c : root.getComponents()) {
-            if (type.isInstance(c) && c.isVisible()) {
-                found.add(type.cast(c));
-            }
-            if (c instanceof Container inner) {
-                found.addAll(all(inner, type));
-            }
-        }
-        return found;
-    }
 }

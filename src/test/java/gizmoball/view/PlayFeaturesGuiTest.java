@@ -74,18 +74,15 @@ class PlayFeaturesGuiTest {
     }
 
     @Test
-    void trailsFolderAndWindowPlaceAreRemembered() {
+    void trailsAndWindowPlaceAreRemembered() {
         GameWindow window = open();
         clickMenu(window.menus(), "Ball trails");
         assertThat(onEdt(() -> features.trails().isEnabled())).isTrue();
-        Path boards = Path.of("boards").toAbsolutePath();
-        onEdt(() -> app.files().open(boards.resolve("default.txt")));
         Rectangle placed = new Rectangle(40, 60, 700, 720);
         onEdt(() -> window.setBounds(placed));
         await("the window to move", () -> window.getBounds().equals(placed));
         closeAsPlayer(window);
 
-        assertThat(settings.lastFolder()).contains(boards.normalize());
         GameWindow next = open();
         assertThat(onEdt(() -> Gui.menuItem(next.menus(), "Ball trails").isSelected())).isTrue();
         await("the window where it was", () -> next.getBounds().equals(placed));

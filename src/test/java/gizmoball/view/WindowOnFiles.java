@@ -4,8 +4,12 @@ import static gizmoball.view.Gui.await;
 import static gizmoball.view.Gui.onEdt;
 
 import gizmoball.app.Gizmoball;
+import gizmoball.controller.Settings;
 import gizmoball.model.gizmo.Gizmo;
+import java.awt.Component;
+import java.awt.Container;
 import java.awt.Window;
+import java.io.File;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -13,8 +17,12 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Optional;
 import java.util.function.Predicate;
+import java.util.stream.Collectors;
 import javax.swing.JButton;
 import javax.swing.JDialog;
+import javax.swing.JFileChooser;
+import javax.swing.JLabel;
+import javax.swing.JTextArea;
 import javax.swing.JList;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
@@ -48,6 +56,12 @@ abstract class WindowOnFiles {
     /** Launches the game on the board file (null: none) and keeps its window. */
     void launch(Path file) {
         app = Gizmoball.launch(file);
+        window = app.window();
+    }
+
+    /** As {@link #launch(Path)}, keeping the player's settings in {@code settings}. */
+    void launch(Path file, Settings settings) {
+        app = Gizmoball.launch(file, settings);
         window = app.window();
     }
 
@@ -94,5 +108,41 @@ abstract class WindowOnFiles {
     static void click(JDialog dialog, String text) {
         onEdt(() -> Gui.find(dialog.getContentPane(), JButton.class, b -> text.equals(b.getText()))
                 .orElseThrow().doClick(0));
+    }
+
+    static JFileChooser awaitChooser() {
+        JDialog dialog = awaitDialog(d -> Gui.find(d.getContentPane(), JFileChooser.class, c -> true).isPresent());
+        return onEdt(() -> Gui.find(dialog.getContentPane(), JFileChooser.class, c -> true).orElseThrow());
+    }
+
+    /** As if the player typed the name and pressed Save, with the chooser's filter as it is. */
+    static void approve(JFileChooser chooser, File file) {
+        onEdt(() -> {
+            chooser.setSelectedFile(file);
+            chooser.approveSelection();
+        });
+    }
+
+    static List<String> buttons(JDialog dialog) {
+        return onEdt(() -> all(dialog, JButton.class).stream().map(JButton::getText)
+                .filter(t -> t != null && !t.isEmpty()).toList());
+    }
+
+    static String text(JDialog dialog) {
+        return onEdt(() -> all(dialog, JLabel.class).stream().map(JLabel::getText).collect(Collectors.joining("\n"))
+                + all(dialog, JTextArea.class).stream().map(JTextArea::getText).collect(Collectors.joining("\n")));
+    }
+
+    static <C extends Component> List<C> all(Container root, Class<C> type) {
+        List<C> found = new ArrayList<>();
+        for (Component c : root.getComponents()) {
+            if (type.isInstance(c) && c.isVisible()) {
+                found.add(type.cast(c));
+            }
+            if (c instanceof Container inner) {
+                found.addAll(all(inner, type));
+            }
+        }
+        return found;
     }
 }

@@ -13,6 +13,16 @@ public sealed interface PlayEvent {
      * centre at the moment of the hit (the aim preview marks it).
      */
     record Hit(Struck struck, GizmoKind kind, double speed, String ball, Vect at) implements PlayEvent {
+        /**
+         * L/s: the slowest impact that is a real hit, the one threshold of everything that hears hits (a hit scores,
+         * a hit clicks). Slower ones are a ball settling or rolling along a surface.
+         */
+        public static final double REAL_IMPACT_SPEED = 1;
+
+        /** A real impact, not a ball settling: it scores and it is heard. */
+        public boolean isRealImpact() {
+            return speed >= REAL_IMPACT_SPEED;
+        }
     }
 
     /** An absorber captured {@code ball}, whose centre was at {@code at} when it touched the absorber. */

@@ -156,6 +156,6 @@ class DefaultBoardFromScratchGuiTest {
                 d.connections().stream().map(c -> new Connection(TriggerSource.named(name.get(c.source().name())),
                         name.get(c.target()))).toList(),
                 d.keyBindings().stream().map(k -> new KeyBinding(k.keyCode(), k.edge(), name.get(k.gizmo()))).toList(),
-                d.gravity(), d.mu(), d.mu2());
+                d.gravity(), d.mu(), d.mu2(), d.game());
     }
 }

@@ -1,0 +1,141 @@
+package gizmoball.view;
+
+import static gizmoball.view.Gui.await;
+import static gizmoball.view.Gui.onEdt;
+import static org.assertj.core.api.Assertions.assertThat;
+
+import gizmoball.controller.Settings;
+import gizmoball.session.Mode;
+import java.awt.Rectangle;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.FileTime;
+import java.util.UUID;
+import java.util.prefs.Preferences;
+import javax.swing.JDialog;
+import javax.swing.JFileChooser;
+import javax.swing.SwingUtilities;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+
+/** Issue 23, items 1-7, through the window: files keep what the author wrote, and the File menu's rough edges. */
+class AuthorFilesGuiTest extends WindowOnFiles {
+    private final Preferences node = Preferences.userRoot().node("/gizmoball-test/" + UUID.randomUUID());
+    private final Settings settings = new Settings(node);
+
+    @AfterEach
+    void forget() throws Exception {
+        node.removeNode();
+    }
+
+    private Path defaultBoardCopy() throws Exception {
+        return Files.copy(Path.of("boards", "default.txt"), dir.resolve("default.txt"));
+    }
+
+    @Test
+    void savingTheDefaultBoardUnchangedWritesNothingAndAnEditChangesOnlyItsLines() throws Exception {
+        Path file = defaultBoardCopy();
+        String original = Files.readString(file);
+        FileTime before = FileTime.fromMillis(0);
+        Files.setLastModifiedTime(file, before);
+        launch(file, settings);
+
+        Gui.clickMenu(window.menus(), "Save");
+        assertThat(Files.getLastModifiedTime(file)).as("not written").isEqualTo(before);
+        assertThat(onEdt(() -> window.statusLine().message())).contains("nothing to write");
+
+        onEdt(() -> window.session().setMode(Mode.BUILD));
+        onEdt(() -> app.build().controller().select("C1"));
+        Gui.clickMenu(window.menus(), "Delete selection");
+        Gui.clickMenu(window.menus(), "Save");
+
+        assertThat(Files.readString(file)).isEqualTo(original.replace("Circle C1 3 4\n", "")
+                .replace("Connect C1 LF\n", ""));
+        assertThat(onEdt(window::getTitle)).isEqualTo("Gizmoball - default.txt");
+    }
+
+    @Test
+    void fileQuitKeepsTheWindowsPlaceAndSize() {
+        launch(null, settings);
+        Rectangle placed = new Rectangle(30, 50, 900, 760);
+        onEdt(() -> window.setBounds(placed));
+        await("the window to move", () -> window.getBounds().equals(placed));
+
+        Gui.clickMenu(window.menus(), "Quit");
+
+        await("the window to close", () -> !window.isDisplayable());
+        assertThat(settings.windowBounds()).contains(placed);
+    }
+
+    @Test
+    void theBoardOpenedAtLaunchIsNoChoiceOfFolderOnlyTheChoosersAre() throws Exception {
+        Path chosenBefore = Files.createDirectory(dir.resolve("mine"));
+        settings.setLastFolder(chosenBefore);
+        launch(write("launched.txt", GOOD), settings);
+        assertThat(settings.lastFolder()).contains(chosenBefore);
+
+        Path other = Files.createDirectory(dir.resolve("other"));
+        Files.writeString(other.resolve("b.txt"), GOOD);
+        SwingUtilities.invokeLater(() -> app.files().open());
+        approve(awaitChooser(), other.resolve("b.txt").toFile());
+
+        await("the board to open", () -> window.session().file().isPresent()
+                && window.session().file().get().equals(other.resolve("b.txt")));
+        assertThat(settings.lastFolder()).contains(other);
+    }
+
+    @Test
+    void openAcceptsTheNameItSuggestsAfterSaveAsAddedTheExtension() throws Exception {
+        launch(null, settings);
+        SwingUtilities.invokeLater(() -> app.files().saveAs());
+        approve(awaitChooser(), dir.resolve("xyz").toFile());
+        await("the save", () -> Files.exists(dir.resolve("xyz.txt")));
+
+        SwingUtilities.invokeLater(() -> app.files().open());
+        JFileChooser chooser = awaitChooser();
+        onEdt(chooser::approveSelection);
+
+        await("the board to open", () -> window.statusLine().message().equals("Loaded xyz.txt"));
+        assertThat(onEdt(() -> window.session().file())).contains(dir.resolve("xyz.txt"));
+    }
+
+    @Test
+    void cancelOnReplaceReturnsToTheChooser() throws Exception {
+        launch(write("good.txt", GOOD), settings);
+        Path existing = write("other.txt", "Square S9 9 9\n");
+
+        SwingUtilities.invokeLater(() -> app.files().saveAs());
+        approve(awaitChooser(), existing.toFile());
+        JDialog question = awaitDialog(d -> "Save As".equals(d.getTitle()));
+        click(question, "Cancel");
+        await("the question to close", () -> !question.isShowing());
+
+        approve(awaitChooser(), dir.resolve("third.txt").toFile());
+        await("the save under another name", () -> Files.exists(dir.resolve("third.txt")));
+        assertThat(Files.readString(existing)).isEqualTo("Square S9 9 9\n");
+        assertThat(onEdt(() -> window.session().file())).contains(dir.resolve("third.txt"));
+    }
+
+    @Test
+    void aSampleBoardShowsItsNameInTheTitleAndTheStatusLine() {
+        launch(null, settings);
+        onEdt(() -> app.files().openSample("default.txt"));
+
+        assertThat(onEdt(window::getTitle)).isEqualTo("Gizmoball - default.txt (sample)");
+        await("the status line to name it", () -> window.statusLine().text().contains("default.txt (sample)"));
+    }
+
+    @Test
+    void clearBoardThenUndoIsBackToTheSavedBoard() throws Exception {
+        launch(write("good.txt", GOOD), settings);
+        onEdt(() -> window.session().setMode(Mode.BUILD));
+
+        SwingUtilities.invokeLater(() -> Gui.menuItem(window.menus(), "Clear board\u2026").doClick(0));
+        click(awaitDialog(d -> "Clear board".equals(d.getTitle())), "OK");
+        await("the board to clear", () -> window.session().board().gizmos().isEmpty());
+        assertThat(onEdt(window::getTitle)).isEqualTo("Gizmoball - good.txt *");
+
+        onEdt(() -> app.build().controller().undo());
+        assertThat(onEdt(window::getTitle)).isEqualTo("Gizmoball - good.txt");
+    }
+}
