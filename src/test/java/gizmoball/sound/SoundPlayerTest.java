@@ -34,6 +34,24 @@ class SoundPlayerTest {
         player.close();
     }
 
+    /** Issue 23, item 13: without a device sound is off, one answer for whoever asks. */
+    @Test
+    void withoutADeviceSoundIsOffWhateverIsAsked() throws Exception {
+        SoundPlayer player = new SoundPlayer(notices::add, (format, bytes) -> {
+            throw new LineUnavailableException("no audio device");
+        }, false);
+        assertThat(player.hasDevice()).isTrue();
+        player.setEnabled(true);
+        awaitNotices(1);
+
+        assertThat(player.hasDevice()).isFalse();
+        assertThat(player.isEnabled()).isFalse();
+        player.setEnabled(true);
+        assertThat(player.isEnabled()).isFalse();
+        assertThat(notices).containsExactly(SoundPlayer.NO_DEVICE);
+        player.close();
+    }
+
     @Test
     void playingNeverWaitsForTheAudioThreadEvenWhenTheDeviceHangs() throws Exception {
         CountDownLatch release = new CountDownLatch(1);
