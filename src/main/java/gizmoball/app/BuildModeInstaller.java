@@ -18,6 +18,7 @@ import gizmoball.view.editor.SidePane;
 import javax.swing.JMenuBar;
 import javax.swing.JScrollPane;
 import java.awt.Cursor;
+import java.awt.Dimension;
 import java.awt.Insets;
 import java.awt.Rectangle;
 import java.awt.Toolkit;
@@ -39,6 +40,8 @@ public final class BuildModeInstaller {
 
     /** Pixels of board wanted beside the labelled palette and the properties before the palette turns compact. */
     private static final int MIN_BOARD = 480;
+    /** The smallest board worth building on (12 px per L): the window is never made smaller than to show it. */
+    private static final int SMALLEST_BOARD = 240;
 
     public static BuildMode install(GameWindow window, GameSession session) {
         BoardPanel panel = window.boardPanel();
@@ -69,6 +72,7 @@ public final class BuildModeInstaller {
                 fitPalette.run();
             }
         });
+        window.setMinimumSize(minimumSize(window, palette, west, east));
         fitPalette.run();
 
         EditMenu editMenu = EditMenu.of(controller, window, building);
@@ -99,6 +103,23 @@ public final class BuildModeInstaller {
         int width = Math.min(window.getWidth() + sides, screen.width - insets.left - insets.right);
         window.setSize(width, Math.min(window.getHeight(), screen.height - insets.top - insets.bottom));
         window.setLocationRelativeTo(null);
+    }
+
+    /**
+     * The smallest window in which build mode is whole: the compact palette, the properties and the smallest board
+     * side by side (each side with room for its scroll bar), and the whole tool bar; as tall as that board under
+     * the menus and tool bar and above the status line.
+     */
+    private static Dimension minimumSize(GameWindow window, PalettePanel palette, JScrollPane west, JScrollPane east) {
+        palette.setCompact(true);
+        int bar = west.getVerticalScrollBar().getPreferredSize().width;
+        int sides = west.getPreferredSize().width + east.getPreferredSize().width + 2 * bar;
+        Insets frame = window.getInsets();
+        int width = Math.max(window.toolBar().getPreferredSize().width, sides + SMALLEST_BOARD)
+                + frame.left + frame.right;
+        int height = window.menus().getPreferredSize().height + window.toolBar().getPreferredSize().height
+                + window.statusLine().getPreferredSize().height + SMALLEST_BOARD + frame.top + frame.bottom;
+        return new Dimension(width, height);
     }
 
     /** Crosshair where a click places something, a hand where it acts on what is under it. */

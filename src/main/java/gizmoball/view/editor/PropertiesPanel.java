@@ -26,6 +26,7 @@ import javax.swing.JScrollPane;
 import javax.swing.JTextField;
 import javax.swing.ListSelectionModel;
 import javax.swing.SwingConstants;
+import javax.swing.SwingUtilities;
 import java.awt.BorderLayout;
 import java.awt.Component;
 import java.awt.Container;
@@ -35,6 +36,8 @@ import java.awt.FlowLayout;
 import java.awt.GridBagConstraints;
 import java.awt.GridBagLayout;
 import java.awt.Insets;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.Objects;
 import java.awt.event.ActionEvent;
 import java.awt.event.KeyEvent;
@@ -145,6 +148,7 @@ public final class PropertiesPanel extends JPanel {
         applyBall.setEnabled(ball.isPresent());
         enableAll(colourRows, gizmo.isPresent());
         colour.setText("");
+        RefusedValue.unmark(colour);
         swatch.setBackground(colourRows.getBackground());
         gizmo.ifPresent(g -> {
             colour.setText(g.colour().map(Editor::hex).orElse(""));
@@ -261,8 +265,9 @@ public final class PropertiesPanel extends JPanel {
         JButton choose = new JButton("Choose...");
         choose.setName("gizmo.colour.choose");
         choose.addActionListener(e -> {
-            Color chosen = JColorChooser.showDialog(this, "Colour of " + shownSelection,
-                    swatch.getBackground());
+            // Over the window, centred on it (over the panel it opened beside the window).
+            Color chosen = JColorChooser.showDialog(SwingUtilities.getWindowAncestor(this),
+                    "Colour of " + shownSelection, swatch.getBackground());
             if (chosen != null) {
                 applyColour(Editor.hex(Rgb.of(chosen.getRGB())));
             }
@@ -283,8 +288,34 @@ public final class PropertiesPanel extends JPanel {
         controller.selectedGizmo().ifPresent(g -> {
             if (controller.setColour(g.name(), text)) {
                 focusBoard.run();
+            } else {
+                keepRefused(Map.of(colour, text));
             }
         });
+    }
+
+    /**
+     * A refused apply leaves what was typed in the fields that asked for the change, each marked with the reason
+     * (a rolled-back edit has shown the board's values again meanwhile).
+     */
+    private void keepRefused(Map<JTextField, String> typed) {
+        String reason = controller.lastRefusal().orElse("refused");
+        typed.forEach((field, text) -> {
+            field.setText(text);
+            RefusedValue.mark(field, reason);
+        });
+        typed.keySet().stream().findFirst().ifPresent(JTextField::requestFocusInWindow);
+    }
+
+    /** The typed texts of the fields whose numbers differ from the board's (the ones an apply changes). */
+    private static Map<JTextField, String> changed(NumberField[] fields, double[] now) {
+        Map<JTextField, String> typed = new LinkedHashMap<>();
+        for (int i = 0; i < fields.length; i++) {
+            if (fields[i].differsFrom(now[i])) {
+                typed.put(fields[i], fields[i].getText());
+            }
+        }
+        return typed;
     }
 
     private static GridBagConstraints wide(GridBagConstraints c) {
@@ -293,18 +324,34 @@ public final class PropertiesPanel extends JPanel {
     }
 
     private void applyBoard() {
-        Optional<double[]> v = values(gravity, mu, mu2);
-        if (v.isPresent() && controller.setConstants(v.get()[0], v.get()[1], v.get()[2])) {
+        NumberField[] fields = {gravity, mu, mu2};
+        Optional<double[]> v = values(fields);
+        if (v.isEmpty()) {
+            return;
+        }
+        Board board = controller.board();
+        Map<JTextField, String> typed = changed(fields, new double[] {board.gravity(), board.mu(), board.mu2()});
+        if (controller.setConstants(v.get()[0], v.get()[1], v.get()[2])) {
             focusBoard.run();
+        } else {
+            keepRefused(typed);
         }
     }
 
     private void applyBall() {
         Optional<BallView> ball = controller.selectedBall();
-        Optional<double[]> v = values(ballX, ballY, ballVx, ballVy);
-        if (ball.isPresent() && v.isPresent()
-                && controller.setBall(ball.get().name(), v.get()[0], v.get()[1], v.get()[2], v.get()[3])) {
+        NumberField[] fields = {ballX, ballY, ballVx, ballVy};
+        Optional<double[]> v = values(fields);
+        if (ball.isEmpty() || v.isEmpty()) {
+            return;
+        }
+        BallView b = ball.get();
+        Map<JTextField, String> typed = changed(fields,
+                new double[] {b.position().x(), b.position().y(), b.velocity().x(), b.velocity().y()});
+        if (controller.setBall(b.name(), v.get()[0], v.get()[1], v.get()[2], v.get()[3])) {
             focusBoard.run();
+        } else {
+            keepRefused(typed);
         }
     }
 
