@@ -30,11 +30,15 @@ public final class Main {
 
     public static final String USAGE = String.join(System.lineSeparator(),
             "usage: gizmoball [BOARD]        play BOARD in a window (default: boards/default.txt)",
-            "       " + HeadlessOptions.USAGE.substring("usage: ".length()),
-            "                                run BOARD for N ticks without a window, print the board after",
+            "       " + HeadlessOptions.PLAY_USAGE,
+            "                                run BOARD for N ticks without a window (pressing the keys of SCRIPT),",
+            "                                print the board after; --report: the game as JSON, --record: its replay",
+            "       " + HeadlessOptions.CHECK_USAGE,
+            "                                play a replay again, print its score; exit 4 if it is not the recorded one",
             "       gizmoball --help | -h    show this help",
             "       gizmoball --version      show the version",
-            "exit status: 0 done, 2 bad arguments, bad board or no display, 3 output not written (--headless)");
+            "exit status: 0 done, 2 bad arguments, bad board or no display, 3 output not written (--headless),",
+            "             4 the replay reached another score");
     static final String NO_DISPLAY = "gizmoball: no display: set DISPLAY or use --headless";
 
     /** Set by the installed start script to the installation directory, which ships boards/. */

@@ -256,7 +256,8 @@ public class GeometryImpl implements GeometryInterface {
      * ({@link #timeUntilRotatingCircleCollision}), and at angular velocity 0 the answer is the static one. Only times in [0, maximumForesight] are reported, so
      * a caller whose rotation stops earlier uses an instance whose foresight is the remaining rotation time and then
      * treats the segment as static at its stop angle. At the returned time the ball is within 1e-10 L of touching
-     * the face (never inside it); touching or overlapping the face and closing is 0. A ball at rest is found. See
+     * the face; touching or overlapping the face and closing is 0. A contact that begins touching at zero closing
+     * speed and is then closed on is reported as soon as it closes at a speed a reflection can act on. A ball at rest is found. See
      * {@link RotatingContactSearch}.
      */
     @Override

@@ -31,9 +31,12 @@ package physics;
  * which |x| cannot reach r: x is linear in q, so &plusmn;x(s) &le; &plusmn;(x(t) + x'(t)(s - t)) + M (s - t)&sup2;/2
  * and |x(s)| &le; |x(t)| + L (s - t). Once |x| is back at r it carries on as above.
  * <p>
- * <b>Already in contact.</b> Touching or overlapping the face (or the circle) and closing is time 0. While the
- * ball touches or overlaps it without closing, the search moves on by steps over which the gap cannot drop by
- * more than {@link #CONTACT_TOLERANCE}, until the ball is clear again or starts closing.
+ * <b>Already in contact.</b> Touching or overlapping the face (or the circle) and closing is time 0. Closing is
+ * decided to second order: the gap's mean rate over the next touching step (below) is negative. So a contact that
+ * begins touching with zero closing speed and then closes, as when a flipper's side takes a ball over from its
+ * round end, is a contact at that moment, and one that only grazes and leaves is none. While the ball touches or
+ * overlaps without closing, the search moves on by touching steps, over which the gap cannot drop by more than
+ * {@link #CONTACT_TOLERANCE}, until the ball is clear again or starts closing.
  */
 final class RotatingContactSearch {
     /** The reported contact has a gap in [0, CONTACT_TOLERANCE] (in L) unless it is already closing at 0. */
@@ -71,9 +74,13 @@ final class RotatingContactSearch {
     /** Distance from q to the forbidden set (0 inside it) and its rate. */
     private double gap;
     private double gapRate;
-    /** Wall: |x| - r; circle: the gap (negative when overlapping). And its rate; a centre on the line moves away. */
+    /**
+     * Wall: |x| - r; circle: the gap (negative when overlapping). Its rate (a centre on the line moves away) and its
+     * second derivative, which decides a contact that touches at zero closing speed.
+     */
     private double faceGap;
     private double faceRate;
+    private double faceAcceleration;
     /** Wall: the signed distance x of q from the line, its rate, and how far q's foot lies beyond the segment. */
     private double offset;
     private double offsetRate;
@@ -132,7 +139,7 @@ final class RotatingContactSearch {
             double lipschitz = speed + spin * farthest;
             double curvature = 2 * spin * speed + w * w * farthest;
             while (true) {
-                if (region == Region.TOUCHING && faceRate < 0) {
+                if (region == Region.TOUCHING && closing(curvature)) {
                     return t;
                 }
                 if (t >= sliceEnd) {
@@ -157,13 +164,35 @@ final class RotatingContactSearch {
     private double step(Region region, double lipschitz, double curvature) {
         return switch (region) {
             case CLEAR -> Math.max(gap / lipschitz, firstZero(gap, gapRate, curvature));
-            // Where faceGap + faceRate h - curvature h^2 / 2 is CONTACT_TOLERANCE below faceGap.
-            case TOUCHING -> (faceRate + Math.sqrt(faceRate * faceRate + 2 * curvature * CONTACT_TOLERANCE))
-                    / curvature;
+            case TOUCHING -> touchingStep(curvature);
             case THROUGH_END -> Math.max(-faceGap / lipschitz,
                     Math.min(firstZero(contactDistance - offset, -offsetRate, curvature),
                             firstZero(contactDistance + offset, offsetRate, curvature)));
         };
+    }
+
+    /** Where faceGap + faceRate h - curvature h&sup2;/2 is CONTACT_TOLERANCE below faceGap. */
+    private double touchingStep(double curvature) {
+        return (faceRate + Math.sqrt(faceRate * faceRate + 2 * curvature * CONTACT_TOLERANCE)) / curvature;
+    }
+
+    /**
+     * Whether the touching ball closes on the obstacle now, at a rate that the next touching step h resolves: the
+     * gap's rate is below -|faceAcceleration| h / 2, the most the second-order term can change the gap's mean rate
+     * over that step. A contact whose rate is above that is grazing and is not reported yet. One that approaches by
+     * a rounding's worth of a rate and is turned around within the step is then no contact (reported, a reflection
+     * would send a ball that is leaving back in). One that touches at zero closing speed and is then closed on (the
+     * side of a flipper taking a ball over from its round end, a surface turning into a ball that slides along it)
+     * is reported within a touching step or two, about 1e-10 L deep at most, with a closing speed for a reflection to
+     * act on. Reported at the instant of zero closing speed, a caller that reflects and asks again would get the
+     * same contact at time 0, without end. Without curvature the motion is straight and the convex gap closes only
+     * if its rate is negative.
+     */
+    private boolean closing(double curvature) {
+        if (curvature == 0) {
+            return faceRate < 0;
+        }
+        return faceRate < -Math.abs(faceAcceleration) * touchingStep(curvature) / 2;
     }
 
     /**
@@ -223,23 +252,36 @@ final class RotatingContactSearch {
         double turnedY = ux * sin + uy * cos;
         double relX = pivot.x() + turnedX - ax;
         double relY = pivot.y() + turnedY - ay;
-        // q' = R(-wt) v - w J R(-wt) u, with J (x, y) = (-y, x)
-        double rateX = v.x() * cos - v.y() * sin + w * turnedY;
-        double rateY = v.x() * sin + v.y() * cos - w * turnedX;
+        // q' = R(-wt) v - w J R(-wt) u and q'' = -2 w J R(-wt) v - w^2 R(-wt) u, with J (x, y) = (-y, x)
+        double turnedVX = v.x() * cos - v.y() * sin;
+        double turnedVY = v.x() * sin + v.y() * cos;
+        double rateX = turnedVX + w * turnedY;
+        double rateY = turnedVY - w * turnedX;
+        double accelerationX = 2 * w * turnedVY - w * w * turnedX;
+        double accelerationY = -2 * w * turnedVX - w * w * turnedY;
         if (wall) {
-            evaluateFace(relX, relY, rateX, rateY);
+            evaluateFace(relX, relY, rateX, rateY, accelerationX, accelerationY);
         } else {
             double distance = Math.hypot(relX, relY);
             gap = distance - contactDistance;
-            // At the centre itself the direction is undefined; treating it as "not closing" lets the search move on.
-            gapRate = distance == 0 ? 0 : (relX * rateX + relY * rateY) / distance;
             faceGap = gap;
+            if (distance == 0) {
+                // At the centre itself the direction is undefined; "not closing" lets the search move on.
+                gapRate = 0;
+                faceAcceleration = 0;
+            } else {
+                gapRate = (relX * rateX + relY * rateY) / distance;
+                // |q - c|'' = (|q'|^2 - |q - c|'^2) / |q - c| + n . q''
+                faceAcceleration = (rateX * rateX + rateY * rateY - gapRate * gapRate) / distance
+                        + (relX * accelerationX + relY * accelerationY) / distance;
+            }
             faceRate = gapRate;
         }
     }
 
-    /** The face's gaps from q - a and q'. */
-    private void evaluateFace(double relX, double relY, double rateX, double rateY) {
+    /** The face's gaps from q - a, q' and q''. */
+    private void evaluateFace(double relX, double relY, double rateX, double rateY, double accelerationX,
+                              double accelerationY) {
         double along = relX * alongX + relY * alongY;
         double alongRate = rateX * alongX + rateY * alongY;
         offset = relY * alongX - relX * alongY; // along the normal (-alongY, alongX)
@@ -257,6 +299,11 @@ final class RotatingContactSearch {
         }
         faceGap = Math.abs(offset) - contactDistance;
         faceRate = offset == 0 ? Math.abs(offsetRate) : Math.signum(offset) * offsetRate;
+        double offsetAcceleration = accelerationY * alongX - accelerationX * alongY;
+        // |x|'' is sign(x) x''; on the line it is the sign of the way the centre leaves it (of x', else of x'').
+        double side = offset != 0 ? Math.signum(offset) : offsetRate != 0 ? Math.signum(offsetRate)
+                : Math.signum(offsetAcceleration);
+        faceAcceleration = side * offsetAcceleration;
         double out = Math.max(faceGap, 0);
         gap = Math.hypot(beyond, out);
         gapRate = gap == 0 ? 0 : (beyond * beyondRate + out * faceRate) / gap;

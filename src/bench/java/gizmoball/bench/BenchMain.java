@@ -13,19 +13,23 @@ import java.util.Optional;
 
 /**
  * The benchmark: every scene with every method (cost and error), the scaling runs, the soak, the aim preview and
- * the steady state of play (issue 10); a table on standard output, CSV and PNG charts in the output directory.
+ * the steady state of play (issue 10), the dense-board fuzz (issue 20, {@link FuzzSurvey}); a table on standard output,
+ * CSV and PNG charts (and the fuzz's Markdown) in the output directory.
  * <p>
  * Arguments: {@code [--quick] --scripts DIR --boards DIR [--peers DIR] --out DIR} (key scripts, the game's sample
  * boards, other implementations' boards for the steady state and the guard survey, where to write).
  * {@code --quick} takes fewer and shorter timing samples, shorter scaling runs, a shorter soak and shorter
- * steady-state windows, for a smoke run under two minutes.
+ * steady-state windows and fewer, shorter fuzz boards, for a smoke run under two minutes.
  */
 public final class BenchMain {
 
     /** How much work each part does. */
-    record Effort(int samples, long minSampleNanos, double scalingSeconds, long soakTicks, SteadyState.Windows steady) {
-        static final Effort FULL = new Effort(5, 20_000_000, 5, 1_000_000, SteadyState.Windows.FULL);
-        static final Effort QUICK = new Effort(3, 5_000_000, 1, 50_000, SteadyState.Windows.QUICK);
+    record Effort(int samples, long minSampleNanos, double scalingSeconds, long soakTicks, SteadyState.Windows steady,
+                  FuzzSurvey.Effort fuzz) {
+        static final Effort FULL = new Effort(5, 20_000_000, 5, 1_000_000, SteadyState.Windows.FULL,
+                FuzzSurvey.Effort.FULL);
+        static final Effort QUICK = new Effort(3, 5_000_000, 1, 50_000, SteadyState.Windows.QUICK,
+                FuzzSurvey.Effort.QUICK);
     }
 
     private BenchMain() {
@@ -92,6 +96,9 @@ public final class BenchMain {
 
         stdout.println("steady state");
         SteadyState.run(stdout, boards, peers, effort.steady(), out);
+
+        stdout.println();
+        FuzzSurvey.run(stdout, effort.fuzz(), out);
 
         stdout.printf(Locale.ROOT, "%nwrote CSV and charts to %s in %.0f s wall time%n", out.toAbsolutePath(),
                 (System.nanoTime() - wallStart) / 1e9);

@@ -25,12 +25,12 @@ public final class KeyCodes {
     private KeyCodes() {
     }
 
-    static boolean isKnown(int keyCode) {
+    public static boolean isKnown(int keyCode) {
         return CODES.contains(keyCode);
     }
 
     /** The code of a KeyEvent key name in any letter case, with or without its VK_ prefix: Space, q, vk_left. */
-    static OptionalInt named(String name) {
+    public static OptionalInt named(String name) {
         String upper = name.toUpperCase(Locale.ROOT);
         Integer code = BY_NAME.get(upper.startsWith(PREFIX) ? upper.substring(PREFIX.length()) : upper);
         return code == null ? OptionalInt.empty() : OptionalInt.of(code);

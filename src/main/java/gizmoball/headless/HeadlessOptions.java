@@ -1,23 +1,39 @@
 package gizmoball.headless;
 
-import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
 
 /**
- * The command line of the headless runner:
- * {@code --headless --ticks N [--dt SECONDS] [--skip-bad-lines] [--out FILE] BOARD}, options in any order.
- *
- * @param dt empty: the model's default tick
+ * The command line of the headless runner, options in any order: a {@link Play} of a board for N ticks (to a key
+ * script, with a report and a replay file if asked), or a {@link Check} of a replay file.
  */
-public record HeadlessOptions(Path board, long ticks, Optional<Double> dt, boolean skipBadLines, Optional<Path> out) {
+public sealed interface HeadlessOptions {
 
-    public static final String USAGE =
-            "usage: gizmoball --headless --ticks N [--dt SECONDS] [--skip-bad-lines] [--out FILE] BOARD";
+    String PLAY_USAGE = "gizmoball --headless --ticks N [--dt SECONDS] [--skip-bad-lines] [--out FILE] [--keys SCRIPT]"
+            + " [--report FILE] [--record FILE] BOARD";
+    String CHECK_USAGE = "gizmoball --headless --replay FILE [--report FILE]";
+    String USAGE = "usage: " + PLAY_USAGE + System.lineSeparator() + "       " + CHECK_USAGE;
+
+    /** Where to write the game's JSON summary, if anywhere. */
+    Optional<Path> report();
+
+    /**
+     * Runs BOARD for N ticks, pressing the keys of the script at their ticks, and writes the board after.
+     *
+     * @param dt empty: the model's default tick
+     * @param record where to write the replay of the game
+     */
+    record Play(Path board, long ticks, Optional<Double> dt, boolean skipBadLines, Optional<Path> out,
+                Optional<Path> keys, Optional<Path> report, Optional<Path> record) implements HeadlessOptions {
+    }
+
+    /** Plays a replay file again and compares the score it reaches with the one it recorded. */
+    record Check(Path replay, Optional<Path> report) implements HeadlessOptions {
+    }
 
     /** The command line is not one the runner understands; the message says why. */
-    public static final class BadArguments extends Exception {
+    final class BadArguments extends Exception {
         private static final long serialVersionUID = 1L;
 
         BadArguments(String message) {
@@ -25,20 +41,28 @@ public record HeadlessOptions(Path board, long ticks, Optional<Double> dt, boole
         }
     }
 
-    public static HeadlessOptions parse(List<String> args) throws BadArguments {
+    static HeadlessOptions parse(List<String> args) throws BadArguments {
         Long ticks = null;
         Optional<Double> dt = Optional.empty();
         boolean skipBadLines = false;
         Optional<Path> out = Optional.empty();
+        Optional<Path> keys = Optional.empty();
+        Optional<Path> report = Optional.empty();
+        Optional<Path> record = Optional.empty();
+        Optional<Path> replay = Optional.empty();
         Path board = null;
         for (int i = 0; i < args.size(); i++) {
             String arg = args.get(i);
             switch (arg) {
                 case "--headless" -> { }
-                case "--ticks" -> ticks = ticks(valueOf(args, ++i, arg));
-                case "--dt" -> dt = Optional.of(dt(valueOf(args, ++i, arg)));
+                case "--ticks" -> ticks = OptionValues.ticks(OptionValues.of(args, ++i, arg));
+                case "--dt" -> dt = Optional.of(OptionValues.dt(OptionValues.of(args, ++i, arg)));
                 case "--skip-bad-lines" -> skipBadLines = true;
-                case "--out" -> out = Optional.of(path(valueOf(args, ++i, arg)));
+                case "--out" -> out = Optional.of(OptionValues.path(OptionValues.of(args, ++i, arg)));
+                case "--keys" -> keys = Optional.of(OptionValues.path(OptionValues.of(args, ++i, arg)));
+                case "--report" -> report = Optional.of(OptionValues.path(OptionValues.of(args, ++i, arg)));
+                case "--record" -> record = Optional.of(OptionValues.path(OptionValues.of(args, ++i, arg)));
+                case "--replay" -> replay = Optional.of(OptionValues.path(OptionValues.of(args, ++i, arg)));
                 default -> {
                     // "-" alone would be a file name; anything else with a dash is an option, never a board.
                     if (arg.startsWith("-") && arg.length() > 1) {
@@ -47,9 +71,18 @@ public record HeadlessOptions(Path board, long ticks, Optional<Double> dt, boole
                     if (board != null) {
                         throw new BadArguments("more than one board file: " + board + " and " + arg);
                     }
-                    board = path(arg);
+                    board = OptionValues.path(arg);
                 }
             }
+        }
+        if (replay.isPresent()) {
+            // The replay holds the board, the ticks, the tick length and the keys: nothing may say otherwise.
+            if (board != null || ticks != null || dt.isPresent() || keys.isPresent() || record.isPresent()
+                    || out.isPresent() || skipBadLines) {
+                throw new BadArguments("--replay takes only --report: the replay file holds the board, its ticks and"
+                        + " keys");
+            }
+            return new Check(replay.get(), report);
         }
         if (ticks == null) {
             throw new BadArguments("--ticks N is required");
@@ -57,45 +90,6 @@ public record HeadlessOptions(Path board, long ticks, Optional<Double> dt, boole
         if (board == null) {
             throw new BadArguments("no board file given");
         }
-        return new HeadlessOptions(board, ticks, dt, skipBadLines, out);
-    }
-
-    private static String valueOf(List<String> args, int index, String option) throws BadArguments {
-        if (index >= args.size()) {
-            throw new BadArguments(option + " needs a value");
-        }
-        return args.get(index);
-    }
-
-    private static long ticks(String value) throws BadArguments {
-        try {
-            long ticks = Long.parseLong(value);
-            if (ticks >= 0) {
-                return ticks;
-            }
-        } catch (NumberFormatException e) {
-            // falls through to the message below, which says what is expected
-        }
-        throw new BadArguments("--ticks needs a whole number >= 0, not '" + value + "'");
-    }
-
-    private static double dt(String value) throws BadArguments {
-        try {
-            double dt = Double.parseDouble(value);
-            if (Double.isFinite(dt) && dt > 0) {
-                return dt;
-            }
-        } catch (NumberFormatException e) {
-            // falls through to the message below, which says what is expected
-        }
-        throw new BadArguments("--dt needs a number of seconds > 0, not '" + value + "'");
-    }
-
-    private static Path path(String value) throws BadArguments {
-        try {
-            return Path.of(value);
-        } catch (InvalidPathException e) {
-            throw new BadArguments("not a file name: " + value);
-        }
+        return new Play(board, ticks, dt, skipBadLines, out, keys, report, record);
     }
 }

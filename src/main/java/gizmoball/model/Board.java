@@ -3,6 +3,7 @@ package gizmoball.model;
 import gizmoball.model.game.Game;
 import gizmoball.model.game.GameProgress;
 import gizmoball.model.game.GameRules;
+import gizmoball.model.game.KeyPress;
 import gizmoball.model.game.Playfield;
 import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.Flipper;
@@ -411,7 +412,8 @@ public final class Board {
 
     /**
      * Performs the actions bound to (keyCode, DOWN): flippers swing up, others perform their action; and those
-     * bound to (keyCode, CHANGE): every gizmo performs its action (a flipper toggles).
+     * bound to (keyCode, CHANGE): every gizmo performs its action (a flipper toggles). The game records the key with
+     * the tick ({@link GameProgress#keys()}), as it does every release.
      */
     public void keyDown(int keyCode) {
         keyAction(keyCode, KeyEdge.DOWN);
@@ -423,6 +425,7 @@ public final class Board {
     }
 
     private void keyAction(int keyCode, KeyEdge edge) {
+        game.keyPressed(ticks, edge == KeyEdge.DOWN ? KeyPress.Motion.DOWN : KeyPress.Motion.UP, keyCode);
         play.keyAction(wiring.keyBindings(), keyCode, edge, time);
     }
 

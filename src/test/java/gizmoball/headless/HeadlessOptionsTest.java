@@ -16,14 +16,25 @@ class HeadlessOptionsTest {
     void readsEveryOptionInAnyOrder() throws HeadlessOptions.BadArguments {
         HeadlessOptions options = HeadlessOptions.parse(List.of(
                 "--out", "after.txt", "board.txt", "--skip-bad-lines", "--dt", "0.01", "--headless", "--ticks", "2000"));
-        assertThat(options).isEqualTo(new HeadlessOptions(Path.of("board.txt"), 2000, Optional.of(0.01), true,
-                Optional.of(Path.of("after.txt"))));
+        assertThat(options).isEqualTo(new HeadlessOptions.Play(Path.of("board.txt"), 2000, Optional.of(0.01), true,
+                Optional.of(Path.of("after.txt")), Optional.empty(), Optional.empty(), Optional.empty()));
     }
 
     @Test
     void onlyTicksAndBoardAreRequired() throws HeadlessOptions.BadArguments {
         assertThat(HeadlessOptions.parse(List.of("--headless", "--ticks", "0", "b.txt"))).isEqualTo(
-                new HeadlessOptions(Path.of("b.txt"), 0, Optional.empty(), false, Optional.empty()));
+                new HeadlessOptions.Play(Path.of("b.txt"), 0, Optional.empty(), false, Optional.empty(),
+                        Optional.empty(), Optional.empty(), Optional.empty()));
+    }
+
+    @Test
+    void readsTheGameOptions() throws HeadlessOptions.BadArguments {
+        assertThat(HeadlessOptions.parse(List.of("--headless", "--keys", "k.txt", "--ticks", "9", "--record", "r.json",
+                "--report", "s.json", "b.txt"))).isEqualTo(new HeadlessOptions.Play(Path.of("b.txt"), 9, Optional.empty(),
+                false, Optional.empty(), Optional.of(Path.of("k.txt")), Optional.of(Path.of("s.json")),
+                Optional.of(Path.of("r.json"))));
+        assertThat(HeadlessOptions.parse(List.of("--replay", "r.json", "--headless", "--report", "s.json")))
+                .isEqualTo(new HeadlessOptions.Check(Path.of("r.json"), Optional.of(Path.of("s.json"))));
     }
 
     @ParameterizedTest(name = "{0}")
@@ -38,7 +49,10 @@ class HeadlessOptionsTest {
             "--headless --ticks 5 --fast b.txt | unknown option --fast",
             "--headless --ticks 5 -x b.txt | unknown option -x",
             "--headless --ticks 5 a.txt b.txt | more than one board file: a.txt and b.txt",
-            "--headless --ticks 5 b.txt --out | --out needs a value"})
+            "--headless --ticks 5 b.txt --out | --out needs a value",
+            "--headless --ticks 5 --keys | --keys needs a value",
+            "--headless --replay r.json b.txt | --replay takes only --report: the replay file holds the board, its ticks and keys",
+            "--headless --replay r.json --ticks 5 | --replay takes only --report: the replay file holds the board, its ticks and keys"})
     void refusesBadCommandLinesSayingWhy(String commandLine, String message) {
         assertThatThrownBy(() -> HeadlessOptions.parse(List.of(commandLine.split(" "))))
                 .isInstanceOf(HeadlessOptions.BadArguments.class).hasMessage(message);

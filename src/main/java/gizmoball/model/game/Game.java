@@ -28,6 +28,7 @@ public final class Game implements GameProgress {
     private OptionalLong extraBallTick = OptionalLong.empty();
     private final List<ScoringHit> scoringHits = new ArrayList<>();
     private final List<Drain> drains = new ArrayList<>();
+    private final List<KeyPress> keys = new ArrayList<>();
 
     /** For the board: a game not started yet on that board. */
     public Game(Playfield field) {
@@ -45,11 +46,18 @@ public final class Game implements GameProgress {
         scoringHits.addAll(source.scoringHits);
         drains.clear();
         drains.addAll(source.drains);
+        keys.clear();
+        keys.addAll(source.keys);
     }
 
     /** For the board: back to a game not started, as on a board just made. */
     public void reset() {
         copyFrom(new Game(field));
+    }
+
+    /** For the board: the player pressed or released a key after {@code tick} ticks. */
+    public void keyPressed(long tick, KeyPress.Motion motion, int keyCode) {
+        keys.add(new KeyPress(tick, motion, keyCode));
     }
 
     /** For the board: what the tick numbered {@code tick} did to the game. */
@@ -125,5 +133,10 @@ public final class Game implements GameProgress {
     @Override
     public List<Drain> drains() {
         return Collections.unmodifiableList(drains);
+    }
+
+    @Override
+    public List<KeyPress> keys() {
+        return Collections.unmodifiableList(keys);
     }
 }

@@ -25,4 +25,7 @@ public interface GameProgress {
 
     /** Every ball lost, in order. */
     List<Drain> drains();
+
+    /** Every key pressed and released on the board, in order, with its tick: the game's replay script. */
+    List<KeyPress> keys();
 }

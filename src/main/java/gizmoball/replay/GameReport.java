@@ -1,0 +1,29 @@
+package gizmoball.replay;
+
+import com.google.gson.Gson;
+import com.google.gson.GsonBuilder;
+import gizmoball.model.Board;
+import gizmoball.model.game.Drain;
+import gizmoball.model.game.GameProgress;
+import gizmoball.model.game.ScoringHit;
+import java.util.List;
+
+/**
+ * The JSON summary of a game (the headless runner's {@code --report}): the ticks run, score, balls left, whether the
+ * game is over, the tick of each drain and every scoring hit (tick, gizmo, points).
+ */
+public record GameReport(long ticks, long score, int ballsLeft, boolean gameOver, boolean sandbox,
+                         Long extraBallTick, List<Drain> drains, List<ScoringHit> scoringHits) {
+    private static final Gson GSON = new GsonBuilder().setPrettyPrinting().disableHtmlEscaping().create();
+
+    public static GameReport of(Board board) {
+        GameProgress game = board.game();
+        return new GameReport(board.ticks(), game.score(), game.ballsLeft(), game.isOver(), !game.isGame(),
+                game.extraBallTick().isPresent() ? game.extraBallTick().getAsLong() : null,
+                List.copyOf(game.drains()), List.copyOf(game.scoringHits()));
+    }
+
+    public String toJson() {
+        return GSON.toJson(this) + "\n";
+    }
+}

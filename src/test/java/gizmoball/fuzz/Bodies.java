@@ -1,0 +1,82 @@
+package gizmoball.fuzz;
+
+import gizmoball.model.gizmo.Absorber;
+import gizmoball.model.gizmo.Bumper;
+import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.GizmoKind;
+
+import java.util.List;
+
+/**
+ * The solid body of each gizmo, built from what a view may read (kind, footprint cell, size, rotation, a flipper's
+ * angle) and the product description's shapes (SPEC.md, "Gizmos"), never from the game's own shapes or distances.
+ */
+final class Bodies {
+    /** A flipper's bar: 2 L long with round ends of radius 0.25 L, so the ends' centres are 1.5 L apart. */
+    static final double FLIPPER_RADIUS = 0.25;
+    static final double FLIPPER_REACH = 1.5;
+    static final double BUMPER_RADIUS = 0.5;
+
+    private Bodies() {
+    }
+
+    static Solid of(Gizmo gizmo) {
+        if (gizmo instanceof Bumper bumper) {
+            return bumper(bumper);
+        }
+        if (gizmo instanceof Flipper flipper) {
+            return flipper(flipper);
+        }
+        Absorber absorber = (Absorber) gizmo;
+        return rectangle(absorber.x(), absorber.y(), absorber.width(), absorber.height());
+    }
+
+    private static Solid bumper(Bumper bumper) {
+        int x = bumper.x();
+        int y = bumper.y();
+        return switch (bumper.kind()) {
+            case SQUARE -> rectangle(x, y, 1, 1);
+            case CIRCLE -> new Solid.Disc(new Point(x + 0.5, y + 0.5), BUMPER_RADIUS);
+            // Corners at top-left, top-right and bottom-left of the cell before it is turned.
+            case TRIANGLE -> new Solid.Polygon(List.of(turned(bumper, x, y), turned(bumper, x + 1, y),
+                    turned(bumper, x, y + 1)));
+            default -> throw new IllegalArgumentException(bumper + " is no bumper kind the checker knows");
+        };
+    }
+
+    private static Solid rectangle(int x, int y, int width, int height) {
+        return new Solid.Polygon(List.of(new Point(x, y), new Point(x + width, y), new Point(x + width, y + height),
+                new Point(x, y + height)));
+    }
+
+    /**
+     * The bar at its current angle. Before turning: a left flipper pivots at (x + 0.25, y + 0.25) and hangs down the
+     * box's left edge, swinging toward the top edge (its tip from straight down toward +x); a right one mirrors it
+     * about the box's vertical centre line.
+     */
+    static Solid.Capsule flipper(Flipper flipper) {
+        boolean left = flipper.kind() == GizmoKind.LEFT_FLIPPER;
+        double pivotX = flipper.x() + (left ? FLIPPER_RADIUS : 2 - FLIPPER_RADIUS);
+        double pivotY = flipper.y() + FLIPPER_RADIUS;
+        double angle = Math.toRadians(flipper.angleFromRest());
+        double across = (left ? 1 : -1) * Math.sin(angle) * FLIPPER_REACH;
+        double down = Math.cos(angle) * FLIPPER_REACH;
+        return new Solid.Capsule(turned(flipper, pivotX, pivotY), turned(flipper, pivotX + across, pivotY + down),
+                FLIPPER_RADIUS);
+    }
+
+    /** (px, py) turned clockwise on the screen (y down) by the gizmo's quarter turns about its footprint's centre. */
+    static Point turned(Gizmo gizmo, double px, double py) {
+        double cx = gizmo.x() + gizmo.width() / 2.0;
+        double cy = gizmo.y() + gizmo.height() / 2.0;
+        double dx = px - cx;
+        double dy = py - cy;
+        for (int i = 0; i < gizmo.rotation(); i++) {
+            double next = -dy;
+            dy = dx;
+            dx = next;
+        }
+        return new Point(cx + dx, cy + dy);
+    }
+}

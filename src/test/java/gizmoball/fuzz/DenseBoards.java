@@ -1,0 +1,368 @@
+package gizmoball.fuzz;
+
+import gizmoball.model.Board;
+import gizmoball.model.BoardEditException;
+import gizmoball.model.KeyEdge;
+import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.loop.TriggerSource;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.SplittableRandom;
+
+/**
+ * Random dense boards from a seed, as players build them (issue 20, "Your own fuzz"): bumpers of every kind in every
+ * rotation packed in blocks, corridors one or two cells wide, checkerboards and scattered; flippers in pockets of
+ * bumpers, in facing pairs (tongs) and in clumps, some starting part-way through a swing; absorbers along the floor
+ * and elsewhere, many firing themselves; 5-40 balls placed free, touching gizmos, flippers (their pivot ends too) and
+ * each other, at up to 100 L/s; keys bound to the flippers and absorbers and a script pressing them. Gravity and
+ * friction vary, zero included; about one board in seven has neither, nor flippers nor absorbers, so that its
+ * kinetic energy must be kept.
+ *
+ * <p>Every board is built through {@link Board}'s editing operations, so it is a board a player could build: a
+ * placement the board refuses just means another spot is tried. The same seed always gives the same board and
+ * script ({@link SplittableRandom}, no other source of chance).
+ */
+public final class DenseBoards {
+    /** Key codes the boards bind: letters, space and the arrows (any code works; these read well in a file). */
+    private static final int[] KEY_CODES = {32, 37, 38, 39, 40, 65, 68, 70, 74, 75, 76, 77, 81, 83, 87, 88, 90};
+    private static final GizmoKind[] BUMPERS = {GizmoKind.SQUARE, GizmoKind.CIRCLE, GizmoKind.TRIANGLE};
+    private static final int SIZE = Board.SIZE;
+
+    private final SplittableRandom random;
+    private final Board board = new Board();
+    private final List<String> recipe = new ArrayList<>();
+    private final List<String> bumpers = new ArrayList<>();
+    private final List<String> flippers = new ArrayList<>();
+    private final List<String> absorbers = new ArrayList<>();
+    private final List<Integer> keysUsed = new ArrayList<>();
+    private int serial;
+
+    private DenseBoards(long seed) {
+        random = new SplittableRandom(seed);
+    }
+
+    /** The board of {@code seed} with a key script for {@code ticks} ticks of play. */
+    public static FuzzCase generate(long seed, int ticks) {
+        DenseBoards generator = new DenseBoards(seed);
+        Board board = generator.build();
+        KeyScript keys = KeyScripts.random(generator.random, generator.keysUsed, ticks);
+        return new FuzzCase(seed, board, keys, ticks, String.join("; ", generator.recipe));
+    }
+
+    private Board build() {
+        boolean energyKept = random.nextInt(7) == 0;
+        physics(energyKept);
+        if (!energyKept) {
+            absorbers();
+            flippers();
+        }
+        packBumpers();
+        if (!energyKept) {
+            wire();
+        }
+        int balls = new BallPlacer(random, board, this::nextName).place(5 + random.nextInt(36));
+        recipe.add(balls + " balls");
+        return board;
+    }
+
+    private String nextName(String prefix) {
+        return prefix + serial++;
+    }
+
+    private void physics(boolean energyKept) {
+        double gravity;
+        double mu;
+        double mu2;
+        if (energyKept) {
+            gravity = 0;
+            mu = 0;
+            mu2 = 0;
+            recipe.add("energy kept");
+        } else {
+            int g = random.nextInt(20);
+            gravity = g < 4 ? 0 : g < 11 ? Board.DEFAULT_GRAVITY : g < 18 ? round(random.nextDouble(1, 80))
+                    : -round(random.nextDouble(1, 30));
+            int f = random.nextInt(10);
+            mu = f < 3 ? 0 : f < 6 ? Board.DEFAULT_MU : round(random.nextDouble(0, 0.3));
+            mu2 = f < 3 ? 0 : f < 6 ? Board.DEFAULT_MU2 : round(random.nextDouble(0, 0.3));
+        }
+        board.setGravity(gravity);
+        board.setFriction(mu, mu2);
+        recipe.add(String.format(Locale.ROOT, "gravity %s, friction %s %s", gravity, mu, mu2));
+    }
+
+    /** Three decimals, as a board author types them. */
+    private static double round(double value) {
+        return Math.round(value * 1000) / 1000.0;
+    }
+
+    // ------------------------------------------------------------------------------------------------ absorbers
+
+    private void absorbers() {
+        if (random.nextInt(3) > 0) {
+            int x1 = random.nextInt(12);
+            int x2 = Math.min(SIZE, x1 + 1 + random.nextInt(SIZE - x1));
+            int height = random.nextInt(4) == 0 ? 2 : 1;
+            absorber(x1, SIZE - height, x2, SIZE, random.nextInt(5) > 0);
+        }
+        int more = random.nextInt(4);
+        for (int i = 0; i < more; i++) {
+            int x1 = random.nextInt(SIZE);
+            int y1 = random.nextInt(SIZE);
+            absorber(x1, y1, Math.min(SIZE, x1 + 1 + random.nextInt(8)), Math.min(SIZE, y1 + 1 + random.nextInt(3)),
+                    random.nextBoolean());
+        }
+        recipe.add(absorbers.size() + " absorbers");
+    }
+
+    private void absorber(int x1, int y1, int x2, int y2, boolean firesItself) {
+        String name = nextName("A");
+        try {
+            board.addAbsorber(name, x1, y1, x2, y2);
+        } catch (BoardEditException refused) {
+            return;
+        }
+        absorbers.add(name);
+        if (firesItself) {
+            board.connect(TriggerSource.gizmo(name), name);
+        }
+    }
+
+    // ------------------------------------------------------------------------------------------------ flippers
+
+    private void flippers() {
+        int pockets = random.nextInt(6);
+        for (int i = 0; i < pockets; i++) {
+            pocket();
+        }
+        int tongs = random.nextInt(4);
+        for (int i = 0; i < tongs; i++) {
+            tongs();
+        }
+        int clumps = random.nextInt(3);
+        for (int i = 0; i < clumps; i++) {
+            clump();
+        }
+        for (String flipper : flippers) {
+            if (random.nextInt(5) == 0) {
+                double degrees = random.nextInt(3) == 0 ? 90 * random.nextInt(2) : random.nextDouble(0, 90);
+                board.setFlipperState(flipper, degrees, random.nextBoolean());
+            }
+        }
+        recipe.add(String.format(Locale.ROOT, "%d flippers (%d pockets, %d tongs, %d clumps)", flippers.size(),
+                pockets, tongs, clumps));
+    }
+
+    private GizmoKind flipperKind() {
+        return random.nextBoolean() ? GizmoKind.LEFT_FLIPPER : GizmoKind.RIGHT_FLIPPER;
+    }
+
+    /** A flipper with bumpers in the cells around its box. */
+    private void pocket() {
+        int x = random.nextInt(SIZE - 1);
+        int y = random.nextInt(SIZE - 1);
+        if (flipper(flipperKind(), x, y, random.nextInt(4)) == null) {
+            return;
+        }
+        double fill = random.nextDouble(0.3, 1);
+        for (int cy = y - 1; cy <= y + 2; cy++) {
+            for (int cx = x - 1; cx <= x + 2; cx++) {
+                boolean ring = cx < x || cx > x + 1 || cy < y || cy > y + 1;
+                if (ring && random.nextDouble() < fill) {
+                    bumper(randomBumper(), cx, cy, random.nextInt(4));
+                }
+            }
+        }
+    }
+
+    /**
+     * A left and a right flipper facing each other with a gap of 0-2 cells between their boxes, the pair turned as a
+     * whole by 0-3 quarter turns, so that their tips meet when both are up.
+     */
+    private void tongs() {
+        int gap = random.nextInt(3);
+        int turns = random.nextInt(4);
+        int long_ = 4 + gap;
+        boolean across = turns % 2 == 0;
+        int x = random.nextInt(SIZE - (across ? long_ : 2) + 1);
+        int y = random.nextInt(SIZE - (across ? 2 : long_) + 1);
+        // Before turning: left box at 0, right box at 2 + gap; a quarter turn clockwise sends left to top, and so on.
+        int far = 2 + gap;
+        int[][] offsets = {{0, 0, far, 0}, {0, 0, 0, far}, {far, 0, 0, 0}, {0, far, 0, 0}};
+        int[] o = offsets[turns];
+        flipper(GizmoKind.LEFT_FLIPPER, x + o[0], y + o[1], turns);
+        flipper(GizmoKind.RIGHT_FLIPPER, x + o[2], y + o[3], turns);
+    }
+
+    /** Two to four flippers of any kind and rotation side by side in a small region. */
+    private void clump() {
+        int x = random.nextInt(SIZE - 3);
+        int y = random.nextInt(SIZE - 3);
+        int count = 2 + random.nextInt(3);
+        for (int i = 0; i < count; i++) {
+            flipper(flipperKind(), x + 2 * random.nextInt(2), y + 2 * random.nextInt(2), random.nextInt(4));
+        }
+    }
+
+    private String flipper(GizmoKind kind, int x, int y, int turns) {
+        String name = gizmo(kind, kind == GizmoKind.LEFT_FLIPPER ? "LF" : "RF", x, y, turns);
+        if (name != null) {
+            flippers.add(name);
+        }
+        return name;
+    }
+
+    // ------------------------------------------------------------------------------------------------ bumpers
+
+    private GizmoKind randomBumper() {
+        return BUMPERS[random.nextInt(BUMPERS.length)];
+    }
+
+    private void packBumpers() {
+        int blocks = random.nextInt(4);
+        for (int i = 0; i < blocks; i++) {
+            block();
+        }
+        int corridors = random.nextInt(3);
+        for (int i = 0; i < corridors; i++) {
+            corridor();
+        }
+        if (random.nextInt(4) == 0) {
+            checkerboard();
+        }
+        double density = random.nextDouble(0.05, 0.6);
+        int scattered = (int) (density * SIZE * SIZE);
+        for (int i = 0; i < scattered; i++) {
+            bumper(randomBumper(), random.nextInt(SIZE), random.nextInt(SIZE), random.nextInt(4));
+        }
+        recipe.add(String.format(Locale.ROOT, "%d bumpers (%d blocks, %d corridors, scatter %.2f)", bumpers.size(),
+                blocks, corridors, density));
+    }
+
+    /** A rectangle of cells nearly all filled with bumpers. */
+    private void block() {
+        int x = random.nextInt(SIZE);
+        int y = random.nextInt(SIZE);
+        int width = 2 + random.nextInt(5);
+        int height = 1 + random.nextInt(4);
+        double fill = random.nextDouble(0.7, 1);
+        for (int cy = y; cy < y + height; cy++) {
+            for (int cx = x; cx < x + width; cx++) {
+                if (random.nextDouble() < fill) {
+                    bumper(randomBumper(), cx, cy, random.nextInt(4));
+                }
+            }
+        }
+    }
+
+    /** Two walls of squares with a channel of 1 or 2 cells between them, a bumper of any kind closing one end. */
+    private void corridor() {
+        int width = 1 + random.nextInt(2);
+        int length = 2 + random.nextInt(6);
+        boolean upright = random.nextBoolean();
+        int x = random.nextInt(SIZE);
+        int y = random.nextInt(SIZE);
+        for (int i = 0; i < length; i++) {
+            for (int side : new int[] {0, width + 1}) {
+                int cx = upright ? x + side : x + i;
+                int cy = upright ? y + i : y + side;
+                bumper(GizmoKind.SQUARE, cx, cy, 0);
+            }
+        }
+        for (int j = 1; j <= width; j++) {
+            bumper(randomBumper(), upright ? x + j : x + length, upright ? y + length : y + j, random.nextInt(4));
+        }
+    }
+
+    /** Squares on alternate cells of a region: corners meeting corners. */
+    private void checkerboard() {
+        int x = random.nextInt(SIZE - 2);
+        int y = random.nextInt(SIZE - 2);
+        int side = 3 + random.nextInt(5);
+        for (int cy = y; cy < y + side; cy++) {
+            for (int cx = x; cx < x + side; cx++) {
+                if ((cx + cy) % 2 == 0) {
+                    bumper(random.nextInt(4) == 0 ? GizmoKind.TRIANGLE : GizmoKind.SQUARE, cx, cy, random.nextInt(4));
+                }
+            }
+        }
+    }
+
+    private void bumper(GizmoKind kind, int x, int y, int turns) {
+        String name = gizmo(kind, kind.name().substring(0, 1), x, y, turns);
+        if (name != null) {
+            bumpers.add(name);
+        }
+    }
+
+    /** Adds the gizmo and turns it, or returns null where the board refuses it (off the board, or taken). */
+    private String gizmo(GizmoKind kind, String prefix, int x, int y, int turns) {
+        if (x < 0 || y < 0 || x + kind.width() > SIZE || y + kind.height() > SIZE) {
+            return null;
+        }
+        String name = nextName(prefix);
+        try {
+            board.addGizmo(kind, name, x, y);
+        } catch (BoardEditException refused) {
+            return null;
+        }
+        for (int t = 0; t < turns; t++) {
+            board.rotate(name);
+        }
+        return name;
+    }
+
+    // ------------------------------------------------------------------------------------------------ wiring
+
+    /** Keys for flippers and absorbers, and connections from bumpers, the walls and flippers to them. */
+    private void wire() {
+        for (String flipper : flippers) {
+            if (random.nextInt(7) == 0) {
+                continue;
+            }
+            int key = key();
+            int how = random.nextInt(10);
+            if (how < 8) {
+                board.bindKey(key, KeyEdge.DOWN, flipper);
+                board.bindKey(key, KeyEdge.UP, flipper);
+            } else {
+                board.bindKey(key, how == 8 ? KeyEdge.DOWN : KeyEdge.CHANGE, flipper);
+            }
+        }
+        for (String absorber : absorbers) {
+            if (random.nextBoolean()) {
+                board.bindKey(key(), random.nextBoolean() ? KeyEdge.DOWN : KeyEdge.CHANGE, absorber);
+            }
+        }
+        List<String> targets = new ArrayList<>(flippers);
+        targets.addAll(absorbers);
+        int connections = targets.isEmpty() ? 0 : random.nextInt(6);
+        for (int i = 0; i < connections; i++) {
+            String target = targets.get(random.nextInt(targets.size()));
+            int from = random.nextInt(4);
+            TriggerSource source = from == 0 || bumpers.isEmpty() ? TriggerSource.OUTER_WALLS
+                    : from == 1 ? TriggerSource.gizmo(targets.get(random.nextInt(targets.size())))
+                    : TriggerSource.gizmo(bumpers.get(random.nextInt(bumpers.size())));
+            try {
+                board.connect(source, target);
+            } catch (BoardEditException duplicate) {
+                // already connected: one connection fewer
+            }
+        }
+        recipe.add(keysUsed.size() + " keys, " + board.connections().size() + " connections");
+    }
+
+    /** A key already used on the board (often: flippers share keys) or a new one. */
+    private int key() {
+        if (!keysUsed.isEmpty() && random.nextBoolean()) {
+            return keysUsed.get(random.nextInt(keysUsed.size()));
+        }
+        int key = KEY_CODES[random.nextInt(KEY_CODES.length)];
+        if (!keysUsed.contains(key)) {
+            keysUsed.add(key);
+        }
+        return key;
+    }
+}

@@ -1,0 +1,246 @@
+package gizmoball.fuzz;
+
+import gizmoball.model.Board;
+import gizmoball.model.gizmo.Absorber;
+import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.loop.BallView;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * Checks a board in play after every tick with geometry of its own ({@link Bodies}, {@link Solid}): no NaN, no free
+ * ball outside the board, inside a gizmo (a flipper at its current angle) or inside another free ball by more than
+ * {@link #TOLERANCE}; on a board without gravity, friction, flippers and absorbers no kinetic energy gained beyond
+ * rounding; and no ball frozen in free flight (free, awake, touching nothing, claiming a velocity, yet exactly where it
+ * was a tick before). It also notes balls hovering: at rest in mid-air under gravity for two ticks (not a target of
+ * issue 20; see {@link Violation.Kind#HOVERING}).
+ *
+ * <p>Play moves no gizmo but a flipper's bar, so the other gizmos are read once, when the checker is made, and filed
+ * by cell; the flippers and the balls are read after every tick. Balls are read through {@link Board#balls()}, gizmos
+ * through the kinds' read-only accessors.
+ */
+public final class TickChecker {
+    /** L: the penetration the issue allows (the loop's own invariant tolerance, stated here again on purpose). */
+    public static final double TOLERANCE = 1e-6;
+    /** Relative: kinetic energy may grow by rounding only. */
+    public static final double ENERGY_ROUNDING = 1e-9;
+    /** L/s: a velocity smaller than this is no claim to be moving (in a tick of 1/60 s it moves a ball 1.7e-8 L). */
+    static final double STILL_SPEED = 1e-6;
+    /** L: a ball farther than this from everything touches nothing. */
+    static final double TOUCH_GAP = 1e-6;
+
+    private static final double R = Board.BALL_RADIUS;
+    private static final int SIZE = Board.SIZE;
+
+    private record Body(String name, Solid solid) {
+    }
+
+    /** A ball as the last check saw it, and for how many ticks before that it had not moved. */
+    private record BallAt(double x, double y, boolean captured, int stillTicks) {
+    }
+
+    /** The still bodies whose box, widened by a ball's radius and a margin, meets each cell. */
+    private final List<List<Body>> cells = new ArrayList<>();
+    private final List<Flipper> flippers = new ArrayList<>();
+    private final boolean energyKept;
+    private final double gravity;
+    private final Map<String, BallAt> before = new HashMap<>();
+    private double kineticBefore;
+
+    /** Reads the board as it is now (before the first tick, or at any tick the checking starts from). */
+    public TickChecker(Board board) {
+        this(board.gizmos(), board.gravity(), board.mu(), board.mu2(), board.balls());
+    }
+
+    /** A board of these gizmos and constants whose balls are now {@code balls}. */
+    TickChecker(List<? extends Gizmo> gizmos, double gravity, double mu, double mu2, List<BallView> balls) {
+        for (int i = 0; i < SIZE * SIZE; i++) {
+            cells.add(new ArrayList<>());
+        }
+        boolean movers = false;
+        for (Gizmo gizmo : gizmos) {
+            if (gizmo instanceof Flipper flipper) {
+                flippers.add(flipper);
+                movers = true;
+                continue;
+            }
+            movers |= gizmo instanceof Absorber;
+            file(new Body(gizmo.name(), Bodies.of(gizmo)));
+        }
+        this.gravity = gravity;
+        energyKept = !movers && gravity == 0 && mu == 0 && mu2 == 0;
+        // No positions yet: a ball can only be seen frozen over a tick it was checked before.
+        kineticBefore = kinetic(balls.stream().filter(b -> !b.isCaptured()).toList());
+    }
+
+    /** True when the board keeps kinetic energy (no gravity, friction, flippers or absorbers): it is checked. */
+    public boolean checksEnergy() {
+        return energyKept;
+    }
+
+    private void file(Body body) {
+        double[] box = body.solid().bounds();
+        double reach = R + 2 * TOUCH_GAP;
+        int x0 = clampCell(box[0] - reach);
+        int y0 = clampCell(box[1] - reach);
+        int x1 = clampCell(box[2] + reach);
+        int y1 = clampCell(box[3] + reach);
+        for (int cy = y0; cy <= y1; cy++) {
+            for (int cx = x0; cx <= x1; cx++) {
+                cells.get(cy * SIZE + cx).add(body);
+            }
+        }
+    }
+
+    private static int clampCell(double coordinate) {
+        return (int) Math.max(0, Math.min(SIZE - 1, Math.floor(coordinate)));
+    }
+
+    /** The violations of the board as it is now, after tick {@code tick}; the board is then remembered for the next. */
+    public List<Violation> check(Board board, int tick) {
+        return check(board.balls(), tick);
+    }
+
+    /** As {@link #check(Board, int)} for the board's balls as they are now. */
+    List<Violation> check(List<BallView> balls, int tick) {
+        List<Violation> found = new ArrayList<>();
+        List<BallView> free = new ArrayList<>();
+        for (BallView ball : balls) {
+            if (!finite(ball)) {
+                found.add(new Violation(Violation.Kind.NOT_A_NUMBER, tick, ball.name(), Double.NaN, ball.toString()));
+            } else if (!ball.isCaptured()) {
+                free.add(ball);
+            }
+        }
+        List<Body> moving = new ArrayList<>();
+        for (Flipper flipper : flippers) {
+            moving.add(new Body(flipper.name(), Bodies.flipper(flipper)));
+        }
+        double[] gaps = new double[free.size()];
+        for (int i = 0; i < free.size(); i++) {
+            gaps[i] = checkAgainstBoard(free.get(i), moving, tick, found);
+        }
+        checkPairs(free, gaps, tick, found);
+        for (int i = 0; i < free.size(); i++) {
+            checkStill(free.get(i), gaps[i], tick, found);
+        }
+        if (energyKept) {
+            double kinetic = kinetic(free);
+            if (kinetic > kineticBefore * (1 + ENERGY_ROUNDING) + Double.MIN_NORMAL) {
+                found.add(new Violation(Violation.Kind.ENERGY_GAINED, tick, "all",
+                        kineticBefore == 0 ? Double.POSITIVE_INFINITY : kinetic / kineticBefore - 1,
+                        "kinetic energy " + kineticBefore + " -> " + kinetic));
+            }
+        }
+        remember(balls);
+        return found;
+    }
+
+    private static boolean finite(BallView ball) {
+        return Double.isFinite(ball.position().x()) && Double.isFinite(ball.position().y())
+                && Double.isFinite(ball.velocity().x()) && Double.isFinite(ball.velocity().y());
+    }
+
+    /** Walls, still gizmos and flippers; returns the ball's gap to the nearest of them (negative: inside). */
+    private double checkAgainstBoard(BallView ball, List<Body> moving, int tick, List<Violation> found) {
+        double x = ball.position().x();
+        double y = ball.position().y();
+        double wallGap = Math.min(Math.min(x - R, SIZE - R - x), Math.min(y - R, SIZE - R - y));
+        if (wallGap < -TOLERANCE) {
+            found.add(new Violation(Violation.Kind.ESCAPED, tick, ball.name(), -wallGap,
+                    "centre (" + x + ", " + y + ")"));
+        }
+        double gap = wallGap;
+        for (Body body : cells.get(clampCell(y) * SIZE + clampCell(x))) {
+            gap = Math.min(gap, against(ball, body, tick, found));
+        }
+        for (Body body : moving) {
+            double[] box = body.solid().bounds();
+            if (x > box[0] - R - TOUCH_GAP && x < box[2] + R + TOUCH_GAP && y > box[1] - R - TOUCH_GAP
+                    && y < box[3] + R + TOUCH_GAP) {
+                gap = Math.min(gap, against(ball, body, tick, found));
+            }
+        }
+        return gap;
+    }
+
+    private static double against(BallView ball, Body body, int tick, List<Violation> found) {
+        double gap = body.solid().signedDistance(ball.position().x(), ball.position().y()) - R;
+        if (gap < -TOLERANCE) {
+            found.add(new Violation(Violation.Kind.INSIDE_GIZMO, tick, ball.name(), -gap, "inside " + body.name()));
+        }
+        return gap;
+    }
+
+    private static void checkPairs(List<BallView> free, double[] gaps, int tick, List<Violation> found) {
+        for (int i = 0; i < free.size(); i++) {
+            BallView a = free.get(i);
+            for (int j = i + 1; j < free.size(); j++) {
+                BallView b = free.get(j);
+                double dx = a.position().x() - b.position().x();
+                double dy = a.position().y() - b.position().y();
+                if (Math.abs(dx) > 2 * R + TOUCH_GAP || Math.abs(dy) > 2 * R + TOUCH_GAP) {
+                    continue;
+                }
+                double gap = Math.hypot(dx, dy) - 2 * R;
+                gaps[i] = Math.min(gaps[i], gap);
+                gaps[j] = Math.min(gaps[j], gap);
+                if (gap < -TOLERANCE) {
+                    found.add(new Violation(Violation.Kind.INSIDE_BALL, tick, a.name(), -gap, "inside " + b.name()));
+                }
+            }
+        }
+    }
+
+    /**
+     * Frozen: a free, awake ball touching nothing that was free a tick ago and claims a velocity that moves it, yet is
+     * exactly where it was (the loop stopped it in mid-air). Hovering: such a ball at rest under gravity, still where it
+     * was two ticks ago (at the top of a vertical throw a ball may keep its place for one tick, never for two).
+     */
+    private void checkStill(BallView ball, double gap, int tick, List<Violation> found) {
+        BallAt last = before.get(ball.name());
+        if (last == null || last.captured() || ball.isAsleep() || gap <= TOUCH_GAP
+                || ball.position().x() != last.x() || ball.position().y() != last.y()) {
+            return;
+        }
+        double speed = Math.hypot(ball.velocity().x(), ball.velocity().y());
+        String where = "still at (" + last.x() + ", " + last.y() + "), " + gap + " L from the nearest thing";
+        if (speed > STILL_SPEED) {
+            found.add(new Violation(Violation.Kind.FROZEN, tick, ball.name(), speed, where));
+        } else if (gravity != 0 && last.stillTicks() >= 1) {
+            found.add(new Violation(Violation.Kind.HOVERING, tick, ball.name(), last.stillTicks() + 1.0,
+                    where + " for " + (last.stillTicks() + 1) + " ticks"));
+        }
+    }
+
+    private static double kinetic(List<BallView> free) {
+        double sum = 0;
+        for (BallView ball : free) {
+            double vx = ball.velocity().x();
+            double vy = ball.velocity().y();
+            sum += (vx * vx + vy * vy) / 2;
+        }
+        return sum;
+    }
+
+    private void remember(List<BallView> balls) {
+        Map<String, BallAt> last = new HashMap<>(before);
+        before.clear();
+        List<BallView> free = new ArrayList<>();
+        for (BallView ball : balls) {
+            double x = ball.position().x();
+            double y = ball.position().y();
+            BallAt was = last.get(ball.name());
+            int still = was != null && was.x() == x && was.y() == y ? was.stillTicks() + 1 : 0;
+            before.put(ball.name(), new BallAt(x, y, ball.isCaptured(), still));
+            if (!ball.isCaptured()) {
+                free.add(ball);
+            }
+        }
+        kineticBefore = kinetic(free);
+    }
+}
