@@ -208,7 +208,7 @@ public final class PhysicsOverlay implements BoardOverlay {
         int width = lines.stream().mapToInt(m::stringWidth).max().orElse(0) + 12;
         int height = lines.size() * m.getHeight() + 8;
         Rectangle2D area = t.board();
-        if (area.getMinX() - t.component().getMinX() >= width + 2 * GAP) {
+        if (area.getMinX() - t.component().getMinX() >= width + GAP) {
             return new Rectangle2D.Double(area.getMinX() - GAP - width, area.getMinY(), width, height);
         }
         Rectangle2D best = null;
