@@ -46,10 +46,9 @@ class JarTest {
     /** Runs the jar in a new JVM in an empty folder (no boards/ near), with {@code env} changes. */
     private Result java(Map<String, String> env, String... args) throws Exception {
         List<String> command = new ArrayList<>(List.of(
-                Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Djava.util.prefs.userRoot=" + dir.resolve("prefs"), "-jar", jar.toString()));
         command.addAll(List.of(args));
-        ProcessBuilder builder = new ProcessBuilder(command).directory(Files.createDirectories(dir.resolve("cwd")).toFile())
+        ProcessBuilder builder = ChildJvm.java(command).directory(Files.createDirectories(dir.resolve("cwd")).toFile())
                 .redirectOutput(dir.resolve("out").toFile()).redirectError(dir.resolve("err").toFile());
         env.forEach((k, v) -> {
             if (v == null) {

@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Consumer;
 import java.util.function.DoubleConsumer;
+import java.util.function.LongSupplier;
 import javax.swing.Timer;
 
 /**
@@ -12,14 +13,16 @@ import javax.swing.Timer;
  * paints it, so a view never sees a board half-way through a tick. The timer fires about twice per
  * tick and the {@link TickPacer} decides how many ticks each event runs, keeping simulated time in step
  * with real time (scaled by the {@link Speed}) without the drift of one tick per (late or early) timer event.
- * Every tick is {@code tickSeconds} long at any speed: a slower speed ticks less often.
+ * Every tick is {@code tickSeconds} long at any speed: a slower speed ticks less often. The timer and the clock
+ * are handed in (the game's are a Swing Timer and System.nanoTime), so tests drive both by hand.
  */
 public final class GameLoop {
     private static final int MAX_CATCH_UP_TICKS = 4;
 
     private final Board board;
     private final double tick;
-    private final Timer timer;
+    private final Pulse timer;
+    private final LongSupplier clock;
     private final List<Runnable> runningListeners = new ArrayList<>();
     private final List<DoubleConsumer> frameListeners = new ArrayList<>();
     private Consumer<RuntimeException> failureHandler = e -> {
@@ -30,12 +33,57 @@ public final class GameLoop {
     private long lastEventNanos;
     private boolean resumeOnRelease;
 
+    /**
+     * Sends the loop an event every {@code periodMillis} on the event dispatch thread while it is started: the
+     * game's is a coalescing Swing Timer ({@link #swingTimer}).
+     */
+    interface Pulse {
+        void start();
+
+        void stop();
+
+        boolean isRunning();
+    }
+
+    /** Makes the loop's pulse, given its period and what each event runs. */
+    @FunctionalInterface
+    interface PulseSource {
+        Pulse every(int periodMillis, Runnable event);
+    }
+
     public GameLoop(Board board, double tickSeconds) {
+        this(board, tickSeconds, GameLoop::swingTimer, System::nanoTime);
+    }
+
+    /** With another pulse and another clock in nanoseconds (the tests drive both). */
+    GameLoop(Board board, double tickSeconds, PulseSource pulses, LongSupplier clock) {
         this.board = board;
         this.tick = tickSeconds;
-        this.timer = new Timer(Math.max(1, (int) (tickSeconds * 1000 / 2)), e -> onTimer());
-        timer.setCoalesce(true);
+        this.clock = clock;
+        this.timer = pulses.every(Math.max(1, (int) (tickSeconds * 1000 / 2)), this::onTimer);
         pacer = pacerFor(speed);
+    }
+
+    /** A Swing Timer: its events come on the event dispatch thread, late ones coalesced into one. */
+    private static Pulse swingTimer(int periodMillis, Runnable event) {
+        Timer timer = new Timer(periodMillis, e -> event.run());
+        timer.setCoalesce(true);
+        return new Pulse() {
+            @Override
+            public void start() {
+                timer.start();
+            }
+
+            @Override
+            public void stop() {
+                timer.stop();
+            }
+
+            @Override
+            public boolean isRunning() {
+                return timer.isRunning();
+            }
+        };
     }
 
     public boolean isRunning() {
@@ -45,7 +93,7 @@ public final class GameLoop {
     public void start() {
         if (!timer.isRunning()) {
             pacer = pacerFor(speed);
-            lastEventNanos = System.nanoTime();
+            lastEventNanos = clock.getAsLong();
             timer.start();
             fireRunningChanged();
         }
@@ -115,7 +163,7 @@ public final class GameLoop {
     }
 
     private void onTimer() {
-        long now = System.nanoTime();
+        long now = clock.getAsLong();
         elapsed(now - lastEventNanos);
         lastEventNanos = now;
     }

@@ -3,6 +3,7 @@ package gizmoball.sound;
 import java.awt.GraphicsEnvironment;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.Executor;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import javax.sound.sampled.AudioFormat;
@@ -11,7 +12,7 @@ import javax.sound.sampled.LineUnavailableException;
 import javax.sound.sampled.SourceDataLine;
 
 /**
- * Plays cues on a dedicated daemon thread. {@link #play} only offers the cue to a bounded queue and
+ * Plays cues on a dedicated daemon thread, started the first time sound is turned on. {@link #play} only offers the cue to a bounded queue and
  * returns: the event thread and the game loop never wait for audio, and when the queue is full (the audio
  * thread is behind) the cue is dropped. The audio thread synthesizes, mixes and writes to the device in
  * blocks of a few milliseconds.
@@ -39,7 +40,11 @@ public final class SoundPlayer implements AutoCloseable {
     private final BlockingQueue<Cue> queue = new ArrayBlockingQueue<>(QUEUE_CAPACITY);
     private final Consumer<String> notice;
     private final LineFactory lines;
-    private final Thread thread;
+    /** Runs the audio loop, once: a daemon thread of its own in the game, the test's own hand in tests. */
+    private final Executor audio;
+    private boolean started;
+    /** The thread running the audio loop, once it runs: {@link #close} interrupts it. */
+    private volatile Thread audioThread;
     private volatile boolean enabled;
     private volatile boolean silent;
     /** Set once the device could not be opened or failed: from then on sound is off, whatever is asked. */
@@ -48,23 +53,33 @@ public final class SoundPlayer implements AutoCloseable {
     /** {@code notice} is told once, from the audio thread, if the sound cannot be played. */
     public SoundPlayer(Consumer<String> notice) {
         this(notice, SoundPlayer::systemLine,
-                GraphicsEnvironment.isHeadless() || "off".equals(System.getProperty(DISABLE_PROPERTY)));
+                GraphicsEnvironment.isHeadless() || "off".equals(System.getProperty(DISABLE_PROPERTY)),
+                SoundPlayer::daemonThread);
     }
 
-    /** With another line (the tests: a machine whose audio fails); {@code silent}: never open one. */
-    SoundPlayer(Consumer<String> notice, LineFactory lines, boolean silent) {
+    /**
+     * With another line (the tests: a machine whose audio fails) and another runner of the audio loop;
+     * {@code silent}: never open a line.
+     */
+    SoundPlayer(Consumer<String> notice, LineFactory lines, boolean silent, Executor audio) {
         this.notice = notice;
         this.lines = lines;
         this.silent = silent;
-        thread = new Thread(this::run, "gizmoball-audio");
+        this.audio = audio;
+    }
+
+    private static void daemonThread(Runnable audioLoop) {
+        Thread thread = new Thread(audioLoop, "gizmoball-audio");
         thread.setDaemon(true);
+        thread.start();
     }
 
     /** Sound on or off; the audio thread starts, and opens the device, the first time sound is turned on. */
     public void setEnabled(boolean on) {
         enabled = on;
-        if (on && !silent && thread.getState() == Thread.State.NEW) {
-            thread.start();
+        if (on && !silent && !started) {
+            started = true;
+            audio.execute(this::run);
         }
         if (!on) {
             queue.clear();
@@ -91,7 +106,10 @@ public final class SoundPlayer implements AutoCloseable {
     @Override
     public void close() {
         silent = true;
-        thread.interrupt();
+        Thread running = audioThread;
+        if (running != null) {
+            running.interrupt();
+        }
     }
 
     private static SourceDataLine systemLine(AudioFormat format, int bufferBytes) throws LineUnavailableException {
@@ -101,6 +119,10 @@ public final class SoundPlayer implements AutoCloseable {
     }
 
     private void run() {
+        audioThread = Thread.currentThread();
+        if (silent) {
+            return;
+        }
         try (SourceDataLine line = lines.open(FORMAT, LINE_BUFFER_FRAMES * FORMAT.getFrameSize())) {
             line.start();
             mix(line);

@@ -1,24 +1,18 @@
 package gizmoball.controller;
 
 import static org.assertj.core.api.Assertions.assertThat;
-import static org.assertj.core.api.Assertions.fail;
 
 import gizmoball.model.Board;
-import java.util.concurrent.atomic.AtomicReference;
-import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.Test;
 
-/** The loop's Swing Timer needs no display: these run headless. */
+/** The loop with its pulse and clock driven by hand: each event runs the ticks that the time since the last owes. */
 class GameLoopTest {
     private static final double DT = Board.DEFAULT_TICK;
+    private static final long TICK_NANOS = Math.round(DT * 1e9);
     private final Board board = new Board();
-    private final GameLoop loop = new GameLoop(board, DT);
-
-    private static <T> T onEdt(java.util.function.Supplier<T> read) throws Exception {
-        AtomicReference<T> result = new AtomicReference<>();
-        SwingUtilities.invokeAndWait(() -> result.set(read.get()));
-        return result.get();
-    }
+    private final HandPulse pulse = new HandPulse();
+    private long nanos = 1_000_000_000L;
+    private final GameLoop loop = new GameLoop(board, DT, pulse, () -> nanos);
 
     @Test
     void stepRunsExactlyOneTick() {
@@ -30,29 +24,31 @@ class GameLoopTest {
     }
 
     @Test
-    void startTicksOnTheEventThreadUntilStop() throws Exception {
-        Thread[] tickThread = new Thread[1];
-        board.addObserver((b, change) -> tickThread[0] = Thread.currentThread());
+    void thePulseComesTwiceATick() {
+        assertThat(pulse.periodMillis).isEqualTo((int) (DT * 1000 / 2));
+    }
+
+    @Test
+    void startTicksOnEveryEventUntilStop() {
         int[] runningChanges = new int[1];
         loop.addRunningListener(() -> runningChanges[0]++);
 
-        SwingUtilities.invokeAndWait(() -> {
-            loop.start();
-            loop.start();
-        });
-        long deadline = System.currentTimeMillis() + 5000;
-        while (onEdt(board::time) < 5 * DT) {
-            if (System.currentTimeMillis() > deadline) {
-                fail("the loop did not tick");
-            }
-            Thread.sleep(10);
-        }
-        SwingUtilities.invokeAndWait(loop::stop);
-        double stoppedAt = onEdt(board::time);
-        Thread.sleep(100);
+        loop.start();
+        loop.start();
+        assertThat(loop.isRunning()).isTrue();
+        assertThat(runningChanges[0]).as("a second start changes nothing").isEqualTo(1);
+        nanos += TICK_NANOS / 2;
+        pulse.fire();
+        assertThat(board.time()).as("half a tick owed").isZero();
+        nanos += TICK_NANOS - TICK_NANOS / 2 + 2 * TICK_NANOS;
+        pulse.fire();
+        assertThat(board.time()).as("three ticks owed").isEqualTo(DT + DT + DT);
 
-        assertThat(onEdt(board::time)).isEqualTo(stoppedAt);
-        assertThat(tickThread[0].getName()).startsWith("AWT-EventQueue");
+        loop.stop();
+        double stoppedAt = board.time();
+        nanos += 10 * TICK_NANOS;
+        pulse.fire();
+        assertThat(board.time()).as("no tick once stopped").isEqualTo(stoppedAt);
         assertThat(runningChanges[0]).isEqualTo(2);
         assertThat(loop.isRunning()).isFalse();
     }
@@ -91,5 +87,51 @@ class GameLoopTest {
         assertThat(fractions).hasSize(1);
         loop.stop();
         assertThat(fractions.get(fractions.size() - 1)).isEqualTo(1.0);
+    }
+
+    @Test
+    void timeStoppedIsNotOwedOnRestart() {
+        loop.start();
+        loop.stop();
+        nanos += 60 * TICK_NANOS;
+        loop.start();
+        nanos += TICK_NANOS;
+        pulse.fire();
+        assertThat(board.time()).isEqualTo(DT);
+    }
+
+    /** The loop's pulse, sent by the test: like a stopped Swing Timer, it sends nothing while stopped. */
+    private static final class HandPulse implements GameLoop.PulseSource, GameLoop.Pulse {
+        private Runnable event;
+        private int periodMillis;
+        private boolean running;
+
+        @Override
+        public GameLoop.Pulse every(int period, Runnable onEvent) {
+            periodMillis = period;
+            event = onEvent;
+            return this;
+        }
+
+        @Override
+        public void start() {
+            running = true;
+        }
+
+        @Override
+        public void stop() {
+            running = false;
+        }
+
+        @Override
+        public boolean isRunning() {
+            return running;
+        }
+
+        void fire() {
+            if (running) {
+                event.run();
+            }
+        }
     }
 }

@@ -2,6 +2,7 @@ package gizmoball.controller;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import gizmoball.ChildJvm;
 import java.awt.Rectangle;
 import java.io.File;
 import java.nio.charset.StandardCharsets;
@@ -50,14 +51,13 @@ class SettingsTest {
         s.setWindowBounds(new Rectangle(12, 34, 800, 600));
 
         // Another JVM, as the next run of the game would be, reads them from the store.
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", location(Settings.class) + File.pathSeparator + location(NextRun.class)));
+        List<String> command = new ArrayList<>(List.of("-cp", location(Settings.class) + File.pathSeparator + location(NextRun.class)));
         String root = System.getProperty("java.util.prefs.userRoot");
         if (root != null) {
             command.add("-Djava.util.prefs.userRoot=" + root);
         }
         command.addAll(List.of(NextRun.class.getName(), path));
-        Process p = new ProcessBuilder(command).redirectErrorStream(true).start();
+        Process p = ChildJvm.java(command).redirectErrorStream(true).start();
         assertThat(p.waitFor(30, TimeUnit.SECONDS)).isTrue();
         String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).strip();
         assertThat(out).isEqualTo("false true true false QUARTER " + folder.toAbsolutePath().normalize()

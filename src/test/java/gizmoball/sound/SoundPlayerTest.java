@@ -1,48 +1,60 @@
 package gizmoball.sound;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.junit.jupiter.api.Assertions.assertTimeoutPreemptively;
 
 import gizmoball.model.gizmo.GizmoKind;
+import java.time.Duration;
+import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.TimeUnit;
+import java.util.concurrent.Executor;
 import javax.sound.sampled.LineUnavailableException;
 import org.junit.jupiter.api.Test;
 
-/** The player's threading and failure handling; no test opens a real audio device. */
+/**
+ * The player's threading and failure handling. The audio loop runs on the test's own thread, when the test says
+ * (through {@link HeldAudioLoop}), so every test sees exactly what the audio thread did; no test opens a real
+ * audio device.
+ */
 class SoundPlayerTest {
-    private final List<String> notices = new CopyOnWriteArrayList<>();
+    private final List<String> notices = new ArrayList<>();
+    private final HeldAudioLoop audio = new HeldAudioLoop();
+    private int opens;
+
+    /** A machine without an audio device: every open fails, and is counted. */
+    private SoundPlayer.LineFactory noDevice() {
+        return (format, bytes) -> {
+            opens++;
+            throw new LineUnavailableException("no audio device");
+        };
+    }
 
     @Test
-    void withoutAnAudioDeviceItSaysSoOnceAndStaysSilent() throws Exception {
-        CountDownLatch tried = new CountDownLatch(1);
-        SoundPlayer player = new SoundPlayer(notices::add, (format, bytes) -> {
-            tried.countDown();
-            throw new LineUnavailableException("no audio device");
-        }, false);
+    void withoutAnAudioDeviceItSaysSoOnceAndStaysSilent() {
+        SoundPlayer player = new SoundPlayer(notices::add, noDevice(), false, audio);
         player.setEnabled(true);
-        assertThat(tried.await(5, TimeUnit.SECONDS)).isTrue();
-        awaitNotices(1);
+        audio.runAll();
+        assertThat(opens).isEqualTo(1);
+        assertThat(notices).containsExactly("No audio device: sound off");
+
         for (int i = 0; i < 100; i++) {
             player.play(Sounds.fire());
         }
         player.setEnabled(false);
         player.setEnabled(true);
-        Thread.sleep(200);
+        assertThat(audio.held()).as("audio loops started again").isZero();
+        assertThat(opens).isEqualTo(1);
         assertThat(notices).containsExactly("No audio device: sound off");
         player.close();
     }
 
     /** Issue 23, item 13: without a device sound is off, one answer for whoever asks. */
     @Test
-    void withoutADeviceSoundIsOffWhateverIsAsked() throws Exception {
-        SoundPlayer player = new SoundPlayer(notices::add, (format, bytes) -> {
-            throw new LineUnavailableException("no audio device");
-        }, false);
+    void withoutADeviceSoundIsOffWhateverIsAsked() {
+        SoundPlayer player = new SoundPlayer(notices::add, noDevice(), false, audio);
         assertThat(player.hasDevice()).isTrue();
         player.setEnabled(true);
-        awaitNotices(1);
+        audio.runAll();
 
         assertThat(player.hasDevice()).isFalse();
         assertThat(player.isEnabled()).isFalse();
@@ -53,35 +65,29 @@ class SoundPlayerTest {
     }
 
     @Test
-    void playingNeverWaitsForTheAudioThreadEvenWhenTheDeviceHangs() throws Exception {
-        CountDownLatch release = new CountDownLatch(1);
-        SoundPlayer player = new SoundPlayer(notices::add, (format, bytes) -> {
-            try {
-                release.await();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-            throw new LineUnavailableException("gave up");
-        }, false);
+    void playingNeverWaitsForTheAudioThreadEvenWhenTheDeviceHangs() {
+        SoundPlayer player = new SoundPlayer(notices::add, noDevice(), false, audio);
         player.setEnabled(true);
-        long start = System.nanoTime();
-        for (int i = 0; i < 10_000; i++) {
-            player.play(Sounds.gizmoHit(GizmoKind.CIRCLE, 20).orElseThrow());
-        }
-        // 10,000 hits into a bounded queue nobody drains: each returns at once (the excess is dropped).
-        assertThat((System.nanoTime() - start) / 1e6).isLessThan(500);
-        release.countDown();
+        // The audio loop is held, as behind a device that hangs: nobody drains the bounded queue. If a play
+        // waited for room it would wait for ever; the bound only turns such a hang into a failure.
+        assertTimeoutPreemptively(Duration.ofSeconds(30), () -> {
+            for (int i = 0; i < 10_000; i++) {
+                player.play(Sounds.gizmoHit(GizmoKind.CIRCLE, 20).orElseThrow());
+            }
+        });
+        assertThat(audio.held()).isEqualTo(1);
+        assertThat(opens).isZero();
         player.close();
     }
 
     @Test
-    void aSilentPlayerNeverTriesTheDevice() throws Exception {
-        SoundPlayer player = new SoundPlayer(notices::add, (format, bytes) -> {
-            throw new AssertionError("opened a device");
-        }, true);
+    void aSilentPlayerNeverTriesTheDevice() {
+        SoundPlayer player = new SoundPlayer(notices::add, noDevice(), true, audio);
         player.setEnabled(true);
         player.play(Sounds.capture());
-        Thread.sleep(100);
+        assertThat(audio.held()).as("audio loops started").isZero();
+        audio.runAll();
+        assertThat(opens).as("devices opened").isZero();
         assertThat(notices).isEmpty();
     }
 
@@ -91,10 +97,23 @@ class SoundPlayerTest {
         assertThat(System.getProperty(SoundPlayer.DISABLE_PROPERTY)).isEqualTo("off");
     }
 
-    private void awaitNotices(int n) throws InterruptedException {
-        long deadline = System.currentTimeMillis() + 5000;
-        while (notices.size() < n && System.currentTimeMillis() < deadline) {
-            Thread.sleep(10);
+    /** Holds the audio loop the player starts until the test runs it, on the test's thread. */
+    private static final class HeldAudioLoop implements Executor {
+        private final List<Runnable> held = new ArrayList<>();
+
+        @Override
+        public void execute(Runnable audioLoop) {
+            held.add(audioLoop);
+        }
+
+        int held() {
+            return held.size();
+        }
+
+        void runAll() {
+            List<Runnable> now = List.copyOf(held);
+            held.clear();
+            now.forEach(Runnable::run);
         }
     }
 }

@@ -17,6 +17,8 @@ import java.awt.GraphicsEnvironment;
 import java.awt.Rectangle;
 import java.awt.Window;
 import java.awt.event.KeyEvent;
+import java.awt.event.WindowAdapter;
+import java.awt.event.WindowEvent;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.Optional;
@@ -126,9 +128,8 @@ class PlayWindowGuiTest {
 
         SwingUtilities.invokeLater(() -> Gui.menuItem(window.menus(), "Keys of this board...").doClick(0));
         JDialog keys = awaitDialog();
+        await("the game to pause while the dialog is open", () -> !app.loop().isRunning());
         double paused = time();
-        Gui.sleep(300);
-        assertThat(time()).as("no tick while the dialog is open").isEqualTo(paused);
         assertThat(text(keys)).contains(KeyEvent.getKeyText(KeyEvent.VK_Z) + ": left flipper LF (hold)",
                 KeyEvent.getKeyText(KeyEvent.VK_SPACE) + ": absorber A (press)");
         onEdt(keys::dispose);
@@ -142,8 +143,16 @@ class PlayWindowGuiTest {
         SwingUtilities.invokeLater(() -> Gui.menuItem(window.menus(), "Keys of this board...").doClick(0));
         JDialog keys = awaitDialog();
         onEdt(() -> app.loop().stop());
+        boolean[] closed = new boolean[1];
+        onEdt(() -> keys.addWindowListener(new WindowAdapter() {
+            @Override
+            public void windowClosed(WindowEvent e) {
+                closed[0] = true;
+            }
+        }));
         onEdt(keys::dispose);
-        Gui.sleep(200);
+        // The game's pause sees a dialog's events before the dialog's own listeners do.
+        await("the dialog's close to be handled", () -> closed[0]);
         assertThat(onEdt(() -> app.loop().isRunning())).isFalse();
     }
 

@@ -3,6 +3,7 @@ package gizmoball.model.loop;
 import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Shape;
 
 import java.util.ArrayList;
@@ -64,6 +65,11 @@ public final class TickRun {
     private static final int PRESS_STEPS = 64;
     private static final int MAX_COLLISIONS_BASE = 500;
     private static final int MAX_COLLISIONS_PER_BALL = 100;
+    /**
+     * Collisions of one ball in one tick after which it moves no more in this tick (a guard, counted): it stops
+     * only itself, never a ball elsewhere on the board.
+     */
+    private static final int MAX_COLLISIONS_OF_A_BALL = 1_000;
 
     /** A ball and a flipper, for counting how often the flipper hits the ball within one tick. */
     private record Strike(Ball ball, Flipper flipper) {
@@ -84,6 +90,10 @@ public final class TickRun {
     private final List<Flipper> flippers;
     private final List<Ball> awake = new ArrayList<>();
     private final Map<Ball, Integer> zeroTimeHits = new HashMap<>();
+    /** When, in seconds since the tick began, each ball's last collision of this tick was resolved. */
+    private final Map<Ball, Double> lastCollisionAt = new HashMap<>();
+    /** Collisions each ball has had in this tick, for the local collision cap. */
+    private final Map<Ball, Integer> collisionsOf = new HashMap<>();
     private final Map<Strike, Integer> strikes = new HashMap<>();
     /** Balls that met something else since a swinging flipper last struck them in this tick (struck balls only). */
     private final Set<Ball> metSinceStrike = new HashSet<>();
@@ -174,8 +184,12 @@ public final class TickRun {
                 finish(collision);
             }
             if (++collisions >= maxCollisions) {
-                capped++;   // guard: never reached in ordinary play (counted)
+                capped++;   // guard of last resort: per-ball caps end every run of collisions before it
                 break;
+            }
+            capBall(collision.ball());
+            if (collision.contact() instanceof Contact.OtherBall other) {
+                capBall(other.other());
             }
         }
         if (view.loopMode() == LoopMode.CONTINUOUS) {
@@ -265,6 +279,17 @@ public final class TickRun {
         restingContact = false;
         reported.clear();
         ball.setStillTicks(0);
+        ContactCluster cluster = clusterToSolve(collision);
+        if (cluster != null) {
+            Struck hit = resolveCluster(collision, cluster);
+            forgetWhatChanged(collision);
+            noteCollision(collision);
+            if (collision.time() <= ZERO_TIME) {
+                zeroTimeCollisions++;
+            }
+            return hit;
+        }
+        noteCollision(collision);
         if (!(contact instanceof Contact.SwingingPart)) {
             met(ball, contact);
             if (contact instanceof Contact.OtherBall other) {
@@ -625,6 +650,241 @@ public final class TickRun {
         if (!ball.isAsleep() && Contacts.supports(support, ball)) {
             comeToRest(ball, new ContactRef.OnBall(support.name()));
         }
+    }
+
+    private void noteCollision(Collision collision) {
+        lastCollisionAt.put(collision.ball(), elapsed);
+        if (collision.contact() instanceof Contact.OtherBall other) {
+            lastCollisionAt.put(other.other(), elapsed);
+        }
+    }
+
+    /** A ball over its own collision cap moves no more in this tick: the guard acts on it alone. */
+    private void capBall(Ball ball) {
+        if (collisionsOf.merge(ball, 1, Integer::sum) == MAX_COLLISIONS_OF_A_BALL) {
+            capped++;
+            finished.add(ball);
+            energy.lost(ball);
+            schedule.forget(ball);
+            schedule.sped(ball);
+        }
+    }
+
+    /**
+     * The cluster of touching contacts a collision must be solved with at once, or null when the collision is a
+     * contact of its own. A collision at the very moment of a ball's last one is a chain through touching contacts
+     * (docs/design.md, "Contact clusters"): one simultaneous solve ends it, where one contact at a time would go on
+     * at no time apart.
+     */
+    private ContactCluster clusterToSolve(Collision collision) {
+        Contact contact = collision.contact();
+        if (view.loopMode() != LoopMode.CONTINUOUS || contact instanceof Contact.Face face
+                && face.gizmo() instanceof Absorber) {
+            return null;
+        }
+        Ball ball = collision.ball();
+        Ball other = contact instanceof Contact.OtherBall on ? on.other() : null;
+        if (!again(ball) && (other == null || !again(other))) {
+            return null;
+        }
+        return ContactCluster.around(view, other == null ? List.of(ball) : List.of(ball, other), detector::motion);
+    }
+
+    private boolean again(Ball ball) {
+        Double last = lastCollisionAt.get(ball);
+        return last != null && elapsed - last <= ZERO_TIME;
+    }
+
+    /**
+     * Solves the cluster's normal impulses at once ({@link NormalImpulses}): no contact is left closing, each impact
+     * bounces with its coefficient where the contacts allow it, swinging flippers give velocity and take none. Where
+     * no velocity within {@link Arena#MAX_SPEED} leaves the swinging parts, they stall (a jam) and the cluster is
+     * solved again with them still. Every impact is a hit that triggers; a slow one is resting contact.
+     */
+    private Struck resolveCluster(Collision collision, ContactCluster cluster) {
+        List<Ball> balls = cluster.balls();
+        NormalImpulses.Result result = solve(cluster, Set.of());
+        Set<Flipper> stalled = new LinkedHashSet<>();
+        if (!result.feasible()) {
+            for (ContactCluster.Row row : cluster.rows()) {
+                if (row.other() instanceof ContactCluster.Other.Swinging swinging
+                        && stalled.add(swinging.flipper())) {
+                    swinging.flipper().block();
+                    actions.recordEvent(new PlayEvent.Jammed(swinging.flipper().name(), balls.get(row.ball()).name()));
+                }
+            }
+            result = solve(cluster, stalled);
+        }
+        if (!result.ended()) {
+            wedged++;   // guard (counted): impacts that do not end; the last round came to rest
+        }
+        boolean woke = false;
+        for (int k = 0; k < balls.size(); k++) {
+            Ball ball = balls.get(k);
+            Vect after = new Vect(result.vx()[k], result.vy()[k]);
+            if (after.equals(detector.motion(ball))) {
+                continue;
+            }
+            if (ball.isAsleep()) {
+                view.sleepers().wake(ball);
+                woke = true;
+            }
+            ball.setVelocity(after);
+            ball.setStillTicks(0);
+            energy.lost(ball);
+            schedule.forget(ball);
+            schedule.sped(ball);
+        }
+        Struck hit = noteImpacts(collision, cluster, result);
+        if (woke || !stalled.isEmpty()) {
+            sceneChanged();
+        }
+        return hit;
+    }
+
+    private NormalImpulses.Result solve(ContactCluster cluster, Set<Flipper> stalled) {
+        List<ContactCluster.Row> rows = cluster.rows();
+        int n = rows.size();
+        int[] a = new int[n];
+        int[] b = new int[n];
+        double[] nx = new double[n];
+        double[] ny = new double[n];
+        double[] speed = new double[n];
+        double[] restitution = new double[n];
+        double[] impact = impactSpeeds(cluster);
+        for (int i = 0; i < n; i++) {
+            ContactCluster.Row row = rows.get(i);
+            a[i] = row.ball();
+            b[i] = row.other() instanceof ContactCluster.Other.InCluster in ? in.index() : -1;
+            nx[i] = row.normal().x();
+            ny[i] = row.normal().y();
+            boolean still = row.other() instanceof ContactCluster.Other.Swinging s && stalled.contains(s.flipper());
+            speed[i] = still ? 0 : row.surfaceSpeed();
+            restitution[i] = row.restitution();
+        }
+        List<Ball> balls = cluster.balls();
+        double[] vx = new double[balls.size()];
+        double[] vy = new double[balls.size()];
+        for (int k = 0; k < balls.size(); k++) {
+            Vect v = detector.motion(balls.get(k));
+            vx[k] = v.x();
+            vy[k] = v.y();
+        }
+        return new NormalImpulses(balls.size(), a, b, nx, ny, speed, restitution).solve(vx, vy, impact,
+                Arena.MAX_SPEED);
+    }
+
+    /**
+     * The closing speed above which a contact of a cluster is an impact that bounces, as for a single contact (see
+     * {@link #restingSpeed}): two ticks of the gravity pressing the ball into a surface as the ball's other contacts
+     * in the cluster leave it, so a ball set on a floor settles, one pressed into a surface above or beside it by
+     * no gravity bounces; between balls, two ticks of gravity, as for two balls alone ({@link #hitBall}).
+     */
+    private double[] impactSpeeds(ContactCluster cluster) {
+        List<ContactCluster.Row> rows = cluster.rows();
+        double[] impact = new double[rows.size()];
+        for (int i = 0; i < rows.size(); i++) {
+            ContactCluster.Row row = rows.get(i);
+            double pressing;
+            if (row.other() instanceof ContactCluster.Other.Still
+                    || row.other() instanceof ContactCluster.Other.Swinging) {
+                List<Vect> others = new ArrayList<>();
+                for (int j = 0; j < rows.size(); j++) {
+                    if (j != i && rows.get(j).ball() == row.ball()) {
+                        others.add(rows.get(j).normal());
+                    }
+                }
+                pressing = Math.max(0, -Contacts.project(new Vect(0, gravity), others).dot(row.normal()));
+            } else {
+                pressing = Math.abs(gravity);
+            }
+            impact[i] = Math.max(Tolerances.ROUNDING_SPEED, REST_TICKS_OF_GRAVITY * pressing * dt);
+        }
+        return impact;
+    }
+
+    /**
+     * The hits of a solved cluster (each contact whose impulse was an impact, once per surface) for the sound, the
+     * flashes and stage 5; its resting contacts become persistent contacts. Returns what the collision itself hit.
+     */
+    private Struck noteImpacts(Collision collision, ContactCluster cluster, NormalImpulses.Result result) {
+        Struck own = struckBy(collision.contact());
+        Set<Struck> heard = new LinkedHashSet<>();
+        List<Ball> balls = cluster.balls();
+        double[] impact = impactSpeeds(cluster);
+        for (int i = 0; i < cluster.rows().size(); i++) {
+            ContactCluster.Row row = cluster.rows().get(i);
+            Ball ball = balls.get(row.ball());
+            double change = result.compression()[i];
+            if (change <= 0) {
+                continue;
+            }
+            if (change <= impact[i]) {
+                rest(ball, row, balls);
+                continue;
+            }
+            Struck struck = struckBy(row, balls);
+            if (struck instanceof TriggerSource.OfGizmo gizmo) {
+                GizmoBase target = view.gizmo(gizmo.gizmo());
+                if (target != null) {
+                    target.markTriggered(now());
+                }
+            }
+            if (heard.add(struck)) {
+                actions.recordEvent(new PlayEvent.Hit(struck, kindOf(struck), change, ball.name(), ball.position()));
+                if (struck instanceof TriggerSource source && !struck.equals(own)) {
+                    alsoHit.add(source);
+                }
+            }
+        }
+        return own;
+    }
+
+    private void rest(Ball ball, ContactCluster.Row row, List<Ball> balls) {
+        if (row.other() instanceof ContactCluster.Other.Still still) {
+            Contacts.attach(ball, still.ref());
+        } else if (row.other() instanceof ContactCluster.Other.InCluster in) {
+            Ball other = balls.get(in.index());
+            restAgainst(ball, other);
+            restAgainst(other, ball);
+        }
+    }
+
+    private Struck struckBy(ContactCluster.Row row, List<Ball> balls) {
+        if (row.other() instanceof ContactCluster.Other.Still still) {
+            return still.gizmo() == null ? TriggerSource.OUTER_WALLS : TriggerSource.gizmo(still.gizmo().name());
+        }
+        if (row.other() instanceof ContactCluster.Other.Swinging swinging) {
+            return TriggerSource.gizmo(swinging.flipper().name());
+        }
+        if (row.other() instanceof ContactCluster.Other.InCluster in) {
+            return new Struck.OtherBall(balls.get(in.index()).name());
+        }
+        return new Struck.OtherBall(((ContactCluster.Other.Beyond) row.other()).ball().name());
+    }
+
+    private static Struck struckBy(Contact contact) {
+        if (contact instanceof Contact.OuterWall) {
+            return TriggerSource.OUTER_WALLS;
+        }
+        if (contact instanceof Contact.Face face) {
+            return TriggerSource.gizmo(face.gizmo().name());
+        }
+        if (contact instanceof Contact.Round round) {
+            return TriggerSource.gizmo(round.gizmo().name());
+        }
+        if (contact instanceof Contact.SwingingPart part) {
+            return TriggerSource.gizmo(part.flipper().name());
+        }
+        return new Struck.OtherBall(((Contact.OtherBall) contact).other().name());
+    }
+
+    private GizmoKind kindOf(Struck struck) {
+        if (struck instanceof TriggerSource.OfGizmo gizmo) {
+            GizmoBase target = view.gizmo(gizmo.gizmo());
+            return target == null ? null : target.kind();
+        }
+        return null;
     }
 
     /** Stage 5: the gizmo or the walls that were hit trigger every gizmo connected to them. */

@@ -5,7 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import gizmoball.model.Board;
 import gizmoball.model.Invariants;
 import gizmoball.model.KeyEdge;
-import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.GizmoKind;
 
 import java.util.ArrayList;
@@ -44,7 +44,7 @@ class PinchedBallsTest {
         board.addGizmo(GizmoKind.SQUARE, "W", 6, 17);
         board.setFlipperState("F", 10, true);
         board.addBall("B", 5.6, 17.2, 0, 0);
-        Flipper flipper = (Flipper) board.gizmo("F").orElseThrow();
+        FlipperView flipper = (FlipperView) board.gizmo("F").orElseThrow();
         double fastestUp = 0;
         int jams = 0;
         for (int t = 0; t < 30; t++) {
@@ -83,7 +83,7 @@ class PinchedBallsTest {
         }
         Vect lying = board.ball("B").orElseThrow().position();
         board.keyUp(90);
-        Flipper flipper = (Flipper) board.gizmo("LF").orElseThrow();
+        FlipperView flipper = (FlipperView) board.gizmo("LF").orElseThrow();
         int jams = 0;
         double jammedAt = Double.NaN;
         Vect held = null;

@@ -1,0 +1,165 @@
+package gizmoball.model.loop;
+
+import gizmoball.model.gizmo.Absorber;
+import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.Shape;
+
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.function.Function;
+
+import physics.Circle;
+import physics.Geometry;
+import physics.LineSegment;
+import physics.Vect;
+
+/**
+ * The connected set of touching contacts around a ball (docs/design.md, "Contact clusters"): the balls that touch it,
+ * the balls that touch those, and so on, with every surface each of them touches: outer walls, still gizmo parts
+ * and the parts of swinging flippers, which move the cluster and are not moved by it. A query: it reads positions
+ * and velocities and changes nothing.
+ */
+final class ContactCluster {
+    /** L: a ball this near a surface or another ball touches it, for the cluster (the placement tolerance). */
+    static final double TOUCHING = Tolerances.PLACEMENT;
+    /** More balls than this in one cluster: the ones beyond are taken as surfaces moving as they move now. */
+    static final int MAX_BALLS = 32;
+
+    /** What a row of the cluster is a contact with. */
+    sealed interface Other {
+        /** A still surface; {@code gizmo} null for an outer wall. */
+        record Still(ContactRef ref, GizmoBase gizmo) implements Other {
+        }
+
+        /** A part of a swinging flipper. */
+        record Swinging(Flipper flipper) implements Other {
+        }
+
+        /** A ball of the cluster, by its index. */
+        record InCluster(int index) implements Other {
+        }
+
+        /** A ball beyond the cluster's limit, taken as a surface moving as it moves now. */
+        record Beyond(Ball ball) implements Other {
+        }
+    }
+
+    /** One contact: ball {@code ball} (an index) touches {@code other}, with normal {@code normal} toward the ball. */
+    record Row(int ball, Other other, Vect normal, double surfaceSpeed, double restitution) {
+    }
+
+    private final List<Ball> balls = new ArrayList<>();
+    private final List<Row> rows = new ArrayList<>();
+
+    private ContactCluster() {
+    }
+
+    /**
+     * The cluster of {@code seeds} as they are now; {@code motion} gives the velocity each ball moves with this tick
+     * (none while asleep).
+     */
+    static ContactCluster around(LoopView view, List<Ball> seeds, Function<Ball, Vect> motion) {
+        ContactCluster cluster = new ContactCluster();
+        Set<Ball> members = new LinkedHashSet<>(seeds);
+        cluster.balls.addAll(members);
+        for (int i = 0; i < cluster.balls.size(); i++) {
+            Ball ball = cluster.balls.get(i);
+            cluster.surfaces(view, i, ball);
+            for (Ball other : view.balls()) {
+                if (other == ball || other.isCaptured() || view.passingThrough(ball, other)
+                        || gap(ball.position(), other.position(), 2 * Arena.BALL_RADIUS) > TOUCHING) {
+                    continue;
+                }
+                int j = cluster.balls.indexOf(other);
+                if (j >= 0 && j < i) {
+                    continue;   // its row was made from the other side
+                }
+                Vect normal = ball.position().minus(other.position()).unitSize();
+                if (j < 0 && cluster.balls.size() < MAX_BALLS) {
+                    cluster.balls.add(other);
+                    j = cluster.balls.size() - 1;
+                }
+                if (j >= 0) {
+                    cluster.rows.add(new Row(i, new Other.InCluster(j), normal, 0, 1.0));
+                } else {
+                    cluster.rows.add(new Row(i, new Other.Beyond(other), normal, motion.apply(other).dot(normal), 1.0));
+                }
+            }
+        }
+        return cluster;
+    }
+
+    List<Ball> balls() {
+        return balls;
+    }
+
+    List<Row> rows() {
+        return rows;
+    }
+
+    private void surfaces(LoopView view, int index, Ball ball) {
+        Vect p = ball.position();
+        for (int side = 0; side < CollisionDetector.OUTER_WALLS.size(); side++) {
+            still(index, p, CollisionDetector.OUTER_WALLS.get(side), new ContactRef.Wall(side), null);
+        }
+        double reach = Arena.BALL_RADIUS + TOUCHING;
+        for (GizmoBase gizmo : view.index().within(p.x() - reach, p.y() - reach, p.x() + reach, p.y() + reach)) {
+            if (gizmo instanceof Absorber) {
+                continue;   // what touches an absorber is captured by it, not held
+            }
+            Shape shape = gizmo.shape();
+            if (gizmo instanceof Flipper flipper && flipper.isMoving()) {
+                swinging(index, p, flipper, shape);
+                continue;
+            }
+            for (int i = 0; i < shape.segments().size(); i++) {
+                still(index, p, shape.segments().get(i), new ContactRef.Part(gizmo.name(), false, i), gizmo);
+            }
+            for (int i = 0; i < shape.circles().size(); i++) {
+                Circle circle = shape.circles().get(i);
+                if (gap(p, circle.getCenter(), circle.getRadius() + Arena.BALL_RADIUS) <= TOUCHING) {
+                    rows.add(new Row(index, new Other.Still(new ContactRef.Part(gizmo.name(), true, i), gizmo),
+                            p.minus(circle.getCenter()).unitSize(), 0, gizmo.reflectionCoefficient()));
+                }
+            }
+        }
+    }
+
+    private void still(int index, Vect p, LineSegment segment, ContactRef ref, GizmoBase gizmo) {
+        Vect foot = Geometry.perpendicularPoint(segment, p);
+        if (foot != null && gap(p, foot, Arena.BALL_RADIUS) <= TOUCHING) {
+            rows.add(new Row(index, new Other.Still(ref, gizmo), p.minus(foot).unitSize(), 0,
+                    gizmo == null ? 1.0 : gizmo.reflectionCoefficient()));
+        }
+    }
+
+    private void swinging(int index, Vect p, Flipper flipper, Shape shape) {
+        Vect pivot = flipper.pivot();
+        double omega = flipper.angularVelocity();
+        for (LineSegment side : shape.segments()) {
+            Vect foot = Geometry.perpendicularPoint(side, p);
+            if (foot != null && gap(p, foot, Arena.BALL_RADIUS) <= TOUCHING) {
+                Vect normal = p.minus(foot).unitSize();
+                rows.add(new Row(index, new Other.Swinging(flipper), normal,
+                        CollisionDetector.surfaceVelocity(pivot, omega, foot).dot(normal),
+                        flipper.reflectionCoefficient()));
+            }
+        }
+        for (Circle end : shape.circles()) {
+            if (gap(p, end.getCenter(), end.getRadius() + Arena.BALL_RADIUS) <= TOUCHING) {
+                Vect normal = p.minus(end.getCenter()).unitSize();
+                Vect point = end.getCenter().plus(normal.times(end.getRadius()));
+                rows.add(new Row(index, new Other.Swinging(flipper), normal,
+                        CollisionDetector.surfaceVelocity(pivot, omega, point).dot(normal),
+                        flipper.reflectionCoefficient()));
+            }
+        }
+    }
+
+    private static double gap(Vect p, Vect q, double touch) {
+        return Math.sqrt(p.distanceSquared(q)) - touch;
+    }
+}

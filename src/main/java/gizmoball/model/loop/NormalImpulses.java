@@ -1,0 +1,376 @@
+package gizmoball.model.loop;
+
+import java.util.Arrays;
+
+/**
+ * The simultaneous normal impulses of one contact cluster (docs/design.md, "Contact clusters"): balls of equal mass,
+ * no spin, frictionless contacts, each contact a row {@code (v_a - v_b) . n >= s} on the balls' velocities, where
+ * {@code b} is another ball of the cluster or a surface ({@code s} its own speed along {@code n}: zero for a still
+ * one, the surface speed of a swinging one, which gives velocity and takes none).
+ *
+ * <p>The answer comes in rounds of impacts. Each round is two steps:
+ * <ol>
+ * <li>compression: the nearest velocities (in the kinetic-energy metric, for equal masses the Euclidean one) that
+ *     close on no contact, perfectly inelastic: a projection, found exactly on the impulses by Lawson and Hanson's
+ *     active-set method, or where rows depend on each other too much for it, by projected Gauss-Seidel;</li>
+ * <li>restitution: in a round where something closes faster than an impact, the contacts whose compression
+ *     impulse is a real impact get that impulse again times one coefficient for the round (Poisson's law), their
+ *     coefficients averaged by impulse, so a single contact bounces exactly as the reflect methods say. One
+ *     coefficient, because coefficients that differ turn the nearly opposite impulses of a narrow wedge (a ball
+ *     struck into it at 20 L/s meets each side with some 570) into a kick across it, where one sends the ball
+ *     straight back out.</li>
+ * </ol>
+ * The restitution of one contact can close another (a ball sent back into the one behind it): the next round takes
+ * it, until no contact closes faster than rounding.
+ * A projection onto a convex set that holds the still velocities never adds kinetic energy, and with one coefficient
+ * for every contact of still surfaces a round's restitution keeps it exactly (the compression impulse is orthogonal to
+ * the compressed velocity). Where contacts that only settled in the round make the restitution add energy, it is
+ * scaled back.
+ * Where swinging surfaces leave no velocity within the speed limit that closes on none of the rows, the
+ * cluster is infeasible: the caller stalls those surfaces and solves again.
+ */
+final class NormalImpulses {
+    /** Rounds of impacts before the last comes to rest (a guard): elastic bounces in a wedge of 0.01 degree. */
+    private static final int MAX_IMPACT_ROUNDS = 20_000;
+    /** Sweeps of projected Gauss-Seidel before it counts as not converging. */
+    private static final int MAX_SWEEPS = 10_000;
+    /** Changes of the active set before the solve counts as not settling (each adds or drops one row). */
+    private static final int MAX_ROUNDS = 200;
+    /**
+     * L/s: a row closing no faster than this is left alone, as the detector leaves a touch closing slower than
+     * {@link Tolerances#ROUNDING_SPEED}: the rounding of a normal that is nearly square to a motion (two balls side by
+     * side in a gap that fits them, one sliding past the other) asks for impulses without end to undo it.
+     */
+    private static final double SLOP = Tolerances.ROUNDING_SPEED / 2;
+
+    private final int balls;
+    private final int rows;
+    private final int[] a;
+    private final int[] b;
+    private final double[] nx;
+    private final double[] ny;
+    private final double[] speed;
+    private final double[] restitution;
+    private final double[] impulse;
+    private double[] vx;
+    private double[] vy;
+
+    /**
+     * @param a           per row, the ball the normal points into
+     * @param b           per row, the other ball, or -1 for a surface
+     * @param nx          per row, the unit normal (from {@code b} or the surface toward {@code a})
+     * @param speed       per row, the surface's speed along the normal (0 for a ball or a still surface)
+     * @param restitution per row, the coefficient a real impact on it bounces with
+     */
+    NormalImpulses(int balls, int[] a, int[] b, double[] nx, double[] ny, double[] speed, double[] restitution) {
+        this.balls = balls;
+        this.rows = a.length;
+        this.a = a;
+        this.b = b;
+        this.nx = nx;
+        this.ny = ny;
+        this.speed = speed;
+        this.restitution = restitution;
+        this.impulse = new double[rows];
+    }
+
+    /**
+     * What the solve found: the balls' velocities; for each row the largest compression impulse it took in any round
+     * of impacts (above the impact impulse: a real impact); whether every round had an answer within the speed limit;
+     * whether the rounds of impacts ended (else the last round came to rest, a guard).
+     */
+    record Result(double[] vx, double[] vy, double[] compression, boolean feasible, boolean ended) {
+    }
+
+    /**
+     * Solves for the balls' velocities after the cluster's impacts, in rounds: each round compresses every closing
+     * contact at once and gives each real impact its restitution; a round's restitution can close another contact
+     * (a ball sent back into the one behind it), which the next round takes, until no contact closes. So a row of
+     * touching elastic balls driven into a wall passes the impact along and comes back whole, as a Newton's cradle
+     * does. {@code impact}: per row, the change of its closing speed above which its compression is an impact that
+     * bounces; below it the contact comes to rest (restitution 0).
+     */
+    Result solve(double[] vx0, double[] vy0, double[] impact, double speedLimit) {
+        vx = vx0.clone();
+        vy = vy0.clone();
+        double[] largest = new double[rows];
+        for (int round = 0; round < MAX_IMPACT_ROUNDS; round++) {
+            if (!anyClosing()) {
+                return new Result(vx, vy, largest, withinLimit(speedLimit), true);
+            }
+            double[] before = vx.clone();
+            double[] beforeY = vy.clone();
+            // A round in which nothing closes faster than an impact is a settling, not an impact: it comes to rest
+            // however large the impulses (a ball sliding past another at a tilt of 1e-4 meets it at 1e-4 of its speed).
+            boolean impacts = anyClosingFaster(impact);
+            if (!project(speedLimit)) {
+                return new Result(vx, vy, largest, false, true);
+            }
+            double[] cx = vx.clone();
+            double[] cy = vy.clone();
+            double[] rx = new double[balls];
+            double[] ry = new double[balls];
+            double weighted = 0;
+            double total = 0;
+            for (int i = 0; i < rows; i++) {
+                largest[i] = Math.max(largest[i], impulse[i] * diagonal(i));
+                if (impacts && impulse[i] * diagonal(i) > impact[i]) {
+                    weighted += restitution[i] * impulse[i];
+                    total += impulse[i];
+                    addImpulse(rx, ry, i, impulse[i]);
+                }
+            }
+            double e = total > 0 ? weighted / total : 0;
+            for (int k = 0; k < balls; k++) {
+                rx[k] *= e;
+                ry[k] *= e;
+            }
+            double scale = energyKeepingScale(before, beforeY, cx, cy, rx, ry);
+            for (int k = 0; k < balls; k++) {
+                vx[k] = cx[k] + scale * rx[k];
+                vy[k] = cy[k] + scale * ry[k];
+            }
+        }
+        boolean feasible = project(speedLimit) && withinLimit(speedLimit);
+        return new Result(vx, vy, largest, feasible, false);
+    }
+
+    /** How much one unit of impulse on the row changes what it closes by: 1 on a surface, 2 between two balls. */
+    private double diagonal(int i) {
+        return b[i] < 0 ? 1 : 2;
+    }
+
+    private boolean anyClosing() {
+        for (int i = 0; i < rows; i++) {
+            if (speed[i] - relative(i) > SLOP) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private boolean anyClosingFaster(double[] than) {
+        for (int i = 0; i < rows; i++) {
+            if (speed[i] - relative(i) > than[i]) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * Where every surface is still, the scale of the restitution impulses (at most 1) that adds no kinetic energy:
+     * |c + s r|^2 <= |v0|^2, which holds at s = 0 since compression never adds energy. With a swinging surface the
+     * surface does work, and the impulses stand as they are.
+     */
+    private double energyKeepingScale(double[] vx0, double[] vy0, double[] cx, double[] cy, double[] rx,
+                                      double[] ry) {
+        for (int i = 0; i < rows; i++) {
+            if (speed[i] != 0) {
+                return 1;
+            }
+        }
+        double before = 0;
+        double cc = 0;
+        double cr = 0;
+        double rr = 0;
+        for (int k = 0; k < balls; k++) {
+            before += vx0[k] * vx0[k] + vy0[k] * vy0[k];
+            cc += cx[k] * cx[k] + cy[k] * cy[k];
+            cr += cx[k] * rx[k] + cy[k] * ry[k];
+            rr += rx[k] * rx[k] + ry[k] * ry[k];
+        }
+        if (rr == 0 || cc + 2 * cr + rr <= before) {
+            return 1;
+        }
+        // The positive root of rr s^2 + 2 cr s + (cc - before) = 0; cc <= before, so it exists and lies in [0, 1).
+        double root = (-cr + Math.sqrt(Math.max(0, cr * cr - rr * (cc - before)))) / rr;
+        return Math.max(0, Math.min(1, root));
+    }
+
+    /**
+     * The impulses that make every row just not close, never pulling, from the current velocities: exactly by the
+     * active-set method (iterative projections crawl where a ball is wedged between another and a wall at a tilt of
+     * 1e-4, which needs impulses thousands of times its speed), else by projected Gauss-Seidel. Returns false if
+     * neither finds velocities within the speed limit that close on nothing (surfaces closing a pocket).
+     */
+    private boolean project(double speedLimit) {
+        double[] vx0 = vx.clone();
+        double[] vy0 = vy.clone();
+        if (projectByActiveSet() && withinLimit(speedLimit)) {
+            return true;
+        }
+        System.arraycopy(vx0, 0, vx, 0, balls);
+        System.arraycopy(vy0, 0, vy, 0, balls);
+        return projectBySweeps(speedLimit);
+    }
+
+    /**
+     * Projected Gauss-Seidel (Hildreth's method), for the rare set of rows the active-set method does not settle
+     * (rows that depend on each other in several ways): each row in turn takes the impulse that makes it just not
+     * close, never pulling, until no impulse changes by more than rounding. It converges wherever an answer exists,
+     * slowly where rows are nearly parallel; impulses past what any velocity within the speed limit needs mean
+     * there is none.
+     */
+    private boolean projectBySweeps(double speedLimit) {
+        double bound = 4 * speedLimit * (rows + 1);
+        double scale = 1;
+        for (int k = 0; k < balls; k++) {
+            scale = Math.max(scale, Math.abs(vx[k]) + Math.abs(vy[k]));
+        }
+        double tolerance = 1e-14 * scale;
+        Arrays.fill(impulse, 0);
+        for (int sweep = 0; sweep < MAX_SWEEPS; sweep++) {
+            double largest = 0;
+            for (int i = 0; i < rows; i++) {
+                double step = Math.max(-impulse[i], (speed[i] - relative(i) - SLOP) / diagonal(i));
+                if (step != 0) {
+                    impulse[i] += step;
+                    addImpulse(vx, vy, i, step);
+                    largest = Math.max(largest, Math.abs(step));
+                    if (impulse[i] > bound) {
+                        return false;
+                    }
+                }
+            }
+            if (largest <= tolerance) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * Lawson and Hanson's active-set method for least squares with nonnegative unknowns, on the impulses: the row
+     * closing fastest joins the set; the set's rows are solved as equalities exactly (each just not closing); where
+     * that would make an impulse pull, the impulses move only as far toward that answer as keeps every impulse
+     * pushing, and the row whose impulse reaches zero leaves. Each step lowers the same convex objective, so the
+     * set never repeats, and the method ends when no row outside the set closes.
+     */
+    private boolean projectByActiveSet() {
+        double[] base = new double[rows];
+        for (int i = 0; i < rows; i++) {
+            base[i] = speed[i] - relative(i);   // what each row closes by, before any impulse
+        }
+        double[] vx0 = vx.clone();
+        double[] vy0 = vy.clone();
+        boolean[] active = new boolean[rows];
+        Arrays.fill(impulse, 0);
+        double[] trial = new double[rows];
+        for (int round = 0; round < MAX_ROUNDS; round++) {
+            int joining = -1;
+            double most = SLOP;
+            for (int i = 0; i < rows; i++) {
+                double closing = speed[i] - relative(i);
+                if (!active[i] && closing > most) {
+                    most = closing;
+                    joining = i;
+                }
+            }
+            if (joining < 0) {
+                return true;
+            }
+            active[joining] = true;
+            for (int inner = 0; inner <= rows; inner++) {
+                solveActive(active, base, trial);
+                double step = 1;
+                for (int i = 0; i < rows; i++) {
+                    if (active[i] && trial[i] <= 0) {
+                        step = Math.min(step, impulse[i] <= 0 ? 0 : impulse[i] / (impulse[i] - trial[i]));
+                    }
+                }
+                for (int i = 0; i < rows; i++) {
+                    impulse[i] += step * (trial[i] - impulse[i]);
+                }
+                if (step == 1) {
+                    break;
+                }
+                for (int i = 0; i < rows; i++) {
+                    if (active[i] && impulse[i] <= 0) {
+                        active[i] = false;
+                        impulse[i] = 0;
+                    }
+                }
+            }
+            System.arraycopy(vx0, 0, vx, 0, balls);
+            System.arraycopy(vy0, 0, vy, 0, balls);
+            for (int i = 0; i < rows; i++) {
+                addImpulse(vx, vy, i, impulse[i]);
+            }
+            if (!active[joining] || speed[joining] - relative(joining) > SLOP) {
+                return false;   // a row depending on others that they cannot satisfy
+            }
+        }
+        return false;
+    }
+
+    /** The impulses of the active rows that close each exactly (rows depending on others take none), in {@code out}. */
+    private void solveActive(boolean[] active, double[] base, double[] out) {
+        int[] index = new int[rows];
+        int m = 0;
+        for (int i = 0; i < rows; i++) {
+            out[i] = 0;
+            if (active[i]) {
+                index[m++] = i;
+            }
+        }
+        double[][] matrix = new double[m][m + 1];
+        for (int r = 0; r < m; r++) {
+            for (int c = 0; c < m; c++) {
+                matrix[r][c] = coupling(index[r], index[c]);
+            }
+            matrix[r][m] = base[index[r]];
+        }
+        double[] solution = Gauss.solve(matrix);
+        for (int r = 0; r < m; r++) {
+            out[index[r]] = solution[r];
+        }
+    }
+
+    /** J_i . J_j: how an impulse on row j changes what row i closes by. */
+    private double coupling(int i, int j) {
+        double dot = nx[i] * nx[j] + ny[i] * ny[j];
+        double sum = 0;
+        if (a[i] == a[j]) {
+            sum += dot;
+        }
+        if (b[i] >= 0 && b[i] == a[j]) {
+            sum -= dot;
+        }
+        if (b[j] >= 0 && a[i] == b[j]) {
+            sum -= dot;
+        }
+        if (b[i] >= 0 && b[i] == b[j]) {
+            sum += dot;
+        }
+        return sum;
+    }
+
+    private double relative(int i) {
+        double ux = vx[a[i]];
+        double uy = vy[a[i]];
+        if (b[i] >= 0) {
+            ux -= vx[b[i]];
+            uy -= vy[b[i]];
+        }
+        return ux * nx[i] + uy * ny[i];
+    }
+
+    private void addImpulse(double[] x, double[] y, int i, double amount) {
+        x[a[i]] += amount * nx[i];
+        y[a[i]] += amount * ny[i];
+        if (b[i] >= 0) {
+            x[b[i]] -= amount * nx[i];
+            y[b[i]] -= amount * ny[i];
+        }
+    }
+
+    private boolean withinLimit(double limit) {
+        for (int k = 0; k < balls; k++) {
+            if (Math.sqrt(vx[k] * vx[k] + vy[k] * vy[k]) > limit) {
+                return false;
+            }
+        }
+        return true;
+    }
+}

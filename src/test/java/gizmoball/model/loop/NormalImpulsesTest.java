@@ -1,0 +1,225 @@
+package gizmoball.model.loop;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.SplittableRandom;
+
+import org.junit.jupiter.api.RepeatedTest;
+import org.junit.jupiter.api.RepetitionInfo;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The simultaneous normal impulses of a contact cluster (docs/design.md, "Contact clusters"), against closed forms:
+ * a single contact bounces as the reflect methods do, balls of equal mass keep momentum and, elastic, energy; a
+ * still cluster never gains energy and is never left closing; a pocket that swinging surfaces close has no answer.
+ */
+class NormalImpulsesTest {
+    private static final double EXACT = 1e-12;
+    private static final double LIMIT = 200;
+    /** Impacts above this impulse bounce: two ticks of the default gravity. */
+    private static final double IMPACT = 2 * 25.0 / 60;
+
+    /** Rows of a cluster, added one at a time. */
+    private static final class Rows {
+        final List<int[]> balls = new ArrayList<>();
+        final List<double[]> values = new ArrayList<>();
+
+        Rows surface(int ball, double nx, double ny, double speed, double restitution) {
+            balls.add(new int[] {ball, -1});
+            values.add(new double[] {nx, ny, speed, restitution});
+            return this;
+        }
+
+        Rows between(int ball, int other, double nx, double ny) {
+            balls.add(new int[] {ball, other});
+            values.add(new double[] {nx, ny, 0, 1});
+            return this;
+        }
+
+        NormalImpulses.Result solve(int count, double[] vx, double[] vy) {
+            int n = balls.size();
+            int[] a = new int[n];
+            int[] b = new int[n];
+            double[] nx = new double[n];
+            double[] ny = new double[n];
+            double[] speed = new double[n];
+            double[] restitution = new double[n];
+            for (int i = 0; i < n; i++) {
+                a[i] = balls.get(i)[0];
+                b[i] = balls.get(i)[1];
+                nx[i] = values.get(i)[0];
+                ny[i] = values.get(i)[1];
+                speed[i] = values.get(i)[2];
+                restitution[i] = values.get(i)[3];
+            }
+            double[] impact = new double[n];
+            Arrays.fill(impact, IMPACT);
+            return new NormalImpulses(count, a, b, nx, ny, speed, restitution).solve(vx, vy, impact, LIMIT);
+        }
+    }
+
+    @Test
+    void aBallOnAFloorBouncesWithTheFloorsCoefficient() {
+        // The floor's normal points up (-y); the ball falls at 4 L/s and slides at 3 L/s.
+        NormalImpulses.Result elastic = new Rows().surface(0, 0, -1, 0, 1).solve(1, new double[] {3},
+                new double[] {4});
+        assertThat(elastic.vx()[0]).isCloseTo(3, within(EXACT));
+        assertThat(elastic.vy()[0]).isCloseTo(-4, within(EXACT));
+        NormalImpulses.Result half = new Rows().surface(0, 0, -1, 0, 0.5).solve(1, new double[] {3},
+                new double[] {4});
+        assertThat(half.vy()[0]).isCloseTo(-2, within(EXACT));
+        assertThat(half.feasible()).isTrue();
+        assertThat(half.ended()).isTrue();
+    }
+
+    @Test
+    void aSlowApproachComesToRestInsteadOfBouncing() {
+        NormalImpulses.Result result = new Rows().surface(0, 0, -1, 0, 1).solve(1, new double[] {3},
+                new double[] {IMPACT / 2});
+        assertThat(result.vx()[0]).isCloseTo(3, within(EXACT));
+        assertThat(result.vy()[0]).isCloseTo(0, within(EXACT));
+        assertThat(result.compression()[0]).isCloseTo(IMPACT / 2, within(EXACT));
+    }
+
+    @Test
+    void aBallDrivenIntoACornerComesStraightBack() {
+        // Walls to the right (normal -x) and below (normal -y): (1, 1) into both at once comes back as (-1, -1).
+        NormalImpulses.Result result = new Rows().surface(0, -1, 0, 0, 1).surface(0, 0, -1, 0, 1)
+                .solve(1, new double[] {1}, new double[] {1});
+        assertThat(result.vx()[0]).isCloseTo(-1, within(EXACT));
+        assertThat(result.vy()[0]).isCloseTo(-1, within(EXACT));
+    }
+
+    @Test
+    void twoEqualBallsHeadOnExchangeTheirVelocities() {
+        // Ball 1 right of ball 0 (normal from 0 to 1 is +x), 0 moving right at 5, 1 left at 2.
+        NormalImpulses.Result result = new Rows().between(1, 0, 1, 0).solve(2, new double[] {5, -2},
+                new double[] {0, 0});
+        assertThat(result.vx()[0]).isCloseTo(-2, within(EXACT));
+        assertThat(result.vx()[1]).isCloseTo(5, within(EXACT));
+    }
+
+    /**
+     * Three touching balls in a row, the first moving at v into the others: the simultaneous impact compresses all
+     * three to the common velocity v / 3 (momentum) and restitutes each contact's impulse again (2v/3 and v/3), so
+     * the first leaves at -v/3 and the others at 2v/3: momentum v and energy v^2 kept exactly.
+     */
+    @Test
+    void aRowOfTouchingBallsKeepsMomentumAndEnergy() {
+        double v = 6;
+        NormalImpulses.Result result = new Rows().between(1, 0, 1, 0).between(2, 1, 1, 0)
+                .solve(3, new double[] {v, 0, 0}, new double[] {0, 0, 0});
+        assertThat(result.vx()[0]).isCloseTo(-v / 3, within(EXACT));
+        assertThat(result.vx()[1]).isCloseTo(2 * v / 3, within(EXACT));
+        assertThat(result.vx()[2]).isCloseTo(2 * v / 3, within(EXACT));
+    }
+
+    /** The restitution of one impact sends a ball into a wall behind it: the next round takes that impact. */
+    @Test
+    void anImpactPassedIntoAWallComesBackInTheNextRound() {
+        // Ball 0 against a wall on its left (normal +x), ball 1 right of it moving left at 4 into it.
+        NormalImpulses.Result result = new Rows().surface(0, 1, 0, 0, 1).between(1, 0, 1, 0)
+                .solve(2, new double[] {0, -4}, new double[] {0, 0});
+        double energy = result.vx()[0] * result.vx()[0] + result.vx()[1] * result.vx()[1];
+        assertThat(energy).isCloseTo(16, within(1e-9));
+        assertThat(result.vx()[1]).isGreaterThanOrEqualTo(result.vx()[0] - EXACT);   // neither closes on the other
+        assertThat(result.vx()[0]).isGreaterThanOrEqualTo(-EXACT);                   // nor on the wall
+        assertThat(result.vx()[0] + result.vx()[1]).isPositive();                    // the wall sent it all back
+    }
+
+    @Test
+    void aSwingingSurfaceBatsABallAtRestAtOnePlusItsCoefficientTimesItsSpeed() {
+        NormalImpulses.Result result = new Rows().surface(0, 0, -1, 10, 0.95).solve(1, new double[] {0},
+                new double[] {0});
+        // The surface moves up at 10 L/s along its normal: the ball leaves at 1.95 * 10.
+        assertThat(result.vy()[0]).isCloseTo(-19.5, within(EXACT));
+    }
+
+    @Test
+    void aSwingingSurfaceClosingAPocketHasNoAnswer() {
+        // A still wall on the ball's right and a surface on its left moving right into it.
+        NormalImpulses.Result result = new Rows().surface(0, -1, 0, 0, 1).surface(0, 1, 0, 5, 0.95)
+                .solve(1, new double[] {0}, new double[] {0});
+        assertThat(result.feasible()).isFalse();
+    }
+
+    /**
+     * Two balls side by side in a gap that fits them within 8e-9 L, so their contact normal is tilted by 1.9e-4 rad,
+     * one moving down past the other: the tilt asks for impulses about 5,000 times the speed, which the exact
+     * solve finds; the two then move down together, closing on nothing.
+     */
+    @Test
+    void aNearlySquareWedgeIsSolvedExactly() {
+        double tilt = 1.8745e-4;
+        double nx = Math.cos(tilt);
+        double ny = -Math.sin(tilt);
+        NormalImpulses.Result result = new Rows().surface(0, -1, 0, 0, 1).between(0, 1, nx, ny)
+                .surface(1, 1, 0, 0, 1).solve(2, new double[] {0, 0}, new double[] {0.634, -0.025});
+        assertThat(result.feasible()).isTrue();
+        assertThat(result.vx()[0]).isCloseTo(0, within(1e-9));
+        assertThat(result.vx()[1]).isCloseTo(0, within(1e-9));
+        assertThat(result.vy()[0] - result.vy()[1]).isCloseTo(0, within(1e-6));
+    }
+
+    /**
+     * Random clusters of up to six balls among still surfaces with coefficients in [0, 1]: the answer closes on no
+     * contact by more than rounding, gains no kinetic energy, and a cluster with no surface keeps momentum.
+     */
+    @RepeatedTest(400)
+    void aStillClusterNeverGainsEnergyAndIsLeftClosingOnNothing(RepetitionInfo repetition) {
+        SplittableRandom random = new SplittableRandom(7919L * repetition.getCurrentRepetition());
+        int count = 1 + random.nextInt(6);
+        boolean surfaces = random.nextBoolean() || count == 1;
+        Rows rows = new Rows();
+        for (int k = 0; k < count; k++) {
+            if (k > 0) {
+                double angle = random.nextDouble(2 * Math.PI);
+                rows.between(k, random.nextInt(k), Math.cos(angle), Math.sin(angle));
+            }
+            int walls = surfaces ? random.nextInt(3) : 0;
+            for (int w = 0; w < walls; w++) {
+                double angle = random.nextDouble(2 * Math.PI);
+                rows.surface(k, Math.cos(angle), Math.sin(angle), 0, random.nextDouble());
+            }
+        }
+        double[] vx = new double[count];
+        double[] vy = new double[count];
+        double before = 0;
+        double px = 0;
+        double py = 0;
+        for (int k = 0; k < count; k++) {
+            vx[k] = random.nextDouble(-30, 30);
+            vy[k] = random.nextDouble(-30, 30);
+            before += vx[k] * vx[k] + vy[k] * vy[k];
+            px += vx[k];
+            py += vy[k];
+        }
+        NormalImpulses.Result result = rows.solve(count, vx.clone(), vy.clone());
+        double after = 0;
+        double qx = 0;
+        double qy = 0;
+        for (int k = 0; k < count; k++) {
+            after += result.vx()[k] * result.vx()[k] + result.vy()[k] * result.vy()[k];
+            qx += result.vx()[k];
+            qy += result.vy()[k];
+        }
+        assertThat(result.feasible()).isTrue();
+        assertThat(after).isLessThanOrEqualTo(before * (1 + 1e-12));
+        for (int i = 0; i < rows.balls.size(); i++) {
+            int a = rows.balls.get(i)[0];
+            int b = rows.balls.get(i)[1];
+            double[] row = rows.values.get(i);
+            double ux = result.vx()[a] - (b < 0 ? 0 : result.vx()[b]);
+            double uy = result.vy()[a] - (b < 0 ? 0 : result.vy()[b]);
+            assertThat(ux * row[0] + uy * row[1]).as("row %d", i).isGreaterThanOrEqualTo(-Tolerances.ROUNDING_SPEED);
+        }
+        if (!surfaces) {
+            assertThat(qx).isCloseTo(px, within(1e-9));
+            assertThat(qy).isCloseTo(py, within(1e-9));
+        }
+    }
+}
