@@ -24,6 +24,8 @@ import java.awt.Rectangle;
 import java.awt.Toolkit;
 import java.awt.event.ComponentAdapter;
 import java.awt.event.ComponentEvent;
+import java.awt.event.WindowAdapter;
+import java.awt.event.WindowEvent;
 import java.util.function.BooleanSupplier;
 
 /**
@@ -72,8 +74,15 @@ public final class BuildModeInstaller {
                 fitPalette.run();
             }
         });
-        window.setMinimumSize(minimumSize(window, palette, west, east));
         fitPalette.run();
+        // Measured once the window is whole and laid out: other features add rows above or below the board.
+        window.addWindowListener(new WindowAdapter() {
+            @Override
+            public void windowOpened(WindowEvent e) {
+                window.setMinimumSize(minimumSize(window, palette, west, east));
+                fitPalette.run();
+            }
+        });
 
         EditMenu editMenu = EditMenu.of(controller, window, building);
         JMenuBar menus = window.menus();
@@ -107,8 +116,8 @@ public final class BuildModeInstaller {
 
     /**
      * The smallest window in which build mode is whole: the compact palette, the properties and the smallest board
-     * side by side (each side with room for its scroll bar), and the whole tool bar; as tall as that board under
-     * the menus and tool bar and above the status line.
+     * side by side (each side with room for its scroll bar), and the whole tool bar; as tall as that board with
+     * everything the window has above and below the board view (menus, tool bar, status line and whatever else).
      */
     private static Dimension minimumSize(GameWindow window, PalettePanel palette, JScrollPane west, JScrollPane east) {
         palette.setCompact(true);
@@ -117,9 +126,8 @@ public final class BuildModeInstaller {
         Insets frame = window.getInsets();
         int width = Math.max(window.toolBar().getPreferredSize().width, sides + SMALLEST_BOARD)
                 + frame.left + frame.right;
-        int height = window.menus().getPreferredSize().height + window.toolBar().getPreferredSize().height
-                + window.statusLine().getPreferredSize().height + SMALLEST_BOARD + frame.top + frame.bottom;
-        return new Dimension(width, height);
+        int aroundBoard = window.getHeight() - window.boardPanel().getHeight();
+        return new Dimension(width, aroundBoard + SMALLEST_BOARD);
     }
 
     /** Crosshair where a click places something, a hand where it acts on what is under it. */
