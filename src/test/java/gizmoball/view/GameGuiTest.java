@@ -13,6 +13,7 @@ import gizmoball.highscore.HighScore;
 import gizmoball.highscore.HighScoreTable;
 import gizmoball.boardfile.BoardFiles;
 import java.awt.AWTException;
+import java.awt.Dimension;
 import java.awt.Rectangle;
 import java.awt.Robot;
 import java.awt.Toolkit;
@@ -102,8 +103,10 @@ class GameGuiTest {
             app.loop().step();
         });
         assertThat(onEdt(() -> app.gameFeatures().launchHint().current())).as("the ball is on its way").isEmpty();
-        onEdt(() -> app.window().setSize(420, 520));
-        await("the narrow window laid out", () -> app.window().getWidth() == 420);
+        // The narrowest the window goes: the score panel still says everything.
+        Dimension smallest = onEdt(() -> app.window().getMinimumSize());
+        onEdt(() -> app.window().setSize(smallest));
+        await("the narrow window laid out", () -> app.window().getWidth() == smallest.width);
         screenshot("game-default-narrow");
         assertThat(cells()).containsExactly("Score 0", "Balls 3", "Best -");
     }
