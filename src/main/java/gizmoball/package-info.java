@@ -1,5 +1,2 @@
-/**
- * The entry point ({@link gizmoball.Main}): the window through gizmoball.app, or the headless runner.
- * docs/design.md describes the packages and how they depend on each other.
- */
+/** The entry point, {@link gizmoball.Main}: the window or the headless runner. */
 package gizmoball;

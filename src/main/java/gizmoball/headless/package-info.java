@@ -1,6 +1,2 @@
-/**
- * The headless runner ({@code gizmoball --headless}): load a board, run N ticks, write the board.
- *
- * <p>May use: the model and boardfile. No AWT, no Swing.
- */
+/** The headless runner: load a board, run it for some ticks, write it out. */
 package gizmoball.headless;

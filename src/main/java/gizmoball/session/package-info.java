@@ -1,7 +1,2 @@
-/**
- * The state of one window: the one {@link gizmoball.model.Board} every view observes, the design play starts
- * from, the file it came from, whether it has unsaved changes, and the mode (play or build).
- *
- * <p>May use: the model. No Swing; the views read it and the controllers change it.
- */
+/** The state of one window: the board, the design play starts from, its file, unsaved changes, the mode. */
 package gizmoball.session;
