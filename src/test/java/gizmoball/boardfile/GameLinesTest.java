@@ -128,6 +128,22 @@ class GameLinesTest {
         assertThat(errors.get(5).reason()).contains("an extra ball is awarded at a score of 1 or more");
     }
 
+    /** The author's file stays as written where the game did not change: comments, order, the other game lines. */
+    @Test
+    void savingAnEditedGameOverItsFileRewritesOnlyTheChangedGameLines() throws Exception {
+        String authored = "# my table\n" + GAME.replace("#@Drain A\n", "# the drain\n#@Drain A\n");
+        LoadResult loaded = BoardFiles.loadSkippingBadLines("mine.txt", authored);
+        Board board = loaded.board();
+
+        board.setPoints("C", 300);
+        board.setBallsPerGame(4);
+        String saved = loaded.authored().saving(board).text();
+
+        assertThat(saved).startsWith("# my table\n").contains("# the drain\n#@Drain A\n", "#@Points C 300\n",
+                "#@Balls 4\n", "#@Points S -5\n", "#@ExtraBall 1000\n").doesNotContain("#@Points C 250", "#@Balls 5");
+        assertThat(BoardContents.of(BoardFiles.load("saved", saved))).isEqualTo(BoardContents.of(board));
+    }
+
     @Test
     void deletingAGizmoForgetsItsGameLines() throws BoardFileException {
         Board board = BoardFiles.load("game", GAME);
