@@ -29,6 +29,18 @@ class HelpPagesTest {
         }
     }
 
+    /** Issue 23: the author's actions are listed in Help and in the README alike. */
+    @Test
+    void theBuildModePageAndTheReadmeListTheAuthorsActions() throws Exception {
+        String page = HelpPages.buildMode();
+        String readme = Files.readString(Path.of("README.md"));
+        for (String action : new String[] {"Ctrl+C", "Ctrl+X", "Ctrl+V", "Ctrl+D", "Name", "Cell x, y",
+                "Open recent", "Right-click", "Connect from here"}) {
+            assertThat(page).contains(action);
+            assertThat(readme).contains(action);
+        }
+    }
+
     @Test
     void howToPlayListsTheBoardsKeysAndEveryMenuItemWithItsShortcut() {
         Board board = new Board();
