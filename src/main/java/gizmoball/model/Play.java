@@ -27,10 +27,10 @@ final class Play implements Surroundings {
     private final PlacementRules rules;
     private final Sleepers sleepers;
     private final List<PlayEvent> pendingEvents = new ArrayList<>();
-    /** When, on the board's clock, each absorber last fired a ball. */
+    /** When, on the board's clock, each absorber fired a ball since the clock last moved. */
     private final Map<String, Double> firedAt = new HashMap<>();
-    /** The board's clock at the action being performed now. */
-    private double acting = Double.NaN;
+    /** The board's clock at the action or key being performed now. */
+    private double acting;
 
     Play(Registry registry, PlacementRules rules, Sleepers sleepers) {
         this.registry = registry;
@@ -43,6 +43,7 @@ final class Play implements Surroundings {
      * while the key is held), and on DOWN those bound to CHANGE perform their action (a flipper toggles).
      */
     void keyAction(List<KeyBinding> bindings, int keyCode, KeyEdge edge, double now) {
+        acting = now;
         for (KeyBinding binding : bindings) {
             if (binding.keyCode() != keyCode) {
                 continue;
@@ -59,6 +60,11 @@ final class Play implements Surroundings {
                 }
             }
         }
+    }
+
+    /** The board's clock moved on or was set: what fired at the last moment may fire again. */
+    void clockMoved() {
+        firedAt.clear();
     }
 
     /** The gizmo performs its action: a flipper toggles, an absorber fires, a bumper only records the time. */
