@@ -3,98 +3,149 @@ package physics;
 import java.io.Serializable;
 
 /**
- * An immutable angle, stored only as radians normalised to [0, 2&pi;).
- * Positive angles turn +x toward +y (clockwise on a y-down screen).
+ * An immutable direction, held as its cosine and sine (the package's representation, which its {@code toString}
+ * shows). Positive angles turn +x toward +y (clockwise on a y-down screen); {@link #radians()} is in (-&pi;, &pi;].
  * <p>
- * {@code equals} and {@code hashCode} compare the normalised radians exactly. {@code compareTo} orders by
- * the normalised radians and treats angles closer than the comparison epsilon as equal; the epsilon is 0 by
- * default, so by default {@code compareTo} is consistent with {@code equals}.
+ * Angles are directions: two angles are {@code equals} when their cosines and their sines each differ by at most
+ * the comparison epsilon ({@value #DEFAULT_EPSILON} unless {@link #setEpsilon} says otherwise), so angles a whole
+ * turn apart are equal. {@code compareTo} agrees with {@code equals} and otherwise orders by {@link #radians()}.
+ * <p>
+ * Quarter turns are exact: the constants at multiples of 45 degrees hold correctly rounded cosines and sines (0
+ * and &plusmn;1 exactly at multiples of 90), and an angle given in radians within rounding of a multiple of
+ * &pi;/2 ({@code Math.toRadians(-90)}, {@code 3 * Math.PI / 2}) is that quarter turn exactly, so that turning
+ * points with integer coordinates by it gives integers, as games comparing turned shapes with {@code equals}
+ * expect.
  */
 public final class Angle implements Serializable, Comparable<Angle> {
-    private static final long serialVersionUID = 1L;
-    private static final double TWO_PI = 2 * Math.PI;
+    private static final long serialVersionUID = 2L;
+    /** The default tolerance of {@code equals} and {@code compareTo} in cosine and sine (the package's). */
+    static final double DEFAULT_EPSILON = 1e-6;
+    private static final double HALF_SQRT_2 = StrictMath.sqrt(0.5);
 
-    public static final Angle ZERO = new Angle(0);
-    public static final Angle DEG_45 = new Angle(Math.PI / 4);
-    public static final Angle DEG_90 = new Angle(Math.PI / 2);
-    public static final Angle DEG_135 = new Angle(3 * Math.PI / 4);
-    public static final Angle DEG_180 = new Angle(Math.PI);
-    public static final Angle DEG_225 = new Angle(5 * Math.PI / 4);
-    public static final Angle DEG_270 = new Angle(3 * Math.PI / 2);
-    public static final Angle DEG_315 = new Angle(7 * Math.PI / 4);
+    public static final Angle ZERO = new Angle(new Direction(1.0, 0.0));
+    public static final Angle DEG_45 = new Angle(new Direction(HALF_SQRT_2, HALF_SQRT_2));
+    public static final Angle DEG_90 = new Angle(new Direction(0.0, 1.0));
+    public static final Angle DEG_135 = new Angle(new Direction(-HALF_SQRT_2, HALF_SQRT_2));
+    public static final Angle DEG_180 = new Angle(new Direction(-1.0, 0.0));
+    public static final Angle DEG_225 = new Angle(new Direction(-HALF_SQRT_2, -HALF_SQRT_2));
+    public static final Angle DEG_270 = new Angle(new Direction(0.0, -1.0));
+    public static final Angle DEG_315 = new Angle(new Direction(HALF_SQRT_2, -HALF_SQRT_2));
     public static final Angle RAD_PI_OVER_FOUR = DEG_45;
     public static final Angle RAD_PI_OVER_TWO = DEG_90;
     public static final Angle RAD_PI = DEG_180;
 
-    /** Tolerance of {@link #compareTo(Angle)} only; volatile so that every thread sees a change at once. */
-    private static volatile double comparisonEpsilon = 0;
+    /** Tolerance of {@code equals} and {@code compareTo}; volatile so that every thread sees a change at once. */
+    private static volatile double epsilon = DEFAULT_EPSILON;
 
-    private final double radians;
+    private final double cos;
+    private final double sin;
 
-    /** @param radians any finite angle in radians; it is normalised to [0, 2&pi;) */
+    /** A cosine and a sine, as the constructors work them out. */
+    private record Direction(double cos, double sin) {
+    }
+
+    /** The angle of so many radians, any value (NaN gives an angle whose cosine and sine are NaN, as in the package). */
     public Angle(double radians) {
-        if (!Double.isFinite(radians)) {
-            throw new IllegalArgumentException("angle must be finite, got " + radians);
-        }
-        double r = radians % TWO_PI;
-        if (r < 0) {
-            r += TWO_PI;
-        }
-        // r + 2pi can round up to exactly 2pi for a tiny negative r; + 0.0 turns -0.0 into 0.0.
-        this.radians = (r >= TWO_PI ? 0 : r) + 0.0;
-    }
-
-    /** The angle of the vector (x, y) from +x; the zero vector has angle 0 (a defined answer, not NaN). */
-    public Angle(double x, double y) {
-        this(Math.atan2(y, x));
-    }
-
-    public double cos() {
-        return Math.cos(radians);
-    }
-
-    public double sin() {
-        return Math.sin(radians);
-    }
-
-    public double tan() {
-        return Math.tan(radians);
-    }
-
-    /** @return the angle in radians, in [0, 2&pi;) */
-    public double radians() {
-        return radians;
-    }
-
-    public Angle plus(Angle other) {
-        return new Angle(radians + other.radians);
-    }
-
-    public Angle minus(Angle other) {
-        return new Angle(radians - other.radians);
+        this(ofRadians(radians));
     }
 
     /**
-     * Sets the tolerance under which {@link #compareTo(Angle)} calls two angles equal (default 0: exact).
-     * It never affects {@code equals} or {@code hashCode}, which stay exact and consistent with each other.
+     * The direction of the vector (x, y) from +x.
+     *
+     * @throws IllegalArgumentException for (0, 0), which has no direction (as in the package)
      */
-    public static void setEpsilon(double epsilon) {
-        if (!(epsilon >= 0) || Double.isInfinite(epsilon)) {
-            throw new IllegalArgumentException("epsilon must be finite and >= 0, got " + epsilon);
-        }
-        comparisonEpsilon = epsilon;
+    public Angle(double x, double y) {
+        this(ofVector(x, y));
     }
 
+    private Angle(Direction direction) {
+        this.cos = direction.cos;
+        this.sin = direction.sin;
+    }
+
+    private static Direction ofRadians(double radians) {
+        double c = StrictMath.cos(radians);
+        double s = StrictMath.sin(radians);
+        // Within rounding of a multiple of pi/2 one of them is a rounding error of an exact 0, at most an ulp of
+        // the argument: the caller meant that quarter turn, whose cosine and sine are 0 and +-1 exactly.
+        double rounding = Math.ulp(radians);
+        if (Math.abs(c) <= rounding) {
+            c = 0.0;
+            s = Math.signum(s);
+        } else if (Math.abs(s) <= rounding) {
+            s = 0.0;
+            c = Math.signum(c);
+        }
+        return new Direction(c, s);
+    }
+
+    private static Direction ofVector(double x, double y) {
+        if (x == 0 && y == 0) {
+            throw new IllegalArgumentException("the vector (0, 0) has no direction");
+        }
+        double length = Math.hypot(x, y);
+        return new Direction(x / length, y / length);
+    }
+
+    public double cos() {
+        return cos;
+    }
+
+    public double sin() {
+        return sin;
+    }
+
+    public double tan() {
+        return sin / cos;
+    }
+
+    /** @return the angle in radians, in (-&pi;, &pi;] */
+    public double radians() {
+        return StrictMath.atan2(sin, cos);
+    }
+
+    /** The sum, by the addition theorems: exact for sums of quarter turns. */
+    public Angle plus(Angle other) {
+        return unit(cos * other.cos - sin * other.sin, sin * other.cos + cos * other.sin);
+    }
+
+    /** The difference, by the addition theorems: exact for differences of quarter turns. */
+    public Angle minus(Angle other) {
+        return unit(cos * other.cos + sin * other.sin, sin * other.cos - cos * other.sin);
+    }
+
+    /** The direction of (c, s), a vector of length 1 up to rounding, scaled back to length 1 (exactly so on an axis). */
+    private static Angle unit(double c, double s) {
+        double length = Math.hypot(c, s);
+        return new Angle(new Direction(c / length, s / length));
+    }
+
+    /**
+     * Sets the tolerance in cosine and sine under which {@code equals} and {@code compareTo} call two angles equal
+     * (default {@value #DEFAULT_EPSILON}).
+     *
+     * @throws IllegalArgumentException for a negative, infinite or NaN tolerance
+     */
+    public static void setEpsilon(double newEpsilon) {
+        if (!(newEpsilon >= 0) || Double.isInfinite(newEpsilon)) {
+            throw new IllegalArgumentException("epsilon must be finite and >= 0, got " + newEpsilon);
+        }
+        epsilon = newEpsilon;
+    }
+
+    /** 0 for equal angles ({@link #equals(Angle)}), else the order of {@link #radians()}. */
     @Override
     public int compareTo(Angle other) {
-        if (Math.abs(radians - other.radians) <= comparisonEpsilon) {
+        if (equals(other)) {
             return 0;
         }
-        return Double.compare(radians, other.radians);
+        return Double.compare(radians(), other.radians());
     }
 
+    /** Whether the two directions agree within the epsilon in cosine and in sine. */
     public boolean equals(Angle other) {
-        return other != null && radians == other.radians;
+        double tolerance = epsilon;
+        return other != null && Math.abs(cos - other.cos) <= tolerance && Math.abs(sin - other.sin) <= tolerance;
     }
 
     @Override
@@ -102,13 +153,18 @@ public final class Angle implements Serializable, Comparable<Angle> {
         return other instanceof Angle a && equals(a);
     }
 
+    /**
+     * One value for every angle: {@code equals} allows a tolerance, so angles whose cosines and sines differ by any
+     * amount can be linked by a chain of equal ones, and only a constant keeps equal angles at equal hash codes.
+     */
     @Override
     public int hashCode() {
-        return Double.hashCode(radians);
+        return Angle.class.hashCode();
     }
 
+    /** {@code Angle(cos,sin)}, as the package prints it. */
     @Override
     public String toString() {
-        return "Angle(" + radians + " rad)";
+        return "Angle(" + cos + "," + sin + ")";
     }
 }

@@ -4,7 +4,10 @@ import java.awt.geom.Ellipse2D;
 import java.awt.geom.Point2D;
 import java.io.Serializable;
 
-/** An immutable circle: a centre and a finite radius &ge; 0 (radius 0 is a point, used for corners). */
+/**
+ * An immutable circle: a centre and a radius (radius 0 is a point, used for corners). Any radius is accepted, as in
+ * the package; the collision methods answer for a negative or NaN one from their formulas.
+ */
 public final class Circle implements Serializable {
     private static final long serialVersionUID = 1L;
 
@@ -12,9 +15,6 @@ public final class Circle implements Serializable {
     private final double radius;
 
     public Circle(Vect center, double radius) {
-        if (!(radius >= 0) || Double.isInfinite(radius)) {
-            throw new IllegalArgumentException("circle radius must be finite and >= 0, got " + radius);
-        }
         this.center = center;
         this.radius = radius + 0.0;
     }
@@ -40,7 +40,7 @@ public final class Circle implements Serializable {
     }
 
     public boolean equals(Circle other) {
-        return other != null && center.equals(other.center) && radius == other.radius;
+        return other != null && center.equals(other.center) && Double.compare(radius, other.radius) == 0;
     }
 
     @Override
@@ -55,6 +55,6 @@ public final class Circle implements Serializable {
 
     @Override
     public String toString() {
-        return "Circle(center=" + center + ", radius=" + radius + ")";
+        return "[Circle center=" + center + " radius=" + radius + "]";
     }
 }

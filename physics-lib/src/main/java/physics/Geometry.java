@@ -172,7 +172,7 @@ public class Geometry {
 
         @Override
         public String toString() {
-            return "VectPair(" + v1 + ", " + v2 + ")";
+            return "[" + v1 + "," + v2 + "]";
         }
     }
 
@@ -218,7 +218,7 @@ public class Geometry {
 
         @Override
         public String toString() {
-            return "DoublePair(" + d1 + ", " + d2 + ")";
+            return "[" + d1 + "," + d2 + "]";
         }
     }
 }

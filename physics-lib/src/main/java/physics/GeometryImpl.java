@@ -8,14 +8,19 @@ import physics.Geometry.VectPair;
  * parameters, so one instance can be shared between threads.
  * <p>
  * Conventions: times in seconds, {@code Double.POSITIVE_INFINITY} for "no collision"; angles and angular
- * velocities (rad/s) are positive when they turn +x toward +y (clockwise on a y-down screen). Segments are closed
- * and both ends are treated alike. "Closing" is always judged from the current positions: a ball that touches
+ * velocities (rad/s) are positive when they turn +x toward +y (clockwise on a y-down screen). A segment's face is
+ * half-open, [p1, p2), as in the package, so that two faces meeting at a corner never both report it; corners
+ * belong to zero-radius circles. "Closing" is always judged from the current positions: a ball that touches
  * or overlaps an obstacle and moves toward it collides at time 0, one that moves away never collides with it.
+ * Every rotating method at angular velocity exactly 0 answers as its static counterpart.
+ * <p>
+ * Degenerate input gets an answer, never an exception, where the package gave one (a NaN, often): a zero-length
+ * segment has no face, a reflection whose normal is undefined (coinciding centres) leaves the velocity as it is.
  * <p>
  * The static methods are closed forms in numerically stable forms. The rotating methods search the foresight
  * window {@code [0, maximumForesight]} and report only contacts inside it; see {@link RotatingContactSearch}.
  * <p>
- * At about 470 lines it is over the project's 400: it is the API's one implementation of the whole
+ * At about 490 lines it is over the project's 400: it is the API's one implementation of the whole
  * {@link GeometryInterface}, each method a closed form with its argument checks, which the API fixes in one
  * class; the search of the rotating methods has a class of its own.
  */
@@ -25,11 +30,12 @@ public class GeometryImpl implements GeometryInterface {
     /** Default number of slices over which the rotating search computes its motion bounds. */
     static final int DEFAULT_SEARCH_SLICES = 16;
     /**
-     * How far (in L) a ball may be off a rotating segment's face, beyond an end or clear of its line, and still be
-     * reflected off it by {@link #reflectRotatingWall}: far above the rounding of any contact that
-     * {@link #timeUntilRotatingWallCollision} reports (within 1e-10 L of the face), far below anything visible.
+     * How far (in L) the foot of the perpendicular may lie beyond an end of a rotating segment and the ball still be
+     * reflected off its face by {@link #reflectRotatingWall}: far above the rounding that turning the segment and
+     * moving the ball to a contact {@link #timeUntilRotatingWallCollision} reported can put there, far below
+     * anything a caller can see. Beyond it the velocity comes back unchanged, as from the package.
      */
-    static final double OFF_FACE_TOLERANCE = 1e-6;
+    static final double END_ROUNDING = 1e-9;
 
     private final double maximumForesight;
     private final int searchSlices;
@@ -59,17 +65,12 @@ public class GeometryImpl implements GeometryInterface {
     /**
      * The real roots of a x&sup2; + b x + c = 0, smaller first (a double root twice; for a = 0 the single root
      * of the linear equation twice), computed without cancellation; {@link Geometry#DOUBLE_PAIR_NAN} if there is
-     * no real root.
-     *
-     * @throws IllegalArgumentException if a = b = c = 0 (every x is a root)
+     * no real root, or no particular one (a = b = c = 0: every x is a root).
      */
     @Override
     public DoublePair quadraticSolution(double a, double b, double c) {
         if (a == 0) {
             if (b == 0) {
-                if (c == 0) {
-                    throw new IllegalArgumentException("0 = 0 has every number as solution");
-                }
                 return Geometry.DOUBLE_PAIR_NAN;
             }
             return new DoublePair(-c / b);
@@ -94,10 +95,16 @@ public class GeometryImpl implements GeometryInterface {
         return quadraticSolution(a, b, c).d1;
     }
 
-    /** The foot of the perpendicular from point to the line's segment, or null if it falls off the closed segment. */
+    /**
+     * The foot of the perpendicular from point to the line's segment, or null if it falls off the closed segment;
+     * for a segment of zero length, its one point.
+     */
     @Override
     public Vect perpendicularPoint(LineSegment line, Vect point) {
         Vect dir = line.p2().minus(line.p1());
+        if (dir.x() == 0 && dir.y() == 0) {
+            return line.p1();
+        }
         // Measured from each end, so that swapping the ends gives exactly the same decision.
         double fromP1 = point.minus(line.p1()).dot(dir);
         double fromP2 = line.p2().minus(point).dot(dir);
@@ -107,10 +114,16 @@ public class GeometryImpl implements GeometryInterface {
         return line.p1().plus(dir.times(fromP1 / dir.dot(dir)));
     }
 
-    /** The foot of the perpendicular from point to the infinite line through the segment. */
+    /**
+     * The foot of the perpendicular from point to the infinite line through the segment; for a segment of zero
+     * length, its one point.
+     */
     @Override
     public Vect perpendicularPointWholeLine(LineSegment line, Vect point) {
         Vect dir = line.p2().minus(line.p1());
+        if (dir.x() == 0 && dir.y() == 0) {
+            return line.p1();
+        }
         return line.p1().plus(dir.times(point.minus(line.p1()).dot(dir) / dir.dot(dir)));
     }
 
@@ -120,15 +133,15 @@ public class GeometryImpl implements GeometryInterface {
      */
     @Override
     public Vect applyReflectionCoeff(Vect incidentVect, Vect reflectedVect, double reflectionCoeff) {
-        requireFinite(reflectionCoeff, "reflection coefficient");
         // reflected - incident is -2 times the incident normal part; add back (1 - coeff) of that normal part.
         return reflectedVect.minus(reflectedVect.minus(incidentVect).times((1 - reflectionCoeff) / 2));
     }
 
     /**
-     * Time until the ball touches the flat face of the closed segment (either side), the touching point lying on
-     * the segment, ends included. Contacts beyond the ends are left to zero-radius circles at the ends.
-     * Touching or overlapping and closing gives 0; moving away, parallel or at rest gives infinity.
+     * Time until the ball touches the flat face of the segment (either side): the foot of the perpendicular from
+     * its centre lies on [p1, p2), p1 included and p2 not, as in the package. Contacts beyond the ends, and at p2,
+     * are left to zero-radius circles at the ends. Touching or overlapping and closing gives 0; moving away,
+     * parallel or at rest, or a segment of zero length, gives infinity.
      */
     @Override
     public double timeUntilWallCollision(LineSegment line, Circle ball, Vect velocity) {
@@ -141,7 +154,7 @@ public class GeometryImpl implements GeometryInterface {
         double closingRate = offset == 0 ? Math.abs(normalSpeed) : Math.signum(offset) * normalSpeed;
         double gap = Math.abs(offset) - ball.getRadius();
         if (gap <= 0) {
-            return closingRate < 0 && perpendicularPoint(line, center) != null ? 0 : Double.POSITIVE_INFINITY;
+            return closingRate < 0 && footOnFace(line, center) ? 0 : Double.POSITIVE_INFINITY;
         }
         if (closingRate >= 0) {
             return Double.POSITIVE_INFINITY;
@@ -153,13 +166,18 @@ public class GeometryImpl implements GeometryInterface {
             return time;
         }
         Vect centerAtContact = center.plus(velocity.times(time));
-        return perpendicularPoint(line, centerAtContact) != null ? time : Double.POSITIVE_INFINITY;
+        return footOnFace(line, centerAtContact) ? time : Double.POSITIVE_INFINITY;
+    }
+
+    /** Whether the foot of the perpendicular from the point lies on the half-open face [p1, p2). */
+    private static boolean footOnFace(LineSegment line, Vect point) {
+        Vect dir = line.p2().minus(line.p1());
+        return point.minus(line.p1()).dot(dir) >= 0 && line.p2().minus(point).dot(dir) > 0;
     }
 
     /** The velocity reflected off the segment's line, its normal part multiplied by the coefficient. */
     @Override
     public Vect reflectWall(LineSegment line, Vect velocity, double reflectionCoeff) {
-        requireFinite(reflectionCoeff, "reflection coefficient");
         Vect dir = line.p2().minus(line.p1());
         return reflectAlong(new Vect(-dir.y(), dir.x()).unitSize(), velocity, reflectionCoeff);
     }
@@ -194,11 +212,13 @@ public class GeometryImpl implements GeometryInterface {
                 circle.getRadius() + ball.getRadius());
     }
 
-    /** The velocity reflected off the circle at the ball's position, normal part times the coefficient. */
+    /**
+     * The velocity reflected off the circle at the ball's position, normal part times the coefficient; unchanged
+     * when the centres coincide (no normal).
+     */
     @Override
     public Vect reflectCircle(Vect circleCenter, Vect ballCenter, Vect ballVelocity, double reflectionCoeff) {
-        requireFinite(reflectionCoeff, "reflection coefficient");
-        return reflectAlong(unitNormal(circleCenter, ballCenter), ballVelocity, reflectionCoeff);
+        return reflectAlong(ballCenter.minus(circleCenter).unitSize(), ballVelocity, reflectionCoeff);
     }
 
     /** {@link #reflectCircle(Vect, Vect, Vect, double)} with coefficient 1. */
@@ -251,20 +271,35 @@ public class GeometryImpl implements GeometryInterface {
     /**
      * Time until the ball touches the face of the segment that turns about {@code center} at
      * {@code angularVelocity} rad/s (positive turns +x toward +y) from its given position at time 0: what
-     * {@link #timeUntilWallCollision} means, turning. Contacts whose foot lies on the segment, ends included, are
-     * found; contacts beyond the ends are left to zero-radius circles there
-     * ({@link #timeUntilRotatingCircleCollision}), and at angular velocity 0 the answer is the static one. Only times in [0, maximumForesight] are reported, so
-     * a caller whose rotation stops earlier uses an instance whose foresight is the remaining rotation time and then
-     * treats the segment as static at its stop angle. At the returned time the ball is within 1e-10 L of touching
-     * the face; touching or overlapping the face and closing is 0. A contact that begins touching at zero closing
-     * speed and is then closed on is reported as soon as it closes at a speed a reflection can act on. A ball at rest is found. See
-     * {@link RotatingContactSearch}.
+     * {@link #timeUntilWallCollision} means, turning. Contacts whose foot lies on the segment are found; contacts
+     * beyond the ends are left to zero-radius circles there ({@link #timeUntilRotatingCircleCollision}). At angular
+     * velocity 0 the answer is {@link #timeUntilWallCollision}'s. Otherwise only times in [0, maximumForesight] are
+     * reported, so a caller whose rotation stops earlier uses an instance whose foresight is the remaining rotation
+     * time and then treats the segment as static at its stop angle. At the returned time the ball is within
+     * 1e-10 L of touching the face; touching or overlapping the face and closing is 0. A contact that begins
+     * touching at zero closing speed and is then closed on is reported as soon as it closes at a speed a
+     * reflection can act on. A ball at rest is found. No contact is missed or found late, which the package's
+     * sampled search does on about one rotating contact in ten. Infinity for a segment of zero length or an angular
+     * velocity, ball or velocity that is not finite. See {@link RotatingContactSearch}.
      */
     @Override
     public double timeUntilRotatingWallCollision(LineSegment line, Vect center, double angularVelocity, Circle ball,
                                                  Vect velocity) {
+        if (angularVelocity == 0) {
+            return timeUntilWallCollision(line, ball, velocity);
+        }
+        if (line.p1().equals(line.p2()) || !searchable(center, angularVelocity, ball, velocity)) {
+            return Double.POSITIVE_INFINITY;
+        }
         return RotatingContactSearch.firstFaceContact(line, center, angularVelocity, ball, velocity, maximumForesight,
                 searchSlices);
+    }
+
+    /** Whether the rotating search has a motion to follow: every number it starts from is finite. */
+    private static boolean searchable(Vect center, double angularVelocity, Circle ball, Vect velocity) {
+        Vect c = ball.getCenter();
+        return Double.isFinite(angularVelocity) && Double.isFinite(ball.getRadius())
+                && Double.isFinite(center.x() + center.y() + c.x() + c.y() + velocity.x() + velocity.y());
     }
 
     /** {@link #reflectRotatingWall(LineSegment, Vect, double, Circle, Vect, double)} with coefficient 1. */
@@ -275,50 +310,50 @@ public class GeometryImpl implements GeometryInterface {
     }
 
     /**
-     * The ball's velocity after it bounces off the face of the segment (in its current position) that turns about
-     * {@code center} at {@code angularVelocity}: the velocity relative to the segment's surface at the contact
-     * point (the foot of the perpendicular from the ball's centre), w &times; (contact - center), is reflected off
-     * the segment's line with the coefficient, and the surface velocity is added back. Every contact that
-     * {@link #timeUntilRotatingWallCollision} reports is a face contact, ends included, so this succeeds for it.
-     *
-     * @throws IllegalArgumentException if the ball is plainly not on the face: its centre's foot lies more than
-     *         {@link #OFF_FACE_TOLERANCE} beyond an end (it touches the end, which belongs to
-     *         {@link #reflectRotatingCircle} with {@code new Circle(end, 0)}), or it is more than that clear of the
-     *         segment's line
+     * The ball's velocity after it bounces off the face of the segment that turns about {@code center} at
+     * {@code angularVelocity}, as the package answers it, wherever the ball is (callers often reflect before they
+     * move the ball to the contact): at the foot of the perpendicular from the ball's centre, the velocity relative
+     * to the segment's surface there, w &times; (foot - center), is reflected off the segment's line with the
+     * coefficient, and the surface velocity is added back. When that foot lies beyond an end (by more than
+     * {@link #END_ROUNDING}), the velocity comes back unchanged: that is the end's contact, which belongs to
+     * {@link #reflectRotatingCircle} with a zero-radius circle there. At angular velocity 0 it is
+     * {@link #reflectWall(LineSegment, Vect, double)}; a segment of zero length leaves the velocity unchanged.
      */
     @Override
     public Vect reflectRotatingWall(LineSegment line, Vect center, double angularVelocity, Circle ball, Vect velocity,
                                     double reflectionCoeff) {
-        requireFinite(angularVelocity, "angular velocity");
-        requireFinite(reflectionCoeff, "reflection coefficient");
-        Vect dir = line.p2().minus(line.p1());
+        if (angularVelocity == 0) {
+            return reflectWall(line, velocity, reflectionCoeff);
+        }
         double length = line.length();
-        Vect unitAlong = dir.times(1 / length);
-        Vect fromP1 = ball.getCenter().minus(line.p1());
-        double along = fromP1.dot(unitAlong);
-        double beyond = Math.max(-along, along - length);
-        if (beyond > OFF_FACE_TOLERANCE) {
-            throw new IllegalArgumentException("ball at " + ball.getCenter() + " is " + beyond + " L beyond an end of "
-                    + line + ", not on its face: an end contact, reflect it off a zero-radius circle at that end "
-                    + "with reflectRotatingCircle");
+        if (length == 0) {
+            return velocity;
         }
+        Vect unitAlong = line.p2().minus(line.p1()).times(1 / length);
+        double along = ball.getCenter().minus(line.p1()).dot(unitAlong);
+        if (along < -END_ROUNDING || along > length + END_ROUNDING) {
+            return velocity;
+        }
+        Vect foot = line.p1().plus(unitAlong.times(along));
         Vect unitNormal = new Vect(-unitAlong.y(), unitAlong.x());
-        double clear = Math.abs(fromP1.dot(unitNormal)) - ball.getRadius();
-        if (clear > OFF_FACE_TOLERANCE) {
-            throw new IllegalArgumentException("ball at " + ball.getCenter() + " with radius " + ball.getRadius()
-                    + " is " + clear + " L clear of the face of " + line + ": it does not touch it");
-        }
-        Vect contact = line.p1().plus(unitAlong.times(along));
-        return reflectOffMovingSurface(unitNormal, contact, center, angularVelocity, velocity, reflectionCoeff);
+        return reflectOffMovingSurface(unitNormal, foot, center, angularVelocity, velocity, reflectionCoeff);
     }
 
     /**
      * Time until the ball touches the circle whose centre turns about {@code center} at {@code angularVelocity}
-     * rad/s; the same contract as {@link #timeUntilRotatingWallCollision}.
+     * rad/s; the same contract as {@link #timeUntilRotatingWallCollision}, and at angular velocity 0
+     * {@link #timeUntilCircleCollision(Circle, Circle, Vect)}'s answer.
      */
     @Override
     public double timeUntilRotatingCircleCollision(Circle circle, Vect center, double angularVelocity, Circle ball,
                                                    Vect velocity) {
+        if (angularVelocity == 0) {
+            return timeUntilCircleCollision(circle, ball, velocity);
+        }
+        if (!searchable(center, angularVelocity, ball, velocity) || !Double.isFinite(circle.getRadius())
+                || !Double.isFinite(circle.getCenter().x() + circle.getCenter().y())) {
+            return Double.POSITIVE_INFINITY;
+        }
         return RotatingContactSearch.firstCircleContact(circle, center, angularVelocity, ball, velocity,
                 maximumForesight, searchSlices);
     }
@@ -333,16 +368,20 @@ public class GeometryImpl implements GeometryInterface {
     /**
      * The ball's velocity after it bounces off the circle (in its current position) whose centre turns about
      * {@code center} at {@code angularVelocity}: the velocity relative to the circle's surface at the contact
-     * point is reflected along the line of centres with the coefficient, and the surface velocity added back.
-     *
-     * @throws IllegalArgumentException if the ball's and the circle's centres coincide
+     * point is reflected along the line of centres with the coefficient, and the surface velocity added back. At
+     * angular velocity 0 it is {@link #reflectCircle(Vect, Vect, Vect, double)}; coinciding centres leave the
+     * velocity unchanged.
      */
     @Override
     public Vect reflectRotatingCircle(Circle circle, Vect center, double angularVelocity, Circle ball, Vect velocity,
                                       double reflectionCoeff) {
-        requireFinite(angularVelocity, "angular velocity");
-        requireFinite(reflectionCoeff, "reflection coefficient");
-        Vect normal = unitNormal(circle.getCenter(), ball.getCenter());
+        if (angularVelocity == 0) {
+            return reflectCircle(circle.getCenter(), ball.getCenter(), velocity, reflectionCoeff);
+        }
+        Vect normal = ball.getCenter().minus(circle.getCenter()).unitSize();
+        if (normal.equals(Vect.ZERO)) {
+            return velocity;
+        }
         Vect contact = circle.getCenter().plus(normal.times(circle.getRadius()));
         return reflectOffMovingSurface(normal, contact, center, angularVelocity, velocity, reflectionCoeff);
     }
@@ -370,27 +409,17 @@ public class GeometryImpl implements GeometryInterface {
     /**
      * The velocities after a perfectly elastic collision of two balls touching at their current centres: the
      * normal parts are exchanged as momentum and energy conservation require, the tangential parts kept.
-     * One mass may be {@code Double.POSITIVE_INFINITY} (an immovable ball).
-     *
-     * @throws IllegalArgumentException for a mass that is not &gt; 0, two infinite masses, or equal centres
+     * One mass may be {@code Double.POSITIVE_INFINITY} (an immovable ball). Where there is no answer (coinciding
+     * centres, so no normal; masses whose ratio is undefined, both zero or both infinite) the velocities are
+     * unchanged.
      */
     @Override
     public VectPair reflectBalls(Vect center1, double mass1, Vect velocity1, Vect center2, double mass2,
                                  Vect velocity2) {
-        if (!(mass1 > 0) || !(mass2 > 0)) {
-            throw new IllegalArgumentException("ball masses must be > 0, got " + mass1 + " and " + mass2);
-        }
-        if (Double.isInfinite(mass1) && Double.isInfinite(mass2)) {
-            throw new IllegalArgumentException("at most one ball may have infinite mass");
-        }
         // Along d = centre 2 - centre 1 the normal part of u = v1 - v2 is d (u.d) / (d.d): no square root and no
         // allocation but the result. d may be scaled freely, which keeps d.d normal for any distance.
         double dx = center2.x() - center1.x();
         double dy = center2.y() - center1.y();
-        if (dx == 0 && dy == 0) {
-            throw new IllegalArgumentException("centres coincide at " + center1
-                    + ": the contact normal is undefined");
-        }
         double dd = dx * dx + dy * dy;
         if (dd < Double.MIN_NORMAL || dd == Double.POSITIVE_INFINITY) {
             double scale = Math.max(Math.abs(dx), Math.abs(dy));
@@ -402,6 +431,9 @@ public class GeometryImpl implements GeometryInterface {
         // 2 m2 / (m1 + m2) and 2 m1 / (m1 + m2), written with mass ratios so that an infinite mass works.
         double change1 = 2 / (1 + mass1 / mass2) * approach;
         double change2 = 2 / (1 + mass2 / mass1) * approach;
+        if (Double.isNaN(change1) || Double.isNaN(change2)) {
+            return new VectPair(velocity1, velocity2);
+        }
         return new VectPair(new Vect(velocity1.x() - dx * change1, velocity1.y() - dy * change1),
                 new Vect(velocity2.x() + dx * change2, velocity2.y() + dy * change2));
     }
@@ -456,20 +488,5 @@ public class GeometryImpl implements GeometryInterface {
     /** v with its part along the unit normal replaced by -coeff times that part. */
     private static Vect reflectAlong(Vect unitNormal, Vect velocity, double reflectionCoeff) {
         return velocity.minus(unitNormal.times((1 + reflectionCoeff) * velocity.dot(unitNormal)));
-    }
-
-    /** The unit vector from {@code from} to {@code to}. */
-    private static Vect unitNormal(Vect from, Vect to) {
-        Vect offset = to.minus(from);
-        if (offset.equals(Vect.ZERO)) {
-            throw new IllegalArgumentException("centres coincide at " + from + ": the contact normal is undefined");
-        }
-        return offset.unitSize();
-    }
-
-    private static void requireFinite(double value, String what) {
-        if (!Double.isFinite(value)) {
-            throw new IllegalArgumentException(what + " must be finite, got " + value);
-        }
     }
 }

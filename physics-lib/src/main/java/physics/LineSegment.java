@@ -4,8 +4,9 @@ import java.awt.geom.Line2D;
 import java.io.Serializable;
 
 /**
- * An immutable closed line segment from p1 to p2 of positive length. Equality compares the ordered end points;
- * every collision method treats both ends alike.
+ * An immutable line segment from p1 to p2. Equality compares the ordered end points. Its face, for the wall
+ * methods, is half-open, [p1, p2), as in the package. A segment of zero length is accepted, as in the package: it
+ * has no face (no wall collision, no reflection) and no {@link #angle()}.
  */
 public final class LineSegment implements Serializable {
     private static final long serialVersionUID = 1L;
@@ -13,11 +14,7 @@ public final class LineSegment implements Serializable {
     private final Vect p1;
     private final Vect p2;
 
-    /** @throws IllegalArgumentException if p1 equals p2 (a point is a zero-radius {@link Circle}) */
     public LineSegment(Vect p1, Vect p2) {
-        if (p1.equals(p2)) {
-            throw new IllegalArgumentException("line segment has zero length at " + p1 + "; use a Circle of radius 0");
-        }
         this.p1 = p1;
         this.p2 = p2;
     }
@@ -42,7 +39,11 @@ public final class LineSegment implements Serializable {
         return new Line2D.Double(p1.x(), p1.y(), p2.x(), p2.y());
     }
 
-    /** The direction of p2 - p1. */
+    /**
+     * The direction of p2 - p1.
+     *
+     * @throws IllegalArgumentException for a segment of zero length, which has none (as in the package)
+     */
     public Angle angle() {
         return p2.minus(p1).angle();
     }
@@ -67,6 +68,6 @@ public final class LineSegment implements Serializable {
 
     @Override
     public String toString() {
-        return "LineSegment(" + p1 + " -> " + p2 + ")";
+        return "LineSegment(" + p1 + "-" + p2 + ")";
     }
 }

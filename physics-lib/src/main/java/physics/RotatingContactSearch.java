@@ -88,9 +88,6 @@ final class RotatingContactSearch {
 
     private RotatingContactSearch(boolean wall, Vect a, Vect b, double contactDistance, Vect pivot,
                                   double angularVelocity, Circle ball, Vect velocity) {
-        if (!Double.isFinite(angularVelocity)) {
-            throw new IllegalArgumentException("angular velocity must be finite, got " + angularVelocity);
-        }
         this.wall = wall;
         this.ax = a.x();
         this.ay = a.y();

@@ -5,7 +5,8 @@ import java.io.Serializable;
 
 /**
  * An immutable 2-D vector held only in Cartesian form (no cached polar form, so every result depends only on
- * x and y). Components are never NaN. Equality is exact, with 0.0 and -0.0 equal.
+ * x and y). Any components are accepted, NaN too, as in the package. Equality is exact, with 0.0 and -0.0 equal
+ * and NaN equal to NaN, so that it agrees with {@code hashCode} and a vector always equals itself.
  */
 public final class Vect implements Serializable {
     private static final long serialVersionUID = 1L;
@@ -18,9 +19,6 @@ public final class Vect implements Serializable {
     private final double y;
 
     public Vect(double x, double y) {
-        if (Double.isNaN(x) || Double.isNaN(y)) {
-            throw new IllegalArgumentException("vector component is NaN: (" + x + ", " + y + ")");
-        }
         // + 0.0 turns -0.0 into 0.0 so that equal vectors have one representation and one hash code.
         this.x = x + 0.0;
         this.y = y + 0.0;
@@ -48,7 +46,11 @@ public final class Vect implements Serializable {
         return y;
     }
 
-    /** The angle from +x; the zero vector has angle 0. */
+    /**
+     * The direction from +x.
+     *
+     * @throws IllegalArgumentException for the zero vector, which has none (as in the package)
+     */
     public Angle angle() {
         return new Angle(x, y);
     }
@@ -121,7 +123,7 @@ public final class Vect implements Serializable {
     }
 
     public boolean equals(Vect other) {
-        return other != null && x == other.x && y == other.y;
+        return other != null && Double.compare(x, other.x) == 0 && Double.compare(y, other.y) == 0;
     }
 
     @Override

@@ -1,6 +1,7 @@
 package gizmoball.app;
 
 import gizmoball.controller.BoardFileCommands;
+import gizmoball.controller.GameCommands;
 import gizmoball.controller.GameLoop;
 import gizmoball.controller.KeyForwarder;
 import gizmoball.controller.ModalPause;
@@ -27,15 +28,17 @@ public final class Gizmoball {
     private final BoardFileCommands files;
     private final BuildModeInstaller.BuildMode build;
     private final PlayFeatures play;
+    private final GameFeatures game;
 
     private Gizmoball(GameSession session, GameLoop loop, GameWindow window, BoardFileCommands files,
-                      BuildModeInstaller.BuildMode build, PlayFeatures play) {
+                      BuildModeInstaller.BuildMode build, PlayFeatures play, GameFeatures game) {
         this.session = session;
         this.loop = loop;
         this.window = window;
         this.files = files;
         this.build = build;
         this.play = play;
+        this.game = game;
     }
 
     /**
@@ -78,7 +81,9 @@ public final class Gizmoball {
         BoardFileCommands files = new BoardFileCommands(window, window.statusLine()::showMessage, session, loop);
         commands.attach(window, files);
 
-        KeyForwarder keys = new KeyForwarder(window, session.board(), () -> session.mode() == Mode.PLAY);
+        // A replay being watched plays its own keys: the player's stay off the board.
+        KeyForwarder keys = new KeyForwarder(window, session.board(),
+                () -> session.mode() == Mode.PLAY && !loop.isWatching());
         keys.install();
         session.addModeListener(mode -> {
             loop.stop();
@@ -100,7 +105,9 @@ public final class Gizmoball {
         ModalPause.install(window, loop);
         BuildModeInstaller.BuildMode build = BuildModeInstaller.install(window, session);
         PlayFeatures play = PlayFeatures.install(window, session, loop, files, build.controller(), settings);
-        return new Gizmoball(session, loop, window, files, build, play);
+        GameFeatures game = GameFeatures.install(window, session, loop, settings);
+        commands.attachGames(game.commands());
+        return new Gizmoball(session, loop, window, files, build, play, game);
     }
 
     public GameWindow window() {
@@ -127,12 +134,17 @@ public final class Gizmoball {
         return play;
     }
 
+    public GameFeatures gameFeatures() {
+        return game;
+    }
+
     /** The menus' commands: the game loop, the session and the file commands. */
     private static final class WindowCommands implements GameWindow.Commands {
         private final GameSession session;
         private final GameLoop loop;
         private GameWindow window;
         private BoardFileCommands files;
+        private GameCommands games;
 
         WindowCommands(GameSession session, GameLoop loop) {
             this.session = session;
@@ -142,6 +154,10 @@ public final class Gizmoball {
         void attach(GameWindow window, BoardFileCommands files) {
             this.window = window;
             this.files = files;
+        }
+
+        void attachGames(GameCommands games) {
+            this.games = games;
         }
 
         @Override
@@ -193,6 +209,7 @@ public final class Gizmoball {
 
         @Override
         public void reset() {
+            games.stopWatching();
             session.reset();
             window.refreshStatus();
             window.statusLine().showMessage("Reset: the board is back as loaded or built");

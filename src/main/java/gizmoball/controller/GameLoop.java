@@ -1,6 +1,8 @@
 package gizmoball.controller;
 
 import gizmoball.model.Board;
+import gizmoball.replay.KeyScript;
+import gizmoball.replay.ScriptedPlay;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Consumer;
@@ -14,6 +16,10 @@ import javax.swing.Timer;
  * with real time (scaled by the {@link Speed}) without the drift of one tick per (late or early) timer event.
  * Every tick is {@code tickSeconds} long at any speed: a slower speed ticks less often. The timer and the clock
  * are handed in (the game's are a Swing Timer and System.nanoTime), so tests drive both by hand.
+ *
+ * <p>While it {@linkplain #watch watches} a replay, each tick first presses the replay's keys due then, as the
+ * headless runner does, so the window shows the very game that was recorded, at any speed; it stops at the replay's
+ * last tick.
  */
 public final class GameLoop {
     private static final int MAX_CATCH_UP_TICKS = 4;
@@ -30,6 +36,12 @@ public final class GameLoop {
     private TickPacer pacer;
     private long lastEventNanos;
     private boolean resumeOnRelease;
+    /** The replay being watched, or null. */
+    private Watching watching;
+
+    /** A replay played to its last tick; {@code ended} is told when it gets there. */
+    private record Watching(ScriptedPlay play, long lastTick, Runnable ended) {
+    }
 
     /**
      * Sends the loop an event every {@code periodMillis} on the event dispatch thread while it is started: the
@@ -140,6 +152,24 @@ public final class GameLoop {
         ticks(1);
     }
 
+    /**
+     * From now on the board plays {@code replay}'s keys at their ticks (the board must be the replay's board as built,
+     * at tick 0) until its last tick, where the loop stops and tells {@code ended}. The loop keeps its speed and
+     * running state; {@link #stopWatching()} or a new watch ends it.
+     */
+    public void watch(KeyScript keys, long lastTick, Runnable ended) {
+        watching = new Watching(new ScriptedPlay(board, keys, tick), lastTick, ended);
+    }
+
+    /** Ticks go back to the player's keys alone. */
+    public void stopWatching() {
+        watching = null;
+    }
+
+    public boolean isWatching() {
+        return watching != null;
+    }
+
     /** Told when a tick throws; the loop has stopped by then, rather than failing again 60 times a second. */
     public void setFailureHandler(Consumer<RuntimeException> handler) {
         failureHandler = handler;
@@ -167,7 +197,18 @@ public final class GameLoop {
     private void ticks(int n) {
         try {
             for (int i = 0; i < n; i++) {
-                board.tick(tick);
+                if (watching == null) {
+                    board.tick(tick);
+                } else if (board.ticks() < watching.lastTick()) {
+                    watching.play().tick();
+                }
+                if (watching != null && board.ticks() >= watching.lastTick()) {
+                    Runnable ended = watching.ended();
+                    watching = null;
+                    stop();
+                    ended.run();
+                    return;
+                }
             }
         } catch (RuntimeException e) {
             stop();

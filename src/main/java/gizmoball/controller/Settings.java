@@ -1,5 +1,6 @@
 package gizmoball.controller;
 
+import gizmoball.highscore.HighScoreStore;
 import java.awt.Rectangle;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
@@ -28,6 +29,8 @@ public final class Settings {
     private static final String SPEED = "speed";
     private static final String LAST_FOLDER = "lastFolder";
     private static final String WINDOW = "window";
+    private static final String PLAYER = "playerName";
+    private static final String HIGH_SCORES = "highscores";
 
     private final Preferences node;
 
@@ -38,6 +41,20 @@ public final class Settings {
     /** The settings of this user (or of the node the system property names). */
     public static Settings forUser() {
         return new Settings(Preferences.userRoot().node(System.getProperty(NODE_PROPERTY, DEFAULT_NODE)));
+    }
+
+    /** The boards' high-score tables, in a node of their own beside these settings. */
+    public HighScoreStore highScores() {
+        return new HighScoreStore(node.node(HIGH_SCORES));
+    }
+
+    /** The name last given for a high score, else the user's login name. */
+    public String playerName() {
+        return node.get(PLAYER, System.getProperty("user.name", ""));
+    }
+
+    public void setPlayerName(String name) {
+        put(PLAYER, name);
     }
 
     public boolean sound() {

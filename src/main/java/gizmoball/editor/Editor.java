@@ -5,6 +5,7 @@ import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.game.GameRules;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
@@ -18,6 +19,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
+import java.util.OptionalLong;
 import java.util.function.Consumer;
 import java.util.regex.Pattern;
 import physics.Vect;
@@ -257,6 +259,44 @@ public final class Editor {
             b.setGravity(gravity);
             b.setFriction(mu, mu2);
         });
+    }
+
+    /**
+     * The board's game: balls per game and the extra-ball score (empty for none), one undo step; unchanged values are
+     * no edit.
+     */
+    public boolean setGame(int ballsPerGame, OptionalLong extraBallAt) {
+        GameRules rules = board.gameRules();
+        if (rules.ballsPerGame() == ballsPerGame && rules.extraBallAt().equals(extraBallAt)) {
+            return true;
+        }
+        return edit(ballsPerGame + " balls a game" + (extraBallAt.isPresent() ? ", an extra ball at "
+                + extraBallAt.getAsLong() : ", no extra ball"), b -> {
+                    b.setBallsPerGame(ballsPerGame);
+                    b.setExtraBallAt(extraBallAt);
+                });
+    }
+
+    /** What a real hit on the gizmo scores (one undo step; the same value again is no edit). */
+    public boolean setPoints(String gizmo, int points) {
+        Optional<Gizmo> target = board.gizmo(gizmo);
+        if (target.isEmpty()) {
+            say("No gizmo named " + gizmo);
+            return false;
+        }
+        if (board.gameRules().pointsOf(gizmo, target.get().kind()) == points) {
+            return true;
+        }
+        return edit(gizmo + " scores " + points, b -> b.setPoints(gizmo, points));
+    }
+
+    /** Makes an absorber a drain of the game or an ordinary absorber (one undo step). */
+    public boolean setDrain(String absorber, boolean drain) {
+        if (board.gameRules().isDrain(absorber) == drain) {
+            return true;
+        }
+        return edit(absorber + (drain ? " is a drain: a ball it captures is lost" : " is no drain"),
+                b -> b.setDrain(absorber, drain));
     }
 
     /** Sets a ball's centre and velocity (one undo step); the ball keeps its place in the board's order. */

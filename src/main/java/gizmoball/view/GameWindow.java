@@ -190,6 +190,12 @@ public final class GameWindow extends JFrame {
         return statusLine;
     }
 
+    /** The strip above the board that shows the game (score, balls, best). */
+    public void setScorePanel(JComponent panel) {
+        centre.add(panel, BorderLayout.NORTH);
+        centre.revalidate();
+    }
+
     /** The build-mode side panels; shown while the session is in BUILD mode. Either may be null. */
     public void setSidePanels(JComponent west, JComponent east) {
         if (this.west != null) {

@@ -90,18 +90,18 @@ class PlayFeaturesGuiTest {
 
     @Test
     void inBuildModeTheSelectedBallsPathIsPredictedAndFollowsEdits() {
-        app = Gizmoball.launch(Path.of("boards", "default.txt"), settings);
+        app = Gizmoball.launch(Path.of("boards", "multiball.txt"), settings);
         AimPreview aim = app.playFeatures().aimPreview();
         assertThat(onEdt(aim::current)).as("play mode shows no preview").isEmpty();
         clickMenu(app.window().menus(), "Build");
-        onEdt(() -> app.build().controller().select("B"));
+        onEdt(() -> app.build().controller().select("B3"));
         onEdt(aim::refresh);
         Prediction first = onEdt(() -> aim.current().orElseThrow());
-        assertThat(first.ball()).isEqualTo("B");
+        assertThat(first.ball()).isEqualTo("B3");
         assertThat(first.ticks()).isPositive();
 
-        // The ball drops from (19.75, 17.5) into the absorber: a square under it (cell 19, 18) changes the path at once.
-        onEdt(() -> app.session().board().addGizmo(GizmoKind.SQUARE, "InTheWay", 19, 18));
+        // The ball falls from (11, 1.5), moving right at 3 L/s: a square just under it (cell 11, 2) changes the path at once.
+        onEdt(() -> app.session().board().addGizmo(GizmoKind.SQUARE, "InTheWay", 11, 2));
         Prediction after = onEdt(() -> aim.current().orElseThrow());
         assertThat(after.path()).isNotEqualTo(first.path());
 

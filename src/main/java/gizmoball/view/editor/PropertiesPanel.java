@@ -1,11 +1,15 @@
 package gizmoball.view.editor;
 
+import gizmoball.boardfile.Decimals;
 import gizmoball.boardfile.KeyCodes;
 import gizmoball.editor.Editor;
 import gizmoball.model.Board;
 import gizmoball.model.BoardChange;
 import gizmoball.model.KeyBinding;
+import gizmoball.model.game.GameRules;
+import gizmoball.model.game.Points;
 import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
@@ -17,6 +21,7 @@ import javax.swing.Box;
 import javax.swing.BoxLayout;
 import javax.swing.DefaultListModel;
 import javax.swing.JButton;
+import javax.swing.JCheckBox;
 import javax.swing.JColorChooser;
 import javax.swing.JComponent;
 import javax.swing.JLabel;
@@ -40,12 +45,14 @@ import java.awt.event.ActionEvent;
 import java.awt.event.KeyEvent;
 import java.util.Optional;
 import java.util.OptionalDouble;
+import java.util.OptionalLong;
 import javax.swing.AbstractAction;
 import javax.swing.KeyStroke;
 
 /**
- * Build mode's east panel: the board's gravity and friction, and the selection: its name and place, a ball's
- * position and velocity, a gizmo's colour, connections and key bindings (each removable). Numbers are read here,
+ * Build mode's east panel: the board's gravity and friction and its game (balls a game, the extra-ball score), and
+ * the selection: its name and place, a ball's position and velocity, a gizmo's colour and points (and whether an
+ * absorber is a drain), connections and key bindings (each removable). Numbers are read here,
  * with the board file's grammar ({@link NumberField}); the editor applies them or reports why not, and reads a
  * colour's #rrggbb itself. Enter or Apply applies a group of fields, Esc puts back the board's values; both hand
  * the keyboard back to the board, so the next key is a tool key again, not more text.
@@ -67,6 +74,10 @@ public final class PropertiesPanel extends JPanel {
     private final NumberField gravity = new NumberField("gravity");
     private final NumberField mu = new NumberField("mu");
     private final NumberField mu2 = new NumberField("mu2");
+    private final NumberField balls = new NumberField("game.balls");
+    private final JTextField extraBall = new JTextField(7);
+    private final NumberField points = new NumberField("gizmo.points");
+    private final JCheckBox drain = new JCheckBox("Drain: a ball it captures is lost");
     private final JLabel selection = new JLabel();
     private final NumberField ballX = new NumberField("ball.x");
     private final NumberField ballY = new NumberField("ball.y");
@@ -130,6 +141,9 @@ public final class PropertiesPanel extends JPanel {
         gravity.show(board.gravity());
         mu.show(board.mu());
         mu2.show(board.mu2());
+        balls.setText(Integer.toString(board.gameRules().ballsPerGame()));
+        extraBall.setText(board.gameRules().extraBallAt().isPresent()
+                ? Long.toString(board.gameRules().extraBallAt().getAsLong()) : "");
 
         shownSelection = controller.selected().orElse(null);
         Optional<Gizmo> gizmo = controller.selectedGizmo();
@@ -146,6 +160,10 @@ public final class PropertiesPanel extends JPanel {
         enableAll(colourRows, gizmo.isPresent());
         colour.setText("");
         swatch.setBackground(colourRows.getBackground());
+        points.setEnabled(gizmo.isPresent());
+        points.setText(gizmo.map(g -> Integer.toString(board.gameRules().pointsOf(g.name(), g.kind()))).orElse(""));
+        drain.setEnabled(gizmo.filter(g -> g.kind() == GizmoKind.ABSORBER).isPresent());
+        drain.setSelected(gizmo.filter(g -> board.gameRules().isDrain(g.name())).isPresent());
         gizmo.ifPresent(g -> {
             colour.setText(g.colour().map(Editor::hex).orElse(""));
             swatch.setBackground(BoardPainter.colourOf(g));
@@ -180,14 +198,18 @@ public final class PropertiesPanel extends JPanel {
         row(p, 0, "Gravity (L/s\u00b2)", gravity);
         row(p, 1, "mu (per s)", mu);
         row(p, 2, "mu2 (per L)", mu2);
+        row(p, 3, "Balls a game", balls);
+        extraBall.setName("game.extra");
+        extraBall.setToolTipText("The score that gives one extra ball; empty for none");
+        row(p, 4, "Extra ball at", extraBall);
         JButton apply = new JButton("Apply");
         apply.setName("board.apply");
         apply.addActionListener(e -> applyBoard());
-        for (NumberField f : new NumberField[]{gravity, mu, mu2}) {
+        for (JTextField f : new JTextField[]{gravity, mu, mu2, balls, extraBall}) {
             f.addActionListener(e -> applyBoard());
             restoreOnEscape(f);
         }
-        p.add(apply, constraints(1, 3));
+        p.add(apply, constraints(1, 5));
         return p;
     }
 
@@ -218,6 +240,18 @@ public final class PropertiesPanel extends JPanel {
         p.add(ballRows, b);
 
         p.add(colourRows(), wide(constraints(0, 2)));
+        points.setToolTipText("What a real hit on the gizmo scores");
+        points.addActionListener(e -> applyPoints());
+        restoreOnEscape(points);
+        JPanel pointsRow = new JPanel(new GridBagLayout());
+        row(pointsRow, 0, "Points", points);
+        p.add(pointsRow, wide(constraints(0, 3)));
+        drain.setName("gizmo.drain");
+        drain.addActionListener(e -> controller.selectedGizmo().ifPresent(g -> {
+            controller.setDrain(g.name(), drain.isSelected());
+            focusBoard.run();
+        }));
+        p.add(drain, wide(constraints(0, 4)));
 
         GridBagConstraints l = constraints(0, 6);
         l.gridwidth = 2;
@@ -293,8 +327,45 @@ public final class PropertiesPanel extends JPanel {
     }
 
     private void applyBoard() {
-        Optional<double[]> v = values(gravity, mu, mu2);
-        if (v.isPresent() && controller.setConstants(v.get()[0], v.get()[1], v.get()[2])) {
+        Optional<double[]> v = values(gravity, mu, mu2, balls);
+        if (v.isEmpty()) {
+            return;
+        }
+        OptionalLong extra = OptionalLong.empty();
+        String extraText = extraBall.getText().strip();
+        if (!extraText.isEmpty()) {
+            OptionalDouble score = Decimals.parse(extraText);
+            if (score.isEmpty() || score.getAsDouble() != Math.rint(score.getAsDouble())) {
+                controller.tell("Extra ball at '" + extraText + "': write a whole score, or nothing for no extra ball");
+                extraBall.requestFocusInWindow();
+                return;
+            }
+            extra = OptionalLong.of((long) score.getAsDouble());
+        }
+        if (v.get()[3] != Math.rint(v.get()[3]) || Math.abs(v.get()[3]) > Integer.MAX_VALUE) {
+            controller.tell("Balls a game: a whole number, 1 to " + GameRules.MAX_BALLS);
+            balls.requestFocusInWindow();
+            return;
+        }
+        if (controller.setConstants(v.get()[0], v.get()[1], v.get()[2])
+                && controller.setGame((int) v.get()[3], extra)) {
+            focusBoard.run();
+        }
+    }
+
+    private void applyPoints() {
+        Optional<Gizmo> gizmo = controller.selectedGizmo();
+        Optional<double[]> v = values(points);
+        if (gizmo.isEmpty() || v.isEmpty()) {
+            return;
+        }
+        double value = v.get()[0];
+        if (value != Math.rint(value) || Math.abs(value) > Points.LIMIT) {
+            controller.tell("Points: a whole number from -" + Points.LIMIT + " to " + Points.LIMIT);
+            points.requestFocusInWindow();
+            return;
+        }
+        if (controller.setPoints(gizmo.get().name(), (int) value)) {
             focusBoard.run();
         }
     }
@@ -329,7 +400,7 @@ public final class PropertiesPanel extends JPanel {
     }
 
     /** Esc in a field puts the board's values back (dropping marks) and returns the keyboard to the board. */
-    private void restoreOnEscape(NumberField field) {
+    private void restoreOnEscape(JTextField field) {
         field.getInputMap(JComponent.WHEN_FOCUSED).put(KeyStroke.getKeyStroke(KeyEvent.VK_ESCAPE, 0), "restore");
         field.getActionMap().put("restore", new AbstractAction() {
             @Override

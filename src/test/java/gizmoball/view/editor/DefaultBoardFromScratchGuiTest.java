@@ -7,6 +7,7 @@ import gizmoball.model.Board;
 import gizmoball.model.Invariants;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.game.GameRules;
 import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.loop.BallView;
@@ -17,12 +18,14 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
+import javax.swing.JCheckBox;
 import javax.swing.JMenuItem;
 import javax.swing.JTextField;
 import java.awt.event.KeyEvent;
 import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.Map;
+import java.util.stream.Collectors;
 
 import static gizmoball.view.Gui.onEdt;
 import static org.assertj.core.api.Assertions.assertThat;
@@ -54,6 +57,15 @@ class DefaultBoardFromScratchGuiTest {
             for (Gizmo g : target.gizmos()) {
                 place(g);
                 editorName.put(g.name(), w.build.controller().selected().orElseThrow());
+                // The game, in the placed gizmo's properties: its points where they are its own, a drain ticked.
+                if (target.gameRules().ownPoints().containsKey(g.name())) {
+                    JTextField points = EditorGui.find(w.build.properties(), JTextField.class, "gizmo.points");
+                    points.setText(Integer.toString(target.gameRules().ownPoints().get(g.name())));
+                    points.postActionEvent();
+                }
+                if (target.gameRules().isDrain(g.name())) {
+                    EditorGui.find(w.build.properties(), JCheckBox.class, "gizmo.drain").doClick(0);
+                }
             }
             for (BallView b : target.balls()) {
                 w.clickTool(Tool.BALL);
@@ -78,6 +90,8 @@ class DefaultBoardFromScratchGuiTest {
         type("gravity", target.gravity());
         type("mu", target.mu());
         type("mu2", target.mu2());
+        type("game.balls", target.gameRules().ballsPerGame());
+        type("game.extra", target.gameRules().extraBallAt().orElseThrow());
 
         Board built = w.board;
         assertThat(renamed(BoardContents.of(built), inverse(editorName))).isEqualTo(BoardContents.of(target));
@@ -100,8 +114,9 @@ class DefaultBoardFromScratchGuiTest {
         });
         assertThat(((FlipperView) built.gizmo(leftFlipper).orElseThrow()).angleFromRest()).isCloseTo(90, within(1e-9));
         assertThat(onEdt(() -> Invariants.violations(built))).isEmpty();
-        // In that second the ball fell 1.5 L from (19.75, 17.5) into the absorber along the bottom.
+        // The ball waits in the absorber along the bottom, which is the game's drain, for Space.
         assertThat(onEdt(() -> built.balls().get(0).isCaptured())).isTrue();
+        assertThat(onEdt(() -> built.game().ballsLeft())).isEqualTo(3);
     }
 
     private void place(Gizmo g) {
@@ -156,6 +171,9 @@ class DefaultBoardFromScratchGuiTest {
                 d.connections().stream().map(c -> new Connection(TriggerSource.named(name.get(c.source().name())),
                         name.get(c.target()))).toList(),
                 d.keyBindings().stream().map(k -> new KeyBinding(k.keyCode(), k.edge(), name.get(k.gizmo()))).toList(),
-                d.gravity(), d.mu(), d.mu2(), d.game());
+                d.gravity(), d.mu(), d.mu2(), new GameRules(d.game().ballsPerGame(),
+                        d.game().drains().stream().map(name::get).collect(Collectors.toSet()),
+                        d.game().ownPoints().entrySet().stream().collect(Collectors.toMap(e -> name.get(e.getKey()),
+                                Map.Entry::getValue)), d.game().extraBallAt()));
     }
 }
