@@ -38,6 +38,11 @@ public final class FuzzSurvey {
     static final long FIRST_SEED = 1_000_000;
     /** Reproduction files written, at most. */
     static final int REPRODUCTIONS = 20;
+    /**
+     * CPU a board may take, some 60 times what a board of 3,000 ticks takes: a board whose ticks cost tens of
+     * milliseconds is stopped there, and reported as failing, so that one such board cannot hold up the run.
+     */
+    static final long BOARD_BUDGET_NANOS = 20_000_000_000L;
     /** Boards played at once, at most (one per core of the 2-core machines the targets are stated for). */
     static final int THREADS_USED = 2;
     /** Boards played untimed first, so that compiling the loop is not counted as a slow tick. */
@@ -128,7 +133,7 @@ public final class FuzzSurvey {
     static Played play(FuzzCase fuzzCase) {
         FuzzCase asGenerated = new FuzzCase(fuzzCase.seed(), fuzzCase.board().copy(), fuzzCase.keys(),
                 fuzzCase.ticks(), fuzzCase.recipe());
-        long[] slowest = {0, 0, 0};
+        long[] slowest = {0, 0, 0, 0};
         FuzzPlay.Outcome outcome = FuzzPlay.play(fuzzCase, (Board board, int tick) -> {
             long start = THREADS.getCurrentThreadCpuTime();
             board.tick(Board.DEFAULT_TICK);
@@ -138,6 +143,11 @@ public final class FuzzSurvey {
                 slowest[1] = tick;
             }
             slowest[2] += nanos > TARGET_TICK_NANOS ? 1 : 0;
+            slowest[3] += nanos;
+            if (slowest[3] > BOARD_BUDGET_NANOS) {
+                throw new IllegalStateException(String.format(Locale.ROOT, "stopped: over the budget of %.0f s of "
+                        + "CPU for one board", BOARD_BUDGET_NANOS / 1e9));
+            }
         });
         return new Played(asGenerated, outcome, slowest[0], (int) slowest[1], (int) slowest[2]);
     }

@@ -18,11 +18,14 @@ import gizmoball.view.editor.SidePane;
 import javax.swing.JMenuBar;
 import javax.swing.JScrollPane;
 import java.awt.Cursor;
+import java.awt.Dimension;
 import java.awt.Insets;
 import java.awt.Rectangle;
 import java.awt.Toolkit;
 import java.awt.event.ComponentAdapter;
 import java.awt.event.ComponentEvent;
+import java.awt.event.WindowAdapter;
+import java.awt.event.WindowEvent;
 import java.util.function.BooleanSupplier;
 
 /**
@@ -39,6 +42,8 @@ public final class BuildModeInstaller {
 
     /** Pixels of board wanted beside the labelled palette and the properties before the palette turns compact. */
     private static final int MIN_BOARD = 480;
+    /** The smallest board worth building on (12 px per L): the window is never made smaller than to show it. */
+    private static final int SMALLEST_BOARD = 240;
 
     public static BuildMode install(GameWindow window, GameSession session) {
         BoardPanel panel = window.boardPanel();
@@ -70,6 +75,14 @@ public final class BuildModeInstaller {
             }
         });
         fitPalette.run();
+        // Measured once the window is whole and laid out: other features add rows above or below the board.
+        window.addWindowListener(new WindowAdapter() {
+            @Override
+            public void windowOpened(WindowEvent e) {
+                window.setMinimumSize(minimumSize(window, palette, west, east));
+                fitPalette.run();
+            }
+        });
 
         EditMenu editMenu = EditMenu.of(controller, window, building);
         JMenuBar menus = window.menus();
@@ -99,6 +112,22 @@ public final class BuildModeInstaller {
         int width = Math.min(window.getWidth() + sides, screen.width - insets.left - insets.right);
         window.setSize(width, Math.min(window.getHeight(), screen.height - insets.top - insets.bottom));
         window.setLocationRelativeTo(null);
+    }
+
+    /**
+     * The smallest window in which build mode is whole: the compact palette, the properties and the smallest board
+     * side by side (each side with room for its scroll bar), and the whole tool bar; as tall as that board with
+     * everything the window has above and below the board view (menus, tool bar, status line and whatever else).
+     */
+    private static Dimension minimumSize(GameWindow window, PalettePanel palette, JScrollPane west, JScrollPane east) {
+        palette.setCompact(true);
+        int bar = west.getVerticalScrollBar().getPreferredSize().width;
+        int sides = west.getPreferredSize().width + east.getPreferredSize().width + 2 * bar;
+        Insets frame = window.getInsets();
+        int width = Math.max(window.toolBar().getPreferredSize().width, sides + SMALLEST_BOARD)
+                + frame.left + frame.right;
+        int aroundBoard = window.getHeight() - window.boardPanel().getHeight();
+        return new Dimension(width, aroundBoard + SMALLEST_BOARD);
     }
 
     /** Crosshair where a click places something, a hand where it acts on what is under it. */

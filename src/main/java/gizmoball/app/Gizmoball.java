@@ -90,6 +90,7 @@ public final class Gizmoball {
             keys.releaseAll();
         });
         loop.addRunningListener(window::refresh);
+        loop.addFrameListener(window.boardPanel()::setTickFraction);
         loop.setFailureHandler(e -> {
             e.printStackTrace();
             window.statusLine().showMessage("Simulation stopped by an internal error: " + e);

@@ -48,6 +48,7 @@ public final class PlayFeatures {
     private final Settings settings;
     private final BallTrails trails;
     private final SoundPlayer sound;
+    private JCheckBoxMenuItem soundItem;
     private final AimPreview aim;
     private final PhysicsOverlay overlay;
 
@@ -59,12 +60,12 @@ public final class PlayFeatures {
         this.files = files;
         this.settings = settings;
         this.trails = new BallTrails(session.board());
-        this.sound = new SoundPlayer(notice -> SwingUtilities.invokeLater(() -> window.statusLine().showMessage(notice)));
+        this.sound = new SoundPlayer(notice -> SwingUtilities.invokeLater(() -> soundLost(notice)));
         this.aim = new AimPreview(session.board(),
                 () -> new AimPreview.Inputs(editor.tool(), editor.preview(), editor.selected()), new Predictor(),
                 SwingUtilities::invokeLater);
         editor.addStateListener(aim::refresh);
-        this.overlay = new PhysicsOverlay(session.board());
+        this.overlay = PhysicsOverlay.of(session.board());
     }
 
     public static PlayFeatures install(GameWindow window, GameSession session, GameLoop loop,
@@ -124,11 +125,16 @@ public final class PlayFeatures {
     private void installSound() {
         JMenu game = menu(window.menus(), "Game");
         // Ctrl+M (mute), like every shortcut a Ctrl one, so no board key is shadowed.
-        game.add(toggle("Sound", KeyEvent.VK_M, 0, settings.sound(), on -> {
+        soundItem = toggle("Sound", KeyEvent.VK_M, 0, settings.sound(), on -> {
+            if (!sound.hasDevice()) {
+                soundLost(SoundPlayer.NO_DEVICE);
+                return;
+            }
             sound.setEnabled(on);
             settings.setSound(on);
             window.statusLine().showMessage(on ? "Sound on" : "Sound off");
-        }));
+        });
+        game.add(soundItem);
         sound.setEnabled(settings.sound());
         GameSounds.attach(session.board(), sound);
         window.addWindowListener(new WindowAdapter() {
@@ -137,6 +143,17 @@ public final class PlayFeatures {
                 sound.close();
             }
         });
+    }
+
+    /**
+     * Without a device sound is off, and everything says so: the menu item is unticked (with the reason as its
+     * tooltip) and Ctrl+M repeats the reason instead of claiming sound on. The player's setting is kept for a
+     * run with a device.
+     */
+    private void soundLost(String notice) {
+        soundItem.setSelected(false);
+        soundItem.setToolTipText(notice);
+        window.statusLine().showMessage(notice);
     }
 
     private void installView() {

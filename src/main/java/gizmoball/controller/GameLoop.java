@@ -6,6 +6,7 @@ import gizmoball.replay.ScriptedPlay;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Consumer;
+import java.util.function.DoubleConsumer;
 import java.util.function.LongSupplier;
 import javax.swing.Timer;
 
@@ -29,6 +30,7 @@ public final class GameLoop {
     private final Pulse timer;
     private final LongSupplier clock;
     private final List<Runnable> runningListeners = new ArrayList<>();
+    private final List<DoubleConsumer> frameListeners = new ArrayList<>();
     private Consumer<RuntimeException> failureHandler = e -> {
         throw e;
     };
@@ -115,6 +117,7 @@ public final class GameLoop {
             timer.stop();
             fireRunningChanged();
         }
+        fireFrame(1);
     }
 
     /**
@@ -126,6 +129,7 @@ public final class GameLoop {
             timer.stop();
             resumeOnRelease = true;
             fireRunningChanged();
+            fireFrame(1);
         }
     }
 
@@ -179,6 +183,15 @@ public final class GameLoop {
         runningListeners.add(l);
     }
 
+    /**
+     * Told, after each timer event that ran a tick, and at every event while slower than 1x (when ticks are
+     * further apart than frames), how far real time has come from the last tick towards the next (0..1), and 1
+     * when the game stops: what a view needs to draw between ticks. The ticks themselves do not change.
+     */
+    public void addFrameListener(DoubleConsumer l) {
+        frameListeners.add(l);
+    }
+
     private void onTimer() {
         long now = clock.getAsLong();
         elapsed(now - lastEventNanos);
@@ -187,7 +200,11 @@ public final class GameLoop {
 
     /** Runs the ticks owed after {@code nanos} of real time (what each timer event does; tests call it directly). */
     void elapsed(long nanos) {
-        ticks(pacer.ticksFor(nanos));
+        int due = pacer.ticksFor(nanos);
+        ticks(due);
+        if (due > 0 || speed.factor() < 1) {
+            fireFrame(pacer.fractionOfNextTick());
+        }
     }
 
     private TickPacer pacerFor(Speed s) {
@@ -214,6 +231,10 @@ public final class GameLoop {
             stop();
             failureHandler.accept(e);
         }
+    }
+
+    private void fireFrame(double fraction) {
+        frameListeners.forEach(l -> l.accept(fraction));
     }
 
     private void fireRunningChanged() {

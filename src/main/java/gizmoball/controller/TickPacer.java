@@ -16,6 +16,11 @@ public final class TickPacer {
         this.maxTicksPerEvent = maxTicksPerEvent;
     }
 
+    /** How much of the next tick real time has already brought, 0 (just ticked) to almost 1. */
+    public double fractionOfNextTick() {
+        return (double) owedNanos / tickNanos;
+    }
+
     /** Ticks to run now, {@code elapsedNanos} of real time after the previous call. */
     public int ticksFor(long elapsedNanos) {
         owedNanos += Math.max(0, elapsedNanos);

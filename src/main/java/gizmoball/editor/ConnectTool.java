@@ -45,7 +45,7 @@ final class ConnectTool implements ToolHandler {
         String name = target.gizmo();
         editor.setStep(PendingStep.NONE);
         if (connect) {
-            editor.edit("Connected " + from.source() + " -> " + name, b -> b.connect(from.source(), name));
+            editor.edit("Connected " + from.source() + " \u2192 " + name, b -> b.connect(from.source(), name));
         } else {
             editor.disconnect(from.source(), name);
         }

@@ -54,6 +54,7 @@ public final class Editor {
     private final Map<Tool, ToolHandler> handlers = new EnumMap<>(Tool.class);
     private final List<Runnable> stateListeners = new ArrayList<>();
     private final List<Runnable> editListeners = new ArrayList<>();
+    private String lastRefusal;
     private Consumer<String> messages = message -> { };
 
     private Tool tool = Tool.SELECT;
@@ -90,6 +91,21 @@ public final class Editor {
     /** Tells the player something about the editing (a view's own refusal, e.g. a field that is no number). */
     public void tell(String message) {
         say(message);
+    }
+
+    /**
+     * Why the last edit that was refused was refused (the model's rule, a colour's syntax), for the field that
+     * asked for it to show (see the properties panel's refused values).
+     */
+    public Optional<String> lastRefusal() {
+        return Optional.ofNullable(lastRefusal);
+    }
+
+    /** Says why, and remembers it as the last refusal; false, for the caller to return. */
+    private boolean refuse(String reason) {
+        lastRefusal = reason;
+        say(reason);
+        return false;
     }
 
     /** Where refusals and hints go (the status line). */
@@ -340,9 +356,8 @@ public final class Editor {
         } else if (HEX_COLOUR.matcher(hex).matches()) {
             colour = Optional.of(Rgb.of(Integer.parseInt(hex, 16)));
         } else {
-            say("Colour '" + text.strip() + "' is not #rrggbb (such as #99b3ff); leave it empty for the "
+            return refuse("Colour '" + text.strip() + "' is not #rrggbb (such as #99b3ff); leave it empty for the "
                     + "colour of the kind");
-            return false;
         }
         if (colour.equals(target.get().colour())) {
             return true;
@@ -358,7 +373,7 @@ public final class Editor {
 
     /** Removes one connection (from the properties panel's list). */
     public boolean disconnect(TriggerSource source, String target) {
-        return edit("Disconnected " + source + " -> " + target, b -> b.disconnect(source, target));
+        return edit("Disconnected " + source + " \u2192 " + target, b -> b.disconnect(source, target));
     }
 
     /** Removes one key binding (from the properties panel's list). */
@@ -531,7 +546,7 @@ public final class Editor {
         try {
             history.perform(success, operation);
         } catch (BoardEditException refused) {
-            say(refused.getMessage());
+            refuse(refused.getMessage());
             stateChanged();
             return false;
         }

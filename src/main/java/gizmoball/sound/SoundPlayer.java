@@ -23,6 +23,8 @@ import javax.sound.sampled.SourceDataLine;
  */
 public final class SoundPlayer implements AutoCloseable {
     public static final String DISABLE_PROPERTY = "gizmoball.sound";
+    /** What the player is told, once, and again when asking for sound without a device. */
+    public static final String NO_DEVICE = "No audio device: sound off";
     private static final int QUEUE_CAPACITY = 64;
     private static final int BLOCK_FRAMES = 256;
     /** The device's buffer: about 46 ms, enough to ride out a scheduling hiccup, short enough to feel immediate. */
@@ -45,6 +47,8 @@ public final class SoundPlayer implements AutoCloseable {
     private volatile Thread audioThread;
     private volatile boolean enabled;
     private volatile boolean silent;
+    /** Set once the device could not be opened or failed: from then on sound is off, whatever is asked. */
+    private volatile boolean noDevice;
 
     /** {@code notice} is told once, from the audio thread, if the sound cannot be played. */
     public SoundPlayer(Consumer<String> notice) {
@@ -82,8 +86,14 @@ public final class SoundPlayer implements AutoCloseable {
         }
     }
 
+    /** Whether sound is on: asked for, and not without a device (one answer for the menu and the messages). */
     public boolean isEnabled() {
-        return enabled;
+        return enabled && !noDevice;
+    }
+
+    /** False once the audio device was found missing or failed; the game then stays silent. */
+    public boolean hasDevice() {
+        return !noDevice;
     }
 
     /** Never blocks. Ignored while off, silent, or when the audio thread is too far behind. */
@@ -119,8 +129,9 @@ public final class SoundPlayer implements AutoCloseable {
         } catch (LineUnavailableException | RuntimeException e) {
             // No device, none in this format, no permission, or one that failed while playing: all mean silence.
             silent = true;
+            noDevice = true;
             queue.clear();
-            notice.accept("No audio device: sound off");
+            notice.accept(NO_DEVICE);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }

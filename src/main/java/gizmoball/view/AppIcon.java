@@ -50,7 +50,7 @@ public final class AppIcon {
         BoardTransform t = BoardTransform.fit(side, side, 0);
         Board board = scene();
         BoardPainter.paintFixed(g, board, t, false);
-        BoardPainter.paintMoving(g, board, t);
+        BoardPainter.paintMoving(g, board, t, new Interpolation());
         g.dispose();
         BufferedImage corner = full.getSubimage(X0 * scale, Y0 * scale, CELLS * scale, CELLS * scale);
         BufferedImage icon = new BufferedImage(size, size, BufferedImage.TYPE_INT_ARGB);

@@ -93,8 +93,11 @@ public final class BoardPainter {
         }
     }
 
-    /** The part that changes while playing, drawn over {@link #paintFixed}: highlights, flippers and balls. */
-    public static void paintMoving(Graphics2D screen, Board board, BoardTransform t) {
+    /**
+     * The part that changes while playing, drawn over {@link #paintFixed}: highlights, flippers and balls, the
+     * balls and flippers where {@code between} says between two ticks.
+     */
+    static void paintMoving(Graphics2D screen, Board board, BoardTransform t, Interpolation between) {
         Graphics2D g = inBoardUnits(screen, t);
         try {
             float pixel = (float) (1 / t.scale());
@@ -102,16 +105,17 @@ public final class BoardPainter {
                 double glow = flash(board.time() - gizmo.lastTriggeredAt());
                 Color fill = lit(colourOf(gizmo), glow);
                 if (glow > 0) {
-                    paintHalo(g, gizmo instanceof FlipperView flipper ? outline(flipper) : shapeOf(gizmo), glow);
+                    paintHalo(g, gizmo instanceof FlipperView flipper ? outline(flipper, between.tip(flipper))
+                            : shapeOf(gizmo), glow);
                 }
                 if (gizmo instanceof FlipperView flipper) {
-                    paintFlipper(g, flipper, fill, pixel);
+                    paintFlipper(g, flipper, between.tip(flipper), fill, pixel);
                 } else if (glow > 0) {
                     paintShape(g, shapeOf(gizmo), fill, pixel);
                 }
             }
             for (BallView ball : board.balls()) {
-                paintShape(g, circle(new Circle(ball.position(), ball.radius())), BALL, pixel);
+                paintShape(g, circle(new Circle(between.ball(ball), ball.radius())), BALL, pixel);
             }
             paintHeldCounts(g, board);
         } finally {
@@ -167,8 +171,8 @@ public final class BoardPainter {
         g.draw(shape);
     }
 
-    private static void paintFlipper(Graphics2D g, FlipperView f, Color fill, float pixel) {
-        Line2D bar = new Line2D.Double(f.pivot().toPoint2D(), f.tip().toPoint2D());
+    private static void paintFlipper(Graphics2D g, FlipperView f, Vect tip, Color fill, float pixel) {
+        Line2D bar = new Line2D.Double(f.pivot().toPoint2D(), tip.toPoint2D());
         g.setColor(fill.darker());
         g.setStroke(new BasicStroke((float) (2 * f.radius()), BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
         g.draw(bar);
@@ -202,8 +206,8 @@ public final class BoardPainter {
     }
 
     /** The flipper's outline: its bar with round ends, as wide as the flipper. */
-    private static Shape outline(FlipperView f) {
-        Line2D bar = new Line2D.Double(f.pivot().toPoint2D(), f.tip().toPoint2D());
+    private static Shape outline(FlipperView f, Vect tip) {
+        Line2D bar = new Line2D.Double(f.pivot().toPoint2D(), tip.toPoint2D());
         return new BasicStroke((float) (2 * f.radius()), BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND)
                 .createStrokedShape(bar);
     }

@@ -31,6 +31,7 @@ public final class BoardPanel extends JComponent {
     private final transient List<BoardOverlay> overlays = new ArrayList<>();
     private final transient List<BoardOverlay> underlays = new ArrayList<>();
     private final transient FpsMeter fps = new FpsMeter();
+    private final transient Interpolation between = new Interpolation();
     private boolean gridVisible;
     /** Counts edits and loads (not ticks): the fixed image is redrawn when it moves on. */
     private final AtomicLong layout = new AtomicLong();
@@ -50,9 +51,13 @@ public final class BoardPanel extends JComponent {
     /** A view of {@code board}, repainting on its every change (registered once the view is whole). */
     public static BoardPanel of(Board board) {
         BoardPanel panel = new BoardPanel(board);
+        panel.between.reset(board);
         board.addObserver((Board b, BoardChange change) -> {
-            if (change != BoardChange.TICK) {
+            if (change == BoardChange.TICK) {
+                panel.between.ticked(b);
+            } else {
                 panel.layout.incrementAndGet();
+                panel.between.reset(b);
             }
             panel.repaint();
         });
@@ -80,6 +85,17 @@ public final class BoardPanel extends JComponent {
         repaint();
     }
 
+    /**
+     * How far real time has come from the last tick towards the next (0..1; 1 when stopped): balls and flippers
+     * are drawn that far between the last two ticks, so slow motion moves at the display's rate.
+     */
+    public void setTickFraction(double fraction) {
+        if (fraction != between.fraction()) {
+            between.setFraction(fraction);
+            repaint();
+        }
+    }
+
     /** Frames painted in the last second. */
     public int framesPerSecond() {
         return fps.fps(System.nanoTime());
@@ -97,7 +113,7 @@ public final class BoardPanel extends JComponent {
             for (BoardOverlay underlay : underlays) {
                 underlay.paint(g, t);
             }
-            BoardPainter.paintMoving(g, board, t);
+            BoardPainter.paintMoving(g, board, t, between);
             for (BoardOverlay overlay : overlays) {
                 overlay.paint(g, t);
             }

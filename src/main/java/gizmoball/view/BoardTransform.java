@@ -2,6 +2,7 @@ package gizmoball.view;
 
 import gizmoball.model.Board;
 import java.awt.geom.AffineTransform;
+import java.awt.geom.Rectangle2D;
 import java.awt.geom.Point2D;
 import physics.Vect;
 
@@ -14,11 +15,15 @@ public final class BoardTransform {
     private final double scale;
     private final double offsetX;
     private final double offsetY;
+    private final int width;
+    private final int height;
 
-    private BoardTransform(double scale, double offsetX, double offsetY) {
+    private BoardTransform(double scale, double offsetX, double offsetY, int width, int height) {
         this.scale = scale;
         this.offsetX = offsetX;
         this.offsetY = offsetY;
+        this.width = width;
+        this.height = height;
     }
 
     /**
@@ -28,7 +33,8 @@ public final class BoardTransform {
     public static BoardTransform fit(int width, int height, int margin) {
         int scale = Math.max(1, (Math.min(width, height) - 2 * margin) / Board.SIZE);
         int side = scale * Board.SIZE;
-        return new BoardTransform(scale, Math.floor((width - side) / 2.0), Math.floor((height - side) / 2.0));
+        return new BoardTransform(scale, Math.floor((width - side) / 2.0), Math.floor((height - side) / 2.0), width,
+                height);
     }
 
     /** Pixels per L. */
@@ -42,6 +48,26 @@ public final class BoardTransform {
 
     public Vect toBoard(double px, double py) {
         return new Vect((px - offsetX) / scale, (py - offsetY) / scale);
+    }
+
+    /** The whole component, in pixels: where overlays may draw. */
+    public Rectangle2D component() {
+        return new Rectangle2D.Double(0, 0, width, height);
+    }
+
+    /** The board's 20 x 20 L, in pixels. */
+    public Rectangle2D board() {
+        return new Rectangle2D.Double(offsetX, offsetY, Board.SIZE * scale, Board.SIZE * scale);
+    }
+
+    /**
+     * {@code box} (a label's, in pixels) moved as little as needed to lie inside {@code area}: a label near an edge
+     * is drawn whole, on the board's side of the edge.
+     */
+    public static Rectangle2D keptInside(Rectangle2D box, Rectangle2D area) {
+        double x = Math.max(area.getMinX(), Math.min(box.getX(), area.getMaxX() - box.getWidth()));
+        double y = Math.max(area.getMinY(), Math.min(box.getY(), area.getMaxY() - box.getHeight()));
+        return new Rectangle2D.Double(x, y, box.getWidth(), box.getHeight());
     }
 
     public AffineTransform boardToScreen() {

@@ -1,6 +1,9 @@
 package gizmoball.view;
 
 import gizmoball.model.Board;
+import gizmoball.model.BoardChange;
+import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.BallReport;
 import gizmoball.model.loop.Stage;
 import gizmoball.model.loop.TickReport;
@@ -13,6 +16,7 @@ import java.awt.geom.Ellipse2D;
 import java.awt.geom.Line2D;
 import java.awt.geom.Path2D;
 import java.awt.geom.Point2D;
+import java.awt.geom.Rectangle2D;
 import java.awt.geom.RoundRectangle2D;
 import java.util.ArrayList;
 import java.util.List;
@@ -42,11 +46,29 @@ public final class PhysicsOverlay implements BoardOverlay {
     private static final Color TEXT = new Color(0xe8ecf4);
     private static final float[] DASH = {4f, 4f};
 
+    /** The panel keeps this far from the board and from the view's edge. */
+    private static final int GAP = 6;
+
     private final Board board;
     private boolean enabled;
+    /** The report of the last tick of the board shown now: none after a load or Reset, until it ticks. */
+    private TickReport shown = TickReport.NONE;
 
-    public PhysicsOverlay(Board board) {
+    private PhysicsOverlay(Board board) {
         this.board = board;
+    }
+
+    /** The overlay of {@code board}, following its ticks (registered once the overlay is whole). */
+    public static PhysicsOverlay of(Board board) {
+        PhysicsOverlay overlay = new PhysicsOverlay(board);
+        board.addObserver((Board b, BoardChange change) ->
+                overlay.shown = change == BoardChange.TICK ? b.lastTick() : TickReport.NONE);
+        return overlay;
+    }
+
+    /** What the overlay shows: the last tick's report, or {@link TickReport#NONE} since a load, an edit or Reset. */
+    TickReport shown() {
+        return shown;
     }
 
     public boolean isEnabled() {
@@ -58,9 +80,14 @@ public final class PhysicsOverlay implements BoardOverlay {
         board.setNextCollisionLookAhead(on ? LOOK_AHEAD_SECONDS : 0);
     }
 
-    /** The corner panel's lines for {@code r}: the tick, the six stage times, collisions, balls awake. */
+    /** The panel's lines for {@code r}: the tick, the six stage times, collisions, balls awake. */
     static List<String> panelLines(TickReport r) {
         List<String> lines = new ArrayList<>();
+        if (r == TickReport.NONE) {
+            lines.add("no tick since the board was");
+            lines.add("loaded, edited or reset");
+            return lines;
+        }
         lines.add(String.format(Locale.ROOT, "tick at t = %.3f s", r.time()));
         long total = 0;
         for (Stage stage : Stage.values()) {
@@ -98,14 +125,14 @@ public final class PhysicsOverlay implements BoardOverlay {
         if (!enabled) {
             return;
         }
-        TickReport report = board.lastTick();
+        TickReport report = shown;
         Graphics2D g = (Graphics2D) screen.create();
         try {
             g.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 11));
             for (BallReport ball : report.balls()) {
                 paintBall(g, t, ball);
             }
-            paintPanel(g, t, panelLines(report));
+            paintPanel(g, panelBox(g.getFontMetrics(), t, panelLines(report)), panelLines(report));
         } finally {
             g.dispose();
         }
@@ -137,8 +164,21 @@ public final class PhysicsOverlay implements BoardOverlay {
         g.setStroke(new BasicStroke(2f));
         g.draw(new Ellipse2D.Double(at.getX() - r - 3, at.getY() - r - 3, 2 * r + 6, 2 * r + 6));
         String label = ballLabel(ball);
-        FontMetrics m = g.getFontMetrics();
-        g.drawString(label, (float) (at.getX() - m.stringWidth(label) / 2.0), (float) (at.getY() + r + 4 + m.getAscent()));
+        Rectangle2D box = labelBox(g.getFontMetrics(), t, at, label);
+        g.drawString(label, (float) box.getX(), (float) (box.getY() + g.getFontMetrics().getAscent()));
+    }
+
+    /**
+     * The text box of a ball's label: centred under the ball, above it on the bottom row, and moved in from the
+     * board's sides so that it never runs past them.
+     */
+    static Rectangle2D labelBox(FontMetrics m, BoardTransform t, Point2D ball, String label) {
+        double r = Board.BALL_RADIUS * t.scale();
+        double width = m.stringWidth(label);
+        double below = ball.getY() + r + 4;
+        Rectangle2D area = t.board();
+        double y = below + m.getHeight() <= area.getMaxY() ? below : ball.getY() - r - 4 - m.getHeight();
+        return BoardTransform.keptInside(new Rectangle2D.Double(ball.getX() - width / 2, y, width, m.getHeight()), area);
     }
 
     private static void paintArrowHead(Graphics2D g, Point2D from, Point2D tip) {
@@ -159,18 +199,55 @@ public final class PhysicsOverlay implements BoardOverlay {
         g.fill(head);
     }
 
-    private static void paintPanel(Graphics2D g, BoardTransform t, List<String> lines) {
-        FontMetrics m = g.getFontMetrics();
+    /**
+     * Where the panel goes: beside the board where the view has room for it (a window wider than the board, as
+     * play mode's usually is), so that it covers nothing; otherwise in the board's corner that covers the fewest
+     * gizmos and balls.
+     */
+    Rectangle2D panelBox(FontMetrics m, BoardTransform t, List<String> lines) {
         int width = lines.stream().mapToInt(m::stringWidth).max().orElse(0) + 12;
         int height = lines.size() * m.getHeight() + 8;
-        Point2D corner = t.toScreen(0, 0);
-        double x = corner.getX() + 6;
-        double y = corner.getY() + 6;
+        Rectangle2D area = t.board();
+        if (area.getMinX() - t.component().getMinX() >= width + GAP) {
+            return new Rectangle2D.Double(area.getMinX() - GAP - width, area.getMinY(), width, height);
+        }
+        Rectangle2D best = null;
+        int fewest = Integer.MAX_VALUE;
+        for (double x : new double[] {area.getMinX() + GAP, area.getMaxX() - GAP - width}) {
+            for (double y : new double[] {area.getMinY() + GAP, area.getMaxY() - GAP - height}) {
+                Rectangle2D corner = new Rectangle2D.Double(x, y, width, height);
+                int covered = covered(t, corner);
+                if (covered < fewest) {
+                    fewest = covered;
+                    best = corner;
+                }
+            }
+        }
+        return best;
+    }
+
+    private int covered(BoardTransform t, Rectangle2D box) {
+        int count = 0;
+        for (Gizmo gizmo : board.gizmos()) {
+            Point2D a = t.toScreen(gizmo.x(), gizmo.y());
+            Point2D b = t.toScreen(gizmo.x() + gizmo.width(), gizmo.y() + gizmo.height());
+            count += box.intersects(a.getX(), a.getY(), b.getX() - a.getX(), b.getY() - a.getY()) ? 1 : 0;
+        }
+        for (BallView ball : board.balls()) {
+            Point2D at = t.toScreen(ball.position().x(), ball.position().y());
+            count += box.contains(at) ? 1 : 0;
+        }
+        return count;
+    }
+
+    private static void paintPanel(Graphics2D g, Rectangle2D box, List<String> lines) {
+        FontMetrics m = g.getFontMetrics();
         g.setColor(PANEL);
-        g.fill(new RoundRectangle2D.Double(x, y, width, height, 8, 8));
+        g.fill(new RoundRectangle2D.Double(box.getX(), box.getY(), box.getWidth(), box.getHeight(), 8, 8));
         g.setColor(TEXT);
         for (int i = 0; i < lines.size(); i++) {
-            g.drawString(lines.get(i), (float) x + 6, (float) (y + 4 + m.getAscent() + i * m.getHeight()));
+            g.drawString(lines.get(i), (float) box.getX() + 6,
+                    (float) (box.getY() + 4 + m.getAscent() + i * m.getHeight()));
         }
     }
 }

@@ -53,6 +53,42 @@ class GameLoopTest {
         assertThat(loop.isRunning()).isFalse();
     }
 
+    /** Issue 23, item 9: at 1/8x a tick comes every 8th of a second, but a view is told every timer event. */
+    @Test
+    void inSlowMotionEveryTimerEventTellsHowFarTheNextTickHasComeWithoutTicking() {
+        java.util.List<Double> fractions = new java.util.ArrayList<>();
+        loop.addFrameListener(fractions::add);
+        loop.setSpeed(Speed.EIGHTH);
+        long eighthOfATick = Math.round(DT / Speed.EIGHTH.factor() / 8 * 1e9);
+
+        for (int i = 0; i < 7; i++) {
+            loop.elapsed(eighthOfATick);
+        }
+
+        assertThat(board.time()).as("no tick yet").isZero();
+        assertThat(fractions).hasSize(7);
+        for (int i = 0; i < 7; i++) {
+            assertThat(fractions.get(i)).isCloseTo((i + 1) / 8.0, org.assertj.core.data.Offset.offset(1e-6));
+        }
+        loop.elapsed(eighthOfATick);
+        assertThat(board.time()).as("the tick, on time").isEqualTo(DT);
+        assertThat(fractions.get(7)).isCloseTo(0, org.assertj.core.data.Offset.offset(1e-6));
+    }
+
+    @Test
+    void atFullSpeedOnlyEventsThatTickTellTheViewAndStoppingTellsItToDrawTheLastTick() {
+        java.util.List<Double> fractions = new java.util.ArrayList<>();
+        loop.addFrameListener(fractions::add);
+        long halfATick = Math.round(DT / 2 * 1e9);
+
+        loop.elapsed(halfATick);
+        assertThat(fractions).isEmpty();
+        loop.elapsed(halfATick + 1);
+        assertThat(fractions).hasSize(1);
+        loop.stop();
+        assertThat(fractions.get(fractions.size() - 1)).isEqualTo(1.0);
+    }
+
     @Test
     void timeStoppedIsNotOwedOnRestart() {
         loop.start();

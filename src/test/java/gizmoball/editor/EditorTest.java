@@ -683,4 +683,29 @@ class EditorTest {
         assertThat(board.balls()).extracting(BallView::name).containsExactly("A", "A2");
         assertThat(lastMessage()).contains("would overlap ball A");
     }
+
+    /** Issue 23, item 16: the editor's messages write a connection with the arrow the panels use. */
+    @Test
+    void connectionsAreWrittenWithOneArrowInMessages() {
+        click(Tool.SQUARE, 3, 3);
+        click(Tool.SQUARE, 5, 3);
+        editor.setTool(Tool.CONNECT);
+        clickCell(3, 3);
+        clickCell(5, 3);
+        assertThat(messages).contains("Connected S1 \u2192 S2");
+
+        editor.disconnect(TriggerSource.gizmo("S1"), "S2");
+        assertThat(lastMessage()).isEqualTo("Disconnected S1 \u2192 S2");
+        assertThat(messages).noneMatch(m -> m.contains("->"));
+    }
+
+    /** Issue 23, item 15: a refusal is kept, for the field that asked, with its reason. */
+    @Test
+    void aRefusedEditLeavesItsReasonForTheFieldThatAskedForIt() {
+        assertThat(editor.setConstants(25, -1, 0.025)).isFalse();
+        assertThat(editor.lastRefusal()).hasValueSatisfying(reason -> assertThat(lastMessage()).isEqualTo(reason));
+        click(Tool.SQUARE, 3, 3);
+        assertThat(editor.setColour("S1", "green")).isFalse();
+        assertThat(editor.lastRefusal()).contains(lastMessage());
+    }
 }

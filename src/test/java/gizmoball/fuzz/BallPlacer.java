@@ -12,7 +12,7 @@ import java.util.function.UnaryOperator;
 
 /**
  * Puts balls on a generated board: anywhere free, touching a gizmo (a flipper's bar or its pivot end among them),
- * touching a ball already placed, or in a cell left free between gizmos; each at rest, slow, or at up to 100 L/s.
+ * touching a ball already placed, against an outer wall or in a corner, or in a cell left free between gizmos; each at rest, slow, or at up to 100 L/s.
  * A spot the board refuses (on a gizmo or a ball) is tried again elsewhere.
  */
 final class BallPlacer {
@@ -64,7 +64,7 @@ final class BallPlacer {
     }
 
     private Point spot() {
-        int how = random.nextInt(20);
+        int how = random.nextInt(22);
         List<Gizmo> gizmos = board.gizmos();
         List<BallView> balls = board.balls().stream().filter(b -> !b.isCaptured()).toList();
         if (how < 6 || gizmos.isEmpty()) {
@@ -81,7 +81,12 @@ final class BallPlacer {
         }
         if (how < 18 && !balls.isEmpty()) {
             BallView other = balls.get(random.nextInt(balls.size()));
-            return around(new Point(other.position().x(), other.position().y()), 2 * R + gap());
+            // A third straight above it (under gravity, a stack balanced on a point), else anywhere round it.
+            double angle = random.nextInt(3) == 0 ? -Math.PI / 2 : random.nextDouble(0, 2 * Math.PI);
+            return around(new Point(other.position().x(), other.position().y()), 2 * R + gap(), angle);
+        }
+        if (how >= 20) {
+            return againstWall();
         }
         // Somewhere in a cell: its centre, or against one of its sides.
         double[] inCell = {0.5, R, 1 - R};
@@ -89,13 +94,25 @@ final class BallPlacer {
                 random.nextInt(Board.SIZE) + inCell[random.nextInt(3)]);
     }
 
+    /** Touching an outer wall, or in a corner of the board. */
+    private Point againstWall() {
+        double along = random.nextInt(4) == 0 ? R : random.nextDouble(R, Board.SIZE - R);
+        double near = R + gap();
+        double far = Board.SIZE - near;
+        return switch (random.nextInt(4)) {
+            case 0 -> new Point(near, along);
+            case 1 -> new Point(far, along);
+            case 2 -> new Point(along, near);
+            default -> new Point(along, far);
+        };
+    }
+
     /** Mostly exactly touching (to rounding), else a hair away. */
     private double gap() {
         return random.nextInt(3) == 0 ? random.nextDouble(0, 1e-3) : 0;
     }
 
-    private Point around(Point centre, double distance) {
-        double angle = random.nextDouble(0, 2 * Math.PI);
+    private static Point around(Point centre, double distance, double angle) {
         return new Point(centre.x() + distance * Math.cos(angle), centre.y() + distance * Math.sin(angle));
     }
 

@@ -82,11 +82,12 @@ public final class DenseBoards {
             recipe.add("energy kept");
         } else {
             int g = random.nextInt(20);
-            gravity = g < 4 ? 0 : g < 11 ? Board.DEFAULT_GRAVITY : g < 18 ? round(random.nextDouble(1, 80))
-                    : -round(random.nextDouble(1, 30));
+            gravity = g < 4 ? 0 : g < 10 ? Board.DEFAULT_GRAVITY : g < 17 ? round(random.nextDouble(1, 80))
+                    : g < 18 ? round(random.nextDouble(80, 200)) : -round(random.nextDouble(1, 30));
             int f = random.nextInt(10);
-            mu = f < 3 ? 0 : f < 6 ? Board.DEFAULT_MU : round(random.nextDouble(0, 0.3));
-            mu2 = f < 3 ? 0 : f < 6 ? Board.DEFAULT_MU2 : round(random.nextDouble(0, 0.3));
+            double most = f == 9 ? 1 : 0.3;
+            mu = f < 3 ? 0 : f < 6 ? Board.DEFAULT_MU : round(random.nextDouble(0, most));
+            mu2 = f < 3 ? 0 : f < 6 ? Board.DEFAULT_MU2 : round(random.nextDouble(0, most));
         }
         board.setGravity(gravity);
         board.setFriction(mu, mu2);
@@ -102,8 +103,9 @@ public final class DenseBoards {
 
     private void absorbers() {
         if (random.nextInt(3) > 0) {
-            int x1 = random.nextInt(12);
-            int x2 = Math.min(SIZE, x1 + 1 + random.nextInt(SIZE - x1));
+            boolean wall = random.nextInt(4) == 0;
+            int x1 = wall ? 0 : random.nextInt(12);
+            int x2 = wall ? SIZE : Math.min(SIZE, x1 + 1 + random.nextInt(SIZE - x1));
             int height = random.nextInt(4) == 0 ? 2 : 1;
             absorber(x1, SIZE - height, x2, SIZE, random.nextInt(5) > 0);
         }
@@ -111,7 +113,7 @@ public final class DenseBoards {
         for (int i = 0; i < more; i++) {
             int x1 = random.nextInt(SIZE);
             int y1 = random.nextInt(SIZE);
-            absorber(x1, y1, Math.min(SIZE, x1 + 1 + random.nextInt(8)), Math.min(SIZE, y1 + 1 + random.nextInt(3)),
+            absorber(x1, y1, Math.min(SIZE, x1 + 1 + random.nextInt(8)), Math.min(SIZE, y1 + 1 + random.nextInt(4)),
                     random.nextBoolean());
         }
         recipe.add(absorbers.size() + " absorbers");
@@ -232,7 +234,7 @@ public final class DenseBoards {
         if (random.nextInt(4) == 0) {
             checkerboard();
         }
-        double density = random.nextDouble(0.05, 0.6);
+        double density = random.nextInt(8) == 0 ? random.nextDouble(0.6, 0.9) : random.nextDouble(0.05, 0.6);
         int scattered = (int) (density * SIZE * SIZE);
         for (int i = 0; i < scattered; i++) {
             bumper(randomBumper(), random.nextInt(SIZE), random.nextInt(SIZE), random.nextInt(4));
@@ -323,12 +325,17 @@ public final class DenseBoards {
                 continue;
             }
             int key = key();
-            int how = random.nextInt(10);
+            int how = random.nextInt(12);
             if (how < 8) {
                 board.bindKey(key, KeyEdge.DOWN, flipper);
                 board.bindKey(key, KeyEdge.UP, flipper);
+            } else if (how == 8) {
+                // Up with one key, down with another (or the same one, drawn again).
+                board.bindKey(key, KeyEdge.DOWN, flipper);
+                board.bindKey(key(), KeyEdge.UP, flipper);
             } else {
-                board.bindKey(key, how == 8 ? KeyEdge.DOWN : KeyEdge.CHANGE, flipper);
+                KeyEdge[] edges = {KeyEdge.DOWN, KeyEdge.UP, KeyEdge.CHANGE};
+                board.bindKey(key, edges[how - 9], flipper);
             }
         }
         for (String absorber : absorbers) {

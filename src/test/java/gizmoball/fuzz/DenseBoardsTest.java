@@ -83,6 +83,8 @@ class DenseBoardsTest {
         int weightless = 0;
         int frictionless = 0;
         int startedSwinging = 0;
+        int heavy = 0;
+        int upsideDown = 0;
         for (FuzzCase c : CASES) {
             Board board = c.board();
             for (Gizmo g : board.gizmos()) {
@@ -97,6 +99,8 @@ class DenseBoardsTest {
             }
             energyKept += new TickChecker(board).checksEnergy() ? 1 : 0;
             weightless += board.gravity() == 0 ? 1 : 0;
+            heavy += board.gravity() > 80 ? 1 : 0;
+            upsideDown += board.gravity() < 0 ? 1 : 0;
             frictionless += board.mu() == 0 && board.mu2() == 0 ? 1 : 0;
         }
         for (GizmoKind kind : List.of(GizmoKind.SQUARE, GizmoKind.TRIANGLE, GizmoKind.LEFT_FLIPPER,
@@ -112,6 +116,8 @@ class DenseBoardsTest {
         assertThat(weightless).isGreaterThan(energyKept);
         assertThat(frictionless).isGreaterThan(energyKept);
         assertThat(startedSwinging).as("flippers starting part-way").isGreaterThan(10);
+        assertThat(heavy).as("gravity over 80 L/s^2").isPositive();
+        assertThat(upsideDown).as("gravity pointing up").isPositive();
     }
 
     @Test
@@ -119,6 +125,8 @@ class DenseBoardsTest {
         int touchingGizmo = 0;
         int touchingFlipper = 0;
         int touchingBall = 0;
+        int touchingWall = 0;
+        int stacked = 0;
         int fast = 0;
         int still = 0;
         Set<Integer> counts = new HashSet<>();
@@ -135,8 +143,12 @@ class DenseBoardsTest {
                 }
                 for (BallView other : balls) {
                     double d = Math.hypot(x - other.position().x(), y - other.position().y());
-                    touchingBall += other != ball && Math.abs(d - 2 * Board.BALL_RADIUS) < 1e-9 ? 1 : 0;
+                    boolean touches = other != ball && Math.abs(d - 2 * Board.BALL_RADIUS) < 1e-9;
+                    touchingBall += touches ? 1 : 0;
+                    stacked += touches && Math.abs(x - other.position().x()) < 1e-9 ? 1 : 0;
                 }
+                double wallGap = Math.min(Math.min(x, Board.SIZE - x), Math.min(y, Board.SIZE - y));
+                touchingWall += Math.abs(wallGap - Board.BALL_RADIUS) < 1e-9 ? 1 : 0;
                 double speed = ball.velocity().length();
                 fast += speed > 80 ? 1 : 0;
                 still += speed == 0 ? 1 : 0;
@@ -145,6 +157,8 @@ class DenseBoardsTest {
         assertThat(touchingGizmo).isGreaterThan(300);
         assertThat(touchingFlipper).isGreaterThan(50);
         assertThat(touchingBall).isGreaterThan(100);
+        assertThat(stacked).as("balls on top of balls").isGreaterThan(20);
+        assertThat(touchingWall).isGreaterThan(50);
         assertThat(fast).isGreaterThan(100);
         assertThat(still).isGreaterThan(100);
         assertThat(counts).contains(5, 40).hasSizeGreaterThan(25);

@@ -48,6 +48,22 @@ class SoundPlayerTest {
         player.close();
     }
 
+    /** Issue 23, item 13: without a device sound is off, one answer for whoever asks. */
+    @Test
+    void withoutADeviceSoundIsOffWhateverIsAsked() {
+        SoundPlayer player = new SoundPlayer(notices::add, noDevice(), false, audio);
+        assertThat(player.hasDevice()).isTrue();
+        player.setEnabled(true);
+        audio.runAll();
+
+        assertThat(player.hasDevice()).isFalse();
+        assertThat(player.isEnabled()).isFalse();
+        player.setEnabled(true);
+        assertThat(player.isEnabled()).isFalse();
+        assertThat(notices).containsExactly(SoundPlayer.NO_DEVICE);
+        player.close();
+    }
+
     @Test
     void playingNeverWaitsForTheAudioThreadEvenWhenTheDeviceHangs() {
         SoundPlayer player = new SoundPlayer(notices::add, noDevice(), false, audio);

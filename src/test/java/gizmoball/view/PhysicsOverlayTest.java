@@ -20,7 +20,7 @@ import org.junit.jupiter.api.Test;
 class PhysicsOverlayTest {
     private static final int SIZE = 612;
     private final Board board = new Board();
-    private final PhysicsOverlay overlay = new PhysicsOverlay(board);
+    private final PhysicsOverlay overlay = PhysicsOverlay.of(board);
 
     private TickReport scriptedTick() {
         board.setGravity(0);
@@ -84,5 +84,67 @@ class PhysicsOverlayTest {
             }
         }
         return best;
+    }
+
+    /** Issue 23, item 10: Reset (a REPLACE) leaves no stale report; the first tick after it shows again. */
+    @Test
+    void afterResetTheOverlayShowsNoOldTickAndTheFirstNewTickShowsItsHits() {
+        Board design = board.copy();
+        scriptedTick();
+        assertThat(overlay.shown().balls()).hasSize(1);
+
+        board.replaceContents(design);
+
+        assertThat(overlay.shown()).isEqualTo(TickReport.NONE);
+        assertThat(PhysicsOverlay.panelLines(overlay.shown())).noneMatch(line -> line.startsWith("tick at"));
+        board.setGravity(0);
+        board.setFriction(0, 0);
+        board.addBall("B", 0.5, 10, -30, 0);
+        board.tick(Board.DEFAULT_TICK);
+        assertThat(overlay.shown().balls()).singleElement()
+                .satisfies(b -> assertThat(b.nextCollisionIn()).isCloseTo(19.25 / 30, within(1e-9)));
+    }
+
+    private static java.awt.FontMetrics metrics() {
+        Graphics2D g = new BufferedImage(1, 1, BufferedImage.TYPE_INT_RGB).createGraphics();
+        g.setFont(new java.awt.Font(java.awt.Font.MONOSPACED, java.awt.Font.PLAIN, 11));
+        return g.getFontMetrics();
+    }
+
+    /** Issue 23, item 11: with room beside the board the panel goes there and covers nothing of it. */
+    @Test
+    void theTickPanelGoesBesideTheBoardWhereTheViewHasRoom() {
+        BoardTransform t = BoardTransform.fit(1280, SIZE, 6);
+        java.awt.geom.Rectangle2D box = overlay.panelBox(metrics(), t, PhysicsOverlay.panelLines(scriptedTick()));
+
+        assertThat(box.getMaxX()).isLessThanOrEqualTo(t.board().getMinX());
+        assertThat(box.getMinX()).isGreaterThanOrEqualTo(0);
+    }
+
+    /** Issue 23, item 11: without room beside the board the panel takes the corner where it covers least. */
+    @Test
+    void withoutRoomBesideTheBoardThePanelTakesTheCornerCoveringTheFewestGizmos() {
+        board.addGizmo(gizmoball.model.gizmo.GizmoKind.CIRCLE, "C1", 3, 4);
+        board.addGizmo(gizmoball.model.gizmo.GizmoKind.CIRCLE, "C2", 1, 1);
+        board.addGizmo(gizmoball.model.gizmo.GizmoKind.CIRCLE, "C3", 16, 18);
+        board.addGizmo(gizmoball.model.gizmo.GizmoKind.CIRCLE, "C4", 2, 17);
+        BoardTransform t = BoardTransform.fit(SIZE, SIZE, 6);
+
+        java.awt.geom.Rectangle2D box = overlay.panelBox(metrics(), t, PhysicsOverlay.panelLines(scriptedTick()));
+
+        assertThat(box.getMinX()).as("on the right").isGreaterThan(t.board().getCenterX());
+        assertThat(box.getMinY()).as("at the top").isLessThan(t.board().getCenterY());
+        assertThat(t.board().contains(box)).isTrue();
+    }
+
+    /** Issue 23, item 11: a ball's label stays on the board, above the ball on the bottom row. */
+    @Test
+    void ballLabelsStayWithinTheBoard() {
+        BoardTransform t = BoardTransform.fit(SIZE, SIZE, 6);
+        String label = "flying, hit in 0.642 s";
+        for (double[] at : new double[][] {{19.75, 10}, {0.25, 10}, {10, 19.75}, {0.25, 19.75}}) {
+            java.awt.geom.Rectangle2D box = PhysicsOverlay.labelBox(metrics(), t, t.toScreen(at[0], at[1]), label);
+            assertThat(t.board().contains(box)).as("label of a ball at (%s, %s)", at[0], at[1]).isTrue();
+        }
     }
 }

@@ -11,6 +11,7 @@ import java.awt.Graphics2D;
 import java.awt.geom.Ellipse2D;
 import java.awt.geom.Line2D;
 import java.awt.geom.Point2D;
+import java.awt.geom.Rectangle2D;
 import java.awt.geom.RoundRectangle2D;
 import java.util.List;
 import java.util.Locale;
@@ -70,21 +71,27 @@ public final class AimPreviewOverlay implements BoardOverlay {
             g.fill(new Ellipse2D.Double(at.getX() - DOT_PIXELS, at.getY() - DOT_PIXELS, 2 * DOT_PIXELS, 2 * DOT_PIXELS));
         }
         g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 12));
-        p.trigger().ifPresent(tr -> label(g, t.toScreen(tr.at().x(), tr.at().y()),
+        p.trigger().ifPresent(tr -> label(g, t, t.toScreen(tr.at().x(), tr.at().y()),
                 tr.source() + " \u2192 " + String.join(", ", tr.targets())));
         if (p.shortened() && n > 0) {
             Vect end = path.get(n).at();
-            label(g, t.toScreen(end.x(), end.y()), String.format(Locale.ROOT, "%.1f s", p.seconds()));
+            label(g, t, t.toScreen(end.x(), end.y()), String.format(Locale.ROOT, "%.1f s", p.seconds()));
         }
     }
 
-    private static void label(Graphics2D g, Point2D at, String text) {
-        FontMetrics m = g.getFontMetrics();
-        double x = at.getX() + 8;
-        double y = at.getY() - 8 - m.getHeight();
+    /** Up and to the right of the point, or moved in from the view's edge so that it is read whole. */
+    private static void label(Graphics2D g, BoardTransform t, Point2D at, String text) {
+        Rectangle2D box = labelBox(g.getFontMetrics(), t, at, text);
         g.setColor(LABEL_BACK);
-        g.fill(new RoundRectangle2D.Double(x - 4, y, m.stringWidth(text) + 8, m.getHeight() + 2, 6, 6));
+        g.fill(new RoundRectangle2D.Double(box.getX(), box.getY(), box.getWidth(), box.getHeight(), 6, 6));
         g.setColor(DOT);
-        g.drawString(text, (float) x, (float) (y + 1 + m.getAscent()));
+        g.drawString(text, (float) box.getX() + 4, (float) (box.getY() + 1 + g.getFontMetrics().getAscent()));
+    }
+
+    /** Where the label of {@code text} at {@code at} goes: its background, within the view. */
+    static Rectangle2D labelBox(FontMetrics m, BoardTransform t, Point2D at, String text) {
+        Rectangle2D wanted = new Rectangle2D.Double(at.getX() + 4, at.getY() - 8 - m.getHeight(),
+                m.stringWidth(text) + 8, m.getHeight() + 2);
+        return BoardTransform.keptInside(wanted, t.component());
     }
 }

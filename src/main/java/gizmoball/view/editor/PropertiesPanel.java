@@ -31,6 +31,7 @@ import javax.swing.JScrollPane;
 import javax.swing.JTextField;
 import javax.swing.ListSelectionModel;
 import javax.swing.SwingConstants;
+import javax.swing.SwingUtilities;
 import java.awt.BorderLayout;
 import java.awt.Component;
 import java.awt.Container;
@@ -40,6 +41,8 @@ import java.awt.FlowLayout;
 import java.awt.GridBagConstraints;
 import java.awt.GridBagLayout;
 import java.awt.Insets;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.Objects;
 import java.awt.event.ActionEvent;
 import java.awt.event.KeyEvent;
@@ -144,6 +147,7 @@ public final class PropertiesPanel extends JPanel {
         balls.setText(Integer.toString(board.gameRules().ballsPerGame()));
         extraBall.setText(board.gameRules().extraBallAt().isPresent()
                 ? Long.toString(board.gameRules().extraBallAt().getAsLong()) : "");
+        RefusedValue.unmark(extraBall);
 
         shownSelection = controller.selected().orElse(null);
         Optional<Gizmo> gizmo = controller.selectedGizmo();
@@ -159,9 +163,11 @@ public final class PropertiesPanel extends JPanel {
         applyBall.setEnabled(ball.isPresent());
         enableAll(colourRows, gizmo.isPresent());
         colour.setText("");
+        RefusedValue.unmark(colour);
         swatch.setBackground(colourRows.getBackground());
         points.setEnabled(gizmo.isPresent());
         points.setText(gizmo.map(g -> Integer.toString(board.gameRules().pointsOf(g.name(), g.kind()))).orElse(""));
+        RefusedValue.unmark(points);
         drain.setEnabled(gizmo.filter(g -> g.kind() == GizmoKind.ABSORBER).isPresent());
         drain.setSelected(gizmo.filter(g -> board.gameRules().isDrain(g.name())).isPresent());
         gizmo.ifPresent(g -> {
@@ -295,8 +301,9 @@ public final class PropertiesPanel extends JPanel {
         JButton choose = new JButton("Choose...");
         choose.setName("gizmo.colour.choose");
         choose.addActionListener(e -> {
-            Color chosen = JColorChooser.showDialog(this, "Colour of " + shownSelection,
-                    swatch.getBackground());
+            // Over the window, centred on it (over the panel it opened beside the window).
+            Color chosen = JColorChooser.showDialog(SwingUtilities.getWindowAncestor(this),
+                    "Colour of " + shownSelection, swatch.getBackground());
             if (chosen != null) {
                 applyColour(Editor.hex(Rgb.of(chosen.getRGB())));
             }
@@ -317,8 +324,34 @@ public final class PropertiesPanel extends JPanel {
         controller.selectedGizmo().ifPresent(g -> {
             if (controller.setColour(g.name(), text)) {
                 focusBoard.run();
+            } else {
+                keepRefused(Map.of(colour, text));
             }
         });
+    }
+
+    /**
+     * A refused apply leaves what was typed in the fields that asked for the change, each marked with the reason
+     * (a rolled-back edit has shown the board's values again meanwhile).
+     */
+    private void keepRefused(Map<JTextField, String> typed) {
+        String reason = controller.lastRefusal().orElse("refused");
+        typed.forEach((field, text) -> {
+            field.setText(text);
+            RefusedValue.mark(field, reason);
+        });
+        typed.keySet().stream().findFirst().ifPresent(JTextField::requestFocusInWindow);
+    }
+
+    /** The typed texts of the fields whose numbers differ from the board's (the ones an apply changes). */
+    private static Map<JTextField, String> changed(NumberField[] fields, double[] now) {
+        Map<JTextField, String> typed = new LinkedHashMap<>();
+        for (int i = 0; i < fields.length; i++) {
+            if (fields[i].differsFrom(now[i])) {
+                typed.put(fields[i], fields[i].getText());
+            }
+        }
+        return typed;
     }
 
     private static GridBagConstraints wide(GridBagConstraints c) {
@@ -327,6 +360,7 @@ public final class PropertiesPanel extends JPanel {
     }
 
     private void applyBoard() {
+        NumberField[] constants = {gravity, mu, mu2};
         Optional<double[]> v = values(gravity, mu, mu2, balls);
         if (v.isEmpty()) {
             return;
@@ -336,20 +370,29 @@ public final class PropertiesPanel extends JPanel {
         if (!extraText.isEmpty()) {
             OptionalDouble score = Decimals.parse(extraText);
             if (score.isEmpty() || score.getAsDouble() != Math.rint(score.getAsDouble())) {
-                controller.tell("Extra ball at '" + extraText + "': write a whole score, or nothing for no extra ball");
-                extraBall.requestFocusInWindow();
+                refuse(extraBall, "Extra ball at '" + extraText
+                        + "': write a whole score, or nothing for no extra ball");
                 return;
             }
             extra = OptionalLong.of((long) score.getAsDouble());
         }
         if (v.get()[3] != Math.rint(v.get()[3]) || Math.abs(v.get()[3]) > Integer.MAX_VALUE) {
-            controller.tell("Balls a game: a whole number, 1 to " + GameRules.MAX_BALLS);
-            balls.requestFocusInWindow();
+            refuse(balls, "Balls a game: a whole number, 1 to " + GameRules.MAX_BALLS);
             return;
         }
-        if (controller.setConstants(v.get()[0], v.get()[1], v.get()[2])
-                && controller.setGame((int) v.get()[3], extra)) {
+        Board board = controller.board();
+        Map<JTextField, String> typed = changed(constants, new double[] {board.gravity(), board.mu(), board.mu2()});
+        if (!controller.setConstants(v.get()[0], v.get()[1], v.get()[2])) {
+            keepRefused(typed);
+            return;
+        }
+        Map<JTextField, String> game = new LinkedHashMap<>();
+        game.put(balls, balls.getText());
+        game.put(extraBall, extraBall.getText());
+        if (controller.setGame((int) v.get()[3], extra)) {
             focusBoard.run();
+        } else {
+            keepRefused(game);
         }
     }
 
@@ -361,21 +404,38 @@ public final class PropertiesPanel extends JPanel {
         }
         double value = v.get()[0];
         if (value != Math.rint(value) || Math.abs(value) > Points.LIMIT) {
-            controller.tell("Points: a whole number from -" + Points.LIMIT + " to " + Points.LIMIT);
-            points.requestFocusInWindow();
+            refuse(points, "Points: a whole number from -" + Points.LIMIT + " to " + Points.LIMIT);
             return;
         }
+        String typed = points.getText();
         if (controller.setPoints(gizmo.get().name(), (int) value)) {
             focusBoard.run();
+        } else {
+            keepRefused(Map.of(points, typed));
         }
+    }
+
+    /** A value the panel itself refuses: said, kept in its field and marked, as every refused value is. */
+    private void refuse(JTextField field, String reason) {
+        controller.tell(reason);
+        RefusedValue.mark(field, reason);
+        field.requestFocusInWindow();
     }
 
     private void applyBall() {
         Optional<BallView> ball = controller.selectedBall();
-        Optional<double[]> v = values(ballX, ballY, ballVx, ballVy);
-        if (ball.isPresent() && v.isPresent()
-                && controller.setBall(ball.get().name(), v.get()[0], v.get()[1], v.get()[2], v.get()[3])) {
+        NumberField[] fields = {ballX, ballY, ballVx, ballVy};
+        Optional<double[]> v = values(fields);
+        if (ball.isEmpty() || v.isEmpty()) {
+            return;
+        }
+        BallView b = ball.get();
+        Map<JTextField, String> typed = changed(fields,
+                new double[] {b.position().x(), b.position().y(), b.velocity().x(), b.velocity().y()});
+        if (controller.setBall(b.name(), v.get()[0], v.get()[1], v.get()[2], v.get()[3])) {
             focusBoard.run();
+        } else {
+            keepRefused(typed);
         }
     }
 

@@ -71,6 +71,56 @@ class EditorFieldsGuiTest {
         assertThat(onEdt(() -> markedRed(gravity) || markedRed(mu))).isFalse();
     }
 
+    /** Issue 23, item 15: one rule: a value the model refuses stays in its field, outlined, its reason the tooltip. */
+    @Test
+    void aValueTheBoardRefusesStaysInItsFieldMarkedWithTheBoardsReason() {
+        JTextField gravity = field("gravity");
+        JTextField mu = field("mu");
+        onEdt(() -> {
+            gravity.setText("30");
+            mu.setText("-1");
+            mu.postActionEvent();
+        });
+
+        assertThat(onEdt(() -> mu.getText())).isEqualTo("-1");
+        assertThat(onEdt(() -> gravity.getText())).isEqualTo("30");
+        assertThat(onEdt(() -> markedRed(mu) && markedRed(gravity))).isTrue();
+        assertThat(onEdt(() -> mu.getToolTipText())).isEqualTo(w.status());
+        assertThat(onEdt(() -> markedRed(field("mu2")))).as("mu2 was not changed").isFalse();
+        assertThat(w.board.mu()).isEqualTo(Board.DEFAULT_MU);
+        assertThat(w.board.gravity()).isEqualTo(Board.DEFAULT_GRAVITY);
+
+        onEdt(() -> {
+            mu.setText("0.03");
+            mu.postActionEvent();
+        });
+        assertThat(w.board.mu()).isEqualTo(0.03);
+        assertThat(onEdt(() -> markedRed(mu))).isFalse();
+    }
+
+    @Test
+    void aColourThatIsNoColourStaysInItsFieldMarkedWithTheReason() {
+        onEdt(() -> w.board.addGizmo(GizmoKind.SQUARE, "S1", 3, 3));
+        onEdt(() -> w.build.controller().select("S1"));
+        JTextField colour = field("gizmo.colour");
+        String normalTip = onEdt(() -> colour.getToolTipText());
+        onEdt(() -> {
+            colour.setText("green");
+            colour.postActionEvent();
+        });
+
+        assertThat(onEdt(() -> colour.getText())).isEqualTo("green");
+        assertThat(onEdt(() -> markedRed(colour))).isTrue();
+        assertThat(onEdt(() -> colour.getToolTipText())).contains("is not #rrggbb");
+
+        onEdt(() -> {
+            colour.setText("#00ff00");
+            colour.postActionEvent();
+        });
+        assertThat(onEdt(() -> markedRed(colour))).isFalse();
+        assertThat(onEdt(() -> colour.getToolTipText())).isEqualTo(normalTip);
+    }
+
     @Test
     void enterAndEscapeInAFieldGiveTheKeyboardBackToTheBoard() {
         JTextField gravity = field("gravity");

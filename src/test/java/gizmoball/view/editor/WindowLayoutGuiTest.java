@@ -1,0 +1,104 @@
+package gizmoball.view.editor;
+
+import static gizmoball.view.Gui.await;
+import static gizmoball.view.Gui.onEdt;
+import static org.assertj.core.api.Assertions.assertThat;
+
+import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.view.Gui;
+import java.awt.Component;
+import java.awt.Rectangle;
+import java.awt.Window;
+import java.util.Arrays;
+import java.util.Optional;
+import javax.swing.AbstractButton;
+import javax.swing.JButton;
+import javax.swing.JColorChooser;
+import javax.swing.JDialog;
+import javax.swing.JScrollPane;
+import javax.swing.SwingUtilities;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+
+/** Issue 23, items 14 and 16: the smallest window, the side panels' scroll bars, the colour chooser's place. */
+class WindowLayoutGuiTest {
+    private BuildWindow w;
+
+    @BeforeEach
+    void open() {
+        w = BuildWindow.open();
+    }
+
+    @AfterEach
+    void close() {
+        for (Window window : Window.getWindows()) {
+            onEdt(window::dispose);
+        }
+    }
+
+    private JScrollPane side(Component inside) {
+        return onEdt(() -> (JScrollPane) SwingUtilities.getAncestorOfClass(JScrollPane.class, inside));
+    }
+
+    /** Item 14: at 400 px wide the board was gone and Play and Build off screen; now the window stops short. */
+    @Test
+    void theWindowStopsAtASizeWhereBuildModeIsWhole() {
+        onEdt(() -> w.window.setSize(400, 300));
+        await("the window to be laid out", () -> w.window.getWidth() >= 400 && w.panel.getWidth() > 0);
+        onEdt(() -> w.window.validate());
+
+        Rectangle window = onEdt(() -> new Rectangle(w.window.getSize()));
+        assertThat(window.width).isEqualTo(onEdt(() -> w.window.getMinimumSize().width)).isGreaterThan(400);
+        assertThat(onEdt(() -> Math.min(w.panel.getWidth(), w.panel.getHeight()))).as("board view")
+                .isGreaterThanOrEqualTo(240);
+        JScrollPane east = side(w.build.properties());
+        JScrollPane west = side(w.build.palette());
+        assertThat(onEdt(() -> east.getWidth())).isGreaterThanOrEqualTo(onEdt(() -> w.build.properties()
+                .getPreferredSize().width));
+        assertThat(onEdt(() -> west.getViewport().getWidth())).isGreaterThanOrEqualTo(onEdt(() -> w.build.palette()
+                .getPreferredSize().width));
+        for (String button : new String[] {"Play", "Build"}) {
+            AbstractButton b = onEdt(() -> Gui.find(w.window.toolBar(), AbstractButton.class,
+                    x -> button.equals(x.getText())).orElseThrow());
+            Rectangle bounds = onEdt(() -> SwingUtilities.convertRectangle(b.getParent(), b.getBounds(),
+                    w.window.getContentPane()));
+            assertThat(bounds.x + bounds.width).as(button).isLessThanOrEqualTo(onEdt(() ->
+                    w.window.getContentPane().getWidth()));
+        }
+    }
+
+    /** Item 16: a side that fits shows no scroll bar. */
+    @Test
+    void aSideThatFitsHasNoScrollBar() {
+        onEdt(() -> w.window.setSize(1280, 1000));
+        await("the window to grow", () -> w.window.getHeight() >= 1000);
+        onEdt(() -> w.window.validate());
+
+        assertThat(onEdt(() -> side(w.build.palette()).getVerticalScrollBar().isVisible())).isFalse();
+        assertThat(onEdt(() -> side(w.build.properties()).getVerticalScrollBar().isVisible())).isFalse();
+    }
+
+    /** Item 16: the colour chooser opens centred on the window, not beside it. */
+    @Test
+    void theColourChooserOpensCentredOnTheWindow() {
+        onEdt(() -> w.board.addGizmo(GizmoKind.SQUARE, "S1", 3, 3));
+        onEdt(() -> w.build.controller().select("S1"));
+        JButton choose = onEdt(() -> EditorGui.find(w.build.properties(), JButton.class, "gizmo.colour.choose"));
+        SwingUtilities.invokeLater(() -> choose.doClick(0));
+        await("the chooser", () -> chooser().isPresent());
+        JDialog dialog = chooser().orElseThrow();
+
+        Rectangle window = onEdt(() -> w.window.getBounds());
+        Rectangle chooser = onEdt(() -> dialog.getBounds());
+        assertThat(Math.abs(chooser.getCenterX() - window.getCenterX())).isLessThan(40);
+        assertThat(Math.abs(chooser.getCenterY() - window.getCenterY())).isLessThan(40);
+    }
+
+    private static Optional<JDialog> chooser() {
+        return Arrays.stream(Window.getWindows())
+                .filter(x -> x instanceof JDialog d && d.isShowing()
+                        && Gui.find(d.getContentPane(), JColorChooser.class, c -> true).isPresent())
+                .map(JDialog.class::cast).findFirst();
+    }
+}
