@@ -21,7 +21,7 @@ import physics.Geometry.VectPair;
  * window {@code [0, maximumForesight]} and report only contacts inside it; see {@link RotatingContactSearch}.
  * <p>
  * At about 490 lines it is over the project's 400: it is the API's one implementation of the whole
- * {@link GeometryInterface}, each method a closed form with its argument checks, which the API fixes in one
+ * {@link GeometryInterface}, each method a closed form with its degenerate cases, which the API fixes in one
  * class; the search of the rotating methods has a class of its own.
  */
 public class GeometryImpl implements GeometryInterface {

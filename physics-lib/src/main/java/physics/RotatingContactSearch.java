@@ -3,7 +3,8 @@ package physics;
 /**
  * Earliest contact of a moving ball with an obstacle turning about a pivot: the face of a segment [a, b] (the
  * meaning of {@link GeometryImpl#timeUntilWallCollision}, turning), or a circle. Written from the following
- * mathematics.
+ * mathematics. The face searched is closed; the static face's half-open end b differs from it only for a contact
+ * whose foot lands exactly on b, which a turning segment meets with probability zero.
  * <p>
  * <b>Frame.</b> The obstacle at time t is the initial one turned by w t about the pivot p, so the ball centre
  * c0 + v t meets it exactly when q(t) = p + R(-w t) u(t), u(t) = c0 + v t - p, meets the initial obstacle. In that

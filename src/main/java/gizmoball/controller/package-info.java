@@ -1,2 +1,5 @@
-/** Input into board calls: the game loop and speed, key forwarding, file commands, modal pause, settings. */
+/**
+ * Input into board calls: the game loop and speed (and watching a replay), key forwarding, file commands, the Game
+ * menu's games (new game, game over, high scores, watch, save replay), modal pause, settings.
+ */
 package gizmoball.controller;

@@ -1,2 +1,5 @@
-/** The Swing views of play: the window, the board view, the status line, dialogs and help. */
+/**
+ * The Swing views of play: the window, the board view, the status line, the score panel and launch hint, dialogs
+ * (game over, high scores) and help.
+ */
 package gizmoball.view;

@@ -10,6 +10,7 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
 import java.util.function.Function;
+import java.util.function.Predicate;
 
 import physics.Circle;
 import physics.Geometry;
@@ -53,16 +54,21 @@ final class ContactCluster {
 
     private final List<Ball> balls = new ArrayList<>();
     private final List<Row> rows = new ArrayList<>();
+    /** L: how near counts as touching for this cluster. */
+    private double touching;
 
     private ContactCluster() {
     }
 
     /**
      * The cluster of {@code seeds} as they are now; {@code motion} gives the velocity each ball moves with this tick
-     * (none while asleep).
+     * (none while asleep); a ball that {@code movable} refuses (one that moves no more in this tick) is taken as a
+     * surface. Surfaces and balls within {@code reach} of a ball count as touching it: at least {@link #TOUCHING}.
      */
-    static ContactCluster around(LoopView view, List<Ball> seeds, Function<Ball, Vect> motion) {
+    static ContactCluster around(LoopView view, List<Ball> seeds, Function<Ball, Vect> motion,
+                                 Predicate<Ball> movable, double reach) {
         ContactCluster cluster = new ContactCluster();
+        cluster.touching = Math.max(TOUCHING, reach);
         Set<Ball> members = new LinkedHashSet<>(seeds);
         cluster.balls.addAll(members);
         for (int i = 0; i < cluster.balls.size(); i++) {
@@ -70,7 +76,7 @@ final class ContactCluster {
             cluster.surfaces(view, i, ball);
             for (Ball other : view.balls()) {
                 if (other == ball || other.isCaptured() || view.passingThrough(ball, other)
-                        || gap(ball.position(), other.position(), 2 * Arena.BALL_RADIUS) > TOUCHING) {
+                        || gap(ball.position(), other.position(), 2 * Arena.BALL_RADIUS) > cluster.touching) {
                     continue;
                 }
                 int j = cluster.balls.indexOf(other);
@@ -78,7 +84,7 @@ final class ContactCluster {
                     continue;   // its row was made from the other side
                 }
                 Vect normal = ball.position().minus(other.position()).unitSize();
-                if (j < 0 && cluster.balls.size() < MAX_BALLS) {
+                if (j < 0 && cluster.balls.size() < MAX_BALLS && movable.test(other)) {
                     cluster.balls.add(other);
                     j = cluster.balls.size() - 1;
                 }
@@ -105,7 +111,7 @@ final class ContactCluster {
         for (int side = 0; side < CollisionDetector.OUTER_WALLS.size(); side++) {
             still(index, p, CollisionDetector.OUTER_WALLS.get(side), new ContactRef.Wall(side), null);
         }
-        double reach = Arena.BALL_RADIUS + TOUCHING;
+        double reach = Arena.BALL_RADIUS + touching;
         for (GizmoBase gizmo : view.index().within(p.x() - reach, p.y() - reach, p.x() + reach, p.y() + reach)) {
             if (gizmo instanceof Absorber) {
                 continue;   // what touches an absorber is captured by it, not held
@@ -120,7 +126,7 @@ final class ContactCluster {
             }
             for (int i = 0; i < shape.circles().size(); i++) {
                 Circle circle = shape.circles().get(i);
-                if (gap(p, circle.getCenter(), circle.getRadius() + Arena.BALL_RADIUS) <= TOUCHING) {
+                if (gap(p, circle.getCenter(), circle.getRadius() + Arena.BALL_RADIUS) <= touching) {
                     rows.add(new Row(index, new Other.Still(new ContactRef.Part(gizmo.name(), true, i), gizmo),
                             p.minus(circle.getCenter()).unitSize(), 0, gizmo.reflectionCoefficient()));
                 }
@@ -130,7 +136,7 @@ final class ContactCluster {
 
     private void still(int index, Vect p, LineSegment segment, ContactRef ref, GizmoBase gizmo) {
         Vect foot = Geometry.perpendicularPoint(segment, p);
-        if (foot != null && gap(p, foot, Arena.BALL_RADIUS) <= TOUCHING) {
+        if (foot != null && gap(p, foot, Arena.BALL_RADIUS) <= touching) {
             rows.add(new Row(index, new Other.Still(ref, gizmo), p.minus(foot).unitSize(), 0,
                     gizmo == null ? 1.0 : gizmo.reflectionCoefficient()));
         }
@@ -141,7 +147,7 @@ final class ContactCluster {
         double omega = flipper.angularVelocity();
         for (LineSegment side : shape.segments()) {
             Vect foot = Geometry.perpendicularPoint(side, p);
-            if (foot != null && gap(p, foot, Arena.BALL_RADIUS) <= TOUCHING) {
+            if (foot != null && gap(p, foot, Arena.BALL_RADIUS) <= touching) {
                 Vect normal = p.minus(foot).unitSize();
                 rows.add(new Row(index, new Other.Swinging(flipper), normal,
                         CollisionDetector.surfaceVelocity(pivot, omega, foot).dot(normal),
@@ -149,7 +155,7 @@ final class ContactCluster {
             }
         }
         for (Circle end : shape.circles()) {
-            if (gap(p, end.getCenter(), end.getRadius() + Arena.BALL_RADIUS) <= TOUCHING) {
+            if (gap(p, end.getCenter(), end.getRadius() + Arena.BALL_RADIUS) <= touching) {
                 Vect normal = p.minus(end.getCenter()).unitSize();
                 Vect point = end.getCenter().plus(normal.times(end.getRadius()));
                 rows.add(new Row(index, new Other.Swinging(flipper), normal,

@@ -21,7 +21,9 @@ import java.util.Arrays;
  *     straight back out.</li>
  * </ol>
  * The restitution of one contact can close another (a ball sent back into the one behind it): the next round takes
- * it, until no contact closes faster than rounding.
+ * it, until no contact closes faster than rounding. A round after the first whose compression stops every ball dead
+ * is a jammed cluster (balls filling a pocket): it ends at rest; so does, after {@link #MAX_IMPACT_ROUNDS} rounds, what
+ * still rings.
  * A projection onto a convex set that holds the still velocities never adds kinetic energy, and with one coefficient
  * for every contact of still surfaces a round's restitution keeps it exactly (the compression impulse is orthogonal to
  * the compressed velocity). Where contacts that only settled in the round make the restitution add energy, it is
@@ -30,8 +32,12 @@ import java.util.Arrays;
  * cluster is infeasible: the caller stalls those surfaces and solves again.
  */
 final class NormalImpulses {
-    /** Rounds of impacts before the last comes to rest (a guard): elastic bounces in a wedge of 0.01 degree. */
-    private static final int MAX_IMPACT_ROUNDS = 20_000;
+    /**
+     * Rounds of impacts after which what still closes takes the impact inelastically: far more than a row of
+     * {@link ContactCluster#MAX_BALLS} touching balls needs to pass an impact along and back. Only balls ringing in a
+     * pocket they nearly fill go on longer; their limit, with any loss at all, is rest.
+     */
+    private static final int MAX_IMPACT_ROUNDS = 256;
     /** Sweeps of projected Gauss-Seidel before it counts as not converging. */
     private static final int MAX_SWEEPS = 10_000;
     /** Changes of the active set before the solve counts as not settling (each adds or drops one row). */
@@ -76,10 +82,9 @@ final class NormalImpulses {
 
     /**
      * What the solve found: the balls' velocities; for each row the largest compression impulse it took in any round
-     * of impacts (above the impact impulse: a real impact); whether every round had an answer within the speed limit;
-     * whether the rounds of impacts ended (else the last round came to rest, a guard).
+     * of impacts (above the impact impulse: a real impact); whether every round had an answer within the speed limit.
      */
-    record Result(double[] vx, double[] vy, double[] compression, boolean feasible, boolean ended) {
+    record Result(double[] vx, double[] vy, double[] compression, boolean feasible) {
     }
 
     /**
@@ -96,7 +101,7 @@ final class NormalImpulses {
         double[] largest = new double[rows];
         for (int round = 0; round < MAX_IMPACT_ROUNDS; round++) {
             if (!anyClosing()) {
-                return new Result(vx, vy, largest, withinLimit(speedLimit), true);
+                return new Result(vx, vy, largest, withinLimit(speedLimit));
             }
             double[] before = vx.clone();
             double[] beforeY = vy.clone();
@@ -104,10 +109,16 @@ final class NormalImpulses {
             // however large the impulses (a ball sliding past another at a tilt of 1e-4 meets it at 1e-4 of its speed).
             boolean impacts = anyClosingFaster(impact);
             if (!project(speedLimit)) {
-                return new Result(vx, vy, largest, false, true);
+                return new Result(vx, vy, largest, false);
             }
             double[] cx = vx.clone();
             double[] cy = vy.clone();
+            if (round > 0 && still(cx, cy)) {
+                // Sent back by its last round's restitution into contacts that stop it dead again: the cluster is
+                // jammed (balls filling a pocket), and bounce after bounce would ring in place for ever. Its limit
+                // is rest.
+                return new Result(vx, vy, largest, true);
+            }
             double[] rx = new double[balls];
             double[] ry = new double[balls];
             double weighted = 0;
@@ -132,7 +143,16 @@ final class NormalImpulses {
             }
         }
         boolean feasible = project(speedLimit) && withinLimit(speedLimit);
-        return new Result(vx, vy, largest, feasible, false);
+        return new Result(vx, vy, largest, feasible);
+    }
+
+    private boolean still(double[] x, double[] y) {
+        for (int k = 0; k < balls; k++) {
+            if (Math.abs(x[k]) > SLOP || Math.abs(y[k]) > SLOP) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** How much one unit of impulse on the row changes what it closes by: 1 on a surface, 2 between two balls. */

@@ -70,6 +70,12 @@ public final class TickRun {
      * only itself, never a ball elsewhere on the board.
      */
     private static final int MAX_COLLISIONS_OF_A_BALL = 1_000;
+    /** Collisions of a ball in one tick, each soon after the last, that make it a rattle solved as a cluster. */
+    private static final int RATTLE_COLLISIONS = 8;
+    /** Seconds: collisions of one ball this close together are a rattle. */
+    private static final double RATTLE_TIME = 1e-3;
+    /** L: the farthest a rattling ball's cluster reaches for what it nearly touches. */
+    private static final double RATTLE_REACH = 1e-3;
 
     /** A ball and a flipper, for counting how often the flipper hits the ball within one tick. */
     private record Strike(Ball ball, Flipper flipper) {
@@ -672,9 +678,12 @@ public final class TickRun {
 
     /**
      * The cluster of touching contacts a collision must be solved with at once, or null when the collision is a
-     * contact of its own. A collision at the very moment of a ball's last one is a chain through touching contacts
-     * (docs/design.md, "Contact clusters"): one simultaneous solve ends it, where one contact at a time would go on
-     * at no time apart.
+     * contact of its own (docs/design.md, "Contact clusters"). A collision at the very moment of a ball's last one is a
+     * chain through touching contacts; one simultaneous solve ends it, where one contact at a time would go on at no
+     * time apart. A ball that has collided {@link #RATTLE_COLLISIONS} times in the tick and again within
+     * {@link #RATTLE_TIME} is rattling between surfaces it nearly touches (a ball in the apex of a narrow pocket,
+     * without gravity to settle it): the surfaces within twice the way it went since count as touching it, so one
+     * solve ends the rattle as well.
      */
     private ContactCluster clusterToSolve(Collision collision) {
         Contact contact = collision.contact();
@@ -684,10 +693,22 @@ public final class TickRun {
         }
         Ball ball = collision.ball();
         Ball other = contact instanceof Contact.OtherBall on ? on.other() : null;
-        if (!again(ball) && (other == null || !again(other))) {
+        double reach;
+        if (again(ball) || other != null && again(other)) {
+            reach = ContactCluster.TOUCHING;
+        } else if (rattling(ball)) {
+            reach = Math.min(RATTLE_REACH, 2 * ball.velocity().length() * (elapsed - lastCollisionAt.get(ball)));
+        } else {
             return null;
         }
-        return ContactCluster.around(view, other == null ? List.of(ball) : List.of(ball, other), detector::motion);
+        return ContactCluster.around(view, other == null ? List.of(ball) : List.of(ball, other), detector::motion,
+                candidate -> !finished.contains(candidate), reach);
+    }
+
+    private boolean rattling(Ball ball) {
+        Double last = lastCollisionAt.get(ball);
+        return last != null && elapsed - last <= RATTLE_TIME
+                && collisionsOf.getOrDefault(ball, 0) >= RATTLE_COLLISIONS;
     }
 
     private boolean again(Ball ball) {
@@ -714,9 +735,6 @@ public final class TickRun {
                 }
             }
             result = solve(cluster, stalled);
-        }
-        if (!result.ended()) {
-            wedged++;   // guard (counted): impacts that do not end; the last round came to rest
         }
         boolean woke = false;
         for (int k = 0; k < balls.size(); k++) {

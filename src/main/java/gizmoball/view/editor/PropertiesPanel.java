@@ -80,7 +80,7 @@ public final class PropertiesPanel extends JPanel {
     private final NumberField balls = new NumberField("game.balls");
     private final JTextField extraBall = new JTextField(7);
     private final NumberField points = new NumberField("gizmo.points");
-    private final JCheckBox drain = new JCheckBox("Drain: a ball it captures is lost");
+    private final JCheckBox drain = new JCheckBox("Drain: its balls are lost");
     private final JLabel selection = new JLabel();
     private final NumberField ballX = new NumberField("ball.x");
     private final NumberField ballY = new NumberField("ball.y");
@@ -253,6 +253,7 @@ public final class PropertiesPanel extends JPanel {
         row(pointsRow, 0, "Points", points);
         p.add(pointsRow, wide(constraints(0, 3)));
         drain.setName("gizmo.drain");
+        drain.setToolTipText("A ball this absorber captures is lost to the game; the next one waits in it");
         drain.addActionListener(e -> controller.selectedGizmo().ifPresent(g -> {
             controller.setDrain(g.name(), drain.isSelected());
             focusBoard.run();

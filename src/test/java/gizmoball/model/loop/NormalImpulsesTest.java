@@ -73,7 +73,6 @@ class NormalImpulsesTest {
                 new double[] {4});
         assertThat(half.vy()[0]).isCloseTo(-2, within(EXACT));
         assertThat(half.feasible()).isTrue();
-        assertThat(half.ended()).isTrue();
     }
 
     @Test
