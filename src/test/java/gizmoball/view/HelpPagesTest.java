@@ -16,15 +16,15 @@ import javax.swing.JMenuItem;
 import javax.swing.KeyStroke;
 import org.junit.jupiter.api.Test;
 
-/** The help pages say what the game has, and the README says the same (no display needed). */
+/** The help pages say what the game has, and the documents say the same (no display needed). */
 class HelpPagesTest {
     @Test
-    void theBuildModePageListsEveryToolWithItsKeyAsTheReadmeDoes() throws Exception {
+    void theBuildModePageListsEveryToolWithItsKeyAsTheDocumentsDo() throws Exception {
         String page = HelpPages.buildMode();
-        String readme = Files.readString(Path.of("README.md"));
+        String documented = Files.readString(Path.of("docs", "build-mode.md"));
         for (Tool tool : Tool.values()) {
             assertThat(page).contains(tool.labelWithShortcut(), tool.hint());
-            assertThat(readme).as("README's build-mode table").contains(tool.labelWithShortcut());
+            assertThat(documented).as("docs/build-mode.md's table").contains(tool.labelWithShortcut());
         }
     }
 
