@@ -22,7 +22,9 @@ import java.text.NumberFormat;
 import java.time.Clock;
 import java.time.LocalDate;
 import java.util.Locale;
+import java.util.Optional;
 import java.util.OptionalInt;
+import java.util.OptionalLong;
 import javax.swing.JFileChooser;
 import javax.swing.SwingUtilities;
 import javax.swing.filechooser.FileNameExtensionFilter;
@@ -77,7 +79,12 @@ public final class GameCommands {
         if (change != BoardChange.TICK) {
             // A reset or a load: a new game on the board.
             gameOverSeen = board.game().isOver();
-        } else if (!gameOverSeen && !loop.isWatching() && board.game().isGame() && board.game().isOver()) {
+            return;
+        }
+        if (board.game().extraBallTick().equals(OptionalLong.of(board.ticks()))) {
+            window.statusLine().showMessage("Extra ball!");
+        }
+        if (!gameOverSeen && !loop.isWatching() && board.game().isGame() && board.game().isOver()) {
             gameOverSeen = true;
             // After the tick's own listeners (the views) have seen it, and outside the tick.
             SwingUtilities.invokeLater(this::gameOver);
@@ -126,7 +133,7 @@ public final class GameCommands {
     /** The best of the board as built in the score panel. */
     private void showBest() {
         HighScoreTable table = store.load(asBuilt()).table();
-        table.best().ifPresentOrElse(best -> scorePanel.setBest(java.util.Optional.of(best.name()), best.score()),
+        table.best().ifPresentOrElse(best -> scorePanel.setBest(Optional.of(best.name()), best.score()),
                 scorePanel::clearBest);
     }
 

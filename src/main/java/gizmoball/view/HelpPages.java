@@ -3,6 +3,9 @@ package gizmoball.view;
 import gizmoball.boardfile.KeyCodes;
 import gizmoball.editor.Tool;
 import gizmoball.model.Board;
+import gizmoball.model.game.GameRules;
+import gizmoball.model.game.Points;
+import gizmoball.model.gizmo.GizmoKind;
 import java.awt.BorderLayout;
 import java.awt.Dimension;
 import java.awt.FlowLayout;
@@ -42,7 +45,8 @@ final class HelpPages {
                 .append("<p>Press <b>Start</b> (Ctrl+G) and play with the board's keys. Holding a key keeps a")
                 .append(" flipper up; keys reach the board while its window has the focus. <b>Stop</b> (Ctrl+H)")
                 .append(" pauses, <b>Tick</b> (Ctrl+T) steps once while stopped, <b>Reset</b> (Ctrl+Shift+R)")
-                .append(" puts the board back as loaded or built.</p><h3>Keys of this board</h3>");
+                .append(" puts the board back as loaded or built.</p><h3>The game</h3><p>")
+                .append(escape(game(board.gameRules()))).append("</p><h3>Keys of this board</h3>");
         if (keys.isEmpty()) {
             html.append("<p>This board binds no keys.</p>");
         } else {
@@ -59,6 +63,22 @@ final class HelpPages {
         html.append("</table><p>The title shows * while there are unsaved changes; New, Open, Reload and Quit")
                 .append(" ask first.</p></body></html>");
         return html.toString();
+    }
+
+    /** What this board's game is, from its rules. */
+    static String game(GameRules rules) {
+        String scoring = "A real hit scores the gizmo's points (unless the board gives it its own: circle "
+                + Points.defaultFor(GizmoKind.CIRCLE) + ", triangle " + Points.defaultFor(GizmoKind.TRIANGLE)
+                + ", square " + Points.defaultFor(GizmoKind.SQUARE) + ", others 0).";
+        if (!rules.isGame()) {
+            return "This board has no drain: it is a sandbox, which never ends. " + scoring;
+        }
+        return "A game of " + rules.ballsPerGame() + (rules.ballsPerGame() == 1 ? " ball" : " balls") + ": a ball"
+                + " captured by the drain (" + String.join(", ", rules.drains().stream().sorted().toList())
+                + ") is lost, and the next waits there for the drain's key."
+                + (rules.extraBallAt().isPresent() ? " An extra ball at " + rules.extraBallAt().getAsLong()
+                + " points." : "") + " " + scoring + " Game > New game (Ctrl+Shift+N) starts again; Game > High"
+                + " scores shows the board's ten best, whose games Watch plays again.";
     }
 
     static String buildMode() {

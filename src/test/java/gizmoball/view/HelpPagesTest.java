@@ -3,6 +3,7 @@ package gizmoball.view;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.editor.Tool;
+import gizmoball.boardfile.BoardFiles;
 import gizmoball.model.Board;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.gizmo.GizmoKind;
@@ -49,6 +50,14 @@ class HelpPagesTest {
 
         assertThat(page).contains(KeyEvent.getKeyText(KeyEvent.VK_Z) + ": left flipper LF (hold)");
         assertThat(page).contains("Start (Ctrl+G), Reset (Ctrl+Shift+R), About");
+    }
+
+    @Test
+    void howToPlaySaysWhatTheBoardsGameIs() throws Exception {
+        assertThat(HelpPages.howToPlay(new JMenuBar(), new Board())).contains("it is a sandbox, which never ends");
+        Board game = BoardFiles.load(Path.of("boards", "default.txt"));
+        assertThat(HelpPages.howToPlay(new JMenuBar(), game)).contains("A game of 3 balls: a ball captured by the"
+                + " drain (A) is lost", "An extra ball at 1500 points.", "circle 50, triangle 25, square 10");
     }
 
     @Test

@@ -339,8 +339,9 @@ final class Contacts {
     /**
      * The normal away from a surface point (or circle centre) the ball touches, or null. A ball found slightly inside
      * is put back to touching; one that drifted off by more than the contact tolerance but less than {@code gap},
-     * slowly, from a surface below or beside it, keeps the contact and loses the drift. It is not moved back: that
-     * could push it into its other neighbours; it lies a hair above the surface instead (at most g dt^2).
+     * slowly, from a surface below or beside it, keeps the contact and loses the drift, and is put back onto the
+     * surface where that pushes it into nothing else; where it would, it lies a hair above the surface instead (at
+     * most g dt^2). A ball left hovering would sit still in mid-air, a visible gap under a resting ball.
      */
     private Vect touching(Ball ball, Vect from, double radius, double gap) {
         Vect offset = ball.position().minus(from);
@@ -356,10 +357,36 @@ final class Contacts {
                 return null;
             }
             ball.setVelocity(ball.velocity().minus(normal.times(Math.max(0, leaving))));
+            Vect onSurface = from.plus(normal.times(touch));
+            if (clearAt(ball, onSurface)) {
+                ball.moveTo(onSurface);
+            }
         } else if (touch - distance > SNAP_DEPTH) {
             ball.moveTo(from.plus(normal.times(touch)));
         }
         return normal;
+    }
+
+    /** Whether the ball could lie at {@code p} without entering a wall, a gizmo or another ball. */
+    private boolean clearAt(Ball ball, Vect p) {
+        double r = Arena.BALL_RADIUS;
+        double inner = r - Tolerances.CONTACT;
+        if (p.x() < inner || p.y() < inner || p.x() > Arena.SIZE - inner || p.y() > Arena.SIZE - inner) {
+            return false;
+        }
+        for (GizmoBase gizmo : view.index().within(p.x() - r, p.y() - r, p.x() + r, p.y() + r)) {
+            if (gizmo.signedDistance(p) < inner) {
+                return false;
+            }
+        }
+        double apart = 2 * r - Tolerances.CONTACT;
+        for (Ball other : view.balls()) {
+            if (other != ball && !other.isCaptured() && !view.passingThrough(ball, other)
+                    && p.distanceSquared(other.position()) < apart * apart) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** Every still surface the ball touches now becomes a contact of it. */
