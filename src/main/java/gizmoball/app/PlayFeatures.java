@@ -24,12 +24,14 @@ import java.awt.event.KeyEvent;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.function.Consumer;
 import javax.swing.Action;
 import javax.swing.ButtonGroup;
 import javax.swing.JCheckBoxMenuItem;
 import javax.swing.JMenu;
 import javax.swing.JMenuBar;
+import javax.swing.JMenuItem;
 import javax.swing.JRadioButtonMenuItem;
 import javax.swing.KeyStroke;
 import javax.swing.SwingUtilities;
@@ -75,6 +77,7 @@ public final class PlayFeatures {
         features.installSound();
         features.installView();
         features.rememberFolder();
+        features.rememberRecentFiles();
         features.rememberPlace();
         return features;
     }
@@ -219,6 +222,31 @@ public final class PlayFeatures {
         if (!settings.lastFolder().map(folder::equals).orElse(false)) {
             settings.setLastFolder(folder);
         }
+    }
+
+    /** File > Open recent: the boards last opened or saved, newest first, remembered between runs. */
+    private void rememberRecentFiles() {
+        JMenu file = menu(window.menus(), "File");
+        JMenu recent = new JMenu("Open recent");
+        recent.setName("file.recent");
+        file.insert(recent, 2);
+        Runnable list = () -> {
+            recent.removeAll();
+            List<Path> paths = settings.recentFiles();
+            for (int i = 0; i < paths.size(); i++) {
+                Path path = paths.get(i);
+                JMenuItem item = new JMenuItem((i + 1) + "  " + path.getFileName() + "   " + path.getParent());
+                item.setToolTipText(path.toString());
+                item.addActionListener(e -> files.openRecent(path));
+                recent.add(item);
+            }
+            recent.setEnabled(!paths.isEmpty());
+        };
+        files.addFileListener(path -> {
+            settings.addRecentFile(path);
+            list.run();
+        });
+        list.run();
     }
 
     /**

@@ -44,6 +44,7 @@ public final class BoardFileCommands {
     /** The text the shown board was read from or last saved as; null for a new board (saved canonically). */
     private AuthoredText authored;
     private final List<Consumer<Path>> folderListeners = new ArrayList<>();
+    private final List<Consumer<Path>> fileListeners = new ArrayList<>();
 
     /** Dialogs open over {@code window}; outcomes are told to {@code status} (the status line). */
     public BoardFileCommands(Component window, Consumer<String> status, GameSession session, GameLoop loop) {
@@ -65,6 +66,18 @@ public final class BoardFileCommands {
      */
     public void addFolderListener(Consumer<Path> listener) {
         folderListeners.add(listener);
+    }
+
+    /** Told each file a board was loaded from or saved to (File > Open recent lists them). */
+    public void addFileListener(Consumer<Path> listener) {
+        fileListeners.add(listener);
+    }
+
+    /** File > Open recent: the file, after asking about unsaved changes. */
+    public void openRecent(Path file) {
+        if (confirmDiscard("open another board")) {
+            open(file);
+        }
     }
 
     public void newBoard() {
@@ -274,6 +287,7 @@ public final class BoardFileCommands {
             boolean wrote = BoardFiles.save(plan, file);
             session.saved(file);
             authored = plan.saved();
+            fileListeners.forEach(l -> l.accept(file));
             status.accept(wrote ? "Saved " + file.getFileName() : file.getFileName() + " already holds this board:"
                     + " nothing to write");
             return true;
@@ -288,6 +302,7 @@ public final class BoardFileCommands {
         session.loadWithout(loaded.board(), file, loaded.skippedLines().size());
         authored = loaded.authored();
         status.accept(message);
+        fileListeners.forEach(l -> l.accept(file));
     }
 
     /** Shows a lower-case sentence of FileErrors (shared with the headless runner) as the player reads it. */

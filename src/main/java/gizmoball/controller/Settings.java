@@ -5,13 +5,16 @@ import java.awt.Rectangle;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Optional;
+import java.util.stream.Collectors;
 import java.util.prefs.BackingStoreException;
 import java.util.prefs.Preferences;
 
 /**
  * The player's settings that outlive a run: sound, overlay, trails, aim preview, speed, the last folder
- * a board was opened from or saved to, and the window's place and size. Stored with java.util.prefs
+ * chosen in the file picker, the boards opened or saved last, and the window's place and size. Stored with java.util.prefs
  * (on Linux under the user's home, never next to the program). A value that is missing or unreadable
  * reads as its default.
  * <p>
@@ -29,6 +32,9 @@ public final class Settings {
     private static final String SPEED = "speed";
     private static final String LAST_FOLDER = "lastFolder";
     private static final String WINDOW = "window";
+    private static final String RECENT = "recentFiles";
+    /** File > Open recent lists this many boards. */
+    public static final int RECENT_FILES = 10;
     private static final String PLAYER = "playerName";
     private static final String HIGH_SCORES = "highscores";
 
@@ -119,6 +125,30 @@ public final class Settings {
 
     public void setLastFolder(Path folder) {
         put(LAST_FOLDER, folder.toAbsolutePath().normalize().toString());
+    }
+
+    /** The boards last opened or saved, newest first, at most {@value #RECENT_FILES}; ones gone from disk left out. */
+    public List<Path> recentFiles() {
+        List<Path> files = new ArrayList<>();
+        for (String line : node.get(RECENT, "").split("\n")) {
+            try {
+                if (!line.isBlank() && Files.isRegularFile(Path.of(line))) {
+                    files.add(Path.of(line));
+                }
+            } catch (InvalidPathException e) {
+                // a line no path can be read from: skipped, as a file gone is
+            }
+        }
+        return files;
+    }
+
+    /** {@code file} becomes the newest of the recent files (once, however often it is used). */
+    public void addRecentFile(Path file) {
+        Path absolute = file.toAbsolutePath().normalize();
+        List<Path> files = new ArrayList<>(recentFiles());
+        files.remove(absolute);
+        files.add(0, absolute);
+        put(RECENT, files.stream().limit(RECENT_FILES).map(Path::toString).collect(Collectors.joining("\n")));
     }
 
     /** The window's last place and size on the screen: x, y, width and height, if known. */

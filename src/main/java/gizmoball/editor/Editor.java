@@ -500,6 +500,95 @@ public final class Editor {
         return false;
     }
 
+    /** Moves a gizmo to the cell typed for it (one undo step); the same cell is no edit. */
+    public boolean moveGizmoTo(String gizmo, int x, int y) {
+        Optional<Gizmo> g = board.gizmo(gizmo);
+        if (g.isEmpty()) {
+            return refuse("No gizmo named " + gizmo);
+        }
+        if (g.get().x() == x && g.get().y() == y) {
+            return true;
+        }
+        return edit("Moved " + gizmo + " to (" + x + "," + y + ")", b -> b.moveGizmo(gizmo, x, y));
+    }
+
+    /** Renames a gizmo or ball; its connections, key bindings, colour and points follow (one undo step). */
+    public boolean rename(String name, String newName) {
+        String typed = newName.strip();
+        if (typed.equals(name)) {
+            return true;
+        }
+        boolean done = edit("Renamed " + name + " to " + typed, b -> Transfer.rename(b, name, typed));
+        if (done) {
+            selected = typed;
+            stateChanged();
+        }
+        return done;
+    }
+
+    /** The board-file text of the selection (its lines, its key bindings), for the clipboard; empty if none. */
+    public Optional<String> copySelected() {
+        Optional<String> name = selected().filter(n -> !isWalls(n));
+        if (name.isEmpty()) {
+            say("Select a gizmo or ball to copy it");
+            return Optional.empty();
+        }
+        say("Copied " + name.get());
+        return Optional.of(Transfer.copy(board, List.of(name.get())));
+    }
+
+    /** Copies the selection and deletes it (one undo step); the text for the clipboard, empty if nothing. */
+    public Optional<String> cutSelected() {
+        Optional<String> text = copySelected();
+        if (text.isPresent()) {
+            String name = selected().orElseThrow();
+            if (!edit("Cut " + name, b -> b.delete(name))) {
+                return Optional.empty();
+            }
+            selected = null;
+            stateChanged();
+        }
+        return text;
+    }
+
+    /**
+     * Pastes copied board-file text: its gizmos and balls under fresh names, with the connections and key bindings
+     * among them, where they were if that is free, else at the nearest place where all fit (one undo step). The
+     * first of them is selected.
+     */
+    public boolean paste(String text) {
+        return pasteOn(text, false, "Pasted ");
+    }
+
+    /** A copy of the selection beside it, under fresh names (one undo step), selected. */
+    public boolean duplicateSelected() {
+        Optional<String> name = selected().filter(n -> !isWalls(n));
+        if (name.isEmpty()) {
+            return refuse("Select a gizmo or ball to duplicate it");
+        }
+        return pasteOn(Transfer.copy(board, List.of(name.get())), true, "Duplicated " + name.get() + " as ");
+    }
+
+    private boolean pasteOn(String text, boolean elsewhere, String what) {
+        Optional<Board> part = Transfer.read(text);
+        if (part.isEmpty()) {
+            return refuse("Nothing to paste: the clipboard holds no board lines (such as Square S1 3 4)");
+        }
+        Optional<int[]> offset = Transfer.room(board, part.get(), elsewhere);
+        if (offset.isEmpty()) {
+            return refuse("No room on the board for what is pasted");
+        }
+        int dx = offset.get()[0];
+        int dy = offset.get()[1];
+        List<String> names = Transfer.place(board.copy(), part.get(), dx, dy);
+        boolean done = edit(what + String.join(", ", names), b -> Transfer.place(b, part.get(), dx, dy));
+        if (done) {
+            selected = names.get(0);
+            stateChanged();
+        }
+        return done;
+    }
+
     // ---- for the tool handlers ----
 
     NameGenerator names() {

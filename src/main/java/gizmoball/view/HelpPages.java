@@ -93,7 +93,17 @@ final class HelpPages {
         }
         html.append("</table><p><b>Delete</b> deletes the selection, the <b>arrow keys</b> move it,")
                 .append(" <b>Esc</b> or right-click cancels a half-done step; <b>Ctrl+Z</b> undo,")
-                .append(" <b>Ctrl+Y</b> redo. Every edit can be undone.</p></body></html>");
+                .append(" <b>Ctrl+Y</b> redo. Every edit can be undone.</p>")
+                .append("<p><b>Ctrl+C</b> copies the selection, <b>Ctrl+X</b> cuts it, <b>Ctrl+V</b> pastes and")
+                .append(" <b>Ctrl+D</b> duplicates it (Edit menu): what is copied is board-file text, so it pastes")
+                .append(" into another window or a text editor, and board lines from a text editor paste here.")
+                .append(" Pasted gizmos get fresh names, keep their connections to each other and their keys, and")
+                .append(" go where they were if that is free, else at the nearest place where they fit.</p>")
+                .append("<p>In the properties, <b>Name</b> renames the selection (its connections and keys")
+                .append(" follow) and <b>Cell x, y</b> moves a gizmo to the cell typed (Enter applies either).")
+                .append(" A value that is refused stays in its field, outlined in red, the reason as its")
+                .append(" tooltip.</p><p><b>File &gt; Open recent</b> lists the last ten boards opened or")
+                .append(" saved.</p></body></html>");
         return html.toString();
     }
 

@@ -103,4 +103,21 @@ class SettingsTest {
                     + s.windowBounds().map(Rectangle::toString).orElse("-"));
         }
     }
+
+    /** Issue 23: File > Open recent's list: newest first, once each, at most ten, files gone left out. */
+    @Test
+    void recentFilesAreTheLastTenNewestFirstEachOnceAndOnlyThoseStillThere(@TempDir Path dir) throws Exception {
+        Settings s = new Settings(node);
+        List<Path> files = new ArrayList<>();
+        for (int i = 0; i < 12; i++) {
+            files.add(java.nio.file.Files.writeString(dir.resolve("b" + i + ".txt"), "Gravity 25.0\n"));
+            s.addRecentFile(files.get(i));
+        }
+        s.addRecentFile(files.get(5));
+        java.nio.file.Files.delete(files.get(11));
+
+        assertThat(s.recentFiles()).containsExactly(files.get(5), files.get(10), files.get(9), files.get(8),
+                files.get(7), files.get(6), files.get(4), files.get(3), files.get(2));
+        assertThat(new Settings(node).recentFiles()).as("remembered").hasSize(9);
+    }
 }

@@ -138,4 +138,28 @@ class AuthorFilesGuiTest extends WindowOnFiles {
         onEdt(() -> app.build().controller().undo());
         assertThat(onEdt(window::getTitle)).isEqualTo("Gizmoball - good.txt");
     }
+
+    @Test
+    void openRecentListsTheBoardsOpenedAndReopensOne() throws Exception {
+        Path first = write("first.txt", GOOD);
+        launch(first, settings);
+        Path second = write("second.txt", "Square S9 9 9\n");
+        onEdt(() -> app.files().open(second));
+
+        javax.swing.JMenu recent = onEdt(() -> {
+            javax.swing.JMenu file = window.menus().getMenu(0);
+            for (int i = 0; i < file.getItemCount(); i++) {
+                if (file.getItem(i) != null && "file.recent".equals(file.getItem(i).getName())) {
+                    return (javax.swing.JMenu) file.getItem(i);
+                }
+            }
+            throw new AssertionError("no Open recent in " + file.getText());
+        });
+        assertThat(onEdt(() -> recent.getItemCount())).isEqualTo(2);
+        assertThat(onEdt(() -> recent.getItem(0).getText())).contains("second.txt");
+        onEdt(() -> recent.getItem(1).doClick(0));
+
+        assertThat(onEdt(() -> window.session().file())).contains(first);
+        assertThat(settings.recentFiles()).containsExactly(first, second);
+    }
 }

@@ -29,6 +29,18 @@ class HelpPagesTest {
         }
     }
 
+    /** Issue 23: the author's actions are listed in Help and in docs/build-mode.md alike. */
+    @Test
+    void theBuildModePageAndTheDocumentsListTheAuthorsActions() throws Exception {
+        String page = HelpPages.buildMode();
+        String documented = Files.readString(Path.of("docs", "build-mode.md"));
+        for (String action : new String[] {"Ctrl+C", "Ctrl+X", "Ctrl+V", "Ctrl+D", "Name", "Cell x, y",
+                "Open recent"}) {
+            assertThat(page).contains(action);
+            assertThat(documented).contains(action);
+        }
+    }
+
     @Test
     void howToPlayListsTheBoardsKeysAndEveryMenuItemWithItsShortcut() {
         Board board = new Board();

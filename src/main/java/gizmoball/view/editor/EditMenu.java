@@ -7,13 +7,19 @@ import javax.swing.JMenuItem;
 import javax.swing.JOptionPane;
 import javax.swing.KeyStroke;
 import java.awt.Component;
+import java.awt.Toolkit;
+import java.awt.datatransfer.DataFlavor;
+import java.awt.datatransfer.StringSelection;
+import java.awt.datatransfer.UnsupportedFlavorException;
+import java.io.IOException;
 import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.util.function.BooleanSupplier;
 
 /**
  * Edit menu of build mode: Undo and Redo (each saying what it would take back or bring again), Rotate and Delete
- * selection (enabled only when there is a selection they act on), Clear board (after confirmation).
+ * selection, Cut, Copy, Paste and Duplicate (enabled only when there is a selection they act on), Clear board
+ * (after confirmation).
  */
 public final class EditMenu extends JMenu {
     private final Editor controller;
@@ -22,6 +28,9 @@ public final class EditMenu extends JMenu {
     private final JMenuItem redo;
     private final JMenuItem rotate;
     private final JMenuItem delete;
+    private final JMenuItem cut;
+    private final JMenuItem copy;
+    private final JMenuItem duplicate;
 
     private EditMenu(Editor controller, Component parent, BooleanSupplier building) {
         super("Edit");
@@ -35,6 +44,16 @@ public final class EditMenu extends JMenu {
         rotate = item("Rotate selection", null, controller::rotateSelected);
         delete = item("Delete selection", null, controller::deleteSelected);
         delete.setToolTipText("Also the Delete key over the board");
+        addSeparator();
+        // The clipboard holds board-file lines: they paste into another window, or into a text editor.
+        cut = item("Cut", KeyStroke.getKeyStroke(KeyEvent.VK_X, InputEvent.CTRL_DOWN_MASK),
+                () -> controller.cutSelected().ifPresent(EditMenu::toClipboard));
+        copy = item("Copy", KeyStroke.getKeyStroke(KeyEvent.VK_C, InputEvent.CTRL_DOWN_MASK),
+                () -> controller.copySelected().ifPresent(EditMenu::toClipboard));
+        item("Paste", KeyStroke.getKeyStroke(KeyEvent.VK_V, InputEvent.CTRL_DOWN_MASK),
+                () -> controller.paste(fromClipboard()));
+        duplicate = item("Duplicate", KeyStroke.getKeyStroke(KeyEvent.VK_D, InputEvent.CTRL_DOWN_MASK),
+                controller::duplicateSelected);
         addSeparator();
         item("Clear board\u2026", null, () -> {
             int answer = JOptionPane.showConfirmDialog(parent,
@@ -65,7 +84,25 @@ public final class EditMenu extends JMenu {
         undo.setText(controller.history().undoable().map(what -> "Undo: " + what).orElse("Undo"));
         redo.setText(controller.history().redoable().map(what -> "Redo: " + what).orElse("Redo"));
         rotate.setEnabled(on && controller.selectedGizmo().isPresent());
-        delete.setEnabled(on && (controller.selectedGizmo().isPresent() || controller.selectedBall().isPresent()));
+        boolean something = controller.selectedGizmo().isPresent() || controller.selectedBall().isPresent();
+        delete.setEnabled(on && something);
+        cut.setEnabled(on && something);
+        copy.setEnabled(on && something);
+        duplicate.setEnabled(on && something);
+    }
+
+    private static void toClipboard(String text) {
+        Toolkit.getDefaultToolkit().getSystemClipboard().setContents(new StringSelection(text), null);
+    }
+
+    /** The clipboard's text, or nothing (which the editor refuses to paste, saying why). */
+    private static String fromClipboard() {
+        try {
+            Object text = Toolkit.getDefaultToolkit().getSystemClipboard().getData(DataFlavor.stringFlavor);
+            return String.valueOf(text);
+        } catch (UnsupportedFlavorException | IOException | IllegalStateException e) {
+            return "";
+        }
     }
 
     private JMenuItem item(String text, KeyStroke accelerator, Runnable action) {

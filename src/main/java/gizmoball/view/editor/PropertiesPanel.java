@@ -82,6 +82,10 @@ public final class PropertiesPanel extends JPanel {
     private final NumberField points = new NumberField("gizmo.points");
     private final JCheckBox drain = new JCheckBox("Drain: its balls are lost");
     private final JLabel selection = new JLabel();
+    private final JTextField name = new JTextField(7);
+    private final NumberField cellX = new NumberField("gizmo.x");
+    private final NumberField cellY = new NumberField("gizmo.y");
+    private final JPanel nameRows = new JPanel(new GridBagLayout());
     private final NumberField ballX = new NumberField("ball.x");
     private final NumberField ballY = new NumberField("ball.y");
     private final NumberField ballVx = new NumberField("ball.vx");
@@ -161,6 +165,15 @@ public final class PropertiesPanel extends JPanel {
             }
         }
         applyBall.setEnabled(ball.isPresent());
+        enableAll(nameRows, gizmo.isPresent() || ball.isPresent());
+        name.setText(gizmo.map(Gizmo::name).or(() -> ball.map(BallView::name)).orElse(""));
+        RefusedValue.unmark(name);
+        cellX.setEnabled(gizmo.isPresent());
+        cellY.setEnabled(gizmo.isPresent());
+        cellX.setText(gizmo.map(g -> Integer.toString(g.x())).orElse(""));
+        cellY.setText(gizmo.map(g -> Integer.toString(g.y())).orElse(""));
+        RefusedValue.unmark(cellX);
+        RefusedValue.unmark(cellY);
         enableAll(colourRows, gizmo.isPresent());
         colour.setText("");
         RefusedValue.unmark(colour);
@@ -259,6 +272,7 @@ public final class PropertiesPanel extends JPanel {
             focusBoard.run();
         }));
         p.add(drain, wide(constraints(0, 4)));
+        p.add(nameRows(), wide(constraints(0, 5)));
 
         GridBagConstraints l = constraints(0, 6);
         l.gridwidth = 2;
@@ -319,6 +333,61 @@ public final class PropertiesPanel extends JPanel {
         buttons.add(reset);
         colourRows.add(buttons, wide(constraints(0, 1)));
         return colourRows;
+    }
+
+    /** The selection's name (Enter renames it) and a gizmo's cell (Enter moves it there). */
+    private JComponent nameRows() {
+        name.setName("selection.name");
+        name.setToolTipText("Type a new name and press Enter: its connections and keys follow");
+        name.addActionListener(e -> applyName());
+        row(nameRows, 0, "Name", name);
+        JPanel cell = new JPanel(new GridBagLayout());
+        cellX.setColumns(3);
+        cellY.setColumns(3);
+        cell.add(cellX, constraints(0, 0));
+        cell.add(cellY, constraints(1, 0));
+        row(nameRows, 1, "Cell x, y", cell);
+        for (NumberField f : new NumberField[] {cellX, cellY}) {
+            f.setToolTipText("The gizmo's top-left cell; Enter moves it there");
+            f.addActionListener(e -> applyCell());
+            restoreOnEscape(f);
+        }
+        return nameRows;
+    }
+
+    private void applyName() {
+        Optional<String> selected = controller.selected().filter(n -> !controller.wallsSelected());
+        String typed = name.getText();
+        if (selected.isPresent()) {
+            if (controller.rename(selected.get(), typed)) {
+                focusBoard.run();
+            } else {
+                keepRefused(Map.of(name, typed));
+            }
+        }
+    }
+
+    private void applyCell() {
+        Optional<Gizmo> gizmo = controller.selectedGizmo();
+        Optional<double[]> v = values(cellX, cellY);
+        if (gizmo.isEmpty() || v.isEmpty()) {
+            return;
+        }
+        double x = v.get()[0];
+        double y = v.get()[1];
+        if (x != Math.rint(x) || y != Math.rint(y) || Math.abs(x) > Board.SIZE || Math.abs(y) > Board.SIZE) {
+            refuse(x != Math.rint(x) || Math.abs(x) > Board.SIZE ? cellX : cellY,
+                    "A cell is a whole number from 0 to " + (Board.SIZE - 1));
+            return;
+        }
+        Map<JTextField, String> typed = new LinkedHashMap<>();
+        typed.put(cellX, cellX.getText());
+        typed.put(cellY, cellY.getText());
+        if (controller.moveGizmoTo(gizmo.get().name(), (int) x, (int) y)) {
+            focusBoard.run();
+        } else {
+            keepRefused(typed);
+        }
     }
 
     private void applyColour(String text) {

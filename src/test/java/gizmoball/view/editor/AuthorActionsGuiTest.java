@@ -1,0 +1,92 @@
+package gizmoball.view.editor;
+
+import static gizmoball.view.Gui.onEdt;
+import static org.assertj.core.api.Assertions.assertThat;
+
+import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.loop.TriggerSource;
+import gizmoball.view.Gui;
+import java.awt.Toolkit;
+import java.awt.datatransfer.DataFlavor;
+import java.awt.datatransfer.StringSelection;
+import javax.swing.JTextField;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+
+/** Issue 23, the author's actions through the real window: the Edit menu's clipboard, Name and Cell fields. */
+class AuthorActionsGuiTest {
+    private BuildWindow w;
+
+    @BeforeEach
+    void open() {
+        w = BuildWindow.open();
+        onEdt(() -> {
+            w.board.addGizmo(GizmoKind.CIRCLE, "C1", 3, 4);
+            w.board.addGizmo(GizmoKind.LEFT_FLIPPER, "LF", 6, 16);
+            w.board.connect(TriggerSource.gizmo("C1"), "LF");
+        });
+    }
+
+    @AfterEach
+    void close() {
+        w.close();
+    }
+
+    private Gizmo gizmo(String name) {
+        return onEdt(() -> w.board.gizmo(name).orElseThrow());
+    }
+
+    @Test
+    void copyPutsBoardLinesOnTheClipboardAndPasteAndUndoWorkThroughTheEditMenu() throws Exception {
+        w.clickTool(gizmoball.editor.Tool.SELECT);
+        w.clickCell(3, 4);
+        Gui.clickMenu(w.window.menus(), "Copy");
+        String copied = (String) Toolkit.getDefaultToolkit().getSystemClipboard().getData(DataFlavor.stringFlavor);
+        assertThat(copied).contains("Circle C1 3 4");
+
+        Gui.clickMenu(w.window.menus(), "Paste");
+        assertThat(onEdt(() -> w.board.gizmo("C2"))).isPresent();
+        assertThat(onEdt(() -> w.window.getTitle())).endsWith("*");
+        Gui.clickMenu(w.window.menus(), "Undo: Pasted C2");
+        assertThat(onEdt(() -> w.board.gizmo("C2"))).isEmpty();
+
+        onEdt(() -> Toolkit.getDefaultToolkit().getSystemClipboard()
+                .setContents(new StringSelection("# from a text editor\nSquare Wall 10 10\n"), null));
+        Gui.clickMenu(w.window.menus(), "Paste");
+        assertThat(gizmo("S1").x()).as("typed board lines paste, under a fresh name").isEqualTo(10);
+    }
+
+    @Test
+    void theNameAndCellFieldsRenameAndMoveTheSelection() {
+        onEdt(() -> w.build.controller().select("C1"));
+        JTextField name = onEdt(() -> EditorGui.find(w.build.properties(), JTextField.class, "selection.name"));
+        JTextField x = onEdt(() -> EditorGui.find(w.build.properties(), JTextField.class, "gizmo.x"));
+        JTextField y = onEdt(() -> EditorGui.find(w.build.properties(), JTextField.class, "gizmo.y"));
+        assertThat(onEdt(() -> name.getText())).isEqualTo("C1");
+        assertThat(onEdt(() -> x.getText() + "," + y.getText())).isEqualTo("3,4");
+
+        onEdt(() -> {
+            name.setText("Kicker");
+            name.postActionEvent();
+        });
+        assertThat(onEdt(() -> w.board.connections())).extracting(c -> c.source().name()).containsExactly("Kicker");
+        onEdt(() -> {
+            x.setText("12");
+            y.setText("2");
+            y.postActionEvent();
+        });
+        assertThat(gizmo("Kicker").x()).isEqualTo(12);
+        assertThat(gizmo("Kicker").y()).isEqualTo(2);
+
+        onEdt(() -> {
+            x.setText("6");
+            y.setText("16");
+            y.postActionEvent();
+        });
+        assertThat(onEdt(() -> x.getText())).as("refused: LF is there; the value stays").isEqualTo("6");
+        assertThat(onEdt(() -> RefusedValue.isMarked(x) && RefusedValue.isMarked(y))).isTrue();
+        assertThat(gizmo("Kicker").x()).isEqualTo(12);
+    }
+}
