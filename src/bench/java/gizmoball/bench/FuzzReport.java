@@ -48,8 +48,9 @@ final class FuzzReport {
                         + "1/60 s each with their key scripts, checked after every tick by `gizmoball.fuzz.TickChecker` "
                         + "(geometry of its own; tolerance 1e-6 L); every tick timed by the thread's CPU clock. Balls are "
                         + "counted once per board whatever the number of ticks; energy is checked on the boards without "
-                        + "gravity, friction, flippers and absorbers. A clean board has no violation and no guard. Hovering (a "
-                        + "ball at rest in mid-air under gravity, more than 1e-6 L from everything, for two ticks) is "
+                        + "gravity, friction, flippers and absorbers. Frozen: a ball not moved over a tick though its velocity "
+                        + "would move it, with nothing within its reach in the tick. A clean board has no violation and "
+                        + "no guard. Hovering (such a ball near something, yet more than 1e-6 L from everything) is "
                         + "noted, not counted against a board.%n%n",
                 effort.boards(), effort.firstSeed(), effort.firstSeed() + effort.boards() - 1, effort.ticks()));
         md.append(table).append('\n');

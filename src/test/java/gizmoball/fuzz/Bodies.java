@@ -50,6 +50,11 @@ final class Bodies {
                 new Point(x, y + height)));
     }
 
+    /** The 2 x 2 box a flipper swings in, whatever its angle and rotation. */
+    static Solid box(Flipper flipper) {
+        return rectangle(flipper.x(), flipper.y(), flipper.width(), flipper.height());
+    }
+
     /**
      * The bar at its current angle. Before turning: a left flipper pivots at (x + 0.25, y + 0.25) and hangs down the
      * box's left edge, swinging toward the top edge (its tip from straight down toward +x); a right one mirrors it

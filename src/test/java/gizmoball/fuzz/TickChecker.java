@@ -9,15 +9,16 @@ import gizmoball.model.loop.BallView;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 
 /**
  * Checks a board in play after every tick with geometry of its own ({@link Bodies}, {@link Solid}): no NaN, no free
  * ball outside the board, inside a gizmo (a flipper at its current angle) or inside another free ball by more than
  * {@link #TOLERANCE}; on a board without gravity, friction, flippers and absorbers no kinetic energy gained beyond
- * rounding; and no ball frozen in free flight (free, awake, touching nothing, claiming a velocity, yet exactly where it
- * was a tick before). It also notes balls hovering: at rest in mid-air under gravity for two ticks (not a target of
- * issue 20; see {@link Violation.Kind#HOVERING}).
+ * rounding; and no ball frozen in free flight (free, awake, with nothing within its reach in the tick, moving, yet
+ * exactly where it was a tick before). It also notes balls hovering: kept still though moving or falling, near things
+ * but touching none (not a rule of issue 20; see {@link Violation.Kind#HOVERING}). It checks play at 1/60 s.
  *
  * <p>Play moves no gizmo but a flipper's bar, so the other gizmos are read once, when the checker is made, and filed
  * by cell; the flippers and the balls are read after every tick. Balls are read through {@link Board#balls()}, gizmos
@@ -32,6 +33,8 @@ public final class TickChecker {
     static final double STILL_SPEED = 1e-6;
     /** L: a ball farther than this from everything touches nothing. */
     static final double TOUCH_GAP = 1e-6;
+    /** s: the tick the fuzz and the reproductions play at. */
+    static final double DT = Board.DEFAULT_TICK;
 
     private static final double R = Board.BALL_RADIUS;
     private static final int SIZE = Board.SIZE;
@@ -39,15 +42,20 @@ public final class TickChecker {
     private record Body(String name, Solid solid) {
     }
 
-    /** A ball as the last check saw it, and for how many ticks before that it had not moved. */
-    private record BallAt(double x, double y, boolean captured, int stillTicks) {
+    /** A ball as the last check saw it: where, how fast, and how far from the nearest thing (exact below 2e-6 L). */
+    private record BallAt(double x, double y, double vx, double vy, boolean captured, double gap) {
     }
 
     /** The still bodies whose box, widened by a ball's radius and a margin, meets each cell. */
     private final List<List<Body>> cells = new ArrayList<>();
+    private final List<Body> still = new ArrayList<>();
     private final List<Flipper> flippers = new ArrayList<>();
+    /** The boxes flippers swing in: nothing of a flipper is ever outside its 2 x 2 box. */
+    private final List<Body> flipperBoxes = new ArrayList<>();
     private final boolean energyKept;
     private final double gravity;
+    private final double mu;
+    private final double mu2;
     private final Map<String, BallAt> before = new HashMap<>();
     private double kineticBefore;
 
@@ -65,13 +73,18 @@ public final class TickChecker {
         for (Gizmo gizmo : gizmos) {
             if (gizmo instanceof Flipper flipper) {
                 flippers.add(flipper);
+                flipperBoxes.add(new Body(flipper.name(), Bodies.box(flipper)));
                 movers = true;
                 continue;
             }
             movers |= gizmo instanceof Absorber;
-            file(new Body(gizmo.name(), Bodies.of(gizmo)));
+            Body body = new Body(gizmo.name(), Bodies.of(gizmo));
+            still.add(body);
+            file(body);
         }
         this.gravity = gravity;
+        this.mu = mu;
+        this.mu2 = mu2;
         energyKept = !movers && gravity == 0 && mu == 0 && mu2 == 0;
         // No positions yet: a ball can only be seen frozen over a tick it was checked before.
         kineticBefore = kinetic(balls.stream().filter(b -> !b.isCaptured()).toList());
@@ -126,7 +139,7 @@ public final class TickChecker {
         }
         checkPairs(free, gaps, tick, found);
         for (int i = 0; i < free.size(); i++) {
-            checkStill(free.get(i), gaps[i], tick, found);
+            checkStill(free.get(i), gaps[i], free, tick, found);
         }
         if (energyKept) {
             double kinetic = kinetic(free);
@@ -136,7 +149,11 @@ public final class TickChecker {
                         "kinetic energy " + kineticBefore + " -> " + kinetic));
             }
         }
-        remember(balls);
+        Map<String, Double> gapOf = new HashMap<>();
+        for (int i = 0; i < free.size(); i++) {
+            gapOf.put(free.get(i).name(), gaps[i]);
+        }
+        remember(balls, gapOf);
         return found;
     }
 
@@ -197,24 +214,60 @@ public final class TickChecker {
     }
 
     /**
-     * Frozen: a free, awake ball touching nothing that was free a tick ago and claims a velocity that moves it, yet is
-     * exactly where it was (the loop stopped it in mid-air). Hovering: such a ball at rest under gravity, still where it
-     * was two ticks ago (at the top of a vertical throw a ball may keep its place for one tick, never for two).
+     * A free, awake ball that touched nothing at the start of the tick (more than {@link #TOUCH_GAP} from everything)
+     * and does not at its end, whose velocity after the tick's friction and gravity would move it, yet is exactly
+     * where it was. Frozen: nothing was within its reach in the tick (what it would travel, and what any other ball
+     * did), so it was in free flight and the loop stopped it in mid-air. Hovering (noted): something was near enough
+     * to have met it, yet it did not move, held apart from what it does not touch.
      */
-    private void checkStill(BallView ball, double gap, int tick, List<Violation> found) {
+    private void checkStill(BallView ball, double gap, List<BallView> free, int tick, List<Violation> found) {
         BallAt last = before.get(ball.name());
-        if (last == null || last.captured() || ball.isAsleep() || gap <= TOUCH_GAP
+        if (last == null || last.captured() || ball.isAsleep() || last.gap() <= TOUCH_GAP || gap <= TOUCH_GAP
                 || ball.position().x() != last.x() || ball.position().y() != last.y()) {
             return;
         }
-        double speed = Math.hypot(ball.velocity().x(), ball.velocity().y());
-        String where = "still at (" + last.x() + ", " + last.y() + "), " + gap + " L from the nearest thing";
-        if (speed > STILL_SPEED) {
-            found.add(new Violation(Violation.Kind.FROZEN, tick, ball.name(), speed, where));
-        } else if (gravity != 0 && last.stillTicks() >= 1) {
-            found.add(new Violation(Violation.Kind.HOVERING, tick, ball.name(), last.stillTicks() + 1.0,
-                    where + " for " + (last.stillTicks() + 1) + " ticks"));
+        // Stage 1 of the tick (SPEC.md): v (1 - mu dt - mu2 |v| dt) + g dt, gravity along +y.
+        double speedBefore = Math.hypot(last.vx(), last.vy());
+        double keep = 1 - mu * DT - mu2 * speedBefore * DT;
+        double speed = Math.hypot(last.vx() * keep, last.vy() * keep + gravity * DT);
+        if (speed <= STILL_SPEED) {
+            return;   // the top of a vertical throw: for one tick it may not move
         }
+        double reach = speed * DT + TOUCH_GAP;
+        double clearance = clearance(ball, free);
+        String where = String.format(Locale.ROOT, "still at (%s, %s) moving %s L/s, %.3g L from the nearest thing, "
+                + "%.3g L from anything that moved", last.x(), last.y(), speed, gap, clearance);
+        if (clearance > reach) {
+            found.add(new Violation(Violation.Kind.FROZEN, tick, ball.name(), speed, where));
+        } else {
+            found.add(new Violation(Violation.Kind.HOVERING, tick, ball.name(), gap, where));
+        }
+    }
+
+    /**
+     * How far the ball is from everything it could have met in the tick: walls and still gizmos where they are, the
+     * box each flipper swings in, and the path of every other ball from where it was to where it is (taken straight).
+     */
+    private double clearance(BallView ball, List<BallView> free) {
+        double x = ball.position().x();
+        double y = ball.position().y();
+        double nearest = Math.min(Math.min(x - R, SIZE - R - x), Math.min(y - R, SIZE - R - y));
+        for (Body body : still) {
+            nearest = Math.min(nearest, body.solid().signedDistance(x, y) - R);
+        }
+        for (Body box : flipperBoxes) {
+            nearest = Math.min(nearest, box.solid().signedDistance(x, y) - R);
+        }
+        for (BallView other : free) {
+            BallAt was = before.get(other.name());
+            if (other == ball) {
+                continue;
+            }
+            Point now = new Point(other.position().x(), other.position().y());
+            Point from = was == null || was.captured() ? now : new Point(was.x(), was.y());
+            nearest = Math.min(nearest, Point.distanceToSegment(x, y, from, now) - 2 * R);
+        }
+        return nearest;
     }
 
     private static double kinetic(List<BallView> free) {
@@ -227,16 +280,12 @@ public final class TickChecker {
         return sum;
     }
 
-    private void remember(List<BallView> balls) {
-        Map<String, BallAt> last = new HashMap<>(before);
+    private void remember(List<BallView> balls, Map<String, Double> gapOf) {
         before.clear();
         List<BallView> free = new ArrayList<>();
         for (BallView ball : balls) {
-            double x = ball.position().x();
-            double y = ball.position().y();
-            BallAt was = last.get(ball.name());
-            int still = was != null && was.x() == x && was.y() == y ? was.stillTicks() + 1 : 0;
-            before.put(ball.name(), new BallAt(x, y, ball.isCaptured(), still));
+            before.put(ball.name(), new BallAt(ball.position().x(), ball.position().y(), ball.velocity().x(),
+                    ball.velocity().y(), ball.isCaptured(), gapOf.getOrDefault(ball.name(), Double.NaN)));
             if (!ball.isCaptured()) {
                 free.add(ball);
             }

@@ -124,16 +124,46 @@ class TickCheckerTest {
     }
 
     @Test
-    void aBallAtRestInMidAirUnderGravityIsHoveringFromItsSecondStillTick() {
+    void aBallAtRestInMidAirUnderGravityIsFrozenButNotAtTheTopOfAThrowNorWithoutGravity() {
         Ball still = ball("B", 10, 10, 0, 0);
         TickChecker checker = new TickChecker(List.of(), 25, 0, 0, List.of(still));
         checker.check(List.of(still), 0);
-        assertThat(checker.check(List.of(still), 1)).as("the top of a throw").isEmpty();
-        assertThat(kinds(checker.check(List.of(still), 2))).containsExactly(Violation.Kind.HOVERING);
+        assertThat(kinds(checker.check(List.of(still), 1))).containsExactly(Violation.Kind.FROZEN);
+
+        // Going up at exactly one tick of gravity, the tick's gravity stops it first: it may stay put for that tick.
+        Ball apex = ball("B", 10, 10, 0, -25 * Board.DEFAULT_TICK);
+        TickChecker top = new TickChecker(List.of(), 25, 0, 0, List.of(apex));
+        top.check(List.of(apex), 0);
+        apex.setVelocity(new Vect(0, 0));
+        assertThat(top.check(List.of(apex), 1)).isEmpty();
+
         TickChecker weightless = new TickChecker(List.of(), 0, 0, 0, List.of(still));
         for (int tick = 0; tick < 3; tick++) {
             assertThat(weightless.check(List.of(still), tick)).isEmpty();
         }
+    }
+
+    /** 1e-4 L above a square, falling, not moving: near enough to have landed in the tick, so noted, not frozen. */
+    @Test
+    void aBallKeptStillNearASurfaceItDoesNotTouchIsHovering() {
+        Ball above = ball("B", 5.5, 5 - R - 1e-4, 0, 0);
+        TickChecker checker = new TickChecker(List.of(gizmo(GizmoKind.SQUARE, 5, 5)), 25, 0, 0, List.of(above));
+        checker.check(List.of(above), 0);
+        List<Violation> found = checker.check(List.of(above), 1);
+        assertThat(kinds(found)).containsExactly(Violation.Kind.HOVERING);
+        assertThat(found.get(0).amount()).isCloseTo(1e-4, within(1e-12));
+        assertThat(Violation.Kind.HOVERING.rule()).isFalse();
+    }
+
+    /** Another ball that passed near within the tick could have met it: then a still ball is not in free flight. */
+    @Test
+    void aBallAnotherBallPassedCloseToInTheTickIsNotFrozen() {
+        Ball still = ball("A", 10, 10, 5, 0);
+        Ball passing = ball("B", 9, 10.55, 60, 0);
+        TickChecker checker = new TickChecker(List.of(), 0, 0, 0, List.of(still, passing));
+        checker.check(List.of(still, passing), 0);
+        passing.moveTo(new Vect(11, 10.55));
+        assertThat(kinds(checker.check(List.of(still, passing), 1))).containsExactly(Violation.Kind.HOVERING);
     }
 
     @Test

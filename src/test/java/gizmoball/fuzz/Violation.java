@@ -6,7 +6,7 @@ package gizmoball.fuzz;
  * @param tick   the tick just played (ticks counted from 1 at load; 0 is the board as loaded)
  * @param ball   the ball concerned (for a gain of energy: the board's whole kinetic energy, named "all")
  * @param amount how much: depth in L for an overlap, L outside the board for an escape, the relative gain for energy,
- *               the speed in L/s of a frozen ball, the ticks a hovering ball has kept its place
+ *               the speed in L/s of a frozen ball, the gap in L of a hovering ball to the nearest thing
  * @param detail what it was inside of, or where, for a reader
  */
 public record Violation(Kind kind, int tick, String ball, double amount, String detail) {
@@ -21,8 +21,9 @@ public record Violation(Kind kind, int tick, String ball, double amount, String 
         ENERGY_GAINED("energy gained"),
         FROZEN("frozen"),
         /**
-         * A ball at rest in mid-air under gravity, touching nothing by more than the tolerance, for two ticks or more:
-         * held by a contact it no longer touches. Noted, not one of the issue's rules: it does not make a run unclean.
+         * A ball that does not move over a tick though its velocity (after friction and gravity) would move it, touching
+         * nothing by more than the tolerance at either end of the tick, but near enough to something to have met it:
+         * held apart from what it does not touch. Noted, not one of the issue's rules: it does not make a run unclean.
          */
         HOVERING("hovering", false);
 
