@@ -335,6 +335,12 @@ public final class PropertiesPanel extends JPanel {
         return colourRows;
     }
 
+    /** The keyboard to the selection's name field, all of it selected, to rename or read on from there. */
+    public void focusName() {
+        name.requestFocusInWindow();
+        name.selectAll();
+    }
+
     /** The selection's name (Enter renames it) and a gizmo's cell (Enter moves it there). */
     private JComponent nameRows() {
         name.setName("selection.name");
