@@ -3,6 +3,7 @@ package gizmoball.app;
 import gizmoball.boardfile.BoardContents;
 import gizmoball.session.GameSession;
 import gizmoball.session.Mode;
+import gizmoball.view.editor.BoardContextMenu;
 import gizmoball.view.editor.BoardInput;
 import gizmoball.editor.Editor;
 import gizmoball.editor.Tool;
@@ -91,7 +92,8 @@ public final class BuildModeInstaller {
 
         panel.addOverlay(new BuildOverlay(controller, building));
         EdgePopup edgePopup = EdgePopup.of(controller, panel);
-        BoardInput.attach(controller, panel, building, edgePopup::show);
+        BoardContextMenu contextMenu = new BoardContextMenu(controller, panel, properties::focusName);
+        BoardInput.attach(controller, panel, building, edgePopup::show, contextMenu::open);
 
         session.addModeListener(mode -> {
             controller.cancel();

@@ -500,6 +500,25 @@ public final class Editor {
         return false;
     }
 
+    /** Selects the gizmo or ball at (x, y), or nothing where there is none (a context menu's target). */
+    public boolean selectAt(double x, double y) {
+        select(ballOrGizmoAt(x, y).orElse(null));
+        return selected().isPresent();
+    }
+
+    /** Connect from here: the Connect tool with the selection as the source; the next click picks the target. */
+    public void connectFromSelected() {
+        Optional<String> source = selectedGizmo().map(Gizmo::name).or(() -> selected().filter(Editor::isWalls));
+        if (source.isEmpty()) {
+            say("Select a gizmo to connect from it");
+            return;
+        }
+        setTool(Tool.CONNECT);
+        step = new PendingStep.ConnectingFrom(TriggerSource.named(source.get()));
+        say("Connect from " + source.get() + ": click the gizmo it triggers (Esc cancels)");
+        stateChanged();
+    }
+
     /** Moves a gizmo to the cell typed for it (one undo step); the same cell is no edit. */
     public boolean moveGizmoTo(String gizmo, int x, int y) {
         Optional<Gizmo> g = board.gizmo(gizmo);

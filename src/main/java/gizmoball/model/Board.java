@@ -114,6 +114,7 @@ public final class Board {
         mu = source.mu;
         mu2 = source.mu2;
         time = source.time;
+        play.clockMoved();
         ticks = source.ticks;
         gameRules = source.gameRules;
         game.copyFrom(source.game);
@@ -254,6 +255,7 @@ public final class Board {
         mu = DEFAULT_MU;
         mu2 = DEFAULT_MU2;
         time = 0;
+        play.clockMoved();
         ticks = 0;
         gameRules = GameRules.DEFAULT;
         game.reset();
@@ -646,6 +648,7 @@ public final class Board {
         @Override
         public void advanceTime(double dt) {
             time += dt;
+            play.clockMoved();
         }
     }
 }

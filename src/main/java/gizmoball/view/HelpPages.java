@@ -102,8 +102,10 @@ final class HelpPages {
                 .append("<p>In the properties, <b>Name</b> renames the selection (its connections and keys")
                 .append(" follow) and <b>Cell x, y</b> moves a gizmo to the cell typed (Enter applies either).")
                 .append(" A value that is refused stays in its field, outlined in red, the reason as its")
-                .append(" tooltip.</p><p><b>File &gt; Open recent</b> lists the last ten boards opened or")
-                .append(" saved.</p></body></html>");
+                .append(" tooltip.</p><p><b>Right-click</b> on the board selects what is there and opens a")
+                .append(" context menu: Rotate, Delete, Cut, Copy, Paste, Duplicate, Connect from here, Properties.")
+                .append("</p><p><b>File &gt; Open recent</b> lists the last ten boards opened or saved.</p>")
+                .append("</body></html>");
         return html.toString();
     }
 

@@ -169,4 +169,20 @@ class TransferTest {
 
         assertThat(board.ball("B1").orElseThrow().velocity().x()).isEqualTo(2.0);
     }
+
+    /** The context menu's part in the editor: select what is under the pointer, connect from the selection. */
+    @Test
+    void aContextMenuSelectsWhatIsUnderThePointerAndConnectsFromIt() {
+        assertThat(editor.selectAt(3.5, 4.5)).isTrue();
+        assertThat(editor.selected()).contains("C1");
+        assertThat(editor.selectAt(15.5, 15.5)).as("nothing there").isFalse();
+        assertThat(editor.selected()).isEmpty();
+
+        editor.selectAt(9.5, 9.5);
+        editor.connectFromSelected();
+        assertThat(editor.tool()).isEqualTo(Tool.CONNECT);
+        editor.press(3.5, 4.5);
+        editor.release(3.5, 4.5);
+        assertThat(board.connections()).contains(new Connection(TriggerSource.gizmo("T1"), "C1"));
+    }
 }

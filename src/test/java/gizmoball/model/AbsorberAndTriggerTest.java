@@ -205,4 +205,29 @@ class AbsorberAndTriggerTest {
         assertThat(flipper.tip().x()).isCloseTo(4.25, within(1e-12));
         assertThat(flipper.tip().y()).isCloseTo(6.25, within(1e-12));
     }
+
+    /**
+     * An absorber along the top, connected to itself, fires into a ball wedged against the top wall right above its
+     * mouth: the fired ball comes straight back and is captured at that same moment. The absorber fires at most
+     * once at one moment, so the ball stays held instead of being fired again and again at no time apart (the fuzz
+     * of issue 20 found 470 such captures a tick, every tick).
+     */
+    @Test
+    void anAbsorberFiresAtMostOnceAtOneMoment() {
+        Board board = new Board();
+        board.setGravity(0);
+        board.addAbsorber("A", 14, 1, 18, 3);
+        board.connect(TriggerSource.gizmo("A"), "A");
+        board.addBall("W", 17.75, Board.BALL_RADIUS, 0, 0);
+        board.addBall("B", 16, 2, 0, 0);   // inside the absorber: captured at once
+        assertThat(board.ball("B").orElseThrow().isCaptured()).isTrue();
+        board.trigger("A");
+        board.tick(DT);
+        assertThat(board.ball("B").orElseThrow().isCaptured()).as("came back and stays held").isTrue();
+        assertThat(board.lastTick().collisions()).isLessThan(10);
+        assertThat(board.guardsFired().wedged() + board.guardsFired().collisionCap()).isZero();
+        board.delete("W");
+        board.trigger("A");
+        assertThat(board.ball("B").orElseThrow().isCaptured()).as("a later moment fires it again").isFalse();
+    }
 }

@@ -35,7 +35,7 @@ class HelpPagesTest {
         String page = HelpPages.buildMode();
         String readme = Files.readString(Path.of("README.md"));
         for (String action : new String[] {"Ctrl+C", "Ctrl+X", "Ctrl+V", "Ctrl+D", "Name", "Cell x, y",
-                "Open recent"}) {
+                "Open recent", "Right-click", "Connect from here"}) {
             assertThat(page).contains(action);
             assertThat(readme).contains(action);
         }

@@ -26,6 +26,8 @@ import physics.Vect;
 final class ContactCluster {
     /** L: a ball this near a surface or another ball touches it, for the cluster (the placement tolerance). */
     static final double TOUCHING = Tolerances.PLACEMENT;
+    /** Seconds a ball leaving a swinging part keeps ahead of it (see {@link #leaving}). */
+    static final double LEAD_TIME = 1e-3;
     /** More balls than this in one cluster: the ones beyond are taken as surfaces moving as they move now. */
     static final int MAX_BALLS = 32;
 
@@ -142,6 +144,18 @@ final class ContactCluster {
         }
     }
 
+    /**
+     * The speed a ball must leave a swinging part with, along its normal: the surface's own speed there, and what
+     * the surface gains over {@link #LEAD_TIME}. The distance from a point at rest to a turning line is r cos(phi): it
+     * shrinks ever faster, at omega^2 r along the normal, so a ball left at only the surface's speed is met again at
+     * once, and a flipper sweeping a ball along a wall beside it would strike it every microsecond.
+     */
+    private static double leaving(Vect pivot, double omega, Vect p, Vect normal, Vect point) {
+        double along = p.minus(pivot).dot(normal);
+        return CollisionDetector.surfaceVelocity(pivot, omega, point).dot(normal)
+                + omega * omega * Math.max(0, along) * LEAD_TIME;
+    }
+
     private void swinging(int index, Vect p, Flipper flipper, Shape shape) {
         Vect pivot = flipper.pivot();
         double omega = flipper.angularVelocity();
@@ -149,8 +163,7 @@ final class ContactCluster {
             Vect foot = Geometry.perpendicularPoint(side, p);
             if (foot != null && gap(p, foot, Arena.BALL_RADIUS) <= touching) {
                 Vect normal = p.minus(foot).unitSize();
-                rows.add(new Row(index, new Other.Swinging(flipper), normal,
-                        CollisionDetector.surfaceVelocity(pivot, omega, foot).dot(normal),
+                rows.add(new Row(index, new Other.Swinging(flipper), normal, leaving(pivot, omega, p, normal, foot),
                         flipper.reflectionCoefficient()));
             }
         }
@@ -158,8 +171,7 @@ final class ContactCluster {
             if (gap(p, end.getCenter(), end.getRadius() + Arena.BALL_RADIUS) <= touching) {
                 Vect normal = p.minus(end.getCenter()).unitSize();
                 Vect point = end.getCenter().plus(normal.times(end.getRadius()));
-                rows.add(new Row(index, new Other.Swinging(flipper), normal,
-                        CollisionDetector.surfaceVelocity(pivot, omega, point).dot(normal),
+                rows.add(new Row(index, new Other.Swinging(flipper), normal, leaving(pivot, omega, p, normal, point),
                         flipper.reflectionCoefficient()));
             }
         }

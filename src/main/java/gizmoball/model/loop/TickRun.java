@@ -69,7 +69,7 @@ public final class TickRun {
      * Collisions of one ball in one tick after which it moves no more in this tick (a guard, counted): it stops
      * only itself, never a ball elsewhere on the board.
      */
-    private static final int MAX_COLLISIONS_OF_A_BALL = 1_000;
+    private static final int MAX_COLLISIONS_OF_A_BALL = 400;
     /** Collisions of a ball in one tick, each soon after the last, that make it a rattle solved as a cluster. */
     private static final int RATTLE_COLLISIONS = 8;
     /** Seconds: collisions of one ball this close together are a rattle. */

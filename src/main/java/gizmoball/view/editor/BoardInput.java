@@ -10,6 +10,7 @@ import java.awt.event.KeyListener;
 import java.awt.event.MouseAdapter;
 import java.awt.event.MouseEvent;
 import java.util.function.BooleanSupplier;
+import java.util.function.Consumer;
 
 /**
  * Turns mouse and key events on the board view into {@link Editor} calls in board coordinates.
@@ -20,20 +21,24 @@ public final class BoardInput extends MouseAdapter implements KeyListener {
     private final BoardPanel panel;
     private final BooleanSupplier active;
     private final Runnable chooseEdge;
+    private final Consumer<MouseEvent> contextMenu;
 
     /**
-     * @param chooseEdge asked to let the user pick down or up once Key Connect has its key (e.g. a popup menu)
+     * @param chooseEdge  asked to let the user pick down or up once Key Connect has its key (e.g. a popup menu)
+     * @param contextMenu a right-click (it cancels a step under way, or opens the board's context menu)
      */
-    private BoardInput(Editor controller, BoardPanel panel, BooleanSupplier active, Runnable chooseEdge) {
+    private BoardInput(Editor controller, BoardPanel panel, BooleanSupplier active, Runnable chooseEdge,
+                       Consumer<MouseEvent> contextMenu) {
         this.controller = controller;
         this.panel = panel;
         this.active = active;
         this.chooseEdge = chooseEdge;
+        this.contextMenu = contextMenu;
     }
 
     public static BoardInput attach(Editor controller, BoardPanel panel, BooleanSupplier active,
-                                    Runnable chooseEdge) {
-        BoardInput input = new BoardInput(controller, panel, active, chooseEdge);
+                                    Runnable chooseEdge, Consumer<MouseEvent> contextMenu) {
+        BoardInput input = new BoardInput(controller, panel, active, chooseEdge, contextMenu);
         panel.addMouseListener(input);
         panel.addMouseMotionListener(input);
         panel.addKeyListener(input);
@@ -53,7 +58,7 @@ public final class BoardInput extends MouseAdapter implements KeyListener {
             controller.press(p.x(), p.y());
             afterKeyOrClick();
         } else if (SwingUtilities.isRightMouseButton(e)) {
-            controller.cancel();
+            contextMenu.accept(e);
         }
     }
 

@@ -7,11 +7,7 @@ import javax.swing.JMenuItem;
 import javax.swing.JOptionPane;
 import javax.swing.KeyStroke;
 import java.awt.Component;
-import java.awt.Toolkit;
-import java.awt.datatransfer.DataFlavor;
-import java.awt.datatransfer.StringSelection;
-import java.awt.datatransfer.UnsupportedFlavorException;
-import java.io.IOException;
+
 import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.util.function.BooleanSupplier;
@@ -47,11 +43,11 @@ public final class EditMenu extends JMenu {
         addSeparator();
         // The clipboard holds board-file lines: they paste into another window, or into a text editor.
         cut = item("Cut", KeyStroke.getKeyStroke(KeyEvent.VK_X, InputEvent.CTRL_DOWN_MASK),
-                () -> controller.cutSelected().ifPresent(EditMenu::toClipboard));
+                () -> controller.cutSelected().ifPresent(Clipboard::put));
         copy = item("Copy", KeyStroke.getKeyStroke(KeyEvent.VK_C, InputEvent.CTRL_DOWN_MASK),
-                () -> controller.copySelected().ifPresent(EditMenu::toClipboard));
+                () -> controller.copySelected().ifPresent(Clipboard::put));
         item("Paste", KeyStroke.getKeyStroke(KeyEvent.VK_V, InputEvent.CTRL_DOWN_MASK),
-                () -> controller.paste(fromClipboard()));
+                () -> controller.paste(Clipboard.text()));
         duplicate = item("Duplicate", KeyStroke.getKeyStroke(KeyEvent.VK_D, InputEvent.CTRL_DOWN_MASK),
                 controller::duplicateSelected);
         addSeparator();
@@ -91,19 +87,6 @@ public final class EditMenu extends JMenu {
         duplicate.setEnabled(on && something);
     }
 
-    private static void toClipboard(String text) {
-        Toolkit.getDefaultToolkit().getSystemClipboard().setContents(new StringSelection(text), null);
-    }
-
-    /** The clipboard's text, or nothing (which the editor refuses to paste, saying why). */
-    private static String fromClipboard() {
-        try {
-            Object text = Toolkit.getDefaultToolkit().getSystemClipboard().getData(DataFlavor.stringFlavor);
-            return String.valueOf(text);
-        } catch (UnsupportedFlavorException | IOException | IllegalStateException e) {
-            return "";
-        }
-    }
 
     private JMenuItem item(String text, KeyStroke accelerator, Runnable action) {
         JMenuItem item = new JMenuItem(text);

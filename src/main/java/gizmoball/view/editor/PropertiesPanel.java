@@ -335,6 +335,12 @@ public final class PropertiesPanel extends JPanel {
         return colourRows;
     }
 
+    /** The keyboard to the selection's name field, all of it selected, to rename or read on from there. */
+    public void focusName() {
+        name.requestFocusInWindow();
+        name.selectAll();
+    }
+
     /** The selection's name (Enter renames it) and a gizmo's cell (Enter moves it there). */
     private JComponent nameRows() {
         name.setName("selection.name");
@@ -344,8 +350,11 @@ public final class PropertiesPanel extends JPanel {
         JPanel cell = new JPanel(new GridBagLayout());
         cellX.setColumns(3);
         cellY.setColumns(3);
-        cell.add(cellX, constraints(0, 0));
-        cell.add(cellY, constraints(1, 0));
+        for (int i = 0; i < 2; i++) {
+            GridBagConstraints half = constraints(i, 0);
+            half.weightx = 1;
+            cell.add(i == 0 ? cellX : cellY, half);
+        }
         row(nameRows, 1, "Cell x, y", cell);
         for (NumberField f : new NumberField[] {cellX, cellY}) {
             f.setToolTipText("The gizmo's top-left cell; Enter moves it there");

@@ -89,4 +89,44 @@ class AuthorActionsGuiTest {
         assertThat(onEdt(() -> RefusedValue.isMarked(x) && RefusedValue.isMarked(y))).isTrue();
         assertThat(gizmo("Kicker").x()).isEqualTo(12);
     }
+
+    private void rightClick(double x, double y) {
+        onEdt(() -> {
+            java.awt.geom.Point2D p = w.panel.transform().toScreen(x, y);
+            w.panel.dispatchEvent(new java.awt.event.MouseEvent(w.panel, java.awt.event.MouseEvent.MOUSE_PRESSED,
+                    System.currentTimeMillis(), java.awt.event.InputEvent.BUTTON3_DOWN_MASK, (int) p.getX(),
+                    (int) p.getY(), 1, true, java.awt.event.MouseEvent.BUTTON3));
+        });
+    }
+
+    private javax.swing.JMenuItem contextItem(String name) {
+        return onEdt(() -> java.util.Arrays.stream(java.awt.Window.getWindows()).filter(java.awt.Window::isShowing)
+                .flatMap(win -> Gui.find(win, javax.swing.JMenuItem.class, i -> name.equals(i.getName())
+                        && i.isShowing()).stream()).findFirst()
+                .or(() -> Gui.find(w.window.getLayeredPane(), javax.swing.JMenuItem.class,
+                        i -> name.equals(i.getName()) && i.isShowing()))
+                .orElseThrow(() -> new AssertionError("no " + name + " showing")));
+    }
+
+    @Test
+    void theContextMenuActsOnWhatIsUnderThePointer() {
+        rightClick(6.5, 16.5);
+        assertThat(onEdt(() -> w.build.controller().selected())).contains("LF");
+        javax.swing.JMenuItem rotate = contextItem("context.rotate");
+        assertThat(onEdt(rotate::isEnabled)).isTrue();
+        onEdt(() -> rotate.doClick(0));
+        assertThat(gizmo("LF").rotation()).isEqualTo(1);
+
+        rightClick(15.5, 2.5);
+        assertThat(onEdt(() -> contextItem("context.delete").isEnabled())).as("nothing under the pointer").isFalse();
+        assertThat(onEdt(() -> contextItem("context.paste").isEnabled())).isTrue();
+        onEdt(() -> contextItem("context.paste").getParent().setVisible(false));
+
+        rightClick(6.5, 16.5);
+        onEdt(() -> contextItem("context.connectfromhere").doClick(0));
+        w.clickCell(3, 4);
+        assertThat(onEdt(() -> w.board.connections())).contains(new gizmoball.model.loop.Connection(
+                TriggerSource.gizmo("LF"), "C1"));
+        Gui.clickMenu(w.window.menus(), "Undo: Connected LF \u2192 C1");
+    }
 }
