@@ -3,6 +3,7 @@ package gizmoball.bench;
 import physics.Vect;
 
 import java.io.IOException;
+import java.io.OutputStream;
 import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -14,7 +15,8 @@ import java.util.Optional;
 /**
  * The benchmark: every scene with every method (cost and error), the scaling runs, the soak, the aim preview and
  * the steady state of play (issue 10), the dense-board fuzz (issue 20, {@link FuzzSurvey}); a table on standard output,
- * CSV and PNG charts (and the fuzz's Markdown) in the output directory.
+ * and in the output directory the same report ({@code bench-output.txt}), its figures as Markdown tables
+ * ({@code results.md}, {@link ResultsPage}), CSV and PNG charts and the fuzz's Markdown.
  * <p>
  * Arguments: {@code [--quick] --scripts DIR --boards DIR [--peers DIR] --out DIR} (key scripts, the game's sample
  * boards, other implementations' boards for the steady state and the guard survey, where to write).
@@ -53,8 +55,16 @@ public final class BenchMain {
             }
         }
         Files.createDirectories(out);
-        PrintStream stdout = System.out;
+        try (OutputStream report = Files.newOutputStream(out.resolve("bench-output.txt"));
+             PrintStream stdout = new PrintStream(new Tee(System.out, report), true, "UTF-8")) {
+            run(stdout, effort, scripts, boards, peers, out);
+        }
+    }
+
+    private static void run(PrintStream stdout, Effort effort, Path scripts, Path boards, Optional<Path> peers, Path out)
+            throws IOException {
         long wallStart = System.nanoTime();
+        ResultsPage page = new ResultsPage(effort == Effort.QUICK);
 
         List<Scene> scenes = Scenes.all(scripts);
         stdout.println("warm-up");
@@ -70,6 +80,7 @@ public final class BenchMain {
         }
         Report.printScenes(stdout, rows);
         Report.writeScenes(out.resolve("accuracy.csv"), rows);
+        page.scenes(rows);
         for (Scene scene : scenes) {
             Charts.workPrecision(out, scene, rows);
         }
@@ -88,20 +99,53 @@ public final class BenchMain {
         Report.printSoak(stdout, soak);
         Report.printHeadline(stdout, rows, scaling, effort.scalingSeconds());
         Report.writeSoak(out.resolve("soak.csv"), soak);
+        page.soak(soak);
 
         stdout.println("aim preview");
         List<PreviewCost.Row> preview = PreviewCost.run(boards, effort.samples());
         PreviewCost.print(stdout, preview);
         PreviewCost.write(out.resolve("preview.csv"), preview);
+        page.preview(preview);
 
         stdout.println("steady state");
-        SteadyState.run(stdout, boards, peers, effort.steady(), out);
+        SteadyState.run(stdout, boards, peers, effort.steady(), out, page);
 
         stdout.println();
         FuzzSurvey.run(stdout, effort.fuzz(), out);
 
-        stdout.printf(Locale.ROOT, "%nwrote CSV and charts to %s in %.0f s wall time%n", out.toAbsolutePath(),
-                (System.nanoTime() - wallStart) / 1e9);
+        double seconds = (System.nanoTime() - wallStart) / 1e9;
+        page.write(out, seconds);
+        stdout.printf(Locale.ROOT, "%nwrote results.md, CSV and charts to %s in %.0f s wall time%n", out.toAbsolutePath(),
+                seconds);
+    }
+
+    /** Standard output and the report file at once. */
+    private static final class Tee extends OutputStream {
+        private final OutputStream first;
+        private final OutputStream second;
+
+        Tee(OutputStream first, OutputStream second) {
+            this.first = first;
+            this.second = second;
+        }
+
+        @Override
+        public void write(int b) throws IOException {
+            first.write(b);
+            second.write(b);
+        }
+
+        @Override
+        public void write(byte[] b, int off, int len) throws IOException {
+            first.write(b, off, len);
+            second.write(b, off, len);
+        }
+
+        @Override
+        public void flush() throws IOException {
+            first.flush();
+            second.flush();
+        }
     }
 
     /** The reference run (where there is no exact path), then every method: cost and accuracy. */

@@ -135,9 +135,10 @@ final class SteadyState {
     /**
      * The whole part: the steady-state table (and the chart of {@link #CHARTED}), the pile, the survey and the
      * targets, printed, with CSV files and the chart in {@code dir}. Without a peer folder the 100-ball board and
-     * the peer boards of the survey are left out, with a note.
+     * the peer boards of the survey are left out, with a note. The tables go on {@code page} too.
      */
-    static void run(PrintStream out, Path shipped, Optional<Path> peers, Windows w, Path dir) throws IOException {
+    static void run(PrintStream out, Path shipped, Optional<Path> peers, Windows w, Path dir, ResultsPage page)
+            throws IOException {
         if (peers.isEmpty()) {
             out.println("note: no peer-board folder (--peers DIR; gradle passes ../shared/peer-boards when it exists): "
                     + "the 100-ball peer board and the peer boards of the guard survey are left out");
@@ -157,14 +158,17 @@ final class SteadyState {
         }
         printRows(out, rows, w);
         writeRows(dir.resolve("steady-state.csv"), rows);
+        page.steadyState(rows, w);
 
         Pile pile = comparePile(w);
         printPile(out, pile, w);
         writePile(dir.resolve("sleeping-pile.csv"), pile);
+        page.pile(pile);
 
         Survey survey = survey(shipped, peers, w.surveyTicks());
         printSurvey(out, survey, w, 8);
         writeSurvey(dir.resolve("guard-survey.csv"), survey);
+        page.survey(survey);
 
         printTargets(out, rows, pile, survey);
         printLoad(out, "end");

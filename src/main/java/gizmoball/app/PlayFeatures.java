@@ -78,6 +78,7 @@ public final class PlayFeatures {
         features.installView();
         features.rememberFolder();
         features.rememberRecentFiles();
+        features.hintOnFirstRun();
         features.rememberPlace();
         return features;
     }
@@ -221,6 +222,14 @@ public final class PlayFeatures {
     private void folderUsed(Path folder) {
         if (!settings.lastFolder().map(folder::equals).orElse(false)) {
             settings.setLastFolder(folder);
+        }
+    }
+
+    /** The first run says how to start and which keys play the board, after the launch's own messages. */
+    private void hintOnFirstRun() {
+        if (!settings.firstRunHintShown()) {
+            settings.setFirstRunHintShown();
+            SwingUtilities.invokeLater(window::showFirstRunHint);
         }
     }
 

@@ -7,7 +7,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 
 /**
- * Loading and saving board files (format: README, "Board files"). Loading never touches the caller's board:
+ * Loading and saving board files (format: docs/board-files.md). Loading never touches the caller's board:
  * it returns a new one, which the caller installs with {@link Board#replaceContents}.
  */
 public final class BoardFiles {

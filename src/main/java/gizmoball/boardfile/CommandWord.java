@@ -12,7 +12,7 @@ import java.util.stream.Collectors;
 /**
  * The first word of each board-file command: its canonical spelling and the arguments it takes. The commands of the
  * standard format are written bare; our additions to it ({@link #ours()}) always with {@link #OURS} before the word
- * (README, "Board files": a loader that knows only the standard format skips them as comments).
+ * (docs/board-files.md: a loader that knows only the standard format skips them as comments).
  */
 enum CommandWord {
     SQUARE("Square", GizmoKind.SQUARE, "<name> <x> <y>"),

@@ -33,6 +33,7 @@ public final class Settings {
     private static final String LAST_FOLDER = "lastFolder";
     private static final String WINDOW = "window";
     private static final String RECENT = "recentFiles";
+    private static final String HINT_SHOWN = "firstRunHintShown";
     /** File > Open recent lists this many boards. */
     public static final int RECENT_FILES = 10;
     private static final String PLAYER = "playerName";
@@ -125,6 +126,15 @@ public final class Settings {
 
     public void setLastFolder(Path folder) {
         put(LAST_FOLDER, folder.toAbsolutePath().normalize().toString());
+    }
+
+    /** Whether the first-run hint was shown already (in this run or an earlier one). */
+    public boolean firstRunHintShown() {
+        return node.getBoolean(HINT_SHOWN, false);
+    }
+
+    public void setFirstRunHintShown() {
+        put(HINT_SHOWN, "true");
     }
 
     /** The boards last opened or saved, newest first, at most {@value #RECENT_FILES}; ones gone from disk left out. */

@@ -170,6 +170,11 @@ public final class GameWindow extends JFrame {
         refreshControls();
     }
 
+    /** The hint for a player new to the game, in the status line: how to start, which keys play this board. */
+    public void showFirstRunHint() {
+        statusLine.showMessage(KeyHelp.firstRunHint(session.board()));
+    }
+
     public BoardPanel boardPanel() {
         return boardPanel;
     }

@@ -30,7 +30,7 @@ import javax.swing.ScrollPaneConstants;
 /**
  * Help > How to play and Help > Build mode. The lists in them (menus and their shortcuts, the board's keys,
  * the build tools and their keys) are read from the window's own menus, the board and {@link Tool}, the
- * same facts the README's tables state, so a page cannot name a shortcut the game does not have.
+ * same facts the documents' tables state, so a page cannot name a shortcut the game does not have.
  */
 final class HelpPages {
     static final String HOW_TO_PLAY = "How to play";

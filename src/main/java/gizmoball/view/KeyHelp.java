@@ -23,6 +23,13 @@ final class KeyHelp {
     private record KeyAndGizmo(int keyCode, String gizmo) {
     }
 
+    /** What a player new to the game is told once: how to start, and the keys that play the board. */
+    static String firstRunHint(Board board) {
+        List<String> keys = describe(board);
+        return "Press Start (Ctrl+G) to play" + (keys.isEmpty() ? "" : "; keys: " + String.join(", ", keys))
+                + ". Help > Keys of this board (Ctrl+K) lists them again.";
+    }
+
     static List<String> describe(Board board) {
         Map<KeyAndGizmo, Set<KeyEdge>> edges = new LinkedHashMap<>();
         for (KeyBinding b : board.keyBindings()) {

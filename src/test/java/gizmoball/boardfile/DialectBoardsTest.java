@@ -13,7 +13,7 @@ import org.junit.jupiter.api.TestFactory;
 
 /**
  * The project's own corpus (src/test/resources/dialect-boards): one file per group of dialect features the
- * loader tolerates (README, "What the loader tolerates"), plus files with bad lines. Besides the corpus
+ * loader tolerates (docs/board-files.md, "What the loader tolerates"), plus files with bad lines. Besides the corpus
  * checks, each tolerant file X.txt must mean exactly what X.canonical, its hand-written canonical form, says.
  */
 class DialectBoardsTest extends BoardCorpusTest {

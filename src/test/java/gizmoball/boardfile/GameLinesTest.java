@@ -16,7 +16,7 @@ import java.util.stream.Collectors;
 import org.junit.jupiter.api.Test;
 
 /**
- * The game's lines, our additions to the standard format (README, "Board files"): each is written {@code #@Word}, so a
+ * The game's lines, our additions to the standard format (docs/board-files.md): each is written {@code #@Word}, so a
  * loader that knows only the standard format skips it as a comment and loads the rest; ours reads it back.
  */
 class GameLinesTest {

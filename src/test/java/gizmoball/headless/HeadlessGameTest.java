@@ -20,7 +20,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * Headless games: a key script played on a board, its JSON report, its replay file, and the replay checked again
- * (README, "Headless runner").
+ * (docs/running.md, "Headless runner").
  */
 class HeadlessGameTest {
     /**

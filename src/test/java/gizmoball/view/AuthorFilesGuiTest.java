@@ -163,4 +163,16 @@ class AuthorFilesGuiTest extends WindowOnFiles {
         assertThat(onEdt(() -> window.session().file())).contains(first);
         assertThat(settings.recentFiles()).containsExactly(first, second);
     }
+
+    @Test
+    void theFirstRunSaysHowToStartAndWhichKeysPlayTheBoardOnce() throws Exception {
+        launch(defaultBoardCopy(), settings);
+        await("the hint", () -> window.statusLine().message().startsWith("Press Start (Ctrl+G) to play"));
+        assertThat(onEdt(() -> window.statusLine().message())).contains("Z: left flipper LF (hold)", "Ctrl+K");
+        onEdt(window::dispose);
+
+        launch(dir.resolve("default.txt"), settings);
+        onEdt(() -> { });
+        assertThat(onEdt(() -> window.statusLine().message())).isEqualTo("Loaded default.txt");
+    }
 }

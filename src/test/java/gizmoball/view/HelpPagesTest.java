@@ -17,27 +17,27 @@ import javax.swing.JMenuItem;
 import javax.swing.KeyStroke;
 import org.junit.jupiter.api.Test;
 
-/** The help pages say what the game has, and the README says the same (no display needed). */
+/** The help pages say what the game has, and the documents say the same (no display needed). */
 class HelpPagesTest {
     @Test
-    void theBuildModePageListsEveryToolWithItsKeyAsTheReadmeDoes() throws Exception {
+    void theBuildModePageListsEveryToolWithItsKeyAsTheDocumentsDo() throws Exception {
         String page = HelpPages.buildMode();
-        String readme = Files.readString(Path.of("README.md"));
+        String documented = Files.readString(Path.of("docs", "build-mode.md"));
         for (Tool tool : Tool.values()) {
             assertThat(page).contains(tool.labelWithShortcut(), tool.hint());
-            assertThat(readme).as("README's build-mode table").contains(tool.labelWithShortcut());
+            assertThat(documented).as("docs/build-mode.md's table").contains(tool.labelWithShortcut());
         }
     }
 
-    /** Issue 23: the author's actions are listed in Help and in the README alike. */
+    /** Issue 23: the author's actions are listed in Help and in docs/build-mode.md alike. */
     @Test
-    void theBuildModePageAndTheReadmeListTheAuthorsActions() throws Exception {
+    void theBuildModePageAndTheDocumentsListTheAuthorsActions() throws Exception {
         String page = HelpPages.buildMode();
-        String readme = Files.readString(Path.of("README.md"));
+        String documented = Files.readString(Path.of("docs", "build-mode.md"));
         for (String action : new String[] {"Ctrl+C", "Ctrl+X", "Ctrl+V", "Ctrl+D", "Name", "Cell x, y",
                 "Open recent", "Right-click", "Connect from here"}) {
             assertThat(page).contains(action);
-            assertThat(readme).contains(action);
+            assertThat(documented).contains(action);
         }
     }
 

@@ -1,0 +1,42 @@
+package gizmoball.fuzz;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import gizmoball.model.Board;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+
+/**
+ * The four reproductions of issue 20 (copies of {@code ../shared/repro/} in the test resources), each played for the
+ * ticks its first line names with its key script and checked after every tick by the fuzz's own checker: no ball
+ * inside a flipper, a gizmo or a ball by more than 1e-6 L, no guard, no tick at the collision cap, no ball in free
+ * flight stopped, nothing else the checker forbids. {@code frozen.txt} runs its 4,182 ticks: from tick 3,469 every
+ * tick hit the collision cap and 23 balls stopped in mid-air.
+ */
+class Issue20ReproductionsTest {
+
+    @ParameterizedTest(name = "{0}")
+    @ValueSource(strings = {"pivot-end.txt", "stops-inside.txt", "tongs.txt", "frozen.txt"})
+    void playsCleanly(String file) throws Exception {
+        Reproduction reproduction = Reproduction.parse(file, resource(file));
+        Board board = reproduction.load(file);
+
+        FuzzPlay.Outcome outcome = FuzzPlay.play(board, reproduction.keys(), reproduction.ticks(), FuzzPlay.UNTIMED);
+
+        assertThat(outcome.clean()).as("%s: %s", file, outcome.summary()).isTrue();
+        assertThat(outcome.capTicks()).as("ticks at the collision cap").isZero();
+        assertThat(outcome.ticksPlayed()).as("ticks played").isEqualTo(reproduction.ticks());
+    }
+
+    private static String resource(String file) throws IOException {
+        try (InputStream in = Issue20ReproductionsTest.class.getResourceAsStream("/repro/" + file)) {
+            assertThat(in).as("test resource repro/%s", file).isNotNull();
+            return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+        }
+    }
+}
