@@ -9,9 +9,9 @@ import gizmoball.model.loop.PlayEvent;
 import gizmoball.model.loop.Sleepers;
 
 import java.util.ArrayList;
-import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
-import java.util.Map;
+import java.util.Set;
 
 import physics.Vect;
 
@@ -27,10 +27,8 @@ final class Play implements Surroundings {
     private final PlacementRules rules;
     private final Sleepers sleepers;
     private final List<PlayEvent> pendingEvents = new ArrayList<>();
-    /** When, on the board's clock, each absorber fired a ball since the clock last moved. */
-    private final Map<String, Double> firedAt = new HashMap<>();
-    /** The board's clock at the action or key being performed now. */
-    private double acting;
+    /** The absorbers that fired a ball since the board's clock last moved (in this tick). */
+    private final Set<String> fired = new HashSet<>();
 
     Play(Registry registry, PlacementRules rules, Sleepers sleepers) {
         this.registry = registry;
@@ -43,7 +41,6 @@ final class Play implements Surroundings {
      * while the key is held), and on DOWN those bound to CHANGE perform their action (a flipper toggles).
      */
     void keyAction(List<KeyBinding> bindings, int keyCode, KeyEdge edge, double now) {
-        acting = now;
         for (KeyBinding binding : bindings) {
             if (binding.keyCode() != keyCode) {
                 continue;
@@ -62,15 +59,14 @@ final class Play implements Surroundings {
         }
     }
 
-    /** The board's clock moved on or was set: what fired at the last moment may fire again. */
+    /** The board's clock moved on (a tick ended) or was set: every absorber may fire again. */
     void clockMoved() {
-        firedAt.clear();
+        fired.clear();
     }
 
     /** The gizmo performs its action: a flipper toggles, an absorber fires, a bumper only records the time. */
     void performAction(GizmoBase gizmo, double now) {
         gizmo.markTriggered(now);
-        acting = now;
         gizmo.act(this);
     }
 
@@ -94,10 +90,10 @@ final class Play implements Surroundings {
 
     /**
      * Shoots the longest-held ball straight up from just above the top edge, if the spot there is free (inside
-     * the board, no gizmo or free ball in the way); otherwise the ball stays held. An absorber fires at most once at
-     * one moment of the board's clock: a ball it fires into a ball wedged against the wall above comes straight back
-     * and is captured at that same moment, and an absorber that its own capture triggers would fire it again and
-     * again at no time apart.
+     * the board, no gizmo or free ball in the way); otherwise the ball stays held. An absorber fires at most once a
+     * tick: a ball it fires into a ball wedged against the wall above, or a flipper a hair above its mouth, comes
+     * straight back, and an absorber that its own capture triggers would fire it again and again, at no time or a
+     * few microseconds apart, thousands of times a tick.
      */
     @Override
     public void fire(Absorber absorber) {
@@ -107,11 +103,11 @@ final class Play implements Surroundings {
         }
         String name = held.get(0);
         Vect launch = absorber.launchPosition(Board.BALL_RADIUS);
-        if (Double.valueOf(acting).equals(firedAt.get(absorber.name()))) {
-            return;   // fired already at this very moment: what came straight back stays held
+        if (fired.contains(absorber.name())) {
+            return;   // fired already in this tick: what came straight back stays held until the next
         }
         if (rules.freeForBall(launch)) {
-            firedAt.put(absorber.name(), acting);
+            fired.add(absorber.name());
             absorber.letGo(name);
             registry.ball(name).release(launch, new Vect(0, -Board.ABSORBER_LAUNCH_SPEED));
             recordEvent(new PlayEvent.Fired(absorber.name()));

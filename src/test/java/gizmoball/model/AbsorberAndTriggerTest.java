@@ -209,11 +209,11 @@ class AbsorberAndTriggerTest {
     /**
      * An absorber along the top, connected to itself, fires into a ball wedged against the top wall right above its
      * mouth: the fired ball comes straight back and is captured at that same moment. The absorber fires at most
-     * once at one moment, so the ball stays held instead of being fired again and again at no time apart (the fuzz
-     * of issue 20 found 470 such captures a tick, every tick).
+     * once a tick, so the ball stays held instead of being fired again and again at no time apart (the fuzz of
+     * issue 20 found 470 such captures a tick, every tick); the next tick may fire it again.
      */
     @Test
-    void anAbsorberFiresAtMostOnceAtOneMoment() {
+    void anAbsorberFiresAtMostOnceATick() {
         Board board = new Board();
         board.setGravity(0);
         board.addAbsorber("A", 14, 1, 18, 3);
@@ -228,6 +228,6 @@ class AbsorberAndTriggerTest {
         assertThat(board.guardsFired().wedged() + board.guardsFired().collisionCap()).isZero();
         board.delete("W");
         board.trigger("A");
-        assertThat(board.ball("B").orElseThrow().isCaptured()).as("a later moment fires it again").isFalse();
+        assertThat(board.ball("B").orElseThrow().isCaptured()).as("the next tick fires it again").isFalse();
     }
 }
