@@ -21,8 +21,6 @@ import physics.Vect;
 class ZeroTimeChainsTest {
     private static final double DT = 1.0 / 60;
     private static final double R = Board.BALL_RADIUS;
-    /** The wedge guard's count: the loop stops a ball with more zero-time collisions than this in one tick. */
-    private static final int GUARD_ZERO_TIME_HITS = 32;
 
     /**
      * A ball S lies on a circle bumper off its top, another T on S: S rolls off, carrying T. Each time S presses T
