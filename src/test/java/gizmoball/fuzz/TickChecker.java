@@ -226,9 +226,10 @@ public final class TickChecker {
                 || ball.position().x() != last.x() || ball.position().y() != last.y()) {
             return;
         }
-        // Stage 1 of the tick (SPEC.md): v (1 - mu dt - mu2 |v| dt) + g dt, gravity along +y.
+        // Stage 1 of the tick (SPEC.md): v (1 - mu dt - mu2 |v| dt) + g dt, gravity along +y; friction that would
+        // take more than the whole velocity stops the ball instead of turning it round.
         double speedBefore = Math.hypot(last.vx(), last.vy());
-        double keep = 1 - mu * DT - mu2 * speedBefore * DT;
+        double keep = Math.max(0, 1 - mu * DT - mu2 * speedBefore * DT);
         double speed = Math.hypot(last.vx() * keep, last.vy() * keep + gravity * DT);
         if (speed <= STILL_SPEED) {
             return;   // the top of a vertical throw: for one tick it may not move

@@ -143,6 +143,16 @@ class TickCheckerTest {
         }
     }
 
+    /** mu2 |v| dt = 0.9 x 80 / 60 > 1: the tick's friction stops the ball where it is, which is no freeze. */
+    @Test
+    void aBallStoppedByFrictionStrongerThanItsSpeedIsNotFrozen() {
+        Ball braked = ball("B", 10, 10, 80, 0);
+        TickChecker checker = new TickChecker(List.of(), 0, 0.1, 0.9, List.of(braked));
+        checker.check(List.of(braked), 0);
+        braked.setVelocity(Vect.ZERO);
+        assertThat(checker.check(List.of(braked), 1)).isEmpty();
+    }
+
     /** 1e-4 L above a square, falling, not moving: near enough to have landed in the tick, so noted, not frozen. */
     @Test
     void aBallKeptStillNearASurfaceItDoesNotTouchIsHovering() {
