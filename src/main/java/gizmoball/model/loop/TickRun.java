@@ -826,7 +826,7 @@ public final class TickRun {
      * flashes and stage 5; its resting contacts become persistent contacts. Returns what the collision itself hit.
      */
     private Struck noteImpacts(Collision collision, ContactCluster cluster, NormalImpulses.Result result) {
-        Struck own = struckBy(collision.contact());
+        Struck own = collision.contact().struck();
         Set<Struck> heard = new LinkedHashSet<>();
         List<Ball> balls = cluster.balls();
         double[] impact = impactSpeeds(cluster);
@@ -879,22 +879,6 @@ public final class TickRun {
             return new Struck.OtherBall(balls.get(in.index()).name());
         }
         return new Struck.OtherBall(((ContactCluster.Other.Beyond) row.other()).ball().name());
-    }
-
-    private static Struck struckBy(Contact contact) {
-        if (contact instanceof Contact.OuterWall) {
-            return TriggerSource.OUTER_WALLS;
-        }
-        if (contact instanceof Contact.Face face) {
-            return TriggerSource.gizmo(face.gizmo().name());
-        }
-        if (contact instanceof Contact.Round round) {
-            return TriggerSource.gizmo(round.gizmo().name());
-        }
-        if (contact instanceof Contact.SwingingPart part) {
-            return TriggerSource.gizmo(part.flipper().name());
-        }
-        return new Struck.OtherBall(((Contact.OtherBall) contact).other().name());
     }
 
     private GizmoKind kindOf(Struck struck) {
