@@ -46,14 +46,14 @@ final class Wiring {
         registry.requireGizmo(target);
         Connection connection = new Connection(source, target);
         if (connections.contains(connection)) {
-            throw new BoardEditException("connection " + source + " -> " + target + " already exists");
+            throw new BoardEditException("connection " + source + " \u2192 " + target + " already exists");
         }
         connections.add(connection);
     }
 
     void disconnect(TriggerSource source, String target) {
         if (!connections.remove(new Connection(source, target))) {
-            throw new BoardEditException("there is no connection " + source + " -> " + target);
+            throw new BoardEditException("there is no connection " + source + " \u2192 " + target);
         }
     }
 
