@@ -320,7 +320,7 @@ public final class Editor {
         if (gizmos.size() == 1) {
             return rotate(gizmos.get(0));
         }
-        List<String> turning = gizmos.stream().filter(Editor::turns).map(Gizmo::name).toList();
+        List<String> turning = gizmos.stream().filter(g -> g.kind().rotates()).map(Gizmo::name).toList();
         if (turning.isEmpty()) {
             return refuse("Circles and absorbers look the same turned: none of the selection can be rotated");
         }
@@ -756,17 +756,13 @@ public final class Editor {
                 b -> b.moveGroup(names, dx, dy));
     }
 
-    /** Whether a quarter turn shows: a circle and an absorber look the same turned. */
-    static boolean turns(Gizmo gizmo) {
-        return gizmo.kind() != GizmoKind.CIRCLE && gizmo.kind() != GizmoKind.ABSORBER;
-    }
-
     /**
-     * Turns a gizmo 90 degrees clockwise. A circle and an absorber look the same turned: that is refused with
-     * a message and leaves no undo step, rather than "rotating" with nothing to see.
+     * Turns a gizmo 90 degrees clockwise. A kind that looks the same turned (a circle, an absorber:
+     * {@link GizmoKind#rotates}) is refused with a message and leaves no undo step, rather than "rotating" with
+     * nothing to see.
      */
     boolean rotate(Gizmo gizmo) {
-        if (!turns(gizmo)) {
+        if (!gizmo.kind().rotates()) {
             say(gizmo.name() + " is " + gizmo.kind().withArticle()
                     + ": it looks the same turned, so it cannot be rotated");
             stateChanged();
