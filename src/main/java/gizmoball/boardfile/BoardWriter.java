@@ -58,7 +58,7 @@ final class BoardWriter {
             commands.add(new Command.Connect(connection.source(), connection.target()));
         }
         for (KeyBinding binding : board.keyBindings()) {
-            commands.add(new Command.KeyConnect(binding.keyCode(), binding.edge(), binding.gizmo()));
+            commands.add(new Command.KeyConnect(binding.keyCode(), binding.edge(), binding.gizmo(), binding.order()));
         }
         commands.add(new Command.Gravity(board.gravity()));
         commands.add(new Command.Friction(board.mu(), board.mu2()));

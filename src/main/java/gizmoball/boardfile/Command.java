@@ -6,6 +6,7 @@ import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.TriggerSource;
 import java.util.List;
@@ -178,14 +179,23 @@ public sealed interface Command {
         }
     }
 
-    record KeyConnect(int keyCode, KeyEdge edge, String gizmo) implements Command {
+    /**
+     * {@code order} is the binding's action and delay: a binding of the standard format has neither and is written
+     * as the standard format has it; one with them is ours, {@code #@KeyConnect key 32 down A fire after 0.5}.
+     */
+    record KeyConnect(int keyCode, KeyEdge edge, String gizmo, Order order) implements Command {
+        /** A binding of the standard format. */
+        KeyConnect(int keyCode, KeyEdge edge, String gizmo) {
+            this(keyCode, edge, gizmo, Order.DEFAULT);
+        }
+
         public void applyTo(Board board) {
-            board.bindKey(keyCode, edge, gizmo);
+            board.bindKey(keyCode, edge, gizmo, order);
         }
 
         public String toLine() {
-            return CommandWord.KEY_CONNECT.written() + " key " + keyCode + " " + edge.name().toLowerCase(Locale.ROOT)
-                    + " " + gizmo;
+            return (order.isDefault() ? "" : CommandWord.OURS) + CommandWord.KEY_CONNECT.spelling() + " key " + keyCode
+                    + " " + edge.name().toLowerCase(Locale.ROOT) + " " + gizmo + OrderWords.of(order);
         }
 
         public List<String> references() {

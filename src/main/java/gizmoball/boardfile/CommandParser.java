@@ -2,6 +2,7 @@ package gizmoball.boardfile;
 
 import gizmoball.model.Board;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.TriggerSource;
 import java.util.ArrayList;
@@ -86,7 +87,19 @@ final class CommandParser {
             throw new Refusal(word.spelling() + " is an addition of this game to the format: it is written "
                     + word.written() + ", which other implementations skip as a comment");
         }
-        return new Parsed(parse(word, words.subList(1, words.size()), notes), notes);
+        List<String> args = words.subList(1, words.size());
+        if (word == CommandWord.KEY_CONNECT && markedOurs && args.size() > word.argumentCount()) {
+            Order order = OrderWords.parse(args.subList(word.argumentCount(), args.size()));
+            Command.KeyConnect binding = (Command.KeyConnect) parse(word, args.subList(0, word.argumentCount()), notes);
+            return new Parsed(new Command.KeyConnect(binding.keyCode(), binding.edge(), binding.gizmo(), order), notes);
+        }
+        if (word == CommandWord.KEY_CONNECT && !markedOurs && args.size() > word.argumentCount()
+                && OrderWords.startsAnOrder(args.get(word.argumentCount()))
+                && !args.get(word.argumentCount()).equals(args.get(word.argumentCount() - 1))) {
+            throw new Refusal("an action or a delay is an addition of this game to the format: the line is written "
+                    + CommandWord.OURS + word.spelling() + ", which other implementations skip as a comment");
+        }
+        return new Parsed(parse(word, args, notes), notes);
     }
 
     /**

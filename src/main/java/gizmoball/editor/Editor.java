@@ -8,6 +8,7 @@ import gizmoball.model.KeyEdge;
 import gizmoball.model.game.GameRules;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.TriggerSource;
@@ -382,19 +383,23 @@ public final class Editor {
                 b -> b.unbindKey(binding.keyCode(), binding.edge(), binding.gizmo()));
     }
 
-    /** Completes Key Connect: binds the pending key's chosen edges to the gizmo (one undo step). */
+    /**
+     * Completes Key Connect: binds the pending key's chosen edges to the gizmo with the pending order, its action
+     * (empty: as each edge drives it unless told) and delay (one undo step; the board refuses an action the gizmo
+     * lacks).
+     */
     public boolean chooseEdges(EdgeChoice choice) {
         if (!(step instanceof PendingStep.AwaitingEdge pending)) {
             say("Key Connect: click a gizmo and press a key first");
             return false;
         }
         List<KeyBinding> bindings = choice.edges().stream()
-                .map(edge -> new KeyBinding(pending.keyCode(), edge, pending.gizmo())).toList();
+                .map(edge -> new KeyBinding(pending.keyCode(), edge, pending.gizmo(), pending.order())).toList();
         step = PendingStep.NONE;
         String what = bindings.size() == 1 ? KeyCodes.describe(bindings.get(0))
                 : "key " + KeyCodes.name(pending.keyCode()) + " down and up \u2192 " + pending.gizmo();
         boolean done = edit("Bound " + what,
-                b -> bindings.forEach(k -> b.bindKey(k.keyCode(), k.edge(), k.gizmo())));
+                b -> bindings.forEach(k -> b.bindKey(k.keyCode(), k.edge(), k.gizmo(), k.order())));
         stateChanged();
         return done;
     }
@@ -402,6 +407,22 @@ public final class Editor {
     /** {@link #chooseEdges} with one edge. */
     public boolean chooseEdge(KeyEdge edge) {
         return chooseEdges(edge == KeyEdge.DOWN ? EdgeChoice.DOWN : EdgeChoice.UP);
+    }
+
+    /** What Key Connect's binding will make its gizmo do, and after how long, once the edge is chosen. */
+    public void orderPending(Order order) {
+        if (step instanceof PendingStep.AwaitingEdge pending) {
+            step = new PendingStep.AwaitingEdge(pending.gizmo(), pending.keyCode(), order);
+        }
+    }
+
+    /**
+     * The kind of the gizmo the pending step will drive (Key Connect awaiting its edge), whose actions the popup
+     * offers; empty when no such answer is awaited.
+     */
+    public Optional<GizmoKind> awaitedTargetKind() {
+        return step instanceof PendingStep.AwaitingEdge pending
+                ? board().gizmo(pending.gizmo()).map(Gizmo::kind) : Optional.empty();
     }
 
     // ---- pointer, in board coordinates ----

@@ -10,6 +10,7 @@ import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Ball;
@@ -115,6 +116,7 @@ public final class Board {
         mu2 = source.mu2;
         time = source.time;
         play.clockMoved();
+        play.copyDelayedFrom(source.play);
         ticks = source.ticks;
         gameRules = source.gameRules;
         game.copyFrom(source.game);
@@ -214,8 +216,14 @@ public final class Board {
         edited();
     }
 
+    /** The key's edge drives the gizmo as that edge does unless told ({@link KeyEdge#actionOf}), at once. */
     public void bindKey(int keyCode, KeyEdge edge, String gizmo) {
-        wiring.bindKey(keyCode, edge, gizmo);
+        bindKey(keyCode, edge, gizmo, Order.DEFAULT);
+    }
+
+    /** The key's edge drives the gizmo as {@code order} says: one of its kind's actions, after a delay. */
+    public void bindKey(int keyCode, KeyEdge edge, String gizmo, Order order) {
+        wiring.bindKey(keyCode, edge, gizmo, order);
         edited();
     }
 
@@ -256,6 +264,7 @@ public final class Board {
         mu2 = DEFAULT_MU2;
         time = 0;
         play.clockMoved();
+        play.forgetDelayed();
         ticks = 0;
         gameRules = GameRules.DEFAULT;
         game.reset();
@@ -382,6 +391,7 @@ public final class Board {
         if (!Double.isFinite(dt) || dt < 0) {
             throw new IllegalArgumentException("tick length must be finite and not negative, got " + dt);
         }
+        play.performDue(time);
         lastTick = new TickRun(loop, loop, dt).run();
         ticks++;
         game.afterTick(ticks, lastTick.events());
