@@ -72,7 +72,7 @@ class ZeroTimeChainsTest {
         floor(board);
         board.addGizmo(GizmoKind.SQUARE, "W", 12, 17);
         board.setFlipperState("F", 46.1, true);
-        ((Flipper) board.gizmo("F").orElseThrow()).block();
+        ((Flipper) board.gizmo("F").orElseThrow()).stall();
         Vect tip = tip(46.1);
         double holderX = 12 - R;
         board.addBall("H", holderX, tip.y() - Math.sqrt(4 * R * R - Math.pow(holderX - tip.x(), 2)), 0, 0);
@@ -144,7 +144,7 @@ class ZeroTimeChainsTest {
         double tipY = 18 - R - 2 * R * Math.cos(alpha);
         double angle = Math.toDegrees(Math.acos((tipY - 16.25) / 1.5));
         board.setFlipperState("F", angle, true);
-        ((Flipper) board.gizmo("F").orElseThrow()).block();
+        ((Flipper) board.gizmo("F").orElseThrow()).stall();
         board.addBall("W", tip(angle).x() - 2 * R * Math.sin(alpha), 18 - R, 0, 0);
         board.addBall("A", 5, 18 - R, 20, 0);
         double start = board.energy();
