@@ -6,10 +6,10 @@ import gizmoball.model.game.GameRules;
 import gizmoball.model.game.KeyPress;
 import gizmoball.model.game.Playfield;
 import gizmoball.model.gizmo.Absorber;
-import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.Arena;
@@ -556,8 +556,8 @@ public final class Board {
         }
 
         @Override
-        public List<Flipper> flippers() {
-            return registry.flippers();
+        public List<MovingShape> movingShapes() {
+            return registry.movingShapes();
         }
 
         @Override
@@ -576,8 +576,8 @@ public final class Board {
         }
 
         @Override
-        public double gravity() {
-            return gravity;
+        public Vect gravity() {
+            return new Vect(0, gravity);   // the board's gravity pulls down the board, along +y
         }
 
         @Override
@@ -646,8 +646,8 @@ public final class Board {
         }
 
         @Override
-        public void wakeSweep(Flipper flipper) {
-            play.wakeSweep(flipper);
+        public void wakeSweep(MovingShape moving) {
+            play.wakeSweep(moving);
         }
 
         @Override

@@ -3,6 +3,7 @@ package gizmoball.model;
 import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.Action;
 import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.Surroundings;
 import gizmoball.model.loop.Ball;
@@ -131,11 +132,11 @@ final class Play implements Surroundings {
         }
     }
 
-    /** Wakes every ball in the flipper's box, where all of its sweep lies, and what rests on them. */
-    void wakeSweep(Flipper flipper) {
+    /** Wakes every ball in the moving shape's box, where all of its sweep lies, and what rests on them. */
+    void wakeSweep(MovingShape moving) {
         double margin = 2 * Board.BALL_RADIUS;
-        sleepers.wakeWithin(flipper.x() - margin, flipper.y() - margin, flipper.x() + flipper.width() + margin,
-                flipper.y() + flipper.height() + margin);
+        sleepers.wakeWithin(moving.x() - margin, moving.y() - margin, moving.x() + moving.width() + margin,
+                moving.y() + moving.height() + margin);
     }
 
     /**
