@@ -55,7 +55,7 @@ class OrderLinesTest {
     void anOrderWrittenBareAnUnknownActionAndAnActionTheGizmoLacksAreErrorsOfTheirLines() {
         assertThatThrownBy(() -> BoardFiles.load("t", "Absorber A 0 19 20 20\nKeyConnect key 32 down A fire\n"))
                 .isInstanceOf(BoardFileException.class)
-                .hasMessageContaining("line 2").hasMessageContaining("an action or a delay is an addition of this"
+                .hasMessageContaining("t:2:").hasMessageContaining("an action or a delay is an addition of this"
                         + " game to the format: the line is written #@KeyConnect");
         assertThatThrownBy(() -> BoardFiles.load("t", "Absorber A 0 19 20 20\n#@KeyConnect key 32 down A shoot\n"))
                 .isInstanceOf(BoardFileException.class)
