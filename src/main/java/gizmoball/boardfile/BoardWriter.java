@@ -55,7 +55,7 @@ final class BoardWriter {
                     ball.velocity().x(), ball.velocity().y()));
         }
         for (Connection connection : board.connections()) {
-            commands.add(new Command.Connect(connection.source(), connection.target()));
+            commands.add(new Command.Connect(connection.source(), connection.target(), connection.order()));
         }
         for (KeyBinding binding : board.keyBindings()) {
             commands.add(new Command.KeyConnect(binding.keyCode(), binding.edge(), binding.gizmo(), binding.order()));

@@ -164,14 +164,24 @@ public sealed interface Command {
         }
     }
 
-    /** {@code source} as the file names it: the word {@code OuterWalls} is the outer walls. */
-    record Connect(TriggerSource source, String target) implements Command {
+    /**
+     * {@code source} as the file names it: the word {@code OuterWalls} is the outer walls. {@code order} is the
+     * connection's action and delay: one of the standard format has neither; one with them is ours,
+     * {@code #@Connect C1 LF raise after 0.25}.
+     */
+    record Connect(TriggerSource source, String target, Order order) implements Command {
+        /** A connection of the standard format. */
+        Connect(TriggerSource source, String target) {
+            this(source, target, Order.DEFAULT);
+        }
+
         public void applyTo(Board board) {
-            board.connect(source, target);
+            board.connect(source, target, order);
         }
 
         public String toLine() {
-            return CommandWord.CONNECT.written() + " " + source.name() + " " + target;
+            return (order.isDefault() ? "" : CommandWord.OURS) + CommandWord.CONNECT.spelling() + " " + source.name()
+                    + " " + target + OrderWords.of(order);
         }
 
         public List<String> references() {

@@ -88,12 +88,12 @@ final class CommandParser {
                     + word.written() + ", which other implementations skip as a comment");
         }
         List<String> args = words.subList(1, words.size());
-        if (word == CommandWord.KEY_CONNECT && markedOurs && args.size() > word.argumentCount()) {
+        boolean ordering = word == CommandWord.KEY_CONNECT || word == CommandWord.CONNECT;
+        if (ordering && markedOurs && args.size() > word.argumentCount()) {
             Order order = OrderWords.parse(args.subList(word.argumentCount(), args.size()));
-            Command.KeyConnect binding = (Command.KeyConnect) parse(word, args.subList(0, word.argumentCount()), notes);
-            return new Parsed(new Command.KeyConnect(binding.keyCode(), binding.edge(), binding.gizmo(), order), notes);
+            return new Parsed(withOrder(parse(word, args.subList(0, word.argumentCount()), notes), order), notes);
         }
-        if (word == CommandWord.KEY_CONNECT && !markedOurs && args.size() > word.argumentCount()
+        if (ordering && !markedOurs && args.size() > word.argumentCount()
                 && OrderWords.startsAnOrder(args.get(word.argumentCount()))
                 && !args.get(word.argumentCount()).equals(args.get(word.argumentCount() - 1))) {
             throw new Refusal("an action or a delay is an addition of this game to the format: the line is written "
@@ -116,6 +116,15 @@ final class CommandParser {
         List<String> words = new ArrayList<>(written);
         words.set(0, word);
         return words;
+    }
+
+    /** The connection or key binding with the order written after its target. */
+    private static Command withOrder(Command command, Order order) {
+        if (command instanceof Command.KeyConnect k) {
+            return new Command.KeyConnect(k.keyCode(), k.edge(), k.gizmo(), order);
+        }
+        Command.Connect c = (Command.Connect) command;
+        return new Command.Connect(c.source(), c.target(), order);
     }
 
     private static Command parse(CommandWord word, List<String> given, List<String> notes) throws Refusal {

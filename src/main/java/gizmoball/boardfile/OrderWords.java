@@ -13,14 +13,14 @@ import java.util.stream.Collectors;
  * line: an action word, then {@code after} and the delay in seconds, each only where the order has it
  * ({@code fire}, {@code after 0.5}, {@code raise after 0.25}).
  */
-final class OrderWords {
+public final class OrderWords {
     static final String AFTER = "after";
 
     private OrderWords() {
     }
 
     /** The words after the target, each with a space before it; empty for the default order. */
-    static String of(Order order) {
+    public static String of(Order order) {
         return order.action().map(a -> " " + a.word()).orElse("")
                 + (order.delay() == 0 ? "" : " " + AFTER + " " + Decimals.format(order.delay()));
     }

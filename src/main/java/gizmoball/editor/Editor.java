@@ -1,6 +1,7 @@
 package gizmoball.editor;
 
 import gizmoball.boardfile.KeyCodes;
+import gizmoball.boardfile.OrderWords;
 import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyBinding;
@@ -194,6 +195,11 @@ public final class Editor {
     /** True after Key Connect has its gizmo and key and waits for {@link #chooseEdges}. */
     public boolean awaitingEdge() {
         return step instanceof PendingStep.AwaitingEdge;
+    }
+
+    /** True after Connect has its source and target and waits for {@link #chooseConnection}. */
+    public boolean awaitingAction() {
+        return step instanceof PendingStep.AwaitingAction;
     }
 
     // ---- commands ----
@@ -409,20 +415,44 @@ public final class Editor {
         return chooseEdges(edge == KeyEdge.DOWN ? EdgeChoice.DOWN : EdgeChoice.UP);
     }
 
-    /** What Key Connect's binding will make its gizmo do, and after how long, once the edge is chosen. */
+    /**
+     * What Key Connect's binding or Connect's connection will make its gizmo do, and after how long, once it is
+     * made.
+     */
     public void orderPending(Order order) {
         if (step instanceof PendingStep.AwaitingEdge pending) {
             step = new PendingStep.AwaitingEdge(pending.gizmo(), pending.keyCode(), order);
+        } else if (step instanceof PendingStep.AwaitingAction pending) {
+            step = new PendingStep.AwaitingAction(pending.source(), pending.target(), order);
         }
     }
 
+    /** Completes Connect: connects the pending source to the target with the pending order (one undo step). */
+    public boolean chooseConnection() {
+        if (!(step instanceof PendingStep.AwaitingAction pending)) {
+            say("Connect: click the source, then the gizmo it triggers, first");
+            return false;
+        }
+        step = PendingStep.NONE;
+        boolean done = edit("Connected " + pending.source() + " \u2192 " + pending.target()
+                + OrderWords.of(pending.order()), b -> b.connect(pending.source(), pending.target(), pending.order()));
+        stateChanged();
+        return done;
+    }
+
     /**
-     * The kind of the gizmo the pending step will drive (Key Connect awaiting its edge), whose actions the popup
+     * The kind of the gizmo the pending step will drive (Key Connect awaiting its edge, Connect its action), whose
+     * actions the popup
      * offers; empty when no such answer is awaited.
      */
     public Optional<GizmoKind> awaitedTargetKind() {
-        return step instanceof PendingStep.AwaitingEdge pending
-                ? board().gizmo(pending.gizmo()).map(Gizmo::kind) : Optional.empty();
+        if (step instanceof PendingStep.AwaitingEdge pending) {
+            return board().gizmo(pending.gizmo()).map(Gizmo::kind);
+        }
+        if (step instanceof PendingStep.AwaitingAction pending) {
+            return board().gizmo(pending.target()).map(Gizmo::kind);
+        }
+        return Optional.empty();
     }
 
     // ---- pointer, in board coordinates ----

@@ -30,6 +30,12 @@ public sealed interface PendingStep {
     /** Connect or Disconnect: the source (a gizmo or the outer walls) is chosen, the target is next. */
     record ConnectingFrom(TriggerSource source) implements PendingStep { }
 
+    /**
+     * Connect: source and target are chosen, and the order so far (what the target does when the source is hit,
+     * after how long); the answer that makes the connection is next.
+     */
+    record AwaitingAction(TriggerSource source, String target, Order order) implements PendingStep { }
+
     /** Key Connect or Key Disconnect: the gizmo is chosen, the key is next. */
     record AwaitingKey(String gizmo) implements PendingStep { }
 

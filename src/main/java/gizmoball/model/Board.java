@@ -207,7 +207,12 @@ public final class Board {
 
     /** Whenever source (a gizmo or the outer walls) is hit, target performs its action. Self-connections allowed. */
     public void connect(TriggerSource source, String target) {
-        wiring.connect(source, target);
+        connect(source, target, Order.DEFAULT);
+    }
+
+    /** Whenever source is hit, target does as {@code order} says: one of its kind's actions, after a delay. */
+    public void connect(TriggerSource source, String target, Order order) {
+        wiring.connect(source, target, order);
         edited();
     }
 
@@ -636,8 +641,8 @@ public final class Board {
         }
 
         @Override
-        public void trigger(GizmoBase gizmo, double now) {
-            play.performAction(gizmo, now);
+        public void trigger(GizmoBase gizmo, Order order, double now) {
+            play.carryOut(gizmo, order.action().orElse(gizmo.kind().defaultAction()), order.delay(), now);
         }
 
         @Override

@@ -40,23 +40,23 @@ final class Wiring {
         return List.copyOf(keyBindings);
     }
 
-    void connect(TriggerSource source, String target) {
+    void connect(TriggerSource source, String target, Order order) {
         if (source == null) {
             throw new BoardEditException("a connection needs a source: a gizmo or the outer walls");
         }
         if (source instanceof TriggerSource.OfGizmo gizmo) {
             registry.requireGizmo(gizmo.gizmo());
         }
-        registry.requireGizmo(target);
-        Connection connection = new Connection(source, target);
-        if (connections.contains(connection)) {
+        GizmoKind kind = registry.requireGizmo(target).kind();
+        Connection connection = new Connection(source, target, normal(order, target, kind, kind.defaultAction()));
+        if (connections.stream().anyMatch(connection::sameEnds)) {
             throw new BoardEditException("connection " + source + " -> " + target + " already exists");
         }
         connections.add(connection);
     }
 
     void disconnect(TriggerSource source, String target) {
-        if (!connections.remove(new Connection(source, target))) {
+        if (!connections.removeIf(new Connection(source, target)::sameEnds)) {
             throw new BoardEditException("there is no connection " + source + " -> " + target);
         }
     }

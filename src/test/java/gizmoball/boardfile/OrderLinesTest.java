@@ -8,6 +8,8 @@ import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.gizmo.Action;
 import gizmoball.model.gizmo.Order;
+import gizmoball.model.loop.Connection;
+import gizmoball.model.loop.TriggerSource;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -37,6 +39,30 @@ class OrderLinesTest {
                 new KeyBinding(88, KeyEdge.DOWN, "LF", Order.of(Action.TOGGLE)),
                 new KeyBinding(67, KeyEdge.UP, "LF", Order.of(Action.FLASH).after(0.125)));
         assertThat(BoardFiles.toText(board)).isEqualTo(BOARD);
+    }
+
+    @Test
+    void aConnectionWithAnOrderIsOursAndOneWithoutIsTheStandardLine() throws BoardFileException {
+        String text = """
+                Circle C 2 2
+                LeftFlipper LF 6 16
+                Absorber A 0 19 20 20
+                Connect C LF
+                #@Connect C A after 1.5
+                #@Connect OuterWalls LF raise after 0.25
+                Gravity 25.0
+                Friction 0.025 0.025
+                """;
+        Board board = BoardFiles.load("test", text);
+        assertThat(board.connections()).containsExactly(
+                new Connection(TriggerSource.gizmo("C"), "LF"),
+                new Connection(TriggerSource.gizmo("C"), "A", Order.DEFAULT.after(1.5)),
+                new Connection(TriggerSource.OUTER_WALLS, "LF", Order.of(Action.RAISE).after(0.25)));
+        assertThat(BoardFiles.toText(board)).isEqualTo(text);
+        assertThatThrownBy(() -> BoardFiles.load("t", "Circle C 2 2\nConnect C C flash\n"))
+                .isInstanceOf(BoardFileException.class).hasMessageContaining("the line is written #@Connect");
+        assertThatThrownBy(() -> BoardFiles.load("t", "Circle C 2 2\n#@Connect C C fire\n"))
+                .isInstanceOf(BoardFileException.class).hasMessageContaining("C is a circle, which can flash, not fire");
     }
 
     @Test

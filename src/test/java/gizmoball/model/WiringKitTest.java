@@ -67,6 +67,54 @@ class WiringKitTest {
         assertThat(after).isEqualTo(expected);
     }
 
+    @ParameterizedTest(name = "{0} {1}")
+    @MethodSource("everyActionOfEveryKind")
+    void aHitOnAConnectedSourceMakesTheGizmoDoWhatTheConnectionSays(GizmoKind kind, Action action) {
+        Board board = boardWith(kind);
+        board.addGizmo(GizmoKind.SQUARE, "S", 10, 10);
+        board.addBall("Drop", 10.5, 8, 0, 0);
+        board.connect(gizmoball.model.loop.TriggerSource.gizmo("S"), "G", Order.of(action));
+        State before = State.of(board);
+        for (int i = 0; i < 120 && !Double.isFinite(board.gizmo("S").orElseThrow().lastTriggeredAt()); i++) {
+            board.tick(DT);
+        }
+        double hit = board.gizmo("S").orElseThrow().lastTriggeredAt();
+        assertThat(hit).as("the ball hit the square").isFinite();
+        assertThat(board.gizmo("G").orElseThrow().lastTriggeredAt()).as("it flashed at the hit").isEqualTo(hit);
+        State expected = switch (action) {
+            case RAISE, TOGGLE -> before.withFlipperActive(true);
+            case LOWER, FLASH -> before;
+            case FIRE -> before.withHeld(0);
+        };
+        assertThat(State.of(board)).isEqualTo(expected);
+    }
+
+    @Test
+    void aConnectionsDelayCountsFromTheHitToTheNextTickBoundaryItReaches() {
+        Board board = boardWith(GizmoKind.RIGHT_FLIPPER);
+        board.addGizmo(GizmoKind.SQUARE, "S", 10, 10);
+        board.addBall("Drop", 10.5, 8, 0, 0);
+        board.connect(gizmoball.model.loop.TriggerSource.gizmo("S"), "G", Order.of(Action.RAISE).after(0.2));
+        int ticks = 0;
+        while (!Double.isFinite(board.gizmo("S").orElseThrow().lastTriggeredAt())) {
+            board.tick(DT);
+            ticks++;
+        }
+        double hit = board.gizmo("S").orElseThrow().lastTriggeredAt();
+        // The first boundary at or after hit + 0.2 s: the tick that starts there begins with the flipper rising.
+        long boundary = (long) Math.ceil((hit + 0.2) / DT - 1e-6);
+        while (ticks < boundary) {
+            assertThat(flipper(board).isActive()).as("still down after tick " + ticks).isFalse();
+            board.tick(DT);
+            ticks++;
+        }
+        assertThat(flipper(board).isActive()).isFalse();
+        board.tick(DT);
+        assertThat(flipper(board).isActive()).as("raised at the start of tick " + (boundary + 1)).isTrue();
+        assertThat(board.gizmo("G").orElseThrow().lastTriggeredAt()).isEqualTo(boundary * DT,
+                org.assertj.core.api.Assertions.within(1e-9));
+    }
+
     @Test
     void aFlipperToggledOrLoweredWhenUpGoesDown() {
         for (Action action : List.of(Action.TOGGLE, Action.LOWER)) {

@@ -4,6 +4,7 @@ import java.util.List;
 
 import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.MovingShape;
 
 /**
@@ -17,8 +18,8 @@ public interface LoopActions {
     /** The events since the last tick's report, for this tick's. */
     List<PlayEvent> drainEvents();
 
-    /** The gizmo performs its action (stage 5), {@code now} seconds into play. */
-    void trigger(GizmoBase gizmo, double now);
+    /** The gizmo does what its connection orders (stage 5), {@code now} seconds into play. */
+    void trigger(GizmoBase gizmo, Order order, double now);
 
     /** The absorber holds the ball. */
     void capture(Ball ball, Absorber absorber);

@@ -213,14 +213,14 @@ public final class TickRun {
         return hit;
     }
 
-    /** Stage 5: the gizmo or the walls that were hit trigger every gizmo connected to them. */
+    /** Stage 5: the gizmo or the walls that were hit trigger every gizmo connected to them, as each connection says. */
     private void stage5Triggering(TriggerSource source) {
         double now = step.now();
         for (Connection connection : step.view.connections()) {
             if (connection.source().equals(source)) {
                 GizmoBase target = step.view.gizmo(connection.target());
                 if (target != null) {
-                    step.actions.trigger(target, now);
+                    step.actions.trigger(target, connection.order(), now);
                     step.sceneChanged();   // a flipper turned round, an absorber fired, balls woke
                 }
             }

@@ -27,9 +27,10 @@ import java.util.Optional;
 import java.util.OptionalDouble;
 
 /**
- * Key Connect's last step: a popup next to the gizmo asks what the binding makes it do (as the key drives it unless
- * told, or one of the gizmo's own actions), after how many seconds, and whether it acts on key down, key up or both.
- * The arrow keys answer the edge too (the controller takes them); the popup closes whenever no answer is awaited.
+ * The last step of Key Connect and of Connect: a popup next to the gizmo asks what the binding or the connection makes
+ * it do (its own action unless told, or one of the gizmo's actions) and after how many seconds, then for Key Connect
+ * whether it acts on key down, key up or both (the arrow keys answer that too: the controller takes them), for
+ * Connect just to connect. It closes whenever no answer is awaited.
  */
 public final class EdgePopup {
     /** Keeps the popup open when an action is chosen: the edge below is the answer that closes it. */
@@ -82,7 +83,7 @@ public final class EdgePopup {
 
             @Override
             public void popupMenuCanceled(PopupMenuEvent e) {
-                if (controller.awaitingEdge()) {
+                if (awaiting(controller)) {
                     controller.cancel();
                 }
             }
@@ -90,11 +91,15 @@ public final class EdgePopup {
         this.delayRow = delayRow;
     }
 
-    /** The popup of {@code controller}'s Key Connect over {@code panel}, closing whenever no answer is awaited. */
+    private static boolean awaiting(Editor controller) {
+        return controller.awaitingEdge() || controller.awaitingAction();
+    }
+
+    /** The popup of {@code controller}'s Key Connect and Connect over {@code panel}, closing whenever no answer is awaited. */
     public static EdgePopup of(Editor controller, BoardPanel panel) {
         EdgePopup edges = new EdgePopup(controller, panel);
         controller.addStateListener(() -> {
-            if (!controller.awaitingEdge() && edges.popup.isVisible()) {
+            if (!awaiting(controller) && edges.popup.isVisible()) {
                 edges.popup.setVisible(false);
             }
         });
@@ -112,15 +117,20 @@ public final class EdgePopup {
         delay.setText("0");
         Optional<GizmoKind> kind = controller.awaitedTargetKind();
         popup.add(sectionTitle("Action"));
-        popup.add(action(kind.map(EdgePopup::unlessTold).orElse("as the key drives it"), "action.default",
-                Optional.empty(), true));
+        boolean key = controller.awaitingEdge();
+        popup.add(action(kind.map(k -> key ? unlessTold(k) : "its own: " + k.defaultAction().word())
+                .orElse("its own"), "action.default", Optional.empty(), true));
         kind.ifPresent(k -> k.actions().forEach(a -> popup.add(action(a.word(), "action." + a.word(),
                 Optional.of(a), false))));
         popup.add(delayRow);
         popup.addSeparator();
-        popup.add(item("On key down and up (hold)", "edge.both", EdgeChoice.DOWN_AND_UP));
-        popup.add(item("On key down (press)  \u2193", "edge.down", EdgeChoice.DOWN));
-        popup.add(item("On key up (release)  \u2191", "edge.up", EdgeChoice.UP));
+        if (key) {
+            popup.add(item("On key down and up (hold)", "edge.both", () -> controller.chooseEdges(EdgeChoice.DOWN_AND_UP)));
+            popup.add(item("On key down (press)  \u2193", "edge.down", () -> controller.chooseEdges(EdgeChoice.DOWN)));
+            popup.add(item("On key up (release)  \u2191", "edge.up", () -> controller.chooseEdges(EdgeChoice.UP)));
+        } else {
+            popup.add(item("Connect", "order.connect", controller::chooseConnection));
+        }
         Point2D at = controller.selectedGizmo()
                 .map(g -> panel.transform().toScreen(g.x() + g.width(), g.y()))
                 .orElse(new Point2D.Double(panel.getWidth() / 2.0, panel.getHeight() / 2.0));
@@ -140,10 +150,10 @@ public final class EdgePopup {
         }
     }
 
-    /** Answers the edge, or keeps the popup up while the delay does not read. */
-    private void answer(EdgeChoice edges) {
+    /** Gives the answer, or keeps the popup up while the delay does not read. */
+    private void answer(Runnable answer) {
         if (Decimals.parse(delay.getText().strip()).isPresent()) {
-            controller.chooseEdges(edges);
+            answer.run();
         } else {
             controller.tell("The delay \"" + delay.getText().strip() + "\" is not a number of seconds");
             popup.setVisible(true);
@@ -176,10 +186,10 @@ public final class EdgePopup {
         return item;
     }
 
-    private JMenuItem item(String text, String name, EdgeChoice edge) {
+    private JMenuItem item(String text, String name, Runnable answer) {
         JMenuItem item = new JMenuItem(text);
         item.setName(name);
-        item.addActionListener(e -> answer(edge));
+        item.addActionListener(e -> answer(answer));
         return item;
     }
 }

@@ -154,6 +154,8 @@ class BuildModeGuiTest {
         w.clickTool(Tool.CONNECT);
         w.clickCell(4, 4);
         w.clickCell(9, 9);
+        JMenuItem connect = onEdt(() -> EditorGui.showingMenuItem("order.connect"));
+        onEdt(() -> connect.doClick(0));
 
         assertThat(board.connections()).containsExactly(new Connection(TriggerSource.gizmo("C1"), "LF1"));
         JList<?> links = onEdt(() -> EditorGui.find(w.build.properties(), JList.class, "links"));
