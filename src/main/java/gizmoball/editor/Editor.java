@@ -1,6 +1,7 @@
 package gizmoball.editor;
 
 import gizmoball.boardfile.KeyCodes;
+import gizmoball.boardfile.OrderWords;
 import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyBinding;
@@ -8,6 +9,7 @@ import gizmoball.model.KeyEdge;
 import gizmoball.model.game.GameRules;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.TriggerSource;
@@ -222,6 +224,11 @@ public final class Editor {
     /** True after Key Connect has its gizmo and key and waits for {@link #chooseEdges}. */
     public boolean awaitingEdge() {
         return step instanceof PendingStep.AwaitingEdge;
+    }
+
+    /** True after Connect has its source and target and waits for {@link #chooseConnection}. */
+    public boolean awaitingAction() {
+        return step instanceof PendingStep.AwaitingAction;
     }
 
     // ---- commands ----
@@ -443,19 +450,23 @@ public final class Editor {
                 b -> b.unbindKey(binding.keyCode(), binding.edge(), binding.gizmo()));
     }
 
-    /** Completes Key Connect: binds the pending key's chosen edges to the gizmo (one undo step). */
+    /**
+     * Completes Key Connect: binds the pending key's chosen edges to the gizmo with the pending order, its action
+     * (empty: as each edge drives it unless told) and delay (one undo step; the board refuses an action the gizmo
+     * lacks).
+     */
     public boolean chooseEdges(EdgeChoice choice) {
         if (!(step instanceof PendingStep.AwaitingEdge pending)) {
             say("Key Connect: click a gizmo and press a key first");
             return false;
         }
         List<KeyBinding> bindings = choice.edges().stream()
-                .map(edge -> new KeyBinding(pending.keyCode(), edge, pending.gizmo())).toList();
+                .map(edge -> new KeyBinding(pending.keyCode(), edge, pending.gizmo(), pending.order())).toList();
         step = PendingStep.NONE;
         String what = bindings.size() == 1 ? KeyCodes.describe(bindings.get(0))
                 : "key " + KeyCodes.name(pending.keyCode()) + " down and up \u2192 " + pending.gizmo();
         boolean done = edit("Bound " + what,
-                b -> bindings.forEach(k -> b.bindKey(k.keyCode(), k.edge(), k.gizmo())));
+                b -> bindings.forEach(k -> b.bindKey(k.keyCode(), k.edge(), k.gizmo(), k.order())));
         stateChanged();
         return done;
     }
@@ -463,6 +474,46 @@ public final class Editor {
     /** {@link #chooseEdges} with one edge. */
     public boolean chooseEdge(KeyEdge edge) {
         return chooseEdges(edge == KeyEdge.DOWN ? EdgeChoice.DOWN : EdgeChoice.UP);
+    }
+
+    /**
+     * What Key Connect's binding or Connect's connection will make its gizmo do, and after how long, once it is
+     * made.
+     */
+    public void orderPending(Order order) {
+        if (step instanceof PendingStep.AwaitingEdge pending) {
+            step = new PendingStep.AwaitingEdge(pending.gizmo(), pending.keyCode(), order);
+        } else if (step instanceof PendingStep.AwaitingAction pending) {
+            step = new PendingStep.AwaitingAction(pending.source(), pending.target(), order);
+        }
+    }
+
+    /** Completes Connect: connects the pending source to the target with the pending order (one undo step). */
+    public boolean chooseConnection() {
+        if (!(step instanceof PendingStep.AwaitingAction pending)) {
+            say("Connect: click the source, then the gizmo it triggers, first");
+            return false;
+        }
+        step = PendingStep.NONE;
+        boolean done = edit("Connected " + pending.source() + " \u2192 " + pending.target()
+                + OrderWords.of(pending.order()), b -> b.connect(pending.source(), pending.target(), pending.order()));
+        stateChanged();
+        return done;
+    }
+
+    /**
+     * The kind of the gizmo the pending step will drive (Key Connect awaiting its edge, Connect its action), whose
+     * actions the popup
+     * offers; empty when no such answer is awaited.
+     */
+    public Optional<GizmoKind> awaitedTargetKind() {
+        if (step instanceof PendingStep.AwaitingEdge pending) {
+            return board().gizmo(pending.gizmo()).map(Gizmo::kind);
+        }
+        if (step instanceof PendingStep.AwaitingAction pending) {
+            return board().gizmo(pending.target()).map(Gizmo::kind);
+        }
+        return Optional.empty();
     }
 
     // ---- pointer, in board coordinates ----

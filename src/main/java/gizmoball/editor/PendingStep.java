@@ -1,6 +1,7 @@
 package gizmoball.editor;
 
 import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.Order;
 import java.util.List;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.TriggerSource;
@@ -50,11 +51,25 @@ public sealed interface PendingStep {
     /** Connect or Disconnect: the source (a gizmo or the outer walls) is chosen, the target is next. */
     record ConnectingFrom(TriggerSource source) implements PendingStep { }
 
+    /**
+     * Connect: source and target are chosen, and the order so far (what the target does when the source is hit,
+     * after how long); the answer that makes the connection is next.
+     */
+    record AwaitingAction(TriggerSource source, String target, Order order) implements PendingStep { }
+
     /** Key Connect or Key Disconnect: the gizmo is chosen, the key is next. */
     record AwaitingKey(String gizmo) implements PendingStep { }
 
-    /** Key Connect: gizmo and key are chosen; on key down, key up, or both, is next. */
-    record AwaitingEdge(String gizmo, int keyCode) implements PendingStep { }
+    /**
+     * Key Connect: gizmo and key are chosen, and the order so far (what the binding makes the gizmo do, after how
+     * long); on key down, key up, or both, is next.
+     */
+    record AwaitingEdge(String gizmo, int keyCode, Order order) implements PendingStep {
+        /** The gizmo to do as the key drives it, at once, unless the order is changed before the edge is chosen. */
+        AwaitingEdge(String gizmo, int keyCode) {
+            this(gizmo, keyCode, Order.DEFAULT);
+        }
+    }
 
     /** True for the steps of a press that is still held: the pointer's moves are drags of it. */
     default boolean isGesture() {

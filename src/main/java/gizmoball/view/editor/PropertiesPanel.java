@@ -2,6 +2,7 @@ package gizmoball.view.editor;
 
 import gizmoball.boardfile.Decimals;
 import gizmoball.boardfile.KeyCodes;
+import gizmoball.boardfile.OrderWords;
 import gizmoball.editor.Editor;
 import gizmoball.model.Board;
 import gizmoball.model.BoardChange;
@@ -206,7 +207,7 @@ public final class PropertiesPanel extends JPanel {
             String name = shownSelection;
             for (Connection c : board.connections()) {
                 if (c.source().equals(TriggerSource.named(name)) || c.target().equals(name)) {
-                    links.addElement(new Link(c.source() + " \u2192 " + c.target(),
+                    links.addElement(new Link(c.source() + " \u2192 " + c.target() + OrderWords.of(c.order()),
                             () -> controller.disconnect(c.source(), c.target())));
                 }
             }
