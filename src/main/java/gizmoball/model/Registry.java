@@ -104,7 +104,7 @@ final class Registry {
         index.remove(gizmo);
         gizmos.put(replacement.name(), replacement);
         index.put(replacement);
-        flippers = null;
+        movingShapes = null;
     }
 
     /** Moves the gizmo to a new top-left cell, its cells in the grid with it. */
