@@ -2,6 +2,7 @@ package gizmoball.editor;
 
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.Order;
+import java.util.List;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.TriggerSource;
 
@@ -23,6 +24,26 @@ public sealed interface PendingStep {
 
     /** Select: dragging a gizmo grabbed (grabDx, grabDy) cells from its top-left cell. */
     record MovingGizmo(Gizmo gizmo, int grabDx, int grabDy) implements PendingStep { }
+
+    /** Placing a bumper or flipper: the button went down on cell (x0, y0); a drag fills the rectangle to the pointer. */
+    record Filling(int x0, int y0) implements PendingStep { }
+
+    /** Select: a rubber band from (x0, y0) to (x1, y1); {@code adding} (Shift) adds to the selection. */
+    record Banding(double x0, double y0, double x1, double y1, boolean adding) implements PendingStep { }
+
+    /** Select: dragging the selected group, grabbed at (pressX, pressY). */
+    record MovingGroup(List<String> names, double pressX, double pressY) implements PendingStep {
+        public MovingGroup {
+            names = List.copyOf(names);
+        }
+    }
+
+    /**
+     * Select: dragging a handle of the absorber; {@code left}, {@code top}, {@code right}, {@code bottom} say which
+     * of its edges follow the pointer (two for a corner handle, one for an edge handle).
+     */
+    record ResizingAbsorber(Gizmo absorber, boolean left, boolean top, boolean right, boolean bottom)
+            implements PendingStep { }
 
     /** Select: dragging a ball grabbed at (pressX, pressY). */
     record MovingBall(BallView ball, double pressX, double pressY) implements PendingStep { }
@@ -53,6 +74,7 @@ public sealed interface PendingStep {
     /** True for the steps of a press that is still held: the pointer's moves are drags of it. */
     default boolean isGesture() {
         return this instanceof DraggingAbsorber || this instanceof PlacingBall || this instanceof MovingGizmo
-                || this instanceof MovingBall;
+                || this instanceof MovingBall || this instanceof Filling || this instanceof Banding
+                || this instanceof MovingGroup || this instanceof ResizingAbsorber;
     }
 }

@@ -191,6 +191,25 @@ public final class Board {
         edited();
     }
 
+    /**
+     * Moves gizmos and balls together by (dx, dy) L, as one edit: each must fit where it goes with the others
+     * moved too (so a row moves along itself), or nothing moves. Gizmos move by whole cells; the balls an absorber
+     * of the group holds go with it.
+     */
+    public void moveGroup(Collection<String> names, double dx, double dy) {
+        edits.moveGroup(names, dx, dy);
+        edited();
+    }
+
+    /**
+     * Gives an absorber new corners ((x2, y2) exclusive, as {@link #addAbsorber}) with the same checks as adding it
+     * there; it keeps its name, place in board order, colour, connections, keys, points and the balls it holds.
+     */
+    public void resizeAbsorber(String absorber, int x1, int y1, int x2, int y2) {
+        edits.resizeAbsorber(absorber, x1, y1, x2, y2);
+        edited();
+    }
+
     /** Moves a ball's centre, with the same checks as adding it there; its velocity is kept unless captured. */
     public void moveBall(String ball, double x, double y) {
         edits.moveBall(ball, x, y);

@@ -99,6 +99,14 @@ final class Registry {
         movingShapes = null;
     }
 
+    /** Puts {@code replacement} (of the same name) where {@code gizmo} was: in its place in board order, in the grid. */
+    void replace(GizmoBase gizmo, GizmoBase replacement) {
+        index.remove(gizmo);
+        gizmos.put(replacement.name(), replacement);
+        index.put(replacement);
+        movingShapes = null;
+    }
+
     /** Moves the gizmo to a new top-left cell, its cells in the grid with it. */
     void move(GizmoBase gizmo, int x, int y) {
         index.remove(gizmo);

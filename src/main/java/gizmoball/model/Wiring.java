@@ -50,14 +50,14 @@ final class Wiring {
         GizmoKind kind = registry.requireGizmo(target).kind();
         Connection connection = new Connection(source, target, normal(order, target, kind, kind.defaultAction()));
         if (connections.stream().anyMatch(connection::sameEnds)) {
-            throw new BoardEditException("connection " + source + " -> " + target + " already exists");
+            throw new BoardEditException("connection " + source + " \u2192 " + target + " already exists");
         }
         connections.add(connection);
     }
 
     void disconnect(TriggerSource source, String target) {
         if (!connections.removeIf(new Connection(source, target)::sameEnds)) {
-            throw new BoardEditException("there is no connection " + source + " -> " + target);
+            throw new BoardEditException("there is no connection " + source + " \u2192 " + target);
         }
     }
 

@@ -56,7 +56,7 @@ public final class BoardInput extends MouseAdapter implements KeyListener {
         panel.requestFocusInWindow();
         if (SwingUtilities.isLeftMouseButton(e)) {
             Vect p = toBoard(e);
-            controller.press(p.x(), p.y());
+            controller.press(p.x(), p.y(), e.isShiftDown());
             afterKeyOrClick();
         } else if (SwingUtilities.isRightMouseButton(e)) {
             contextMenu.accept(e);

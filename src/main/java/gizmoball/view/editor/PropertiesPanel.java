@@ -43,6 +43,7 @@ import java.awt.GridBagConstraints;
 import java.awt.GridBagLayout;
 import java.awt.Insets;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.awt.event.ActionEvent;
@@ -72,6 +73,8 @@ public final class PropertiesPanel extends JPanel {
 
     private static final int WIDTH = 250;
     private static final int SELECTION_WIDTH = 226;
+    /** Names of a group the selection label lists before "...". */
+    private static final int GROUP_NAMES = 5;
 
     private final Editor controller;
     private final Runnable focusBoard;
@@ -101,6 +104,7 @@ public final class PropertiesPanel extends JPanel {
     private final JList<Link> linkList = new JList<>(links);
     private final JButton removeLink = new JButton("Remove");
     private String shownSelection;
+    private List<String> shownGroup = List.of();
 
     private PropertiesPanel(Editor controller, Runnable focusBoard) {
         this.controller = controller;
@@ -131,7 +135,8 @@ public final class PropertiesPanel extends JPanel {
             }
         });
         controller.addStateListener(() -> {
-            if (!Objects.equals(controller.selected().orElse(null), panel.shownSelection)) {
+            if (!Objects.equals(controller.selected().orElse(null), panel.shownSelection)
+                    || !controller.selection().equals(panel.shownGroup)) {
                 panel.refresh();
             }
         });
@@ -156,9 +161,12 @@ public final class PropertiesPanel extends JPanel {
         RefusedValue.unmark(extraBall);
 
         shownSelection = controller.selected().orElse(null);
-        Optional<Gizmo> gizmo = controller.selectedGizmo();
-        Optional<BallView> ball = controller.selectedBall();
-        selection.setText(describe(gizmo, ball));
+        shownGroup = controller.selection();
+        // Of several selected, nothing one of them alone has is shown: an edit here would seem to apply to all.
+        boolean several = shownGroup.size() > 1;
+        Optional<Gizmo> gizmo = several ? Optional.empty() : controller.selectedGizmo();
+        Optional<BallView> ball = several ? Optional.empty() : controller.selectedBall();
+        selection.setText(several ? describe(shownGroup) : describe(gizmo, ball));
         // The ball's and the colour's rows keep their room when they do not apply, so that nothing below jumps.
         for (NumberField f : new NumberField[]{ballX, ballY, ballVx, ballVy}) {
             f.setEnabled(ball.isPresent());
@@ -203,7 +211,7 @@ public final class PropertiesPanel extends JPanel {
         });
 
         links.clear();
-        if (shownSelection != null) {
+        if (shownSelection != null && !several) {
             String name = shownSelection;
             for (Connection c : board.connections()) {
                 if (c.source().equals(TriggerSource.named(name)) || c.target().equals(name)) {
@@ -596,6 +604,13 @@ public final class PropertiesPanel extends JPanel {
         return controller.wallsSelected()
                 ? named(TriggerSource.OUTER_WALLS.name(), "the walls around the board")
                 : "Nothing selected";
+    }
+
+    /** Several selected: how many, and which (the first few). */
+    private static String describe(List<String> group) {
+        String names = String.join(", ", group.subList(0, Math.min(group.size(), GROUP_NAMES)))
+                + (group.size() > GROUP_NAMES ? ", \u2026" : "");
+        return named(group.size() + " selected", names + " (Shift+click takes one out)");
     }
 
     private static void enableAll(Container rows, boolean enabled) {
