@@ -564,6 +564,31 @@ public final class Board {
         public void removeBall(String ball) {
             registry.remove(registry.ball(ball));
         }
+
+        @Override
+        public boolean serveNextBall() {
+            for (GizmoBase gizmo : registry.gizmos()) {
+                if (gizmo instanceof Absorber absorber && gameRules.isDrain(absorber.name())) {
+                    String name = freshBallName();
+                    Vect at = absorber.holdingPosition(BALL_RADIUS);
+                    Ball ball = new Ball(name, at, Vect.ZERO);
+                    registry.add(ball);
+                    play.capture(ball, absorber);
+                    return true;
+                }
+            }
+            return false;
+        }
+
+        /** "Ball1", "Ball2", ...: the first no gizmo or ball of the board has. */
+        private String freshBallName() {
+            for (int n = 1; ; n++) {
+                String name = "Ball" + n;
+                if (registry.gizmo(name) == null && registry.ball(name) == null) {
+                    return name;
+                }
+            }
+        }
     }
 
     /** The board as the loop sees it and acts on it: the one way in for a {@link TickRun}. */

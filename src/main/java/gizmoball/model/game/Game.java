@@ -74,9 +74,12 @@ public final class Game implements GameProgress {
             } else if (event instanceof PlayEvent.Captured captured && rules.isDrain(captured.absorber()) && !over) {
                 drained(tick, captured);
             } else if (event instanceof PlayEvent.Sunk sunk && rules.isGame() && !over) {
-                // Gone from the board already: lost as a drained ball is, with no next ball waiting in it.
+                // Gone from the board already: lost as a drained ball is; the next, if any, waits in a drain.
                 scored(tick, rules, sunk.sink(), rules.pointsOf(sunk.sink(), GizmoKind.SINK));
                 drains.add(new Drain(tick, sunk.ball(), sunk.sink()));
+                if (toCome > 0 && field.serveNextBall()) {
+                    toCome--;
+                }
                 over = field.ballCount() == 0;
             }
         }
