@@ -8,12 +8,14 @@ import gizmoball.model.gizmo.Accelerator;
 import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.SpawnerView;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.stream.Collectors;
+import physics.Vect;
 
 /**
  * The canonical form of a board: one command per line, gizmos (in the board's order), then rotations, the
@@ -48,6 +50,9 @@ final class BoardWriter {
         for (Gizmo gizmo : board.gizmos()) {
             if (gizmo instanceof AcceleratorView accelerator && accelerator.factor() != Accelerator.DEFAULT_FACTOR) {
                 commands.add(new Command.Factor(gizmo.name(), accelerator.factor()));
+            }
+            if (gizmo instanceof SpawnerView spawner && !spawner.velocity().equals(Vect.ZERO)) {
+                commands.add(new Command.SpawnVelocity(gizmo.name(), spawner.velocity().x(), spawner.velocity().y()));
             }
         }
         for (Gizmo gizmo : board.gizmos()) {

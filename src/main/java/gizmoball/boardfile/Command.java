@@ -279,6 +279,25 @@ public sealed interface Command {
         }
     }
 
+    /** {@code #@SpawnVelocity <name> <vx> <vy>}: the velocity of the balls the spawner adds. */
+    record SpawnVelocity(String name, double vx, double vy) implements Command {
+        public void applyTo(Board board) {
+            board.setSpawnVelocity(name, vx, vy);
+        }
+
+        public String toLine() {
+            return CommandWord.SPAWN_VELOCITY.written() + " " + name + " " + format(vx) + " " + format(vy);
+        }
+
+        public List<String> references() {
+            return List.of(name);
+        }
+
+        public Subject subject() {
+            return new Subject("spawn velocity", name);
+        }
+    }
+
     /**
      * A flipper as play left it: {@code #@FlipperAngle <name> <degrees> up|down}, up when it swings (or stays) toward
      * its active stop. Written before the balls, which may lie where only the raised flipper leaves room.

@@ -35,7 +35,7 @@ final class CommandParser {
      * The first words that other implementations' files really use for commands of their own (the peer boards'
      * extensions: gizmos, connections of the mouse, settings); any other unknown word is simply unknown.
      */
-    private static final Set<String> PEER_EXTENSIONS = Set.of("spawner", "booster",
+    private static final Set<String> PEER_EXTENSIONS = Set.of("booster",
             "teleporter", "portal", "rhombus", "octagon", "multiball", "gate", "spinner", "deathsquare",
             "outerwall", "mouseconnect", "timeperupdate");
     /**
@@ -49,6 +49,8 @@ final class CommandParser {
             "accelerator", new PeerGizmo(CommandWord.ACCELERATOR, "a round bumper that speeds the ball up "
                     + Decimals.format(Accelerator.DEFAULT_FACTOR) + " times a hit (1.4 times in the game that wrote it:"
                     + " #@Factor sets it)"),
+            "spawner", new PeerGizmo(CommandWord.SPAWNER, "adds a ball at rest above it when triggered, as the game"
+                    + " that wrote it adds one (#@SpawnVelocity gives it a velocity)"),
             "booster", new PeerGizmo(CommandWord.ACCELERATOR, "a round bumper that speeds the ball up "
                     + Decimals.format(Accelerator.DEFAULT_FACTOR) + " times a hit (2 times in the game that wrote it:"
                     + " #@Factor sets it)"));
@@ -170,7 +172,8 @@ final class CommandParser {
                     + " (" + word.usage() + "), found " + args.size());
         }
         return switch (word) {
-            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR -> new Command.AddGizmo(word.kind(),
+            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER ->
+                    new Command.AddGizmo(word.kind(),
                     args.get(0), cell("x", args.get(1)), cell("y", args.get(2)));
             case ABSORBER -> absorber(args, notes);
             case BALL -> new Command.AddBall(args.get(0), ballCoordinate("x", args.get(1)),
@@ -183,6 +186,8 @@ final class CommandParser {
             case FLIPPER_STATE -> new Command.FlipperState(args.get(0), number("angle", args.get(1)),
                     direction(args.get(2)));
             case FACTOR -> new Command.Factor(args.get(0), number("factor", args.get(1)));
+            case SPAWN_VELOCITY -> new Command.SpawnVelocity(args.get(0), number("vx", args.get(1)),
+                    number("vy", args.get(2)));
             case GRAVITY -> new Command.Gravity(number("gravity", args.get(0)));
             case FRICTION -> new Command.Friction(number("mu", args.get(0)), number("mu2", args.get(1)));
             case BALLS -> new Command.BallsPerGame(wholeNumber("balls per game", args.get(0)));

@@ -25,6 +25,10 @@ enum CommandWord {
     SINK("Sink", "<name> <x> <y>", true),
     /** Extension gizmo: a round bumper that speeds the ball up. */
     ACCELERATOR("Accelerator", "<name> <x> <y>", true),
+    /** Extension gizmo: adds a ball at its mouth when triggered. */
+    SPAWNER("Spawner", "<name> <x> <y>", true),
+    /** A spawner's velocity for its balls, where it is not zero. */
+    SPAWN_VELOCITY("SpawnVelocity", "<name> <vx> <vy>", true),
     BALL("Ball", "<name> <x> <y> <vx> <vy>"),
     ROTATE("Rotate", "<name>"),
     DELETE("Delete", "<name>"),
@@ -90,6 +94,7 @@ enum CommandWord {
             case ABSORBER -> ABSORBER;
             case SINK -> SINK;
             case ACCELERATOR -> ACCELERATOR;
+            case SPAWNER -> SPAWNER;
         };
     }
 

@@ -13,6 +13,7 @@ import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Rgb;
+import gizmoball.model.gizmo.SpawnerView;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.TriggerSource;
 import java.awt.event.KeyEvent;
@@ -383,6 +384,16 @@ public final class Editor {
         }
         return edit(accelerator + " speeds balls up " + Decimals.format(factor) + " times",
                 b -> b.setFactor(accelerator, factor));
+    }
+
+    /** The velocity of the balls the spawner adds (one undo step; the same value again is no edit). */
+    public boolean setSpawnVelocity(String spawner, double vx, double vy) {
+        if (board.gizmo(spawner).filter(g -> g instanceof SpawnerView s && s.velocity().equals(new Vect(vx, vy)))
+                .isPresent()) {
+            return true;
+        }
+        return edit(spawner + " spawns balls at (" + Decimals.format(vx) + ", " + Decimals.format(vy) + ") L/s",
+                b -> b.setSpawnVelocity(spawner, vx, vy));
     }
 
     /** Makes an absorber a drain of the game or an ordinary absorber (one undo step). */
@@ -915,7 +926,7 @@ public final class Editor {
 
     private ToolHandler newHandler(Tool t) {
         return switch (t) {
-            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR ->
+            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER ->
                     new PlaceGizmoTool(this, t.kind().orElseThrow());
             case ABSORBER -> new PlaceAbsorberTool(this);
             case BALL -> new PlaceBallTool(this);

@@ -34,6 +34,7 @@ public final class NameGenerator {
             case ABSORBER -> "A";
             case SINK -> "SK";
             case ACCELERATOR -> "AC";
+            case SPAWNER -> "SP";
         };
     }
 

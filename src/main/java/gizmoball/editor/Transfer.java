@@ -7,6 +7,7 @@ import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.SpawnerView;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
@@ -141,6 +142,9 @@ final class Transfer {
         to.setColour(name, g.colour());
         if (g instanceof AcceleratorView accelerator) {
             to.setFactor(name, accelerator.factor());
+        }
+        if (g instanceof SpawnerView spawner) {
+            to.setSpawnVelocity(name, spawner.velocity().x(), spawner.velocity().y());
         }
         if (from.gameRules().ownPoints().containsKey(g.name())) {
             to.setPoints(name, from.gameRules().pointsOf(g.name(), g.kind()));

@@ -270,6 +270,12 @@ public final class Board {
         edited();
     }
 
+    /** The velocity of the balls the spawner adds (finite, at most {@link #MAX_SPEED}; at rest unless set). */
+    public void setSpawnVelocity(String spawner, double vx, double vy) {
+        edits.setSpawnVelocity(spawner, vx, vy);
+        edited();
+    }
+
     public void setGravity(double g) {
         if (!Double.isFinite(g)) {
             throw new BoardEditException("gravity must be a finite number, got " + g);
@@ -424,7 +430,9 @@ public final class Board {
             throw new IllegalArgumentException("tick length must be finite and not negative, got " + dt);
         }
         play.performDue(time);
+        play.ticking(true);
         lastTick = new TickRun(loop, loop, dt).run();
+        play.ticking(false);
         play.removeSunk();
         ticks++;
         game.afterTick(ticks, lastTick.events());
@@ -569,7 +577,7 @@ public final class Board {
         public boolean serveNextBall() {
             for (GizmoBase gizmo : registry.gizmos()) {
                 if (gizmo instanceof Absorber absorber && gameRules.isDrain(absorber.name())) {
-                    String name = freshBallName();
+                    String name = play.freshBallName();
                     Vect at = absorber.holdingPosition(BALL_RADIUS);
                     Ball ball = new Ball(name, at, Vect.ZERO);
                     registry.add(ball);
@@ -580,15 +588,6 @@ public final class Board {
             return false;
         }
 
-        /** "Ball1", "Ball2", ...: the first no gizmo or ball of the board has. */
-        private String freshBallName() {
-            for (int n = 1; ; n++) {
-                String name = "Ball" + n;
-                if (registry.gizmo(name) == null && registry.ball(name) == null) {
-                    return name;
-                }
-            }
-        }
     }
 
     /** The board as the loop sees it and acts on it: the one way in for a {@link TickRun}. */

@@ -6,6 +6,7 @@ import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.gizmo.Accelerator;
+import gizmoball.model.gizmo.Spawner;
 import gizmoball.model.loop.Ball;
 
 import java.util.ArrayList;
@@ -282,6 +283,19 @@ final class Edits {
                     + ", not " + factor);
         }
         accelerator.setFactor(factor);
+    }
+
+    void setSpawnVelocity(String gizmo, double vx, double vy) {
+        if (!(registry.requireGizmo(gizmo) instanceof Spawner spawner)) {
+            throw new BoardEditException("only a spawner has a velocity for its balls: " + gizmo + " is "
+                    + registry.requireGizmo(gizmo).kind().withArticle());
+        }
+        Vect velocity = new Vect(vx, vy);
+        if (!Double.isFinite(vx) || !Double.isFinite(vy) || velocity.length() > Board.MAX_SPEED) {
+            throw new BoardEditException("a spawner's velocity is finite and at most " + (int) Board.MAX_SPEED
+                    + " L/s fast, not (" + vx + ", " + vy + ")");
+        }
+        spawner.setVelocity(velocity);
     }
 
     private static double requireFinite(double coordinate, String ball) {

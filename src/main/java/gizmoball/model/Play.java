@@ -6,6 +6,7 @@ import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.Sink;
+import gizmoball.model.gizmo.Spawner;
 import gizmoball.model.gizmo.Surroundings;
 import gizmoball.model.loop.Ball;
 import gizmoball.model.loop.PlayEvent;
@@ -33,6 +34,10 @@ final class Play implements Surroundings {
     private final List<PlayEvent> pendingEvents = new ArrayList<>();
     /** The absorbers that fired a ball since the board's clock last moved (in this tick). */
     private final Set<String> fired = new HashSet<>();
+    /** Whether a tick is running: spawns wait for its end. */
+    private boolean ticking;
+    /** The spawners told to spawn during this tick, in order. */
+    private final List<String> toSpawn = new ArrayList<>();
     /** The balls sinks took in this tick, which leave the board when it is over. */
     private final List<String> sunk = new ArrayList<>();
     /** Actions ordered with a delay, in the order given. */
@@ -174,6 +179,57 @@ final class Play implements Surroundings {
     void capture(Ball ball, Absorber absorber) {
         ball.capture(absorber.holdingPosition(Board.BALL_RADIUS));
         absorber.hold(ball.name());
+    }
+
+    /**
+     * Adds a ball at the spawner's mouth with its velocity, if the mouth is free and the board holds fewer than
+     * {@link Spawner#MAX_BALLS}; during a tick (a hit triggered it) at the tick's end, so that the loop meets no ball
+     * it did not start with.
+     */
+    @Override
+    public void spawn(Spawner spawner) {
+        if (ticking) {
+            toSpawn.add(spawner.name());
+        } else {
+            spawnNow(spawner);
+        }
+    }
+
+    /** A tick starts or ends: spawns asked for while it runs wait for its end. */
+    void ticking(boolean inTick) {
+        ticking = inTick;
+        if (!inTick) {
+            List<String> due = List.copyOf(toSpawn);
+            toSpawn.clear();
+            for (String name : due) {
+                if (registry.gizmo(name) instanceof Spawner spawner) {
+                    spawnNow(spawner);
+                }
+            }
+        }
+    }
+
+    private void spawnNow(Spawner spawner) {
+        Vect mouth = spawner.mouth(Board.BALL_RADIUS);
+        if (registry.balls().size() >= Spawner.MAX_BALLS || !rules.freeForBall(mouth)) {
+            return;
+        }
+        Ball ball = new Ball(freshBallName(), mouth, Vect.ZERO);
+        ball.setVelocity(spawner.velocity());
+        registry.add(ball);
+        recordEvent(new PlayEvent.Spawned(spawner.name(), ball.name()));
+        double margin = 4 * Board.BALL_RADIUS;
+        sleepers.wakeWithin(mouth.x() - margin, mouth.y() - margin, mouth.x() + margin, mouth.y() + margin);
+    }
+
+    /** "Ball1", "Ball2", ...: the first name no gizmo or ball of the board has. */
+    String freshBallName() {
+        for (int n = 1; ; n++) {
+            String name = "Ball" + n;
+            if (registry.gizmo(name) == null && registry.ball(name) == null) {
+                return name;
+            }
+        }
     }
 
     /** The ball stops at the sink's centre, out of play, until {@link #removeSunk} takes it off the board. */

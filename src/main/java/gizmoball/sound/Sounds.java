@@ -36,7 +36,7 @@ public final class Sounds {
         if (event instanceof PlayEvent.Captured || event instanceof PlayEvent.Sunk) {
             return Optional.of(capture());
         }
-        if (event instanceof PlayEvent.Fired) {
+        if (event instanceof PlayEvent.Fired || event instanceof PlayEvent.Spawned) {
             return Optional.of(fire());
         }
         throw new IllegalArgumentException("no sound for " + event);
@@ -75,6 +75,7 @@ public final class Sounds {
             case ABSORBER -> 160;
             case SINK -> 110;
             case ACCELERATOR -> 1100;
+            case SPAWNER -> 440;
         };
     }
 

@@ -30,6 +30,8 @@ public final class BoardPainter {
     static final Color BALL = new Color(0xf2f2f2);
     /** The hole in a sink's cell, where the balls it takes go. */
     public static final Color SINK_HOLE = new Color(0x07080b);
+    /** The arrow on a spawner that points to its mouth. */
+    public static final Color SPAWNER_MARK = new Color(0xe8fffb);
     /** The ring on an accelerator that tells it from a circle bumper. */
     public static final Color ACCELERATOR_MARK = new Color(0xfff1d6);
     /** Size in L of the number of balls an absorber holds, written on the ball in its corner. */
@@ -60,6 +62,7 @@ public final class BoardPainter {
             case ABSORBER -> new Color(0xb24fd6);
             case SINK -> new Color(0x5a6478);
             case ACCELERATOR -> new Color(0xff8a1f);
+            case SPAWNER -> new Color(0x2bb3a6);
         };
     }
 

@@ -5,6 +5,7 @@ import gizmoball.model.gizmo.BumperView;
 import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.SpawnerView;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Graphics2D;
@@ -97,6 +98,31 @@ enum GizmoArt {
             g.draw(circle(new Circle(c.getCenter(), c.getRadius() * RING_RADIUS)));
         }
     },
+    /** A spawner: its cell, with an arrow to the mouth its balls come out of. */
+    SPAWNER_MOUTH {
+        @Override
+        Shape outline(Gizmo gizmo, Interpolation between) {
+            return new Rectangle2D.Double(gizmo.x(), gizmo.y(), 1, 1);
+        }
+
+        @Override
+        void paint(Graphics2D g, Gizmo gizmo, Interpolation between, Color fill, float pixel) {
+            super.paint(g, gizmo, between, fill, pixel);
+            Vect centre = new Vect(gizmo.x() + 0.5, gizmo.y() + 0.5);
+            Vect out = ((SpawnerView) gizmo).mouth(0).minus(centre);   // half a cell towards the mouth
+            Vect across = new Vect(-out.y(), out.x());
+            Path2D.Double arrow = new Path2D.Double();
+            Vect tip = centre.plus(out.times(0.8));
+            Vect left = centre.minus(out.times(0.3)).plus(across.times(0.6));
+            Vect right = centre.minus(out.times(0.3)).minus(across.times(0.6));
+            arrow.moveTo(tip.x(), tip.y());
+            arrow.lineTo(left.x(), left.y());
+            arrow.lineTo(right.x(), right.y());
+            arrow.closePath();
+            g.setColor(BoardPainter.SPAWNER_MARK);
+            g.fill(arrow);
+        }
+    },
     /** An absorber: its whole footprint, whose size is the author's. */
     FOOTPRINT {
         @Override
@@ -120,6 +146,7 @@ enum GizmoArt {
             case ABSORBER -> FOOTPRINT;
             case SINK -> SINK_HOLE;
             case ACCELERATOR -> RINGED_DISC;
+            case SPAWNER -> SPAWNER_MOUTH;
         };
     }
 

@@ -58,7 +58,7 @@ class CommandParserTest {
                 Arguments.of("Colour S1 1.5", "colour '1.5' is neither #rrggbb nor a 32-bit ARGB number"),
                 Arguments.of("Colour S1 256 0 0", "red 256 is not a colour channel 0..255"),
                 Arguments.of("Color S1 0 0", "wrong number of arguments: Colour takes <name> and"),
-                Arguments.of("Spawner S 1 2", "Spawner S: an extension of another implementation, not part of the format"),
+                Arguments.of("Multiball S 1 2", "Multiball S: an extension of another implementation, not part of the format"),
                 Arguments.of("Sink S 1 2 3", "Sink is an addition of this game to the format: it is written #@Sink"),
                 Arguments.of("Booster 0_2 0", "Booster 0_2: an extension of another implementation, not part of the format"),
                 Arguments.of("Flipper F1 1 2", "a Flipper of no known side"),

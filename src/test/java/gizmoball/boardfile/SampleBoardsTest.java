@@ -48,7 +48,8 @@ class SampleBoardsTest {
     @Test
     void theExtensionsBoardShowsOffTheSinksTheAcceleratorsAndTheWiringKit() throws Exception {
         Board board = BoardFiles.load(BOARDS.resolve("extensions.txt"));
-        assertThat(board.gizmos()).extracting(g -> g.kind()).contains(GizmoKind.SINK, GizmoKind.ACCELERATOR);
+        assertThat(board.gizmos()).extracting(g -> g.kind()).contains(GizmoKind.SINK, GizmoKind.ACCELERATOR,
+                GizmoKind.SPAWNER);
         assertThat(board.connections()).anyMatch(c -> c.order().delay() > 0 && c.order().action().isPresent());
         assertThat(board.keyBindings()).anyMatch(k -> k.order().delay() > 0);
         assertThat(board.gameRules().isGame()).isTrue();

@@ -63,6 +63,7 @@ class WiringKitTest {
             case RAISE, TOGGLE -> before.withFlipperActive(true);   // toggled from rest: up
             case LOWER, FLASH -> before;
             case FIRE -> before.withHeld(0);
+            case SPAWN -> before.withOneMoreBall();
         };
         assertThat(after).isEqualTo(expected);
     }
@@ -85,6 +86,7 @@ class WiringKitTest {
             case RAISE, TOGGLE -> before.withFlipperActive(true);
             case LOWER, FLASH -> before;
             case FIRE -> before.withHeld(0);
+            case SPAWN -> before.withOneMoreBall();
         };
         assertThat(State.of(board)).isEqualTo(expected);
     }
@@ -228,20 +230,24 @@ class WiringKitTest {
         return (FlipperView) board.gizmo("G").orElseThrow();
     }
 
-    /** What an action can change: whether the flipper is up, how many balls the absorber holds. */
-    private record State(boolean flipperActive, int held) {
+    /** What an action can change: whether the flipper is up, how many balls the absorber holds, how many there are. */
+    private record State(boolean flipperActive, int held, int balls) {
         static State of(Board board) {
             Gizmo g = board.gizmo("G").orElseThrow();
             return new State(g instanceof FlipperView f && f.isActive(),
-                    (int) board.balls().stream().filter(BallView::isCaptured).count());
+                    (int) board.balls().stream().filter(BallView::isCaptured).count(), board.balls().size());
         }
 
         State withFlipperActive(boolean active) {
-            return new State(active, held);
+            return new State(active, held, balls);
         }
 
         State withHeld(int n) {
-            return new State(flipperActive, n);
+            return new State(flipperActive, n, balls);
+        }
+
+        State withOneMoreBall() {
+            return new State(flipperActive, held, balls + 1);
         }
     }
 }

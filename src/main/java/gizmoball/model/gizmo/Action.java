@@ -17,6 +17,8 @@ public enum Action {
     TOGGLE,
     /** An absorber fires its longest-held ball. */
     FIRE,
+    /** A spawner adds a ball at its mouth. */
+    SPAWN,
     /** Lights up and does nothing else. */
     FLASH;
 

@@ -8,7 +8,7 @@ import java.util.Locale;
  * that plays each and the name the player sees.
  */
 public enum GizmoKind {
-    SQUARE(1), CIRCLE(1), TRIANGLE(1), LEFT_FLIPPER(2), RIGHT_FLIPPER(2), ABSORBER(1), SINK(1), ACCELERATOR(1);
+    SQUARE(1), CIRCLE(1), TRIANGLE(1), LEFT_FLIPPER(2), RIGHT_FLIPPER(2), ABSORBER(1), SINK(1), ACCELERATOR(1), SPAWNER(1);
 
     private final int side;
 
@@ -30,7 +30,7 @@ public enum GizmoKind {
      */
     public boolean rotates() {
         return switch (this) {
-            case SQUARE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER -> true;
+            case SQUARE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SPAWNER -> true;
             case CIRCLE, ABSORBER, SINK, ACCELERATOR -> false;
         };
     }
@@ -44,6 +44,7 @@ public enum GizmoKind {
             case SQUARE, CIRCLE, TRIANGLE, SINK, ACCELERATOR -> List.of(Action.FLASH);
             case LEFT_FLIPPER, RIGHT_FLIPPER -> List.of(Action.TOGGLE, Action.RAISE, Action.LOWER, Action.FLASH);
             case ABSORBER -> List.of(Action.FIRE, Action.FLASH);
+            case SPAWNER -> List.of(Action.SPAWN, Action.FLASH);
         };
     }
 
@@ -56,7 +57,7 @@ public enum GizmoKind {
     public Action pressAction() {
         return switch (this) {
             case LEFT_FLIPPER, RIGHT_FLIPPER -> Action.RAISE;
-            case SQUARE, CIRCLE, TRIANGLE, ABSORBER, SINK, ACCELERATOR -> defaultAction();
+            case SQUARE, CIRCLE, TRIANGLE, ABSORBER, SINK, ACCELERATOR, SPAWNER -> defaultAction();
         };
     }
 
@@ -64,7 +65,7 @@ public enum GizmoKind {
     public Action releaseAction() {
         return switch (this) {
             case LEFT_FLIPPER, RIGHT_FLIPPER -> Action.LOWER;
-            case SQUARE, CIRCLE, TRIANGLE, ABSORBER, SINK, ACCELERATOR -> defaultAction();
+            case SQUARE, CIRCLE, TRIANGLE, ABSORBER, SINK, ACCELERATOR, SPAWNER -> defaultAction();
         };
     }
 
@@ -75,7 +76,7 @@ public enum GizmoKind {
     public boolean canDrain() {
         return switch (this) {
             case ABSORBER -> true;
-            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR -> false;
+            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER -> false;
         };
     }
 
@@ -102,6 +103,7 @@ public enum GizmoKind {
             case ABSORBER -> throw new IllegalArgumentException("an absorber is made from its corners, not a cell");
             case SINK -> new Sink(name, x, y);
             case ACCELERATOR -> new Accelerator(name, x, y);
+            case SPAWNER -> new Spawner(name, x, y);
         };
     }
 }

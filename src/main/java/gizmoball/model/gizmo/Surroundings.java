@@ -10,6 +10,9 @@ public interface Surroundings {
     /** The absorber was triggered: it fires its longest-held ball, if the spot above it is free. */
     void fire(Absorber absorber);
 
+    /** The spawner was told to spawn: a ball at its mouth, if it is free and the board has room for one more. */
+    void spawn(Spawner spawner);
+
     /**
      * The flipper was driven ({@code wasMoving}: whether it was swinging before): one that starts to swing wakes
      * the balls in its box, where all of its sweep lies.

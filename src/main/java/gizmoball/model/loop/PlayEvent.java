@@ -36,6 +36,10 @@ public sealed interface PlayEvent {
     record Sunk(String sink, String ball, Vect at) implements PlayEvent {
     }
 
+    /** A spawner added the ball {@code ball} at its mouth. */
+    record Spawned(String spawner, String ball) implements PlayEvent {
+    }
+
     /** An absorber fired a ball. */
     record Fired(String absorber) implements PlayEvent {
     }

@@ -12,6 +12,7 @@ import gizmoball.model.game.Points;
 import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.Rgb;
+import gizmoball.model.gizmo.SpawnerView;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import gizmoball.model.loop.TriggerSource;
@@ -174,7 +175,14 @@ public final class PropertiesPanel extends JPanel {
                 f.setText("");
             }
         }
-        applyBall.setEnabled(ball.isPresent());
+        Optional<SpawnerView> spawner = gizmo.filter(g -> g instanceof SpawnerView).map(g -> (SpawnerView) g);
+        applyBall.setEnabled(ball.isPresent() || spawner.isPresent());
+        spawner.ifPresent(sp -> {
+            ballVx.setEnabled(true);
+            ballVy.setEnabled(true);
+            ballVx.show(sp.velocity().x());
+            ballVy.show(sp.velocity().y());
+        });
         enableAll(nameRows, gizmo.isPresent() || ball.isPresent());
         name.setText(gizmo.map(Gizmo::name).or(() -> ball.map(BallView::name)).orElse(""));
         RefusedValue.unmark(name);
@@ -543,6 +551,12 @@ public final class PropertiesPanel extends JPanel {
     }
 
     private void applyBall() {
+        Optional<SpawnerView> spawner = controller.selectedGizmo().filter(g -> g instanceof SpawnerView)
+                .map(g -> (SpawnerView) g);
+        if (spawner.isPresent()) {
+            applySpawnVelocity(spawner.get());
+            return;
+        }
         Optional<BallView> ball = controller.selectedBall();
         NumberField[] fields = {ballX, ballY, ballVx, ballVy};
         Optional<double[]> v = values(fields);
@@ -553,6 +567,21 @@ public final class PropertiesPanel extends JPanel {
         Map<JTextField, String> typed = changed(fields,
                 new double[] {b.position().x(), b.position().y(), b.velocity().x(), b.velocity().y()});
         if (controller.setBall(b.name(), v.get()[0], v.get()[1], v.get()[2], v.get()[3])) {
+            focusBoard.run();
+        } else {
+            keepRefused(typed);
+        }
+    }
+
+    /** A spawner's balls' velocity, in the ball's vx and vy fields (its balls are what they describe). */
+    private void applySpawnVelocity(SpawnerView spawner) {
+        NumberField[] fields = {ballVx, ballVy};
+        Optional<double[]> v = values(fields);
+        if (v.isEmpty()) {
+            return;
+        }
+        Map<JTextField, String> typed = changed(fields, new double[] {spawner.velocity().x(), spawner.velocity().y()});
+        if (controller.setSpawnVelocity(spawner.name(), v.get()[0], v.get()[1])) {
             focusBoard.run();
         } else {
             keepRefused(typed);

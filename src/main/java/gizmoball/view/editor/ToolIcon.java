@@ -65,7 +65,7 @@ public final class ToolIcon implements Icon {
         double m = MARGIN;
         double s = SIZE - 2 * m;
         return switch (tool) {
-            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, ABSORBER, SINK, ACCELERATOR ->
+            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, ABSORBER, SINK, ACCELERATOR, SPAWNER ->
                     kindSymbol(tool.kind().orElseThrow());
             case BALL -> g -> {
                 fill(g, EditorColors.BALL, new Ellipse2D.Double(6, 12, 10, 10));
@@ -111,6 +111,16 @@ public final class ToolIcon implements Icon {
                 fill(g, colour(kind), new Rectangle2D.Double(m, m, s, s));
                 g.setColor(BoardPainter.SINK_HOLE);
                 g.fill(new Ellipse2D.Double(m + s * 0.15, m + s * 0.15, s * 0.7, s * 0.7));
+            };
+            case SPAWNER -> g -> {
+                fill(g, colour(kind), new Rectangle2D.Double(m, m, s, s));
+                Path2D arrow = new Path2D.Double();
+                arrow.moveTo(SIZE / 2.0, m + 2);
+                arrow.lineTo(m + 3, SIZE / 2.0 + 3);
+                arrow.lineTo(SIZE - m - 3, SIZE / 2.0 + 3);
+                arrow.closePath();
+                g.setColor(BoardPainter.SPAWNER_MARK);
+                g.fill(arrow);
             };
             case ACCELERATOR -> g -> {
                 fill(g, colour(kind), new Ellipse2D.Double(m, m, s, s));

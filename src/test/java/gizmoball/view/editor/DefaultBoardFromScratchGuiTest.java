@@ -130,6 +130,7 @@ class DefaultBoardFromScratchGuiTest {
             case ABSORBER -> Tool.ABSORBER;
             case SINK -> Tool.SINK;
             case ACCELERATOR -> Tool.ACCELERATOR;
+            case SPAWNER -> Tool.SPAWNER;
         };
         w.clickTool(tool);
         w.dragCells(g.x(), g.y(), g.x() + g.width() - 1, g.y() + g.height() - 1);
