@@ -15,31 +15,31 @@ import java.util.stream.Collectors;
  * (docs/board-files.md: a loader that knows only the standard format skips them as comments).
  */
 enum CommandWord {
-    SQUARE("Square", GizmoKind.SQUARE, "<name> <x> <y>"),
-    CIRCLE("Circle", GizmoKind.CIRCLE, "<name> <x> <y>"),
-    TRIANGLE("Triangle", GizmoKind.TRIANGLE, "<name> <x> <y>"),
-    LEFT_FLIPPER("LeftFlipper", GizmoKind.LEFT_FLIPPER, "<name> <x> <y>"),
-    RIGHT_FLIPPER("RightFlipper", GizmoKind.RIGHT_FLIPPER, "<name> <x> <y>"),
-    ABSORBER("Absorber", GizmoKind.ABSORBER, "<name> <x1> <y1> <x2> <y2>"),
-    BALL("Ball", null, "<name> <x> <y> <vx> <vy>"),
-    ROTATE("Rotate", null, "<name>"),
-    DELETE("Delete", null, "<name>"),
-    MOVE("Move", null, "<name> <x> <y>"),
-    CONNECT("Connect", null, "<name1> <name2>"),
-    KEY_CONNECT("KeyConnect", null, "key <keycode> down|up|change <name>"),
-    COLOUR("Colour", null, "<name> <red> <green> <blue>"),
+    SQUARE("Square", "<name> <x> <y>"),
+    CIRCLE("Circle", "<name> <x> <y>"),
+    TRIANGLE("Triangle", "<name> <x> <y>"),
+    LEFT_FLIPPER("LeftFlipper", "<name> <x> <y>"),
+    RIGHT_FLIPPER("RightFlipper", "<name> <x> <y>"),
+    ABSORBER("Absorber", "<name> <x1> <y1> <x2> <y2>"),
+    BALL("Ball", "<name> <x> <y> <vx> <vy>"),
+    ROTATE("Rotate", "<name>"),
+    DELETE("Delete", "<name>"),
+    MOVE("Move", "<name> <x> <y>"),
+    CONNECT("Connect", "<name1> <name2>"),
+    KEY_CONNECT("KeyConnect", "key <keycode> down|up|change <name>"),
+    COLOUR("Colour", "<name> <red> <green> <blue>"),
     /** Play state: a flipper's angle and direction, written by a save during play. */
-    FLIPPER_STATE("FlipperAngle", null, "<name> <degrees> up|down", true),
-    GRAVITY("Gravity", null, "<g>"),
-    FRICTION("Friction", null, "<mu> <mu2>"),
+    FLIPPER_STATE("FlipperAngle", "<name> <degrees> up|down", true),
+    GRAVITY("Gravity", "<g>"),
+    FRICTION("Friction", "<mu> <mu2>"),
     /** The game: balls per game. */
-    BALLS("Balls", null, "<balls>", true),
+    BALLS("Balls", "<balls>", true),
     /** The game: the score that gives an extra ball. */
-    EXTRA_BALL("ExtraBall", null, "<score>", true),
+    EXTRA_BALL("ExtraBall", "<score>", true),
     /** The game: an absorber whose captured balls are lost. */
-    DRAIN("Drain", null, "<name>", true),
+    DRAIN("Drain", "<name>", true),
     /** The game: what a hit on the gizmo scores. */
-    POINTS("Points", null, "<name> <points>", true);
+    POINTS("Points", "<name> <points>", true);
 
     /** What comes before the word of each of our commands: no space, so that {@code #@ text} stays a comment. */
     static final String OURS = "#@";
@@ -48,22 +48,19 @@ enum CommandWord {
             .collect(Collectors.toUnmodifiableMap(w -> w.spelling.toLowerCase(Locale.ROOT), Function.identity()));
 
     private final String spelling;
-    private final GizmoKind kind;
     private final String usage;
     private final boolean ours;
 
     /** A command of the standard format. */
-    CommandWord(String spelling, GizmoKind kind, String arguments) {
-        this(spelling, kind, arguments, false);
+    CommandWord(String spelling, String arguments) {
+        this(spelling, arguments, false);
     }
 
     /**
-     * @param kind the gizmo the command adds, or null for the other commands
      * @param ours an addition of this game to the standard format, written {@code #@Word}
      */
-    CommandWord(String spelling, GizmoKind kind, String arguments, boolean ours) {
+    CommandWord(String spelling, String arguments, boolean ours) {
         this.spelling = spelling;
-        this.kind = kind;
         this.ours = ours;
         this.usage = (ours ? OURS : "") + spelling + " " + arguments;
     }
@@ -73,9 +70,19 @@ enum CommandWord {
         return Arrays.stream(values()).map(CommandWord::spelling).toList();
     }
 
-    /** The command that adds a gizmo of that kind. */
+    /**
+     * The command that adds a gizmo of that kind: a switch over every kind without a default, so that a new kind does
+     * not compile without its word.
+     */
     static CommandWord of(GizmoKind kind) {
-        return Arrays.stream(values()).filter(word -> word.kind == kind).findFirst().orElseThrow();
+        return switch (kind) {
+            case SQUARE -> SQUARE;
+            case CIRCLE -> CIRCLE;
+            case TRIANGLE -> TRIANGLE;
+            case LEFT_FLIPPER -> LEFT_FLIPPER;
+            case RIGHT_FLIPPER -> RIGHT_FLIPPER;
+            case ABSORBER -> ABSORBER;
+        };
     }
 
     /**
@@ -87,12 +94,10 @@ enum CommandWord {
         return Optional.ofNullable(BY_LOWER_CASE.get(bare.toLowerCase(Locale.ROOT)));
     }
 
-    /** The gizmo this command adds (Square ... RightFlipper, Absorber). */
+    /** The gizmo this command adds (Square ... RightFlipper, Absorber), as {@link #of} says. */
     GizmoKind kind() {
-        if (kind == null) {
-            throw new IllegalStateException(spelling + " adds no gizmo");
-        }
-        return kind;
+        return Arrays.stream(GizmoKind.values()).filter(kind -> of(kind) == this).findFirst()
+                .orElseThrow(() -> new IllegalStateException(spelling + " adds no gizmo"));
     }
 
     /** The word without {@link #OURS}. */

@@ -630,11 +630,12 @@ public final class Editor {
     }
 
     /**
-     * Turns a gizmo 90 degrees clockwise. A circle and an absorber look the same turned: that is refused with
-     * a message and leaves no undo step, rather than "rotating" with nothing to see.
+     * Turns a gizmo 90 degrees clockwise. A kind that looks the same turned (a circle, an absorber:
+     * {@link GizmoKind#rotates}) is refused with a message and leaves no undo step, rather than "rotating" with
+     * nothing to see.
      */
     boolean rotate(Gizmo gizmo) {
-        if (gizmo.kind() == GizmoKind.CIRCLE || gizmo.kind() == GizmoKind.ABSORBER) {
+        if (!gizmo.kind().rotates()) {
             say(gizmo.name() + " is " + gizmo.kind().withArticle()
                     + ": it looks the same turned, so it cannot be rotated");
             stateChanged();

@@ -272,7 +272,7 @@ public final class Board {
     /** Makes an absorber a drain (a ball it captures is lost) or an ordinary absorber again. */
     public void setDrain(String absorber, boolean drain) {
         GizmoBase gizmo = registry.requireGizmo(absorber);
-        if (drain && !(gizmo instanceof Absorber)) {
+        if (drain && !gizmo.kind().canDrain()) {
             throw new BoardEditException("only an absorber can be a drain: " + absorber + " is "
                     + gizmo.kind().withArticle() + ", which captures no ball");
         }

@@ -101,7 +101,7 @@ final class Edits {
 
     void rotate(String gizmo) {
         GizmoBase target = registry.requireGizmo(gizmo);
-        if (target.rotates()) {
+        if (target.kind().rotates()) {
             GizmoBase candidate = target.copy();
             candidate.rotateClockwise();
             refuseIfPresent(rules.ballOverlap(candidate).map(ball -> "rotating " + gizmo + " would make it overlap ball "

@@ -1,8 +1,6 @@
 package gizmoball.view;
 
 import gizmoball.model.Board;
-import gizmoball.model.gizmo.BumperView;
-import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.loop.BallView;
@@ -12,12 +10,9 @@ import java.awt.Font;
 import java.awt.font.GlyphVector;
 import java.awt.Graphics2D;
 import java.awt.Shape;
-import java.awt.geom.Ellipse2D;
 import java.awt.geom.Line2D;
-import java.awt.geom.Path2D;
 import java.awt.geom.Rectangle2D;
 import java.util.LinkedHashMap;
-import java.util.List;
 import java.util.Map;
 import java.util.stream.Collectors;
 import physics.Circle;
@@ -45,6 +40,8 @@ public final class BoardPainter {
     /** Width in L of the glow drawn around a flashing gizmo's outline (half of it outside the gizmo). */
     private static final float HALO_WIDTH = 0.35f;
     private static final int HALO_ALPHA = 210;
+    /** The fixed part draws every gizmo where it is: nothing recorded, nothing to draw between. */
+    private static final Interpolation AT_REST = new Interpolation();
 
     private BoardPainter() {
     }
@@ -67,8 +64,8 @@ public final class BoardPainter {
 
     /**
      * Paints into {@code screen}, whose coordinates are the component's pixels, the part of the board that
-     * only an edit changes: floor, grid, walls and every gizmo but the flippers,
-     * in their resting colours. A view may cache it between edits.
+     * only an edit changes: floor, grid, walls and every gizmo whose picture play does not change
+     * ({@link GizmoArt#changesInPlay}), in their resting colours. A view may cache it between edits.
      */
     public static void paintFixed(Graphics2D screen, Board board, BoardTransform t, boolean grid) {
         Graphics2D g = inBoardUnits(screen, t);
@@ -80,8 +77,9 @@ public final class BoardPainter {
                 paintGrid(g, pixel);
             }
             for (Gizmo gizmo : board.gizmos()) {
-                if (!(gizmo instanceof FlipperView)) {
-                    paintShape(g, shapeOf(gizmo), colourOf(gizmo), pixel);
+                GizmoArt art = GizmoArt.of(gizmo.kind());
+                if (!art.changesInPlay()) {
+                    art.paint(g, gizmo, AT_REST, colourOf(gizmo), pixel);
                 }
             }
             g.setColor(WALLS);
@@ -94,28 +92,25 @@ public final class BoardPainter {
     }
 
     /**
-     * The part that changes while playing, drawn over {@link #paintFixed}: highlights, flippers and balls, the
-     * balls and flippers where {@code between} says between two ticks.
+     * The part that changes while playing, drawn over {@link #paintFixed}: highlights, the gizmos play changes
+     * (flippers) and balls, the balls and flippers where {@code between} says between two ticks.
      */
     static void paintMoving(Graphics2D screen, Board board, BoardTransform t, Interpolation between) {
         Graphics2D g = inBoardUnits(screen, t);
         try {
             float pixel = (float) (1 / t.scale());
             for (Gizmo gizmo : board.gizmos()) {
+                GizmoArt art = GizmoArt.of(gizmo.kind());
                 double glow = flash(board.time() - gizmo.lastTriggeredAt());
-                Color fill = lit(colourOf(gizmo), glow);
                 if (glow > 0) {
-                    paintHalo(g, gizmo instanceof FlipperView flipper ? outline(flipper, between.tip(flipper))
-                            : shapeOf(gizmo), glow);
+                    paintHalo(g, art.outline(gizmo, between), glow);
                 }
-                if (gizmo instanceof FlipperView flipper) {
-                    paintFlipper(g, flipper, between.tip(flipper), fill, pixel);
-                } else if (glow > 0) {
-                    paintShape(g, shapeOf(gizmo), fill, pixel);
+                if (art.changesInPlay() || glow > 0) {
+                    art.paint(g, gizmo, between, lit(colourOf(gizmo), glow), pixel);
                 }
             }
             for (BallView ball : board.balls()) {
-                paintShape(g, circle(new Circle(between.ball(ball), ball.radius())), BALL, pixel);
+                paintShape(g, GizmoArt.circle(new Circle(between.ball(ball), ball.radius())), BALL, pixel);
             }
             paintHeldCounts(g, board);
         } finally {
@@ -155,33 +150,13 @@ public final class BoardPainter {
         }
     }
 
-    private static Shape shapeOf(Gizmo gizmo) {
-        if (gizmo instanceof BumperView bumper) {
-            return bumper.kind() == GizmoKind.CIRCLE ? circle(bumper.circle()) : polygon(bumper.outline());
-        }
-        return new Rectangle2D.Double(gizmo.x(), gizmo.y(), gizmo.width(), gizmo.height());
-    }
-
     /** Filled, with a one-pixel darker edge so that neighbouring gizmos of one kind stay distinguishable. */
-    private static void paintShape(Graphics2D g, Shape shape, Color fill, float pixel) {
+    static void paintShape(Graphics2D g, Shape shape, Color fill, float pixel) {
         g.setColor(fill);
         g.fill(shape);
         g.setColor(fill.darker());
         g.setStroke(new BasicStroke(pixel));
         g.draw(shape);
-    }
-
-    private static void paintFlipper(Graphics2D g, FlipperView f, Vect tip, Color fill, float pixel) {
-        Line2D bar = new Line2D.Double(f.pivot().toPoint2D(), tip.toPoint2D());
-        g.setColor(fill.darker());
-        g.setStroke(new BasicStroke((float) (2 * f.radius()), BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
-        g.draw(bar);
-        g.setColor(fill);
-        g.setStroke(new BasicStroke((float) (2 * f.radius()) - 2 * pixel, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
-        g.draw(bar);
-        double hub = f.radius() / 3;
-        g.setColor(fill.darker().darker());
-        g.fill(new Ellipse2D.Double(f.pivot().x() - hub, f.pivot().y() - hub, 2 * hub, 2 * hub));
     }
 
     /** How brightly a gizmo triggered that long ago flashes: 1 at the trigger, fading linearly to 0 at FLASH_SECONDS. */
@@ -205,30 +180,7 @@ public final class BoardPainter {
         g.draw(shape);
     }
 
-    /** The flipper's outline: its bar with round ends, as wide as the flipper. */
-    private static Shape outline(FlipperView f, Vect tip) {
-        Line2D bar = new Line2D.Double(f.pivot().toPoint2D(), tip.toPoint2D());
-        return new BasicStroke((float) (2 * f.radius()), BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND)
-                .createStrokedShape(bar);
-    }
-
     private static int mix(int channel, double towardsWhite) {
         return (int) Math.round(channel + (255 - channel) * towardsWhite);
-    }
-
-    private static Shape circle(Circle c) {
-        Vect centre = c.getCenter();
-        double r = c.getRadius();
-        return new Ellipse2D.Double(centre.x() - r, centre.y() - r, 2 * r, 2 * r);
-    }
-
-    private static Shape polygon(List<Vect> corners) {
-        Path2D.Double path = new Path2D.Double();
-        path.moveTo(corners.get(0).x(), corners.get(0).y());
-        for (Vect corner : corners.subList(1, corners.size())) {
-            path.lineTo(corner.x(), corner.y());
-        }
-        path.closePath();
-        return path;
     }
 }

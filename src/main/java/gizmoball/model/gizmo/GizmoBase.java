@@ -103,14 +103,6 @@ public abstract sealed class GizmoBase permits Bumper, Flipper, Absorber {
     public abstract GizmoBase copy();
 
     /**
-     * Whether a quarter turn changes anything (not for circles and absorbers). For the board and its loop, not for
-     * views.
-     */
-    public boolean rotates() {
-        return kind != GizmoKind.CIRCLE && kind != GizmoKind.ABSORBER;
-    }
-
-    /**
      * Puts its top-left cell at (newX, newY) and rebuilds its shape there. For the board and its loop, not for views.
      */
     public void moveTo(int newX, int newY) {
@@ -120,11 +112,11 @@ public abstract sealed class GizmoBase permits Bumper, Flipper, Absorber {
     }
 
     /**
-     * A quarter turn clockwise, if it {@link #rotates}, and its shape rebuilt. For the board and its loop, not for
+     * A quarter turn clockwise, if its kind {@link GizmoKind#rotates}, and its shape rebuilt. For the board and its loop, not for
      * views.
      */
     public void rotateClockwise() {
-        if (rotates()) {
+        if (kind.rotates()) {
             rotation = (rotation + 1) % 4;
             rebuildShape();
         }

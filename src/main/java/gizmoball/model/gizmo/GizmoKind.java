@@ -23,6 +23,28 @@ public enum GizmoKind {
         return side;
     }
 
+    /**
+     * Whether a quarter turn changes it: not for a circle or an absorber, which look and play the same turned. A switch
+     * over every kind, so that a new kind says.
+     */
+    public boolean rotates() {
+        return switch (this) {
+            case SQUARE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER -> true;
+            case CIRCLE, ABSORBER -> false;
+        };
+    }
+
+    /**
+     * Whether a gizmo of this kind can be a game's drain, its captured balls lost: an absorber (a switch over every
+     * kind, so that a new kind says).
+     */
+    public boolean canDrain() {
+        return switch (this) {
+            case ABSORBER -> true;
+            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER -> false;
+        };
+    }
+
     /** How every message and help text names the kind: "square", "left flipper". */
     public String displayName() {
         return name().toLowerCase(Locale.ROOT).replace('_', ' ');

@@ -9,7 +9,6 @@ import gizmoball.model.KeyBinding;
 import gizmoball.model.game.GameRules;
 import gizmoball.model.game.Points;
 import gizmoball.model.gizmo.Gizmo;
-import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
@@ -181,7 +180,7 @@ public final class PropertiesPanel extends JPanel {
         points.setEnabled(gizmo.isPresent());
         points.setText(gizmo.map(g -> Integer.toString(board.gameRules().pointsOf(g.name(), g.kind()))).orElse(""));
         RefusedValue.unmark(points);
-        drain.setEnabled(gizmo.filter(g -> g.kind() == GizmoKind.ABSORBER).isPresent());
+        drain.setEnabled(gizmo.filter(g -> g.kind().canDrain()).isPresent());
         drain.setSelected(gizmo.filter(g -> board.gameRules().isDrain(g.name())).isPresent());
         gizmo.ifPresent(g -> {
             colour.setText(g.colour().map(Editor::hex).orElse(""));

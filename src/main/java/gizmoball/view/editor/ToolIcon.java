@@ -18,10 +18,13 @@ import java.awt.geom.Line2D;
 import java.awt.geom.Path2D;
 import java.awt.geom.Rectangle2D;
 import java.awt.geom.RoundRectangle2D;
+import java.util.function.Consumer;
 
 /** A palette icon drawn with Java2D in the board's colours, so the palette looks like what it places. */
 public final class ToolIcon implements Icon {
     static final int SIZE = 28;
+    /** The margin around a symbol that fills the icon. */
+    private static final double MARGIN = 6;
 
     private final Tool tool;
 
@@ -48,53 +51,68 @@ public final class ToolIcon implements Icon {
             g.setColor(EditorColors.ICON_BACKGROUND);
             g.fill(new RoundRectangle2D.Double(0, 0, SIZE, SIZE, 6, 6));
             g.setStroke(new BasicStroke(2f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
-            paintSymbol(g);
+            symbol().accept(g);
         } finally {
             g.dispose();
         }
     }
 
-    private void paintSymbol(Graphics2D g) {
-        double m = 6;
+    /**
+     * What the icon shows: a switch over every tool without a default, so a new tool does not compile without an
+     * icon, and a placement tool shows its kind ({@link #kindSymbol}, likewise over every kind).
+     */
+    private Consumer<Graphics2D> symbol() {
+        double m = MARGIN;
         double s = SIZE - 2 * m;
-        switch (tool) {
-            case SQUARE -> fill(g, colour(GizmoKind.SQUARE), new Rectangle2D.Double(m, m, s, s));
-            case CIRCLE -> fill(g, colour(GizmoKind.CIRCLE), new Ellipse2D.Double(m, m, s, s));
-            case TRIANGLE -> fill(g, colour(GizmoKind.TRIANGLE), triangle(m, m, s));
-            case LEFT_FLIPPER -> flipper(g, m, m, s, true);
-            case RIGHT_FLIPPER -> flipper(g, m, m, s, false);
-            case ABSORBER -> fill(g, colour(GizmoKind.ABSORBER), new Rectangle2D.Double(4, SIZE / 2.0, SIZE - 8, 8));
-            case BALL -> {
+        return switch (tool) {
+            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, ABSORBER -> kindSymbol(tool.kind().orElseThrow());
+            case BALL -> g -> {
                 fill(g, EditorColors.BALL, new Ellipse2D.Double(6, 12, 10, 10));
                 arrow(g, EditorColors.ICON_INK, 14, 14, 23, 5);
-            }
-            case SELECT -> fill(g, EditorColors.ICON_INK, pointer());
-            case ROTATE -> {
+            };
+            case SELECT -> g -> fill(g, EditorColors.ICON_INK, pointer());
+            case ROTATE -> g -> {
                 g.setColor(EditorColors.ICON_INK);
                 g.draw(new Arc2D.Double(m, m, s, s, 100, -300, Arc2D.OPEN));
                 arrowHead(g, EditorColors.ICON_INK, 11, 9, 15, 6.5);
-            }
-            case DELETE -> {
+            };
+            case DELETE -> g -> {
                 g.setColor(EditorColors.REFUSED);
                 g.setStroke(new BasicStroke(3.5f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
                 g.draw(new Line2D.Double(m + 2, m + 2, SIZE - m - 2, SIZE - m - 2));
                 g.draw(new Line2D.Double(SIZE - m - 2, m + 2, m + 2, SIZE - m - 2));
-            }
-            case CONNECT, DISCONNECT -> {
-                fill(g, colour(GizmoKind.SQUARE), new Rectangle2D.Double(3, 3, 8, 8));
-                fill(g, colour(GizmoKind.CIRCLE), new Ellipse2D.Double(17, 17, 8, 8));
-                arrow(g, EditorColors.CONNECTION, 10, 10, 18, 18);
-                if (tool == Tool.DISCONNECT) {
-                    slash(g);
-                }
-            }
-            case KEY_CONNECT, KEY_DISCONNECT -> {
+            };
+            case CONNECT -> ToolIcon::connection;
+            case DISCONNECT -> g -> {
+                connection(g);
+                slash(g);
+            };
+            case KEY_CONNECT -> ToolIcon::keyCap;
+            case KEY_DISCONNECT -> g -> {
                 keyCap(g);
-                if (tool == Tool.KEY_DISCONNECT) {
-                    slash(g);
-                }
-            }
-        }
+                slash(g);
+            };
+        };
+    }
+
+    /** The icon of the tool that places gizmos of that kind, in the colour the board painter gives the kind. */
+    private static Consumer<Graphics2D> kindSymbol(GizmoKind kind) {
+        double m = MARGIN;
+        double s = SIZE - 2 * m;
+        return switch (kind) {
+            case SQUARE -> g -> fill(g, colour(kind), new Rectangle2D.Double(m, m, s, s));
+            case CIRCLE -> g -> fill(g, colour(kind), new Ellipse2D.Double(m, m, s, s));
+            case TRIANGLE -> g -> fill(g, colour(kind), triangle(m, m, s));
+            case LEFT_FLIPPER -> g -> flipper(g, m, m, s, true);
+            case RIGHT_FLIPPER -> g -> flipper(g, m, m, s, false);
+            case ABSORBER -> g -> fill(g, colour(kind), new Rectangle2D.Double(4, SIZE / 2.0, SIZE - 8, 8));
+        };
+    }
+
+    private static void connection(Graphics2D g) {
+        fill(g, colour(GizmoKind.SQUARE), new Rectangle2D.Double(3, 3, 8, 8));
+        fill(g, colour(GizmoKind.CIRCLE), new Ellipse2D.Double(17, 17, 8, 8));
+        arrow(g, EditorColors.CONNECTION, 10, 10, 18, 18);
     }
 
     /** The colour the board painter gives that kind, so the palette shows what will appear on the board. */

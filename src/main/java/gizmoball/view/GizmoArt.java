@@ -1,0 +1,125 @@
+package gizmoball.view;
+
+import gizmoball.model.gizmo.BumperView;
+import gizmoball.model.gizmo.FlipperView;
+import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.GizmoKind;
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Graphics2D;
+import java.awt.Shape;
+import java.awt.geom.Ellipse2D;
+import java.awt.geom.Line2D;
+import java.awt.geom.Path2D;
+import java.awt.geom.Rectangle2D;
+import java.util.List;
+import physics.Circle;
+import physics.Vect;
+
+/**
+ * How each kind of gizmo is drawn, in board units: the one place of the board painter that knows the kinds
+ * (docs/design.md, "Adding a gizmo kind"). {@link #of} is a switch over every kind without a default, so a new kind
+ * does not compile until it says how it is drawn; each drawing says whether play changes it, its outline (where a
+ * flash glows) and how it is painted.
+ */
+enum GizmoArt {
+    /** A square or triangle bumper: its outline polygon. */
+    POLYGON {
+        @Override
+        Shape outline(Gizmo gizmo, Interpolation between) {
+            return polygon(((BumperView) gizmo).outline());
+        }
+    },
+    /** A circle bumper. */
+    DISC {
+        @Override
+        Shape outline(Gizmo gizmo, Interpolation between) {
+            return circle(((BumperView) gizmo).circle());
+        }
+    },
+    /** A flipper: its bar with round ends, at the angle play has turned it to, and a hub at the pivot. */
+    FLIPPER_BAR {
+        @Override
+        boolean changesInPlay() {
+            return true;
+        }
+
+        @Override
+        Shape outline(Gizmo gizmo, Interpolation between) {
+            FlipperView f = (FlipperView) gizmo;
+            return roundCapped(2 * f.radius()).createStrokedShape(bar(f, between));
+        }
+
+        @Override
+        void paint(Graphics2D g, Gizmo gizmo, Interpolation between, Color fill, float pixel) {
+            FlipperView f = (FlipperView) gizmo;
+            Line2D bar = bar(f, between);
+            g.setColor(fill.darker());
+            g.setStroke(roundCapped(2 * f.radius()));
+            g.draw(bar);
+            g.setColor(fill);
+            g.setStroke(roundCapped(2 * f.radius() - 2 * pixel));
+            g.draw(bar);
+            double hub = f.radius() / 3;
+            g.setColor(fill.darker().darker());
+            g.fill(new Ellipse2D.Double(f.pivot().x() - hub, f.pivot().y() - hub, 2 * hub, 2 * hub));
+        }
+    },
+    /** An absorber: its whole footprint, whose size is the author's. */
+    FOOTPRINT {
+        @Override
+        Shape outline(Gizmo gizmo, Interpolation between) {
+            return new Rectangle2D.Double(gizmo.x(), gizmo.y(), gizmo.width(), gizmo.height());
+        }
+    };
+
+    /** How gizmos of that kind are drawn. */
+    static GizmoArt of(GizmoKind kind) {
+        return switch (kind) {
+            case SQUARE, TRIANGLE -> POLYGON;
+            case CIRCLE -> DISC;
+            case LEFT_FLIPPER, RIGHT_FLIPPER -> FLIPPER_BAR;
+            case ABSORBER -> FOOTPRINT;
+        };
+    }
+
+    /**
+     * Whether play changes how it looks: then it is painted with the moving part of the board, every frame; otherwise
+     * with the fixed part, which only an edit changes (and again over it while it flashes).
+     */
+    boolean changesInPlay() {
+        return false;
+    }
+
+    /** Its outline in board units as it is drawn now ({@code between} two ticks), where its flash glows. */
+    abstract Shape outline(Gizmo gizmo, Interpolation between);
+
+    /** Paints it in {@code fill}: by default its outline filled, with a one-pixel darker edge. */
+    void paint(Graphics2D g, Gizmo gizmo, Interpolation between, Color fill, float pixel) {
+        BoardPainter.paintShape(g, outline(gizmo, between), fill, pixel);
+    }
+
+    private static Line2D bar(FlipperView f, Interpolation between) {
+        return new Line2D.Double(f.pivot().toPoint2D(), between.tip(f).toPoint2D());
+    }
+
+    private static BasicStroke roundCapped(double width) {
+        return new BasicStroke((float) width, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND);
+    }
+
+    static Shape circle(Circle c) {
+        Vect centre = c.getCenter();
+        double r = c.getRadius();
+        return new Ellipse2D.Double(centre.x() - r, centre.y() - r, 2 * r, 2 * r);
+    }
+
+    static Shape polygon(List<Vect> corners) {
+        Path2D.Double path = new Path2D.Double();
+        path.moveTo(corners.get(0).x(), corners.get(0).y());
+        for (Vect corner : corners.subList(1, corners.size())) {
+            path.lineTo(corner.x(), corner.y());
+        }
+        path.closePath();
+        return path;
+    }
+}
