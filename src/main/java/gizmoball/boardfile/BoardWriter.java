@@ -55,10 +55,10 @@ final class BoardWriter {
                     ball.velocity().x(), ball.velocity().y()));
         }
         for (Connection connection : board.connections()) {
-            commands.add(new Command.Connect(connection.source(), connection.target()));
+            commands.add(new Command.Connect(connection.source(), connection.target(), connection.order()));
         }
         for (KeyBinding binding : board.keyBindings()) {
-            commands.add(new Command.KeyConnect(binding.keyCode(), binding.edge(), binding.gizmo()));
+            commands.add(new Command.KeyConnect(binding.keyCode(), binding.edge(), binding.gizmo(), binding.order()));
         }
         commands.add(new Command.Gravity(board.gravity()));
         commands.add(new Command.Friction(board.mu(), board.mu2()));

@@ -6,6 +6,7 @@ import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.TriggerSource;
 import java.util.List;
@@ -163,14 +164,24 @@ public sealed interface Command {
         }
     }
 
-    /** {@code source} as the file names it: the word {@code OuterWalls} is the outer walls. */
-    record Connect(TriggerSource source, String target) implements Command {
+    /**
+     * {@code source} as the file names it: the word {@code OuterWalls} is the outer walls. {@code order} is the
+     * connection's action and delay: one of the standard format has neither; one with them is ours,
+     * {@code #@Connect C1 LF raise after 0.25}.
+     */
+    record Connect(TriggerSource source, String target, Order order) implements Command {
+        /** A connection of the standard format. */
+        Connect(TriggerSource source, String target) {
+            this(source, target, Order.DEFAULT);
+        }
+
         public void applyTo(Board board) {
-            board.connect(source, target);
+            board.connect(source, target, order);
         }
 
         public String toLine() {
-            return CommandWord.CONNECT.written() + " " + source.name() + " " + target;
+            return (order.isDefault() ? "" : CommandWord.OURS) + CommandWord.CONNECT.spelling() + " " + source.name()
+                    + " " + target + OrderWords.of(order);
         }
 
         public List<String> references() {
@@ -178,14 +189,23 @@ public sealed interface Command {
         }
     }
 
-    record KeyConnect(int keyCode, KeyEdge edge, String gizmo) implements Command {
+    /**
+     * {@code order} is the binding's action and delay: a binding of the standard format has neither and is written
+     * as the standard format has it; one with them is ours, {@code #@KeyConnect key 32 down A fire after 0.5}.
+     */
+    record KeyConnect(int keyCode, KeyEdge edge, String gizmo, Order order) implements Command {
+        /** A binding of the standard format. */
+        KeyConnect(int keyCode, KeyEdge edge, String gizmo) {
+            this(keyCode, edge, gizmo, Order.DEFAULT);
+        }
+
         public void applyTo(Board board) {
-            board.bindKey(keyCode, edge, gizmo);
+            board.bindKey(keyCode, edge, gizmo, order);
         }
 
         public String toLine() {
-            return CommandWord.KEY_CONNECT.written() + " key " + keyCode + " " + edge.name().toLowerCase(Locale.ROOT)
-                    + " " + gizmo;
+            return (order.isDefault() ? "" : CommandWord.OURS) + CommandWord.KEY_CONNECT.spelling() + " key " + keyCode
+                    + " " + edge.name().toLowerCase(Locale.ROOT) + " " + gizmo + OrderWords.of(order);
         }
 
         public List<String> references() {

@@ -2,6 +2,7 @@ package gizmoball.boardfile;
 
 import gizmoball.model.Board;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.TriggerSource;
 import java.util.ArrayList;
@@ -86,7 +87,19 @@ final class CommandParser {
             throw new Refusal(word.spelling() + " is an addition of this game to the format: it is written "
                     + word.written() + ", which other implementations skip as a comment");
         }
-        return new Parsed(parse(word, words.subList(1, words.size()), notes), notes);
+        List<String> args = words.subList(1, words.size());
+        boolean ordering = word == CommandWord.KEY_CONNECT || word == CommandWord.CONNECT;
+        if (ordering && markedOurs && args.size() > word.argumentCount()) {
+            Order order = OrderWords.parse(args.subList(word.argumentCount(), args.size()));
+            return new Parsed(withOrder(parse(word, args.subList(0, word.argumentCount()), notes), order), notes);
+        }
+        if (ordering && !markedOurs && args.size() > word.argumentCount()
+                && OrderWords.startsAnOrder(args.get(word.argumentCount()))
+                && !args.get(word.argumentCount()).equals(args.get(word.argumentCount() - 1))) {
+            throw new Refusal("an action or a delay is an addition of this game to the format: the line is written "
+                    + CommandWord.OURS + word.spelling() + ", which other implementations skip as a comment");
+        }
+        return new Parsed(parse(word, args, notes), notes);
     }
 
     /**
@@ -103,6 +116,15 @@ final class CommandParser {
         List<String> words = new ArrayList<>(written);
         words.set(0, word);
         return words;
+    }
+
+    /** The connection or key binding with the order written after its target. */
+    private static Command withOrder(Command command, Order order) {
+        if (command instanceof Command.KeyConnect k) {
+            return new Command.KeyConnect(k.keyCode(), k.edge(), k.gizmo(), order);
+        }
+        Command.Connect c = (Command.Connect) command;
+        return new Command.Connect(c.source(), c.target(), order);
     }
 
     private static Command parse(CommandWord word, List<String> given, List<String> notes) throws Refusal {

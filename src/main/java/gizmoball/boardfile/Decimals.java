@@ -29,7 +29,7 @@ public final class Decimals {
      * The shortest plain decimal that reads back to exactly {@code value}: whole numbers as {@code 7.0},
      * never an exponent (some readers split on letters), negative zero kept as {@code -0.0}.
      */
-    static String format(double value) {
+    public static String format(double value) {
         if (!Double.isFinite(value)) {
             throw new IllegalArgumentException("a board file holds only finite numbers, not " + value);
         }

@@ -48,7 +48,8 @@ public final class KeyCodes {
 
     /** "key Z down \u2192 LF". */
     public static String describe(KeyBinding binding) {
-        return "key " + name(binding.keyCode()) + " " + edge(binding.edge()) + " \u2192 " + binding.gizmo();
+        return "key " + name(binding.keyCode()) + " " + edge(binding.edge()) + " \u2192 " + binding.gizmo()
+                + OrderWords.of(binding.order());
     }
 
     /** Name without the prefix -> code. */

@@ -1,9 +1,13 @@
 package gizmoball.editor;
 
+import gizmoball.model.gizmo.Order;
 import gizmoball.model.loop.TriggerSource;
 import java.util.Optional;
 
-/** Connect and Disconnect: click the trigger source (a gizmo, or the outer walls), then the target. */
+/**
+ * Connect and Disconnect: click the trigger source (a gizmo, or the outer walls), then the target; Connect then asks
+ * what the target does (the view's popup, as Key Connect's) before it connects.
+ */
 final class ConnectTool implements ToolHandler {
     private final Editor editor;
     private final boolean connect;
@@ -45,7 +49,9 @@ final class ConnectTool implements ToolHandler {
         String name = target.gizmo();
         editor.setStep(PendingStep.NONE);
         if (connect) {
-            editor.edit("Connected " + from.source() + " \u2192 " + name, b -> b.connect(from.source(), name));
+            editor.setStep(new PendingStep.AwaitingAction(from.source(), name, Order.DEFAULT));
+            editor.say("Connect " + from.source() + " \u2192 " + name + ": choose what " + name + " does when "
+                    + from.source() + " is hit, and after how long");
         } else {
             editor.disconnect(from.source(), name);
         }

@@ -1,6 +1,7 @@
 package gizmoball.editor;
 
 import gizmoball.boardfile.KeyCodes;
+import gizmoball.boardfile.OrderWords;
 import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyBinding;
@@ -8,6 +9,7 @@ import gizmoball.model.KeyEdge;
 import gizmoball.model.game.GameRules;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.TriggerSource;
@@ -45,6 +47,8 @@ public final class Editor {
     /** Dragging 1 L while placing a ball gives it 10 L/s: a board-wide drag is about the launch speed. */
     public static final double VELOCITY_PER_DRAG = 10;
     private static final Pattern HEX_COLOUR = Pattern.compile("[0-9a-fA-F]{6}");
+    /** Names listed in a message before the rest are counted ("S1, S2, S3 and 5 more"). */
+    private static final int LISTED = 4;
     /** A press that moves less than this is a click, not a drag. */
     static final double DRAG_THRESHOLD = 0.1;
 
@@ -58,7 +62,8 @@ public final class Editor {
     private Consumer<String> messages = message -> { };
 
     private Tool tool = Tool.SELECT;
-    private String selected;
+    /** What is selected, in the order it was selected: the last is the one the panels show (see {@link #selected}). */
+    private final List<String> selection = new ArrayList<>();
     private PendingStep step = PendingStep.NONE;
     private Preview preview;
     private Vect pointer;
@@ -74,7 +79,7 @@ public final class Editor {
         Editor editor = new Editor(board);
         // Another board was opened: half-done steps and the selection belonged to the old one.
         editor.history.addResetListener(() -> {
-            editor.selected = null;
+            editor.selection.clear();
             editor.cancel();
         });
         return editor;
@@ -134,18 +139,36 @@ public final class Editor {
         return step;
     }
 
-    /** Name of the selected gizmo or ball, or the outer walls' name; empty if nothing (still) exists. */
+    /**
+     * Name of the selected gizmo or ball, or the outer walls' name; empty if nothing (still) exists. Of several
+     * selected, the one selected last: the one whose connections and properties are shown.
+     */
     public Optional<String> selected() {
-        if (selected == null) {
-            return Optional.empty();
+        for (int i = selection.size() - 1; i >= 0; i--) {
+            if (exists(selection.get(i))) {
+                return Optional.of(selection.get(i));
+            }
         }
-        boolean exists = isWalls(selected) || board.gizmo(selected).isPresent() || board.ball(selected).isPresent();
-        return exists ? Optional.of(selected) : Optional.empty();
+        return Optional.empty();
+    }
+
+    /** Every selected gizmo and ball that (still) exists, in the order selected; the outer walls are not among them. */
+    public List<String> selection() {
+        return selection.stream().filter(n -> !isWalls(n) && exists(n)).toList();
+    }
+
+    /** Whether more than one gizmo or ball is selected. */
+    public boolean severalSelected() {
+        return selection().size() > 1;
+    }
+
+    private boolean exists(String name) {
+        return isWalls(name) || board.gizmo(name).isPresent() || board.ball(name).isPresent();
     }
 
     /** Whether the outer walls are selected (Select's click outside the board, or Connect's source there). */
     public boolean wallsSelected() {
-        return selected != null && isWalls(selected);
+        return selected().filter(Editor::isWalls).isPresent();
     }
 
     private static boolean isWalls(String name) {
@@ -162,6 +185,14 @@ public final class Editor {
 
     public Optional<Preview> preview() {
         return Optional.ofNullable(preview);
+    }
+
+    /** The handles of the one absorber selected with Select / Move, to drag for a new size; empty otherwise. */
+    public List<Handle> handles() {
+        if (tool != Tool.SELECT || step.isGesture() || severalSelected()) {
+            return List.of();
+        }
+        return selectedGizmo().filter(g -> g.kind() == GizmoKind.ABSORBER).map(Handle::of).orElse(List.of());
     }
 
     /** The source chosen by the first click of Connect or Disconnect, waiting for the target. */
@@ -195,6 +226,11 @@ public final class Editor {
         return step instanceof PendingStep.AwaitingEdge;
     }
 
+    /** True after Connect has its source and target and waits for {@link #chooseConnection}. */
+    public boolean awaitingAction() {
+        return step instanceof PendingStep.AwaitingAction;
+    }
+
     // ---- commands ----
 
     public void setTool(Tool newTool) {
@@ -212,8 +248,28 @@ public final class Editor {
         stateChanged();
     }
 
+    /** Selects the one gizmo, ball or the outer walls named, or nothing for null. */
     public void select(String name) {
-        selected = name;
+        selectQuietly(name);
+        stateChanged();
+    }
+
+    /** Shift+click: adds the gizmo or ball to the selection, or takes it out if it is in it. */
+    public void toggleSelected(String name) {
+        selection.removeIf(Editor::isWalls);
+        if (!selection.remove(name)) {
+            selection.add(name);
+        }
+        stateChanged();
+    }
+
+    /** Selects these gizmos and balls (a rubber band, a paste), after what is selected if {@code adding}. */
+    public void selectAll(List<String> names, boolean adding) {
+        if (!adding) {
+            selection.clear();
+        }
+        selection.removeIf(Editor::isWalls);
+        names.stream().filter(n -> !selection.contains(n)).forEach(selection::add);
         stateChanged();
     }
 
@@ -244,26 +300,38 @@ public final class Editor {
     /** Empties the board and resets gravity and friction; undoable (the view asks for confirmation first). */
     public boolean clearBoard() {
         cancelQuietly();
-        selected = null;
+        selection.clear();
         return edit("Board cleared", Board::clear);
     }
 
+    /** Deletes everything selected (one undo step). */
     public boolean deleteSelected() {
-        Optional<String> name = selected().filter(n -> !isWalls(n));
-        if (name.isEmpty()) {
+        List<String> names = selection();
+        if (names.isEmpty()) {
             say("Nothing selected to delete");
             return false;
         }
-        return delete(name.get());
+        return names.size() == 1 ? delete(names.get(0)) : deleteAll("Deleted ", names);
     }
 
+    /**
+     * Turns the selected gizmo 90 degrees clockwise; of several selected, each that turns in its own cells (one undo
+     * step; circles and absorbers look the same turned and stay).
+     */
     public boolean rotateSelected() {
-        Optional<Gizmo> gizmo = selectedGizmo();
-        if (gizmo.isEmpty()) {
+        List<Gizmo> gizmos = selection().stream().flatMap(n -> board.gizmo(n).stream()).toList();
+        if (gizmos.isEmpty()) {
             say("Select a gizmo to rotate");
             return false;
         }
-        return rotate(gizmo.get());
+        if (gizmos.size() == 1) {
+            return rotate(gizmos.get(0));
+        }
+        List<String> turning = gizmos.stream().filter(g -> g.kind().rotates()).map(Gizmo::name).toList();
+        if (turning.isEmpty()) {
+            return refuse("Circles and absorbers look the same turned: none of the selection can be rotated");
+        }
+        return edit("Rotated " + listed(turning), b -> turning.forEach(b::rotate));
     }
 
     /** Sets gravity and friction together (one undo step); unchanged values are no edit. */
@@ -382,19 +450,23 @@ public final class Editor {
                 b -> b.unbindKey(binding.keyCode(), binding.edge(), binding.gizmo()));
     }
 
-    /** Completes Key Connect: binds the pending key's chosen edges to the gizmo (one undo step). */
+    /**
+     * Completes Key Connect: binds the pending key's chosen edges to the gizmo with the pending order, its action
+     * (empty: as each edge drives it unless told) and delay (one undo step; the board refuses an action the gizmo
+     * lacks).
+     */
     public boolean chooseEdges(EdgeChoice choice) {
         if (!(step instanceof PendingStep.AwaitingEdge pending)) {
             say("Key Connect: click a gizmo and press a key first");
             return false;
         }
         List<KeyBinding> bindings = choice.edges().stream()
-                .map(edge -> new KeyBinding(pending.keyCode(), edge, pending.gizmo())).toList();
+                .map(edge -> new KeyBinding(pending.keyCode(), edge, pending.gizmo(), pending.order())).toList();
         step = PendingStep.NONE;
         String what = bindings.size() == 1 ? KeyCodes.describe(bindings.get(0))
                 : "key " + KeyCodes.name(pending.keyCode()) + " down and up \u2192 " + pending.gizmo();
         boolean done = edit("Bound " + what,
-                b -> bindings.forEach(k -> b.bindKey(k.keyCode(), k.edge(), k.gizmo())));
+                b -> bindings.forEach(k -> b.bindKey(k.keyCode(), k.edge(), k.gizmo(), k.order())));
         stateChanged();
         return done;
     }
@@ -402,6 +474,46 @@ public final class Editor {
     /** {@link #chooseEdges} with one edge. */
     public boolean chooseEdge(KeyEdge edge) {
         return chooseEdges(edge == KeyEdge.DOWN ? EdgeChoice.DOWN : EdgeChoice.UP);
+    }
+
+    /**
+     * What Key Connect's binding or Connect's connection will make its gizmo do, and after how long, once it is
+     * made.
+     */
+    public void orderPending(Order order) {
+        if (step instanceof PendingStep.AwaitingEdge pending) {
+            step = new PendingStep.AwaitingEdge(pending.gizmo(), pending.keyCode(), order);
+        } else if (step instanceof PendingStep.AwaitingAction pending) {
+            step = new PendingStep.AwaitingAction(pending.source(), pending.target(), order);
+        }
+    }
+
+    /** Completes Connect: connects the pending source to the target with the pending order (one undo step). */
+    public boolean chooseConnection() {
+        if (!(step instanceof PendingStep.AwaitingAction pending)) {
+            say("Connect: click the source, then the gizmo it triggers, first");
+            return false;
+        }
+        step = PendingStep.NONE;
+        boolean done = edit("Connected " + pending.source() + " \u2192 " + pending.target()
+                + OrderWords.of(pending.order()), b -> b.connect(pending.source(), pending.target(), pending.order()));
+        stateChanged();
+        return done;
+    }
+
+    /**
+     * The kind of the gizmo the pending step will drive (Key Connect awaiting its edge, Connect its action), whose
+     * actions the popup
+     * offers; empty when no such answer is awaited.
+     */
+    public Optional<GizmoKind> awaitedTargetKind() {
+        if (step instanceof PendingStep.AwaitingEdge pending) {
+            return board().gizmo(pending.gizmo()).map(Gizmo::kind);
+        }
+        if (step instanceof PendingStep.AwaitingAction pending) {
+            return board().gizmo(pending.target()).map(Gizmo::kind);
+        }
+        return Optional.empty();
     }
 
     // ---- pointer, in board coordinates ----
@@ -424,7 +536,16 @@ public final class Editor {
     }
 
     public void press(double x, double y) {
-        handler().press(x, y);
+        press(x, y, false);
+    }
+
+    /** A press; {@code extending} (Shift held) adds to the selection instead of replacing it (Select). */
+    public void press(double x, double y, boolean extending) {
+        if (extending) {
+            handler().pressExtending(x, y);
+        } else {
+            handler().press(x, y);
+        }
         stateChanged();
     }
 
@@ -480,8 +601,16 @@ public final class Editor {
         return true;
     }
 
-    /** Moves the selected gizmo one cell, or the selected ball a quarter cell, in the direction (dx, dy). */
+    /**
+     * Moves the selected gizmo one cell, or the selected ball a quarter cell, in the direction (dx, dy); several
+     * selected move together (one undo step), by a cell, or a quarter cell if they are all balls.
+     */
     public boolean nudgeSelected(int dx, int dy) {
+        List<String> group = selection();
+        if (group.size() > 1) {
+            double step = group.stream().anyMatch(n -> board.gizmo(n).isPresent()) ? 1 : BALL_SNAP;
+            return moveGroup(group, dx * step, dy * step);
+        }
         Optional<Gizmo> gizmo = selectedGizmo();
         Optional<BallView> ball = selectedBall();
         if (gizmo.isPresent()) {
@@ -500,9 +629,19 @@ public final class Editor {
         return false;
     }
 
-    /** Selects the gizmo or ball at (x, y), or nothing where there is none (a context menu's target). */
+    /**
+     * Selects the gizmo or ball at (x, y), or nothing where there is none (a context menu's target); one of several
+     * selected keeps them all selected, for the menu to act on them all.
+     */
     public boolean selectAt(double x, double y) {
-        select(ballOrGizmoAt(x, y).orElse(null));
+        Optional<String> there = ballOrGizmoAt(x, y);
+        if (there.isPresent() && selection().contains(there.get())) {
+            selection.remove(there.get());
+            selection.add(there.get());
+            stateChanged();
+        } else {
+            select(there.orElse(null));
+        }
         return selected().isPresent();
     }
 
@@ -539,33 +678,30 @@ public final class Editor {
         }
         boolean done = edit("Renamed " + name + " to " + typed, b -> Transfer.rename(b, name, typed));
         if (done) {
-            selected = typed;
-            stateChanged();
+            select(typed);
         }
         return done;
     }
 
-    /** The board-file text of the selection (its lines, its key bindings), for the clipboard; empty if none. */
+    /**
+     * The board-file text of the selection (its lines, the connections among them, their key bindings), for the
+     * clipboard; empty if nothing is selected.
+     */
     public Optional<String> copySelected() {
-        Optional<String> name = selected().filter(n -> !isWalls(n));
-        if (name.isEmpty()) {
+        List<String> names = selection();
+        if (names.isEmpty()) {
             say("Select a gizmo or ball to copy it");
             return Optional.empty();
         }
-        say("Copied " + name.get());
-        return Optional.of(Transfer.copy(board, List.of(name.get())));
+        say("Copied " + listed(names));
+        return Optional.of(Transfer.copy(board, names));
     }
 
     /** Copies the selection and deletes it (one undo step); the text for the clipboard, empty if nothing. */
     public Optional<String> cutSelected() {
         Optional<String> text = copySelected();
-        if (text.isPresent()) {
-            String name = selected().orElseThrow();
-            if (!edit("Cut " + name, b -> b.delete(name))) {
-                return Optional.empty();
-            }
-            selected = null;
-            stateChanged();
+        if (text.isPresent() && !deleteAll("Cut ", selection())) {
+            return Optional.empty();
         }
         return text;
     }
@@ -581,11 +717,11 @@ public final class Editor {
 
     /** A copy of the selection beside it, under fresh names (one undo step), selected. */
     public boolean duplicateSelected() {
-        Optional<String> name = selected().filter(n -> !isWalls(n));
-        if (name.isEmpty()) {
+        List<String> names = selection();
+        if (names.isEmpty()) {
             return refuse("Select a gizmo or ball to duplicate it");
         }
-        return pasteOn(Transfer.copy(board, List.of(name.get())), true, "Duplicated " + name.get() + " as ");
+        return pasteOn(Transfer.copy(board, names), true, "Duplicated " + listed(names) + " as ");
     }
 
     private boolean pasteOn(String text, boolean elsewhere, String what) {
@@ -600,12 +736,42 @@ public final class Editor {
         int dx = offset.get()[0];
         int dy = offset.get()[1];
         List<String> names = Transfer.place(board.copy(), part.get(), dx, dy);
-        boolean done = edit(what + String.join(", ", names), b -> Transfer.place(b, part.get(), dx, dy));
+        boolean done = edit(what + listed(names), b -> Transfer.place(b, part.get(), dx, dy));
         if (done) {
-            selected = names.get(0);
+            selectAll(names, false);
+        }
+        return done;
+    }
+
+    /**
+     * Deletes the named gizmos and balls as one undo step: the balls first, since an absorber takes the balls it
+     * holds with it.
+     */
+    private boolean deleteAll(String verb, List<String> names) {
+        List<String> ordered = new ArrayList<>(names);
+        ordered.sort(Comparator.comparing((String n) -> board.ball(n).isEmpty()));
+        boolean done = edit(verb + listed(names), b -> ordered.forEach(b::delete));
+        if (done) {
+            selection.clear();
             stateChanged();
         }
         return done;
+    }
+
+    /** "S1, C2 and T1", or for many "S1, C2, T1 and 5 more": the status line and the Edit menu stay short. */
+    static String listed(List<String> names) {
+        if (names.size() == 1) {
+            return names.get(0);
+        }
+        boolean all = names.size() <= LISTED;
+        List<String> head = names.subList(0, all ? names.size() - 1 : LISTED - 1);
+        String rest = all ? names.get(names.size() - 1) : (names.size() - head.size()) + " more";
+        return String.join(", ", head) + " and " + rest;
+    }
+
+    /** A distance as a message shows it: 2, not 2.0; 0.25 as it is. */
+    private static String brief(double v) {
+        return v == Math.rint(v) ? Long.toString((long) v) : Double.toString(v);
     }
 
     // ---- for the tool handlers ----
@@ -626,7 +792,19 @@ public final class Editor {
 
     /** Selects without telling the listeners yet (the handler's caller does, once the step is done). */
     void selectQuietly(String name) {
-        selected = name;
+        selection.clear();
+        if (name != null) {
+            selection.add(name);
+        }
+    }
+
+    /** Moves the named gizmos and balls together by (dx, dy) L (one undo step); no move is no edit. */
+    boolean moveGroup(List<String> names, double dx, double dy) {
+        if (dx == 0 && dy == 0) {
+            return true;
+        }
+        return edit("Moved " + listed(names) + " by (" + brief(dx) + "," + brief(dy) + ")",
+                b -> b.moveGroup(names, dx, dy));
     }
 
     /**
@@ -645,9 +823,7 @@ public final class Editor {
     }
 
     boolean delete(String name) {
-        if (name.equals(selected)) {
-            selected = null;
-        }
+        selection.remove(name);
         return edit("Deleted " + name, b -> b.delete(name));
     }
 
@@ -751,7 +927,7 @@ public final class Editor {
         stateChanged();
     }
 
-    private void stateChanged() {
+    void stateChanged() {
         stateListeners.forEach(Runnable::run);
     }
 }

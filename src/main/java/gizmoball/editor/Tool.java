@@ -9,14 +9,15 @@ import java.util.Optional;
 
 /** The build-mode tools, in palette order, each with the key that selects it and the hint the status line shows. */
 public enum Tool {
-    SQUARE(KeyEvent.VK_S, GizmoKind.SQUARE, "click a cell to place a square bumper"),
-    CIRCLE(KeyEvent.VK_C, GizmoKind.CIRCLE, "click a cell to place a circle bumper"),
-    TRIANGLE(KeyEvent.VK_T, GizmoKind.TRIANGLE, "click a cell to place a triangle bumper"),
-    LEFT_FLIPPER(KeyEvent.VK_L, GizmoKind.LEFT_FLIPPER, "click the top-left cell of a 2x2 box"),
-    RIGHT_FLIPPER(KeyEvent.VK_R, GizmoKind.RIGHT_FLIPPER, "click the top-left cell of a 2x2 box"),
+    SQUARE(KeyEvent.VK_S, GizmoKind.SQUARE, "click a cell to place a square bumper; drag to fill a rectangle"),
+    CIRCLE(KeyEvent.VK_C, GizmoKind.CIRCLE, "click a cell to place a circle bumper; drag to fill a rectangle"),
+    TRIANGLE(KeyEvent.VK_T, GizmoKind.TRIANGLE, "click a cell to place a triangle bumper; drag to fill a rectangle"),
+    LEFT_FLIPPER(KeyEvent.VK_L, GizmoKind.LEFT_FLIPPER, "click the top-left cell of a 2x2 box; drag to fill a rectangle"),
+    RIGHT_FLIPPER(KeyEvent.VK_R, GizmoKind.RIGHT_FLIPPER, "click the top-left cell of a 2x2 box; drag to fill a rectangle"),
     ABSORBER(KeyEvent.VK_A, GizmoKind.ABSORBER, "drag out a rectangle of cells"),
     BALL("Ball", KeyEvent.VK_B, null, "click to place a ball; drag before releasing to give it a velocity"),
-    SELECT("Select / Move", KeyEvent.VK_M, null, "click to select, drag a gizmo or ball to move it"),
+    SELECT("Select / Move", KeyEvent.VK_M, null, "click to select (Shift+click adds), drag from empty space to select many, drag what is selected"
+            + " to move it, drag an absorber's handle to resize it"),
     ROTATE("Rotate", KeyEvent.VK_O, null, "click a gizmo to turn it 90 degrees clockwise"),
     DELETE("Delete", KeyEvent.VK_D, null, "click a gizmo or ball to delete it"),
     CONNECT("Connect", KeyEvent.VK_N, null,

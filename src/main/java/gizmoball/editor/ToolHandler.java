@@ -14,6 +14,11 @@ interface ToolHandler {
 
     void press(double x, double y);
 
+    /** A press with Shift held: adds to what the press would pick (Select); the plain press elsewhere. */
+    default void pressExtending(double x, double y) {
+        press(x, y);
+    }
+
     /** The pointer moved with the button down (only while a gesture of this tool is pending). */
     default void drag(double x, double y) {
     }

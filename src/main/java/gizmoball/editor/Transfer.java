@@ -151,12 +151,12 @@ final class Transfer {
         for (Connection c : from.connections()) {
             if (c.source() instanceof TriggerSource.OfGizmo s && renamed.containsKey(s.gizmo())
                     && renamed.containsKey(c.target())) {
-                to.connect(TriggerSource.gizmo(renamed.get(s.gizmo())), renamed.get(c.target()));
+                to.connect(TriggerSource.gizmo(renamed.get(s.gizmo())), renamed.get(c.target()), c.order());
             }
         }
         for (KeyBinding k : from.keyBindings()) {
             if (renamed.containsKey(k.gizmo())) {
-                to.bindKey(k.keyCode(), k.edge(), renamed.get(k.gizmo()));
+                to.bindKey(k.keyCode(), k.edge(), renamed.get(k.gizmo()), k.order());
             }
         }
     }
@@ -167,12 +167,12 @@ final class Transfer {
             boolean fromIt = c.source() instanceof TriggerSource.OfGizmo s && s.gizmo().equals(name);
             if (fromIt || c.target().equals(name)) {
                 TriggerSource source = fromIt ? TriggerSource.gizmo(renamed.get(name)) : c.source();
-                to.connect(source, renamed.get(c.target()));
+                to.connect(source, renamed.get(c.target()), c.order());
             }
         }
         for (KeyBinding k : from.keyBindings()) {
             if (k.gizmo().equals(name)) {
-                to.bindKey(k.keyCode(), k.edge(), renamed.get(name));
+                to.bindKey(k.keyCode(), k.edge(), renamed.get(name), k.order());
             }
         }
     }

@@ -6,10 +6,11 @@ import gizmoball.model.game.GameRules;
 import gizmoball.model.game.KeyPress;
 import gizmoball.model.game.Playfield;
 import gizmoball.model.gizmo.Absorber;
-import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.MovingShape;
+import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Ball;
@@ -115,6 +116,7 @@ public final class Board {
         mu2 = source.mu2;
         time = source.time;
         play.clockMoved();
+        play.copyDelayedFrom(source.play);
         ticks = source.ticks;
         gameRules = source.gameRules;
         game.copyFrom(source.game);
@@ -187,6 +189,25 @@ public final class Board {
         edited();
     }
 
+    /**
+     * Moves gizmos and balls together by (dx, dy) L, as one edit: each must fit where it goes with the others
+     * moved too (so a row moves along itself), or nothing moves. Gizmos move by whole cells; the balls an absorber
+     * of the group holds go with it.
+     */
+    public void moveGroup(Collection<String> names, double dx, double dy) {
+        edits.moveGroup(names, dx, dy);
+        edited();
+    }
+
+    /**
+     * Gives an absorber new corners ((x2, y2) exclusive, as {@link #addAbsorber}) with the same checks as adding it
+     * there; it keeps its name, place in board order, colour, connections, keys, points and the balls it holds.
+     */
+    public void resizeAbsorber(String absorber, int x1, int y1, int x2, int y2) {
+        edits.resizeAbsorber(absorber, x1, y1, x2, y2);
+        edited();
+    }
+
     /** Moves a ball's centre, with the same checks as adding it there; its velocity is kept unless captured. */
     public void moveBall(String ball, double x, double y) {
         edits.moveBall(ball, x, y);
@@ -205,7 +226,12 @@ public final class Board {
 
     /** Whenever source (a gizmo or the outer walls) is hit, target performs its action. Self-connections allowed. */
     public void connect(TriggerSource source, String target) {
-        wiring.connect(source, target);
+        connect(source, target, Order.DEFAULT);
+    }
+
+    /** Whenever source is hit, target does as {@code order} says: one of its kind's actions, after a delay. */
+    public void connect(TriggerSource source, String target, Order order) {
+        wiring.connect(source, target, order);
         edited();
     }
 
@@ -214,8 +240,14 @@ public final class Board {
         edited();
     }
 
+    /** The key's edge drives the gizmo as that edge does unless told ({@link KeyEdge#actionOf}), at once. */
     public void bindKey(int keyCode, KeyEdge edge, String gizmo) {
-        wiring.bindKey(keyCode, edge, gizmo);
+        bindKey(keyCode, edge, gizmo, Order.DEFAULT);
+    }
+
+    /** The key's edge drives the gizmo as {@code order} says: one of its kind's actions, after a delay. */
+    public void bindKey(int keyCode, KeyEdge edge, String gizmo, Order order) {
+        wiring.bindKey(keyCode, edge, gizmo, order);
         edited();
     }
 
@@ -256,6 +288,7 @@ public final class Board {
         mu2 = DEFAULT_MU2;
         time = 0;
         play.clockMoved();
+        play.forgetDelayed();
         ticks = 0;
         gameRules = GameRules.DEFAULT;
         game.reset();
@@ -382,6 +415,7 @@ public final class Board {
         if (!Double.isFinite(dt) || dt < 0) {
             throw new IllegalArgumentException("tick length must be finite and not negative, got " + dt);
         }
+        play.performDue(time);
         lastTick = new TickRun(loop, loop, dt).run();
         ticks++;
         game.afterTick(ticks, lastTick.events());
@@ -546,8 +580,8 @@ public final class Board {
         }
 
         @Override
-        public List<Flipper> flippers() {
-            return registry.flippers();
+        public List<MovingShape> movingShapes() {
+            return registry.movingShapes();
         }
 
         @Override
@@ -566,8 +600,8 @@ public final class Board {
         }
 
         @Override
-        public double gravity() {
-            return gravity;
+        public Vect gravity() {
+            return new Vect(0, gravity);   // the board's gravity pulls down the board, along +y
         }
 
         @Override
@@ -626,8 +660,8 @@ public final class Board {
         }
 
         @Override
-        public void trigger(GizmoBase gizmo, double now) {
-            play.performAction(gizmo, now);
+        public void trigger(GizmoBase gizmo, Order order, double now) {
+            play.carryOut(gizmo, order.action().orElse(gizmo.kind().defaultAction()), order.delay(), now);
         }
 
         @Override
@@ -636,8 +670,8 @@ public final class Board {
         }
 
         @Override
-        public void wakeSweep(Flipper flipper) {
-            play.wakeSweep(flipper);
+        public void wakeSweep(MovingShape moving) {
+            play.wakeSweep(moving);
         }
 
         @Override

@@ -7,8 +7,15 @@ import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.Ball;
 
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 
 import physics.Vect;
 
@@ -74,7 +81,7 @@ final class Edits {
             throw new BoardEditException("ball " + name + ": velocity (" + vx + "," + vy + ") must be finite");
         }
         Vect position = new Vect(requireFinite(x, name), requireFinite(y, name));
-        Absorber captor = rules.captorOfPlacedBall(name, position, null, ballsMayOverlap);
+        Absorber captor = rules.captorOfPlacedBall(name, position, Set.of(), ballsMayOverlap);
         Ball ball = new Ball(name, position, Vect.ZERO);
         ball.setVelocity(new Vect(vx, vy));
         registry.add(ball);
@@ -133,6 +140,91 @@ final class Edits {
             absorber.held().forEach(held -> registry.ball(held).capture(absorber.holdingPosition(Board.BALL_RADIUS)));
             play.captureFreeBallsIn(absorber);
         }
+    }
+
+    void moveGroup(Collection<String> names, double dx, double dy) {
+        Set<String> group = new LinkedHashSet<>(names);
+        List<GizmoBase> gizmos = new ArrayList<>();
+        List<Ball> balls = new ArrayList<>();
+        for (String name : group) {
+            GizmoBase gizmo = registry.gizmo(name);
+            Ball ball = registry.ball(name);
+            if (gizmo != null) {
+                gizmos.add(gizmo);
+            } else if (ball != null) {
+                balls.add(ball);
+            } else {
+                throw new BoardEditException("cannot move " + name + ": no gizmo or ball named " + name);
+            }
+        }
+        if (!Double.isFinite(dx) || !Double.isFinite(dy)) {
+            throw new BoardEditException("a move by (" + dx + "," + dy + ") is not finite");
+        }
+        if (!gizmos.isEmpty() && (dx != Math.rint(dx) || dy != Math.rint(dy))) {
+            throw new BoardEditException("gizmos move by whole cells, not by (" + dx + "," + dy + ")");
+        }
+        int cx = (int) dx;
+        int cy = (int) dy;
+        // A ball an absorber of the group holds goes with it; so do the balls any moved absorber holds.
+        Set<String> heldInGroup = new HashSet<>();
+        gizmos.stream().filter(g -> g instanceof Absorber).forEach(a -> heldInGroup.addAll(((Absorber) a).held()));
+        List<Ball> loose = balls.stream().filter(b -> !heldInGroup.contains(b.name())).toList();
+        Map<Ball, Absorber> captors = new HashMap<>();
+        // The group moves as one: checked with its own gizmos out of the grid, so that none is in another's way.
+        gizmos.forEach(registry.index()::remove);
+        try {
+            for (GizmoBase gizmo : gizmos) {
+                GizmoBase candidate = gizmo.copy();
+                candidate.moveTo(gizmo.x() + cx, gizmo.y() + cy);
+                refuseIfPresent(rules.problemFor(candidate, null, group));
+            }
+            for (Ball ball : loose) {
+                Vect position = new Vect(requireFinite(ball.position().x() + dx, ball.name()),
+                        requireFinite(ball.position().y() + dy, ball.name()));
+                Absorber captor = rules.captorOfPlacedBall(ball.name(), position, group, false);
+                if (captor != null) {
+                    captors.put(ball, captor);
+                }
+            }
+        } catch (BoardEditException refused) {
+            gizmos.forEach(registry.index()::put);
+            throw refused;
+        }
+        for (GizmoBase gizmo : gizmos) {
+            gizmo.moveTo(gizmo.x() + cx, gizmo.y() + cy);
+        }
+        gizmos.forEach(registry.index()::put);
+        for (Ball ball : loose) {
+            Vect position = ball.position().plus(new Vect(dx, dy));
+            if (ball.isCaptured()) {
+                registry.releaseFromAbsorber(ball);
+                ball.release(position, Vect.ZERO);
+            } else {
+                ball.moveTo(position);
+            }
+        }
+        for (GizmoBase gizmo : gizmos) {
+            if (gizmo instanceof Absorber absorber) {
+                absorber.held().forEach(held -> registry.ball(held).capture(absorber.holdingPosition(Board.BALL_RADIUS)));
+            }
+        }
+        captors.forEach(play::capture);
+        gizmos.stream().filter(g -> g instanceof Absorber).forEach(a -> play.captureFreeBallsIn((Absorber) a));
+    }
+
+    void resizeAbsorber(String name, int x1, int y1, int x2, int y2) {
+        if (!(registry.requireGizmo(name) instanceof Absorber target)) {
+            throw new BoardEditException(name + " is not an absorber: only an absorber can be resized");
+        }
+        if (x2 <= x1 || y2 <= y1) {
+            throw new BoardEditException("absorber " + name + " from (" + x1 + "," + y1 + ") to (" + x2 + "," + y2
+                    + ") must be at least one cell wide and high ((x2, y2) is the exclusive bottom-right corner)");
+        }
+        Absorber candidate = target.resized(x1, y1, x2 - x1, y2 - y1);
+        refuseIfPresent(rules.problemFor(candidate, name));
+        registry.replace(target, candidate);
+        candidate.held().forEach(held -> registry.ball(held).capture(candidate.holdingPosition(Board.BALL_RADIUS)));
+        play.captureFreeBallsIn(candidate);
     }
 
     void moveBall(String ball, double x, double y) {

@@ -9,6 +9,7 @@ import gizmoball.model.loop.TriggerSource;
 
 import java.util.List;
 import java.util.Optional;
+import java.util.Set;
 
 import physics.Vect;
 
@@ -52,6 +53,11 @@ final class PlacementRules {
 
     /** Footprint inside the board, no other gizmo's cells (but the ignored one's), no free ball inside the shape. */
     Optional<String> problemFor(GizmoBase candidate, String ignoring) {
+        return problemFor(candidate, ignoring, Set.of());
+    }
+
+    /** {@link #problemFor(GizmoBase, String)}, the balls named in {@code ballsIgnored} not in the way either. */
+    Optional<String> problemFor(GizmoBase candidate, String ignoring, Set<String> ballsIgnored) {
         String what = (candidate.name().isEmpty() ? candidate.kind().withArticle()
                 : "gizmo " + candidate.name()) + " at (" + candidate.x() + "," + candidate.y() + ")";
         for (int cx = candidate.x(); cx < candidate.x() + candidate.width(); cx++) {
@@ -72,13 +78,18 @@ final class PlacementRules {
         if (candidate instanceof Absorber) {
             return Optional.empty();   // free balls under a new absorber are captured, not in the way
         }
-        return ballOverlap(candidate).map(ball -> wouldOverlap(what, "ball", ball));
+        return ballOverlap(candidate, ballsIgnored).map(ball -> wouldOverlap(what, "ball", ball));
     }
 
     /** The first free ball that would be inside the candidate's body. */
     Optional<String> ballOverlap(GizmoBase candidate) {
+        return ballOverlap(candidate, Set.of());
+    }
+
+    /** The first free ball, but those named in {@code ignoring}, that would be inside the candidate's body. */
+    Optional<String> ballOverlap(GizmoBase candidate, Set<String> ignoring) {
         return registry.balls().stream()
-                .filter(ball -> !ball.isCaptured())
+                .filter(ball -> !ball.isCaptured() && !ignoring.contains(ball.name()))
                 .filter(ball -> Overlaps.ballInGizmo(candidate, ball.position()))
                 .map(Ball::name)
                 .findFirst();
@@ -89,6 +100,11 @@ final class PlacementRules {
      * absorber that would capture it there, or null.
      */
     Absorber captorOfPlacedBall(String name, Vect position, String ignoring, boolean ballsMayOverlap) {
+        return captorOfPlacedBall(name, position, ignoring == null ? Set.of() : Set.of(ignoring), ballsMayOverlap);
+    }
+
+    /** {@link #captorOfPlacedBall(String, Vect, String, boolean)} ignoring every ball named in {@code ignoring}. */
+    Absorber captorOfPlacedBall(String name, Vect position, Set<String> ignoring, boolean ballsMayOverlap) {
         String what = "ball " + name + " at (" + position.x() + "," + position.y() + ")";
         if (!insideBoard(position)) {
             throw new BoardEditException(what + " is outside the board (its centre must be at least "
@@ -113,7 +129,7 @@ final class PlacementRules {
 
     /** Whether a ball could appear there now: inside the board, in no gizmo (absorbers too), on no free ball. */
     boolean freeForBall(Vect position) {
-        return insideBoard(position) && gizmosUnder(position).isEmpty() && freeBallUnder(position, null).isEmpty();
+        return insideBoard(position) && gizmosUnder(position).isEmpty() && freeBallUnder(position, Set.of()).isEmpty();
     }
 
     /** The gizmos a ball centred there would be inside, in the order of the cells around it. */
@@ -125,10 +141,10 @@ final class PlacementRules {
                 .toList();
     }
 
-    /** The first free ball, other than the one named {@code ignoring}, that a ball centred there would overlap. */
-    private Optional<Ball> freeBallUnder(Vect position, String ignoring) {
+    /** The first free ball, other than those named in {@code ignoring}, that a ball centred there would overlap. */
+    private Optional<Ball> freeBallUnder(Vect position, Set<String> ignoring) {
         return registry.balls().stream()
-                .filter(other -> !other.isCaptured() && !other.name().equals(ignoring)
+                .filter(other -> !other.isCaptured() && !ignoring.contains(other.name())
                         && Overlaps.balls(other.position(), position))
                 .findFirst();
     }

@@ -1,7 +1,9 @@
 package gizmoball.model;
 
 import gizmoball.model.gizmo.Absorber;
+import gizmoball.model.gizmo.Action;
 import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.Surroundings;
 import gizmoball.model.loop.Ball;
@@ -9,6 +11,7 @@ import gizmoball.model.loop.PlayEvent;
 import gizmoball.model.loop.Sleepers;
 
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
@@ -29,6 +32,19 @@ final class Play implements Surroundings {
     private final List<PlayEvent> pendingEvents = new ArrayList<>();
     /** The absorbers that fired a ball since the board's clock last moved (in this tick). */
     private final Set<String> fired = new HashSet<>();
+    /** Actions ordered with a delay, in the order given. */
+    private final List<Delayed> delayed = new ArrayList<>();
+
+    /**
+     * An action the gizmo named {@code gizmo} performs at the first tick boundary at or after board time {@code due}.
+     */
+    private record Delayed(double due, String gizmo, Action action) {
+        /**
+         * How far short of the due time a tick may end and still count as reaching it: the clock is a sum of ticks,
+         * and 30 ticks of 1/60 s add up to a hair less than 0.5 s.
+         */
+        static final double ROUNDING = 1e-9;
+    }
 
     Play(Registry registry, PlacementRules rules, Sleepers sleepers) {
         this.registry = registry;
@@ -37,24 +53,17 @@ final class Play implements Surroundings {
     }
 
     /**
-     * The key went down or up: the gizmos bound to that edge are driven as keys drive them (a flipper stays up
-     * while the key is held), and on DOWN those bound to CHANGE perform their action (a flipper toggles).
+     * The key went down or up: the gizmos bound to that edge do what their binding orders (by default as keys drive
+     * them: a flipper stays up while the key is held), and on DOWN those bound to CHANGE too (by default what a trigger
+     * makes them do: a flipper toggles).
      */
     void keyAction(List<KeyBinding> bindings, int keyCode, KeyEdge edge, double now) {
         for (KeyBinding binding : bindings) {
-            if (binding.keyCode() != keyCode) {
-                continue;
-            }
-            GizmoBase gizmo = registry.gizmo(binding.gizmo());
-            if (binding.edge() == KeyEdge.CHANGE && edge == KeyEdge.DOWN) {
-                performAction(gizmo, now);
-            } else if (binding.edge() == edge) {
-                gizmo.markTriggered(now);
-                if (edge == KeyEdge.DOWN) {
-                    gizmo.keyDown(this);
-                } else {
-                    gizmo.keyUp(this);
-                }
+            if (binding.keyCode() == keyCode
+                    && (binding.edge() == edge || binding.edge() == KeyEdge.CHANGE && edge == KeyEdge.DOWN)) {
+                GizmoBase gizmo = registry.gizmo(binding.gizmo());
+                carryOut(gizmo, binding.order().action().orElse(binding.edge().actionOf(gizmo.kind())),
+                        binding.order().delay(), now);
             }
         }
     }
@@ -64,10 +73,52 @@ final class Play implements Surroundings {
         fired.clear();
     }
 
-    /** The gizmo performs its action: a flipper toggles, an absorber fires, a bumper only records the time. */
+    /** The gizmo performs its kind's default action: a flipper toggles, an absorber fires, a bumper flashes. */
     void performAction(GizmoBase gizmo, double now) {
+        perform(gizmo, gizmo.kind().defaultAction(), now);
+    }
+
+    /**
+     * The gizmo performs the action now or, after a delay, at the first tick boundary the delay has reached (before
+     * the tick from there runs).
+     */
+    void carryOut(GizmoBase gizmo, Action action, double delay, double now) {
+        if (delay == 0) {
+            perform(gizmo, action, now);
+        } else {
+            delayed.add(new Delayed(now + delay, gizmo.name(), action));
+        }
+    }
+
+    /**
+     * A tick starts at {@code now}: the delayed actions due by then are performed, earliest first (those due together
+     * in the order they were given), each by the gizmo of its name if the board still has one.
+     */
+    void performDue(double now) {
+        List<Delayed> due = delayed.stream().filter(d -> d.due() <= now + Delayed.ROUNDING)
+                .sorted(Comparator.comparingDouble(Delayed::due)).toList();
+        delayed.removeAll(due);
+        for (Delayed d : due) {
+            GizmoBase gizmo = registry.gizmo(d.gizmo());
+            if (gizmo != null) {
+                perform(gizmo, d.action(), now);
+            }
+        }
+    }
+
+    /** The delayed actions of {@code source} become this board's (a copy of a board in play), or none. */
+    void copyDelayedFrom(Play source) {
+        delayed.clear();
+        delayed.addAll(source.delayed);
+    }
+
+    void forgetDelayed() {
+        delayed.clear();
+    }
+
+    private void perform(GizmoBase gizmo, Action action, double now) {
         gizmo.markTriggered(now);
-        gizmo.act(this);
+        gizmo.perform(action, this);
     }
 
     /**
@@ -81,11 +132,11 @@ final class Play implements Surroundings {
         }
     }
 
-    /** Wakes every ball in the flipper's box, where all of its sweep lies, and what rests on them. */
-    void wakeSweep(Flipper flipper) {
+    /** Wakes every ball in the moving shape's box, where all of its sweep lies, and what rests on them. */
+    void wakeSweep(MovingShape moving) {
         double margin = 2 * Board.BALL_RADIUS;
-        sleepers.wakeWithin(flipper.x() - margin, flipper.y() - margin, flipper.x() + flipper.width() + margin,
-                flipper.y() + flipper.height() + margin);
+        sleepers.wakeWithin(moving.x() - margin, moving.y() - margin, moving.x() + moving.width() + margin,
+                moving.y() + moving.height() + margin);
     }
 
     /**

@@ -1,7 +1,7 @@
 package gizmoball.model;
 
 import gizmoball.model.gizmo.Absorber;
-import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.loop.Ball;
 import gizmoball.model.loop.Sleepers;
@@ -16,8 +16,8 @@ import java.util.Map;
 import java.util.Set;
 
 /**
- * The gizmos and balls of a board by name, in board order, with the grid of cells the gizmos occupy, the flippers
- * among them, and the pairs of balls placed on each other. It keeps these consistent with each other and checks
+ * The gizmos and balls of a board by name, in board order, with the grid of cells the gizmos occupy, the moving
+ * shapes among them, and the pairs of balls placed on each other. It keeps these consistent with each other and checks
  * nothing: {@link PlacementRules} decides what may be placed, {@link Board} what an edit does.
  */
 final class Registry {
@@ -26,8 +26,8 @@ final class Registry {
     private final Map<String, Ball> balls = new LinkedHashMap<>();
     private final Set<Set<String>> passingPairs = new HashSet<>();
     private SpatialIndex index = new SpatialIndex();
-    /** The flippers among the gizmos, found again after every change of the gizmos (null until then). */
-    private List<Flipper> flippers;
+    /** The moving shapes among the gizmos, found again after every change of the gizmos (null until then). */
+    private List<MovingShape> movingShapes;
 
     /** Becomes a deep copy of source. */
     void copyFrom(Registry source) {
@@ -44,7 +44,7 @@ final class Registry {
         balls.clear();
         passingPairs.clear();
         index = new SpatialIndex();
-        flippers = null;
+        movingShapes = null;
     }
 
     Collection<GizmoBase> gizmos() {
@@ -86,7 +86,7 @@ final class Registry {
     void insert(GizmoBase gizmo) {
         gizmos.put(gizmo.name(), gizmo);
         index.put(gizmo);
-        flippers = null;
+        movingShapes = null;
     }
 
     /** Removes the gizmo, and the balls an absorber holds with it. */
@@ -96,7 +96,15 @@ final class Registry {
         if (gizmo instanceof Absorber absorber) {
             absorber.held().forEach(balls::remove);
         }
-        flippers = null;
+        movingShapes = null;
+    }
+
+    /** Puts {@code replacement} (of the same name) where {@code gizmo} was: in its place in board order, in the grid. */
+    void replace(GizmoBase gizmo, GizmoBase replacement) {
+        index.remove(gizmo);
+        gizmos.put(replacement.name(), replacement);
+        index.put(replacement);
+        movingShapes = null;
     }
 
     /** Moves the gizmo to a new top-left cell, its cells in the grid with it. */
@@ -122,17 +130,17 @@ final class Registry {
                 .forEach(g -> ((Absorber) g).letGo(ball.name()));
     }
 
-    List<Flipper> flippers() {
-        if (flippers == null) {
-            List<Flipper> found = new ArrayList<>();
+    List<MovingShape> movingShapes() {
+        if (movingShapes == null) {
+            List<MovingShape> found = new ArrayList<>();
             for (GizmoBase gizmo : gizmos.values()) {
-                if (gizmo instanceof Flipper flipper) {
-                    found.add(flipper);
+                if (gizmo instanceof MovingShape moving) {
+                    found.add(moving);
                 }
             }
-            flippers = List.copyOf(found);
+            movingShapes = List.copyOf(found);
         }
-        return flippers;
+        return movingShapes;
     }
 
     void passThrough(String a, String b) {

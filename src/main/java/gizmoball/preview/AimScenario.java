@@ -9,7 +9,8 @@ import java.util.Optional;
 
 /**
  * The board the aim preview plays: the design as it would be if the gesture in progress were finished now
- * (a ball being placed or moved, a gizmo being placed or moved), and the ball whose path is drawn. The design
+ * (a ball being placed or moved, a gizmo being placed or moved, a group being moved, a rectangle being filled), and
+ * the ball whose path is drawn. The design
  * itself is never changed; a gesture that would be refused changes nothing.
  */
 public record AimScenario(Board board, String ball) {
@@ -43,6 +44,15 @@ public record AimScenario(Board board, String ball) {
                         board.addGizmo(kind.get(), unusedName(board), f.x(), f.y());
                     } else if (selectedGizmo.isPresent()) {
                         board.moveGizmo(selectedGizmo.get(), f.x(), f.y());
+                    }
+                } else if (p instanceof Preview.Group group) {
+                    if (!group.moving().isEmpty()) {
+                        board.moveGroup(group.moving(), group.dx(), group.dy());
+                    } else if (tool.kind().isPresent()) {
+                        for (Preview part : group.parts()) {
+                            Preview.Footprint f = (Preview.Footprint) part;
+                            board.addGizmo(tool.kind().get(), unusedName(board), f.x(), f.y());
+                        }
                     }
                 }
             }

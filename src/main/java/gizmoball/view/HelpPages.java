@@ -91,7 +91,15 @@ final class HelpPages {
             html.append("<tr><td valign='top'>").append(escape(tool.labelWithShortcut())).append("</td><td>")
                     .append(escape(tool.hint())).append("</td></tr>");
         }
-        html.append("</table><p><b>Delete</b> deletes the selection, the <b>arrow keys</b> move it,")
+        html.append("</table><p><b>Selecting many:</b> with Select, drag from empty space: the rubber band")
+                .append(" selects the gizmos it touches and the balls whose centres it holds; <b>Shift+click</b>")
+                .append(" adds a gizmo or ball or takes it out (Shift+drag adds a band). Drag one of the group to")
+                .append(" move them all; Rotate turns each that turns, in its own cells; Delete, the arrow keys,")
+                .append(" Cut, Copy and Duplicate act on them all. With a bumper or flipper tool, <b>drag</b> to")
+                .append(" fill the rectangle (the taken places are skipped). A selected absorber has")
+                .append(" <b>handles</b> at its corners and edges: drag one to resize it. Each is one undo")
+                .append(" step.</p>")
+                .append("<p><b>Delete</b> deletes the selection, the <b>arrow keys</b> move it,")
                 .append(" <b>Esc</b> or right-click cancels a half-done step; <b>Ctrl+Z</b> undo,")
                 .append(" <b>Ctrl+Y</b> redo. Every edit can be undone.</p>")
                 .append("<p><b>Ctrl+C</b> copies the selection, <b>Ctrl+X</b> cuts it, <b>Ctrl+V</b> pastes and")

@@ -1,16 +1,19 @@
 package gizmoball.view;
 
+import gizmoball.boardfile.Decimals;
 import gizmoball.boardfile.KeyCodes;
 import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.gizmo.Action;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
-import java.util.EnumSet;
+import java.util.ArrayList;
+import java.util.EnumMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
+import java.util.stream.Collectors;
 
 /**
  * The player's view of a board's key bindings: one line per key and gizmo, saying what the gizmo is and how
@@ -31,12 +34,11 @@ final class KeyHelp {
     }
 
     static List<String> describe(Board board) {
-        Map<KeyAndGizmo, Set<KeyEdge>> edges = new LinkedHashMap<>();
+        Map<KeyAndGizmo, List<KeyBinding>> bindings = new LinkedHashMap<>();
         for (KeyBinding b : board.keyBindings()) {
-            edges.computeIfAbsent(new KeyAndGizmo(b.keyCode(), b.gizmo()), k -> EnumSet.noneOf(KeyEdge.class))
-                    .add(b.edge());
+            bindings.computeIfAbsent(new KeyAndGizmo(b.keyCode(), b.gizmo()), k -> new ArrayList<>()).add(b);
         }
-        return edges.entrySet().stream().map(e -> {
+        return bindings.entrySet().stream().map(e -> {
             KeyAndGizmo k = e.getKey();
             GizmoKind kind = board.gizmo(k.gizmo()).map(Gizmo::kind).orElse(null);
             return KeyCodes.name(k.keyCode()) + ": " + kindName(kind) + k.gizmo()
@@ -49,12 +51,25 @@ final class KeyHelp {
         return kind == null ? "" : kind.displayName() + " ";
     }
 
-    /** A flipper driven by both edges stays up while the key is held; anything else acts on the edges. */
-    private static String use(GizmoKind kind, Set<KeyEdge> edges) {
-        boolean flipper = kind == GizmoKind.LEFT_FLIPPER || kind == GizmoKind.RIGHT_FLIPPER;
-        if (edges.size() == 2) {
-            return flipper ? "hold" : "press and release";
+    /**
+     * A gizmo raised on the press and lowered on the release at once (a flipper, unless told otherwise) is held;
+     * anything else acts on the edges, each with its action and delay where the binding gives them.
+     */
+    private static String use(GizmoKind kind, List<KeyBinding> bindings) {
+        Map<KeyEdge, Action> actions = new EnumMap<>(KeyEdge.class);
+        bindings.forEach(b -> actions.put(b.edge(), kind == null ? null
+                : b.order().action().orElse(b.edge().actionOf(kind))));
+        boolean atOnce = bindings.stream().allMatch(b -> b.order().delay() == 0);
+        if (atOnce && actions.size() == 2 && actions.get(KeyEdge.DOWN) == Action.RAISE
+                && actions.get(KeyEdge.UP) == Action.LOWER) {
+            return "hold";
         }
-        return edges.contains(KeyEdge.DOWN) ? "press" : "release";
+        if (bindings.size() == 2 && bindings.stream().allMatch(b -> b.order().isDefault())) {
+            return "press and release";
+        }
+        return bindings.stream().map(b -> (b.edge() == KeyEdge.UP ? "release" : "press")
+                + (b.order().isDefault() ? "" : ": " + actions.get(b.edge()).word()
+                        + (b.order().delay() == 0 ? "" : " after " + Decimals.format(b.order().delay()) + " s")))
+                .collect(Collectors.joining(", "));
     }
 }

@@ -93,7 +93,7 @@ public final class PhysicsOverlay implements BoardOverlay {
         for (Stage stage : Stage.values()) {
             long nanos = r.stageNanos().get(stage);
             total += nanos;
-            lines.add(String.format(Locale.ROOT, "%d %-10s %8.1f us", stage.ordinal() + 1, stageName(stage), nanos / 1e3));
+            lines.add(String.format(Locale.ROOT, "%d %-10s %8.1f us", stage.number(), stageName(stage), nanos / 1e3));
         }
         lines.add(String.format(Locale.ROOT, "  %-10s %8.1f us", "total", total / 1e3));
         lines.add(String.format(Locale.ROOT, "collisions %d (%d at zero time)", r.collisions(), r.zeroTimeCollisions()));

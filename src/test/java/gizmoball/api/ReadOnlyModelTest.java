@@ -72,7 +72,7 @@ class ReadOnlyModelTest {
         assertThat(mutators(Ball.class)).contains("moveTo(Lphysics/Vect;)V", "setVelocity(Lphysics/Vect;)V",
                 "capture(Lphysics/Vect;)V", "release(Lphysics/Vect;Lphysics/Vect;)V", "copy()Lgizmoball/model/loop/Ball;")
                 .doesNotContain("position()Lphysics/Vect;", "isCaptured()Z");
-        assertThat(mutators(Flipper.class)).contains("block()V", "setState(DZ)V", "advance(D)V", "moveTo(II)V",
+        assertThat(mutators(Flipper.class)).contains("stall()V", "setState(DZ)V", "advance(D)V", "moveTo(II)V",
                 "markTriggered(D)V").doesNotContain("angleFromRest()D", "tip()Lphysics/Vect;", "name()Ljava/lang/String;");
         assertThat(mutators(Absorber.class)).contains("hold(Ljava/lang/String;)V", "letGo(Ljava/lang/String;)V")
                 .doesNotContain("held()Ljava/util/List;");

@@ -21,10 +21,27 @@ import org.junit.jupiter.params.provider.EnumSource;
 class GameLoopReplayTest {
     private static final long TICKS = 1_500;
 
+    /** Key bindings whose actions wait: delays run on the board's clock, so they replay as the keys do. */
+    private static final String DELAYED_BINDINGS = """
+            #@KeyConnect key 88 down A after 0.75
+            #@KeyConnect key 67 down LF toggle after 0.2
+            #@KeyConnect key 67 up RF raise after 0.05
+            """;
+
     @ParameterizedTest
     @EnumSource(Speed.class)
     void aGameOfTheWindowsLoopReplaysHeadlessBitForBit(Speed speed) throws Exception {
-        Board board = BoardFiles.load(Path.of("boards", "default.txt"));
+        playAndReplay(BoardFiles.load(Path.of("boards", "default.txt")), speed);
+    }
+
+    @ParameterizedTest
+    @EnumSource(Speed.class)
+    void aGameWithDelayedActionsReplaysHeadlessBitForBitAtEverySpeed(Speed speed) throws Exception {
+        String text = BoardFiles.toText(BoardFiles.load(Path.of("boards", "default.txt"))) + DELAYED_BINDINGS;
+        playAndReplay(BoardFiles.load("delayed", text), speed);
+    }
+
+    private static void playAndReplay(Board board, Speed speed) throws Exception {
         String asBuilt = BoardFiles.toText(board);
         List<Integer> keys = board.keyBindings().stream().map(KeyBinding::keyCode).distinct().toList();
         GameLoop loop = new GameLoop(board, Board.DEFAULT_TICK);

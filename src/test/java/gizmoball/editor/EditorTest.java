@@ -6,7 +6,9 @@ import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.Action;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
@@ -230,6 +232,9 @@ class EditorTest {
         clickCell(2, 2);
         assertThat(editor.connectSource()).contains(TriggerSource.gizmo("C1"));
         clickCell(9, 9);
+        assertThat(board.connections()).as("not before the popup's answer").isEmpty();
+        assertThat(editor.awaitedTargetKind()).contains(GizmoKind.LEFT_FLIPPER);
+        editor.chooseConnection();
 
         assertThat(board.connections()).containsExactly(new Connection(TriggerSource.gizmo("C1"), "LF1"));
         assertThat(editor.connectSource()).isEmpty();
@@ -243,6 +248,7 @@ class EditorTest {
         editor.setTool(Tool.CONNECT);
         editor.press(x, y);
         clickCell(10, 18);
+        editor.chooseConnection();
 
         assertThat(board.connections()).containsExactly(new Connection(TriggerSource.OUTER_WALLS, "A1"));
     }
@@ -254,6 +260,7 @@ class EditorTest {
         editor.setTool(Tool.CONNECT);
         editor.press(0.1, 5.5);
         clickCell(3, 5);
+        editor.chooseConnection();
         assertThat(board.connections()).containsExactly(new Connection(TriggerSource.gizmo("S1"), "S2"));
     }
 
@@ -276,8 +283,10 @@ class EditorTest {
         editor.setTool(Tool.CONNECT);
         clickCell(3, 3);
         clickCell(5, 3);
+        editor.chooseConnection();
         clickCell(3, 3);
         clickCell(5, 3);
+        editor.chooseConnection();
 
         assertThat(board.connections()).containsExactly(new Connection(TriggerSource.gizmo("S1"), "S2"));
         assertThat(messages).anyMatch(m -> m.startsWith("Connected"));
@@ -686,12 +695,28 @@ class EditorTest {
 
     /** Issue 23, item 16: the editor's messages write a connection with the arrow the panels use. */
     @Test
+    void connectMakesTheConnectionWithTheOrderChosenInThePopup() {
+        click(Tool.SQUARE, 3, 3);
+        click(Tool.LEFT_FLIPPER, 8, 8);
+        editor.setTool(Tool.CONNECT);
+        clickCell(3, 3);
+        clickCell(8, 8);
+        editor.orderPending(Order.of(Action.RAISE).after(0.25));
+        editor.chooseConnection();
+
+        assertThat(board.connections()).containsExactly(new Connection(TriggerSource.gizmo("S1"), "LF1",
+                Order.of(Action.RAISE).after(0.25)));
+        assertThat(lastMessage()).isEqualTo("Connected S1 \u2192 LF1 raise after 0.25");
+    }
+
+    @Test
     void connectionsAreWrittenWithOneArrowInMessages() {
         click(Tool.SQUARE, 3, 3);
         click(Tool.SQUARE, 5, 3);
         editor.setTool(Tool.CONNECT);
         clickCell(3, 3);
         clickCell(5, 3);
+        editor.chooseConnection();
         assertThat(messages).contains("Connected S1 \u2192 S2");
 
         editor.disconnect(TriggerSource.gizmo("S1"), "S2");

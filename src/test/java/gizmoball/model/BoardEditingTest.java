@@ -188,6 +188,57 @@ class BoardEditingTest {
     }
 
     @Test
+    void aGroupMovesAsOneSoThatARowMovesAlongItself() {
+        Board board = sample();
+        board.addGizmo(GizmoKind.SQUARE, "S2", 3, 3);
+        board.addGizmo(GizmoKind.SQUARE, "S3", 4, 3);
+        board.moveGroup(List.of("S1", "S2", "S3", "B1"), 1, 0);
+        assertThat(List.of("S1", "S2", "S3")).extracting(n -> board.gizmo(n).orElseThrow().x()).containsExactly(3, 4, 5);
+        assertThat(board.gizmoAt(2, 3)).isEmpty();
+        assertThat(board.ball("B1").orElseThrow().position()).isEqualTo(new Vect(2.5, 1.5));
+        assertThat(board.ball("B1").orElseThrow().velocity()).isEqualTo(new Vect(3, -4));
+        assertThat(board.connections()).contains(new Connection(TriggerSource.gizmo("S1"), "LF"));
+        assertThat(board.gizmos()).extracting(Gizmo::name).startsWith("S1", "C1", "T1");
+
+        board.moveGroup(List.of("S1", "S2", "S3"), -1, 0);
+        assertThat(board.gizmoAt(2, 3)).map(Gizmo::name).contains("S1");
+        assertThat(board.gizmoAt(5, 3)).isEmpty();
+    }
+
+    @Test
+    void aGroupOfBallsMovesByPartsOfACellAndAnAbsorberOfAGroupCarriesTheBallsItHolds() {
+        Board board = sample();
+        board.moveGroup(List.of("B1"), 0.25, 0.5);
+        assertThat(board.ball("B1").orElseThrow().position()).isEqualTo(new Vect(1.75, 2));
+
+        board.moveGroup(List.of("A", "B2", "RF"), 0, -1);
+        assertThat(board.gizmo("A").orElseThrow().y()).isEqualTo(17);
+        assertThat(board.gizmo("RF").orElseThrow().y()).isEqualTo(9);
+        BallView held = board.ball("B2").orElseThrow();
+        assertThat(held.isCaptured()).isTrue();
+        assertThat(held.position()).isEqualTo(new Vect(19.75, 18.75));
+    }
+
+    @Test
+    void aResizedAbsorberKeepsItsPlaceNameLinksAndBallsAndCapturesTheFreeBallsItNowCovers() {
+        Board board = sample();
+        board.connect(TriggerSource.gizmo("A"), "A");
+        board.addBall("B3", 3.5, 16.5, 1, 0);
+        board.resizeAbsorber("A", 2, 16, 12, 20);
+        Gizmo a = board.gizmo("A").orElseThrow();
+        assertThat(List.of(a.x(), a.y(), a.width(), a.height())).containsExactly(2, 16, 10, 4);
+        assertThat(board.gizmos()).extracting(Gizmo::name).containsExactly("S1", "C1", "T1", "LF", "RF", "A");
+        assertThat(board.gizmoAt(0, 18)).isEmpty();
+        assertThat(board.gizmoAt(11, 16)).map(Gizmo::name).contains("A");
+        assertThat(board.connections()).contains(new Connection(TriggerSource.gizmo("A"), "A"));
+        for (String ball : List.of("B2", "B3")) {
+            BallView b = board.ball(ball).orElseThrow();
+            assertThat(b.isCaptured()).as(ball).isTrue();
+            assertThat(b.position()).as(ball).isEqualTo(new Vect(11.75, 19.75));
+        }
+    }
+
+    @Test
     void connectionsAndKeyBindingsCanBeRemoved() {
         Board board = sample();
         board.connect(TriggerSource.gizmo("A"), "A");
@@ -306,6 +357,18 @@ class BoardEditingTest {
                 refusal("move off the board", b -> b.moveGizmo("LF", 19, 19), "outside"),
                 refusal("move unknown", b -> b.moveGizmo("Nope", 1, 1), "no gizmo named Nope"),
                 refusal("move onto a ball", b -> b.moveGizmo("C1", 1, 1), "overlap ball B1"),
+                refusal("move a group onto a gizmo", b -> b.moveGroup(List.of("S1", "T1"), 3, 2), "would overlap gizmo C1"),
+                refusal("move a group's ball into a gizmo", b -> b.moveGroup(List.of("S1", "B1"), 4, 4),
+                        "would overlap gizmo C1"),
+                refusal("move a group off the board", b -> b.moveGroup(List.of("S1", "T1"), 13, 0), "outside"),
+                refusal("move a group's gizmos by part of a cell", b -> b.moveGroup(List.of("S1", "B1"), 0.25, 0),
+                        "whole cells"),
+                refusal("move a group with an unknown", b -> b.moveGroup(List.of("S1", "Nope"), 1, 0),
+                        "no gizmo or ball named Nope"),
+                refusal("resize onto a gizmo", b -> b.resizeAbsorber("A", 0, 10, 20, 20), "would overlap gizmo LF"),
+                refusal("resize to nothing", b -> b.resizeAbsorber("A", 0, 18, 0, 20), "at least one cell"),
+                refusal("resize off the board", b -> b.resizeAbsorber("A", 0, 18, 21, 20), "outside"),
+                refusal("resize a square", b -> b.resizeAbsorber("S1", 2, 3, 4, 4), "not an absorber"),
                 refusal("move ball unknown", b -> b.moveBall("Nope", 1, 1), "no ball named Nope"),
                 refusal("move ball into a gizmo", b -> b.moveBall("B1", 2.5, 3.5), "would overlap gizmo S1"),
                 refusal("move ball outside", b -> b.moveBall("B1", 25, 3.5), "outside the board"),
@@ -314,8 +377,8 @@ class BoardEditingTest {
                 refusal("connect to a ball", b -> b.connect(TriggerSource.gizmo("S1"), "B1"), "B1 is a ball"),
                 refusal("connect to the walls", b -> b.connect(TriggerSource.gizmo("S1"), TriggerSource.OuterWalls.NAME),
                         "no gizmo named OuterWalls"),
-                refusal("connect twice", b -> b.connect(TriggerSource.gizmo("S1"), "LF"), "connection S1 -> LF already exists"),
-                refusal("disconnect missing", b -> b.disconnect(TriggerSource.gizmo("S1"), "C1"), "no connection S1 -> C1"),
+                refusal("connect twice", b -> b.connect(TriggerSource.gizmo("S1"), "LF"), "connection S1 \u2192 LF already exists"),
+                refusal("disconnect missing", b -> b.disconnect(TriggerSource.gizmo("S1"), "C1"), "no connection S1 \u2192 C1"),
                 refusal("bind negative key", b -> b.bindKey(-1, KeyEdge.DOWN, "LF"), "key code"),
                 refusal("bind unknown", b -> b.bindKey(32, KeyEdge.UP, "Nope"), "no gizmo named Nope"),
                 refusal("bind twice", b -> b.bindKey(32, KeyEdge.DOWN, "LF"), "key 32 down is already bound to LF"),

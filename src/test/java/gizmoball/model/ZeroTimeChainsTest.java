@@ -60,7 +60,7 @@ class ZeroTimeChainsTest {
      */
     private static void holdStill(Board board, String flipper, double degrees) {
         board.setFlipperState(flipper, degrees, true);
-        board.loopView().flippers().stream().filter(f -> f.name().equals(flipper)).findFirst().orElseThrow().block();
+        board.loopView().movingShapes().stream().filter(f -> f.name().equals(flipper)).findFirst().orElseThrow().stall();
     }
 
     /** A left flipper at (10,16) held still at an angle: the centre of its round tip. */

@@ -27,11 +27,21 @@ public final class Absorber extends GizmoBase implements AbsorberView {
         rebuildShape();
     }
 
-    private Absorber(Absorber other) {
+    private Absorber(Absorber other, int width, int height) {
         super(other);
-        this.width = other.width;
-        this.height = other.height;
+        this.width = width;
+        this.height = height;
         this.held.addAll(other.held);
+    }
+
+    /**
+     * A copy of it (name, colour, the balls it holds) covering width x height cells from (x, y): what a resize
+     * would make, for the board to check and then put in its place. For the board, not for views.
+     */
+    public Absorber resized(int newX, int newY, int newWidth, int newHeight) {
+        Absorber resized = new Absorber(this, newWidth, newHeight);
+        resized.moveTo(newX, newY);
+        return resized;
     }
 
     @Override
@@ -110,6 +120,6 @@ public final class Absorber extends GizmoBase implements AbsorberView {
 
     @Override
     public Absorber copy() {
-        return new Absorber(this);
+        return new Absorber(this, width, height);
     }
 }

@@ -15,7 +15,7 @@ import physics.Vect;
  * are built once per placement, so a flipper at a stop is as static as a bumper; only a swinging flipper builds
  * the shape of its current angle.
  */
-public final class Flipper extends GizmoBase implements FlipperView {
+public final class Flipper extends GizmoBase implements FlipperView, MovingShape {
     static final double RADIUS = 0.25;
     /** Its {@link #reflectionCoefficient()}, still or swinging. */
     private static final double REFLECTION = 0.95;
@@ -23,7 +23,7 @@ public final class Flipper extends GizmoBase implements FlipperView {
     public static final double MAX_ANGLE = 90;
     static final double DEGREES_PER_SECOND = 1080;
     /** Index of the pivot circle in {@link Shape#circles()}: it turns in place, so the loop treats it as still. */
-    public static final int PIVOT_CIRCLE = 0;
+    static final int PIVOT_CIRCLE = 0;
     /** Index of the tip circle in {@link Shape#circles()}. */
     static final int TIP_CIRCLE = 1;
     private static final double LIMIT_SNAP_DEGREES = 1e-9;
@@ -60,6 +60,7 @@ public final class Flipper extends GizmoBase implements FlipperView {
     }
 
     /** Centre of the round end at the pivot. */
+    @Override
     public Vect pivot() {
         double local = kind() == GizmoKind.LEFT_FLIPPER ? x() + RADIUS : x() + 2 - RADIUS;
         return rotated(local, y() + RADIUS);
@@ -84,12 +85,14 @@ public final class Flipper extends GizmoBase implements FlipperView {
         return active;
     }
 
+    @Override
     public boolean isMoving() {
         return !blocked && (active ? angle < MAX_ANGLE : angle > 0);
     }
 
     /** True while a jammed ball holds the flipper short of its stop. */
-    public boolean isBlocked() {
+    @Override
+    public boolean isStalled() {
         return blocked;
     }
 
@@ -150,12 +153,14 @@ public final class Flipper extends GizmoBase implements FlipperView {
      * A ball jammed between the flipper and something else stops it where it is. For the board and its loop, not for
      * views.
      */
-    public void block() {
+    @Override
+    public void stall() {
         blocked = true;
     }
 
     /** The ball that blocked it has gone: it swings on. For the board and its loop, not for views. */
-    public void unblock() {
+    @Override
+    public void release() {
         blocked = false;
     }
 
@@ -163,6 +168,7 @@ public final class Flipper extends GizmoBase implements FlipperView {
      * Seconds until the flipper reaches the limit it is swinging to (0 when still). For the board and its loop, not for
      * views.
      */
+    @Override
     public double timeToStop() {
         return (active ? MAX_ANGLE - angle : angle) / DEGREES_PER_SECOND;
     }
@@ -172,6 +178,7 @@ public final class Flipper extends GizmoBase implements FlipperView {
      * swings up from +y (hanging) to +x (the top edge): toward -; the right one mirrors it. For the board and its loop,
      * not for views.
      */
+    @Override
     public double angularVelocity() {
         if (!isMoving()) {
             return 0;
@@ -184,6 +191,7 @@ public final class Flipper extends GizmoBase implements FlipperView {
      * Swings for dt seconds toward the current limit, stopping exactly at it. For the board and its loop, not for
      * views.
      */
+    @Override
     public void advance(double dt) {
         if (!isMoving() || dt <= 0) {
             return;
@@ -197,8 +205,14 @@ public final class Flipper extends GizmoBase implements FlipperView {
     }
 
     /** The shape at the limit it is swinging to (where it will stop). For the board and its loop, not for views. */
+    @Override
     public Shape shapeAtStop() {
         return shapeAt(active ? MAX_ANGLE : 0);
+    }
+
+    @Override
+    public boolean turnsInPlace(int index) {
+        return index == PIVOT_CIRCLE;
     }
 
     @Override

@@ -23,5 +23,5 @@ public sealed interface FlipperView extends Gizmo permits Flipper {
     boolean isMoving();
 
     /** True while a jammed ball holds the flipper short of its stop. */
-    boolean isBlocked();
+    boolean isStalled();
 }

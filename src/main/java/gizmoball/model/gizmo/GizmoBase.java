@@ -132,6 +132,22 @@ public abstract sealed class GizmoBase permits Bumper, Flipper, Absorber {
     }
 
     /**
+     * Performs one of its kind's {@link GizmoKind#actions} (the board has checked it is one), done through
+     * {@code around} where it reaches beyond the gizmo: its press action as a key's press drives it, its release
+     * action as a release does, its default as a trigger does; a flash is only the time the board records. For the
+     * board and its loop, not for views.
+     */
+    public void perform(Action action, Surroundings around) {
+        if (action == kind.pressAction()) {
+            keyDown(around);
+        } else if (action == kind.releaseAction()) {
+            keyUp(around);
+        } else if (action == kind.defaultAction()) {
+            act(around);
+        }
+    }
+
+    /**
      * Its action when it is triggered (by a hit on a source it is connected to, or a key's change binding), done
      * through {@code around} where it reaches beyond the gizmo. A bumper has none: it only records the time.
      * For the board and its loop, not for views.

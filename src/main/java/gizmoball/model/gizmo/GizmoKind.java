@@ -1,5 +1,6 @@
 package gizmoball.model.gizmo;
 
+import java.util.List;
 import java.util.Locale;
 
 /**
@@ -31,6 +32,39 @@ public enum GizmoKind {
         return switch (this) {
             case SQUARE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER -> true;
             case CIRCLE, ABSORBER -> false;
+        };
+    }
+
+    /**
+     * What a connection or a key binding can tell a gizmo of this kind to do, its default (what a hit on a source it
+     * is connected to makes it do) first. A switch over every kind, so that a new kind says.
+     */
+    public List<Action> actions() {
+        return switch (this) {
+            case SQUARE, CIRCLE, TRIANGLE -> List.of(Action.FLASH);
+            case LEFT_FLIPPER, RIGHT_FLIPPER -> List.of(Action.TOGGLE, Action.RAISE, Action.LOWER, Action.FLASH);
+            case ABSORBER -> List.of(Action.FIRE, Action.FLASH);
+        };
+    }
+
+    /** What it does when triggered unless a connection says otherwise: the first of its {@link #actions}. */
+    public Action defaultAction() {
+        return actions().get(0);
+    }
+
+    /** What a key bound to its press makes it do unless the binding says: a flipper rises, others do their default. */
+    public Action pressAction() {
+        return switch (this) {
+            case LEFT_FLIPPER, RIGHT_FLIPPER -> Action.RAISE;
+            case SQUARE, CIRCLE, TRIANGLE, ABSORBER -> defaultAction();
+        };
+    }
+
+    /** What a key bound to its release makes it do unless the binding says: a flipper falls, others do their default. */
+    public Action releaseAction() {
+        return switch (this) {
+            case LEFT_FLIPPER, RIGHT_FLIPPER -> Action.LOWER;
+            case SQUARE, CIRCLE, TRIANGLE, ABSORBER -> defaultAction();
         };
     }
 

@@ -8,7 +8,7 @@ import physics.Vect;
 
 /**
  * A ball: centre and velocity in L and L/s, radius {@link Arena#BALL_RADIUS}; captured while an absorber holds it.
- * A free ball also carries its loop bookkeeping: the surfaces it is in persistent contact with, how many ticks it
+ * A free ball also carries its loop bookkeeping: the surfaces it is in persistent contact with, how long it
  * has been still on them, and whether it sleeps (docs/design.md, "Sleeping").
  */
 public final class Ball implements BallView {
@@ -23,7 +23,8 @@ public final class Ball implements BallView {
     private Vect velocity;
     private boolean captured;
     private final List<ContactRef> contacts = new ArrayList<>();
-    private int stillTicks;
+    /** Seconds the ball has lain still on its contacts. */
+    private double stillTime;
     private boolean asleep;
     /** Index of the ball among the free balls of the tick running now (the collision schedule's bookkeeping). */
     private int slot;
@@ -40,7 +41,7 @@ public final class Ball implements BallView {
         Ball copy = new Ball(name, position, velocity);
         copy.captured = captured;
         copy.contacts.addAll(contacts);
-        copy.stillTicks = stillTicks;
+        copy.stillTime = stillTime;
         copy.asleep = asleep;
         return copy;
     }
@@ -74,12 +75,12 @@ public final class Ball implements BallView {
         return contacts;
     }
 
-    int stillTicks() {
-        return stillTicks;
+    double stillTime() {
+        return stillTime;
     }
 
-    void setStillTicks(int ticks) {
-        stillTicks = ticks;
+    void setStillTime(double seconds) {
+        stillTime = seconds;
     }
 
     int slot() {
@@ -98,7 +99,7 @@ public final class Ball implements BallView {
     /** Awake again, contacts kept (the loop checks them at the next tick), stillness counted from zero. */
     void wake() {
         asleep = false;
-        stillTicks = 0;
+        stillTime = 0;
     }
 
     /** Forgets every contact and wakes: the board changed under the ball. */

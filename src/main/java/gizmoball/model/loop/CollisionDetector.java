@@ -1,7 +1,7 @@
 package gizmoball.model.loop;
 
-import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Shape;
 
 import java.util.Collection;
@@ -18,9 +18,9 @@ import physics.Vect;
 
 /**
  * Stage 3 of the loop, for one ball: the time until it hits the outer walls, each gizmo shape it can reach, or
- * another ball. All times come from physics.Geometry. A swinging flipper is asked through the rotating methods of
- * a GeometryImpl whose foresight ends with its swing (the library's rotation goes on for ever; docs/design.md,
- * "Rotation that stops"); after that it is a fixed shape at its stop.
+ * another ball. All times come from physics.Geometry. A moving shape (a swinging flipper) is asked through the
+ * rotating methods of a GeometryImpl whose foresight ends when it stops or the window does (the library's rotation
+ * goes on for ever; docs/design.md, "Rotation that stops"); after a stop it is a fixed shape there.
  *
  * <p>A touch that does not close faster than {@link Tolerances#ROUNDING_SPEED} is a graze, not a collision: a
  * ball rolling along a surface, across a seam or past a corner it only brushes is never stopped for it
@@ -80,8 +80,8 @@ final class CollisionDetector {
             }
         }
         for (GizmoBase gizmo : reachable(ball, velocity, window)) {
-            if (gizmo instanceof Flipper flipper && flipper.isMoving()) {
-                againstSwingingFlipper(ball, flipper, window, earliest);
+            if (gizmo instanceof MovingShape moving && moving.isMoving()) {
+                againstMovingShape(ball, gizmo, moving, window, earliest);
             } else if (!still) {
                 againstStillShape(ball, circle, velocity, 0, gizmo, gizmo.shape(), earliest);
             }
@@ -143,16 +143,17 @@ final class CollisionDetector {
     }
 
     /**
-     * A swinging flipper: rotating contacts up to the time it stops, then the fixed shape at its stop met by the
-     * ball from where it will be at that time.
+     * A moving shape ({@code gizmo} itself): rotating contacts up to the time it stops (or to the end of the window), then the fixed shape
+     * at its stop met by the ball from where it will be at that time.
      */
-    private void againstSwingingFlipper(Ball ball, Flipper flipper, double window, Earliest earliest) {
+    private void againstMovingShape(Ball ball, GizmoBase gizmo, MovingShape moving, double window,
+                                    Earliest earliest) {
         Circle circle = ball.circle();
         Vect velocity = motion(ball);
-        double swingLeft = flipper.timeToStop();
-        double omega = flipper.angularVelocity();
-        Vect pivot = flipper.pivot();
-        Shape now = flipper.shape();
+        double swingLeft = moving.timeToStop();
+        double omega = moving.angularVelocity();
+        Vect pivot = moving.pivot();
+        Shape now = moving.shape();
         // The rotating search looks only as far as it must: to the end of the swing or of the window.
         GeometryInterface rotating = new GeometryImpl(Math.min(swingLeft, window), ROTATING_SEARCH_SLICES);
         for (int i = 0; i < now.segments().size(); i++) {
@@ -163,18 +164,18 @@ final class CollisionDetector {
                 LineSegment then = Geometry.rotateAround(side, pivot, new Angle(omega * time));
                 Vect foot = Geometry.perpendicularPointWholeLine(then, centre);
                 if (closing(centre.minus(foot), velocity.minus(surfaceVelocity(pivot, omega, foot)))) {
-                    earliest.offer(time, ball, new Contact.SwingingPart(flipper, false, i), false);
+                    earliest.offer(time, ball, new Contact.MovingPart(moving, false, i), false);
                 }
             }
         }
         for (int i = 0; i < now.circles().size(); i++) {
             Circle end = now.circles().get(i);
-            if (i == Flipper.PIVOT_CIRCLE) {
+            if (moving.turnsInPlace(i)) {
                 // Its centre is the pivot: it turns in place, a still circle to the ball.
                 double time = Geometry.timeUntilCircleCollision(end, circle, velocity);
                 if (time <= earliest.limit() && closingOnCircle(
                         ball.position().plus(velocity.times(time)).minus(end.getCenter()), velocity)) {
-                    earliest.offer(time, ball, new Contact.Round(flipper, i, end), true);
+                    earliest.offer(time, ball, new Contact.Round(gizmo, i, end), true);
                 }
                 continue;
             }
@@ -184,14 +185,14 @@ final class CollisionDetector {
                 Vect endCentre = Geometry.rotateAround(end.getCenter(), pivot, new Angle(omega * time));
                 Vect relative = velocity.minus(surfaceVelocity(pivot, omega, endCentre));
                 if (closingOnCircle(centre.minus(endCentre), relative)) {
-                    earliest.offer(time, ball, new Contact.SwingingPart(flipper, true, i), true);
+                    earliest.offer(time, ball, new Contact.MovingPart(moving, true, i), true);
                 }
             }
         }
         boolean still = velocity.x() == 0 && velocity.y() == 0;
         if (swingLeft < window && !still) {
             Circle later = new Circle(circle.getCenter().plus(velocity.times(swingLeft)), circle.getRadius());
-            againstStillShape(ball, later, velocity, swingLeft, flipper, flipper.shapeAtStop(), earliest);
+            againstStillShape(ball, later, velocity, swingLeft, gizmo, moving.shapeAtStop(), earliest);
         }
     }
 

@@ -1,52 +1,154 @@
 package gizmoball.model.loop;
 
-import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.MovingShape;
+import gizmoball.model.gizmo.Shape;
+
+import java.util.function.Function;
 
 import physics.Circle;
+import physics.Geometry;
 import physics.LineSegment;
+import physics.Vect;
 
-/** What a ball is about to hit; stage 4 resolves each kind with the matching physics-lib reflect method. */
+/**
+ * What a ball is about to hit, or touches: a still surface, a part of a moving shape or another ball. Each kind says
+ * what the loop asks of it (what it is, its normal, how its surface moves); stage 4 resolves a still surface with
+ * the matching physics-lib reflect method ({@link StillSurface#reflect}), a moving part and a ball with their own.
+ */
 sealed interface Contact {
 
     /** What the ball hits: the outer walls, a gizmo (a trigger source) or another ball. */
     Struck struck();
 
-    /** Outer wall {@code side} (0 top, 1 right, 2 bottom, 3 left). */
-    record OuterWall(int side, LineSegment segment) implements Contact {
+    /** The unit normal from this contact toward a ball centred at {@code centre}, as the contact is now. */
+    Vect normal(Vect centre);
+
+    /**
+     * This contact as a side of a {@link Squeeze}, for a ball centred at {@code centre}: its normal, and the speed of
+     * its surface along it, other balls moving as {@code motion} says.
+     */
+    default Squeeze.Side side(Vect centre, Function<Ball, Vect> motion) {
+        return new Squeeze.Side(normal(centre), 0);
+    }
+
+    /** A surface that does not move: an outer wall or a part of a still gizmo. */
+    sealed interface StillSurface extends Contact {
+        /** The gizmo it belongs to; null for an outer wall. */
+        GizmoBase gizmo();
+
+        /** The reference the ball keeps when it comes to rest on it. */
+        ContactRef ref();
+
+        /** The velocity of a ball centred at {@code centre} after it bounces off with this coefficient. */
+        Vect reflect(Vect centre, Vect velocity, double coefficient);
+
+        /** The surface's own coefficient: an outer wall's is 1. */
+        default double reflectionCoefficient() {
+            return gizmo() == null ? 1.0 : gizmo().reflectionCoefficient();
+        }
+
         @Override
-        public Struck struck() {
-            return TriggerSource.OUTER_WALLS;
+        default TriggerSource struck() {
+            return gizmo() == null ? TriggerSource.OUTER_WALLS : TriggerSource.gizmo(gizmo().name());
+        }
+    }
+
+    /** Outer wall {@code side} (0 top, 1 right, 2 bottom, 3 left). */
+    record OuterWall(int side, LineSegment segment) implements StillSurface {
+        @Override
+        public GizmoBase gizmo() {
+            return null;
+        }
+
+        @Override
+        public ContactRef ref() {
+            return new ContactRef.Wall(side);
+        }
+
+        @Override
+        public Vect normal(Vect centre) {
+            return fromLine(segment, centre);
+        }
+
+        @Override
+        public Vect reflect(Vect centre, Vect velocity, double coefficient) {
+            return Geometry.reflectWall(segment, velocity, coefficient);
         }
     }
 
     /** Segment {@code index} of a still gizmo's shape: a side of a polygon bumper, an absorber or a still flipper. */
-    record Face(GizmoBase gizmo, int index, LineSegment segment) implements Contact {
+    record Face(GizmoBase gizmo, int index, LineSegment segment) implements StillSurface {
         @Override
-        public Struck struck() {
-            return TriggerSource.gizmo(gizmo.name());
+        public ContactRef ref() {
+            return new ContactRef.Part(gizmo.name(), false, index);
+        }
+
+        @Override
+        public Vect normal(Vect centre) {
+            return fromLine(segment, centre);
+        }
+
+        @Override
+        public Vect reflect(Vect centre, Vect velocity, double coefficient) {
+            return Geometry.reflectWall(segment, velocity, coefficient);
         }
     }
 
     /**
-     * Circle {@code index} of a still gizmo's shape: a circle bumper, a zero-radius polygon corner or a still
-     * flipper's round end.
+     * Circle {@code index} of a still gizmo's shape: a circle bumper, a zero-radius polygon corner, a still flipper's
+     * round end, or a round end a moving shape turns in place.
      */
-    record Round(GizmoBase gizmo, int index, Circle circle) implements Contact {
+    record Round(GizmoBase gizmo, int index, Circle circle) implements StillSurface {
         @Override
-        public Struck struck() {
-            return TriggerSource.gizmo(gizmo.name());
+        public ContactRef ref() {
+            return new ContactRef.Part(gizmo.name(), true, index);
+        }
+
+        @Override
+        public Vect normal(Vect centre) {
+            return centre.minus(circle.getCenter()).unitSize();
+        }
+
+        @Override
+        public Vect reflect(Vect centre, Vect velocity, double coefficient) {
+            return Geometry.reflectCircle(circle.getCenter(), centre, velocity, coefficient);
         }
     }
 
     /**
-     * A part of a swinging flipper's shape as it is now: side segment {@code index} or, when {@code circle}, end
-     * circle {@code index} ({@link Flipper#PIVOT_CIRCLE}, {@link Flipper#TIP_CIRCLE}).
+     * A part of a moving shape as it is now (a swinging flipper): side segment {@code index} or, when {@code circle},
+     * circle {@code index} of its {@link MovingShape#shape()}.
      */
-    record SwingingPart(Flipper flipper, boolean circle, int index) implements Contact {
+    record MovingPart(MovingShape shape, boolean circle, int index) implements Contact {
         @Override
-        public Struck struck() {
-            return TriggerSource.gizmo(flipper.name());
+        public TriggerSource struck() {
+            return TriggerSource.gizmo(shape.name());
+        }
+
+        @Override
+        public Vect normal(Vect centre) {
+            return circle ? centre.minus(shape.shape().circles().get(index).getCenter()).unitSize()
+                    : fromLine(shape.shape().segments().get(index), centre);
+        }
+
+        /** The speed is that of the surface where it touches the ball, turning about the pivot. */
+        @Override
+        public Squeeze.Side side(Vect centre, Function<Ball, Vect> motion) {
+            Vect normal = normal(centre);
+            Vect touching = centre.minus(normal.times(Arena.BALL_RADIUS));
+            return new Squeeze.Side(normal,
+                    CollisionDetector.surfaceVelocity(shape.pivot(), shape.angularVelocity(), touching).dot(normal));
+        }
+
+        /** The velocity {@code velocity} of the ball becomes when the part, turning, strikes it (physics-lib). */
+        Vect reflect(Circle ball, Vect velocity) {
+            Shape now = shape.shape();
+            return circle
+                    ? Geometry.reflectRotatingCircle(now.circles().get(index), shape.pivot(), shape.angularVelocity(),
+                            ball, velocity, shape.reflectionCoefficient())
+                    : Geometry.reflectRotatingWall(now.segments().get(index), shape.pivot(), shape.angularVelocity(),
+                            ball, velocity, shape.reflectionCoefficient());
         }
     }
 
@@ -55,5 +157,21 @@ sealed interface Contact {
         public Struck struck() {
             return new Struck.OtherBall(other.name());
         }
+
+        @Override
+        public Vect normal(Vect centre) {
+            return centre.minus(other.position()).unitSize();
+        }
+
+        @Override
+        public Squeeze.Side side(Vect centre, Function<Ball, Vect> motion) {
+            Vect normal = normal(centre);
+            return new Squeeze.Side(normal, motion.apply(other).dot(normal));
+        }
+    }
+
+    /** The unit normal from the line through a segment toward a point. */
+    private static Vect fromLine(LineSegment segment, Vect centre) {
+        return centre.minus(Geometry.perpendicularPointWholeLine(segment, centre)).unitSize();
     }
 }

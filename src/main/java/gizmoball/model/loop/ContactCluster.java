@@ -1,8 +1,8 @@
 package gizmoball.model.loop;
 
 import gizmoball.model.gizmo.Absorber;
-import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Shape;
 
 import java.util.ArrayList;
@@ -20,33 +20,67 @@ import physics.Vect;
 /**
  * The connected set of touching contacts around a ball (docs/design.md, "Contact clusters"): the balls that touch it,
  * the balls that touch those, and so on, with every surface each of them touches: outer walls, still gizmo parts
- * and the parts of swinging flippers, which move the cluster and are not moved by it. A query: it reads positions
- * and velocities and changes nothing.
+ * and the parts of moving shapes (swinging flippers), which move the cluster and are not moved by it. A query: it
+ * reads positions and velocities and changes nothing.
  */
 final class ContactCluster {
     /** L: a ball this near a surface or another ball touches it, for the cluster (the placement tolerance). */
     static final double TOUCHING = Tolerances.PLACEMENT;
-    /** Seconds a ball leaving a swinging part keeps ahead of it (see {@link #leaving}). */
+    /** Seconds a ball leaving a moving part keeps ahead of it (see {@link #leaving}). */
     static final double LEAD_TIME = 1e-3;
     /** More balls than this in one cluster: the ones beyond are taken as surfaces moving as they move now. */
     static final int MAX_BALLS = 32;
 
     /** What a row of the cluster is a contact with. */
     sealed interface Other {
-        /** A still surface; {@code gizmo} null for an outer wall. */
-        record Still(ContactRef ref, GizmoBase gizmo) implements Other {
+        /** What a ball of the cluster ({@code balls}, by index) struck when this row takes an impact. */
+        Struck struck(List<Ball> balls);
+
+        /** Whether it is a surface (still or moving) rather than a ball. */
+        default boolean surface() {
+            return false;
         }
 
-        /** A part of a swinging flipper. */
-        record Swinging(Flipper flipper) implements Other {
+        /** A still surface; {@code gizmo} null for an outer wall. */
+        record Still(ContactRef ref, GizmoBase gizmo) implements Other {
+            @Override
+            public Struck struck(List<Ball> balls) {
+                return gizmo == null ? TriggerSource.OUTER_WALLS : TriggerSource.gizmo(gizmo.name());
+            }
+
+            @Override
+            public boolean surface() {
+                return true;
+            }
+        }
+
+        /** A part of a moving shape. */
+        record Moving(MovingShape shape) implements Other {
+            @Override
+            public Struck struck(List<Ball> balls) {
+                return TriggerSource.gizmo(shape.name());
+            }
+
+            @Override
+            public boolean surface() {
+                return true;
+            }
         }
 
         /** A ball of the cluster, by its index. */
         record InCluster(int index) implements Other {
+            @Override
+            public Struck struck(List<Ball> balls) {
+                return new Struck.OtherBall(balls.get(index).name());
+            }
         }
 
         /** A ball beyond the cluster's limit, taken as a surface moving as it moves now. */
         record Beyond(Ball ball) implements Other {
+            @Override
+            public Struck struck(List<Ball> balls) {
+                return new Struck.OtherBall(ball.name());
+            }
         }
     }
 
@@ -119,8 +153,8 @@ final class ContactCluster {
                 continue;   // what touches an absorber is captured by it, not held
             }
             Shape shape = gizmo.shape();
-            if (gizmo instanceof Flipper flipper && flipper.isMoving()) {
-                swinging(index, p, flipper, shape);
+            if (gizmo instanceof MovingShape moving && moving.isMoving()) {
+                moving(index, p, moving, shape);
                 continue;
             }
             for (int i = 0; i < shape.segments().size(); i++) {
@@ -145,7 +179,7 @@ final class ContactCluster {
     }
 
     /**
-     * The speed a ball must leave a swinging part with, along its normal: the surface's own speed there, and what
+     * The speed a ball must leave a moving part with, along its normal: the surface's own speed there, and what
      * the surface gains over {@link #LEAD_TIME}. The distance from a point at rest to a turning line is r cos(phi): it
      * shrinks ever faster, at omega^2 r along the normal, so a ball left at only the surface's speed is met again at
      * once, and a flipper sweeping a ball along a wall beside it would strike it every microsecond.
@@ -156,23 +190,23 @@ final class ContactCluster {
                 + omega * omega * Math.max(0, along) * LEAD_TIME;
     }
 
-    private void swinging(int index, Vect p, Flipper flipper, Shape shape) {
-        Vect pivot = flipper.pivot();
-        double omega = flipper.angularVelocity();
+    private void moving(int index, Vect p, MovingShape moving, Shape shape) {
+        Vect pivot = moving.pivot();
+        double omega = moving.angularVelocity();
         for (LineSegment side : shape.segments()) {
             Vect foot = Geometry.perpendicularPoint(side, p);
             if (foot != null && gap(p, foot, Arena.BALL_RADIUS) <= touching) {
                 Vect normal = p.minus(foot).unitSize();
-                rows.add(new Row(index, new Other.Swinging(flipper), normal, leaving(pivot, omega, p, normal, foot),
-                        flipper.reflectionCoefficient()));
+                rows.add(new Row(index, new Other.Moving(moving), normal, leaving(pivot, omega, p, normal, foot),
+                        moving.reflectionCoefficient()));
             }
         }
         for (Circle end : shape.circles()) {
             if (gap(p, end.getCenter(), end.getRadius() + Arena.BALL_RADIUS) <= touching) {
                 Vect normal = p.minus(end.getCenter()).unitSize();
                 Vect point = end.getCenter().plus(normal.times(end.getRadius()));
-                rows.add(new Row(index, new Other.Swinging(flipper), normal, leaving(pivot, omega, p, normal, point),
-                        flipper.reflectionCoefficient()));
+                rows.add(new Row(index, new Other.Moving(moving), normal, leaving(pivot, omega, p, normal, point),
+                        moving.reflectionCoefficient()));
             }
         }
     }

@@ -1,13 +1,12 @@
 package gizmoball.model.loop;
 
 import gizmoball.model.gizmo.Absorber;
-import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Shape;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.function.DoubleFunction;
 
 import physics.Circle;
 import physics.Geometry;
@@ -30,15 +29,17 @@ final class Contacts {
     /** A contact the ball has drifted off by less than this, slower than {@link #holdSpeed}, still holds. */
     private final double holdGap;
     private final double holdSpeed;
+    private final Vect gravity;
 
     /**
      * A ball lying on something and nudged off it by a rounding of a wedge's projections, or rolling over a curve
      * slowly, drifts off by less than a tick of gravity would bring back ({@code g dt^2}), at less than half a tick of
      * gravity's speed: such a ball keeps the contact and loses that drift, as gravity would have done.
      */
-    Contacts(LoopView view, double dt) {
+    Contacts(LoopView view, Vect gravity, double dt) {
         this.view = view;
-        double g = Math.abs(view.gravity());
+        this.gravity = gravity;
+        double g = gravity.length();
         this.holdGap = Math.max(Tolerances.CONTACT, g * dt * dt);
         this.holdSpeed = g * dt / 2;
     }
@@ -56,7 +57,7 @@ final class Contacts {
             refs.removeIf(ref -> isFlushCorner(refs, ref));
         }
         List<Vect> normals = new ArrayList<>();
-        boolean lost = ball.contacts().removeIf(ref -> normalOf(ball, ref, normals, true) == null);
+        boolean lost = ball.contacts().removeIf(ref -> normalOf(ball, ref, normals, Look.HOLD) == null);
         if (lost) {
             discover(ball, normals);
             dropFlushCorners(ball, normals);
@@ -141,20 +142,20 @@ final class Contacts {
 
     private GizmoBase stillGizmo(ContactRef.Part part) {
         GizmoBase gizmo = view.gizmo(part.gizmo());
-        return gizmo instanceof Flipper flipper && flipper.isMoving() ? null : gizmo;
+        return gizmo instanceof MovingShape moving && moving.isMoving() ? null : gizmo;
     }
 
     /** The normals of the ball's contacts as they are now, without changing them. */
     List<Vect> normals(Ball ball) {
         List<Vect> normals = new ArrayList<>();
         for (ContactRef ref : ball.contacts()) {
-            normalOf(ball, ref, normals);
+            normalOf(ball, ref, normals, Look.QUERY);
         }
         return normals;
     }
 
-    /** A still surface the ball touches as a contact, with what a bounce off it needs: its gizmo (null: a wall). */
-    record Touch(ContactRef ref, GizmoBase gizmo, Vect normal, DoubleFunction<Vect> reflect) {
+    /** A still surface the ball touches as a contact, with its normal there as the contact measures it. */
+    record Touch(Contact.StillSurface surface, Vect normal) {
     }
 
     /**
@@ -166,30 +167,26 @@ final class Contacts {
             if (ref.equals(besides) || ref instanceof ContactRef.OnBall) {
                 continue;
             }
-            Vect normal = normal(ball, ref);   // null too for a part of a flipper now swinging
+            Vect normal = normal(ball, ref);   // null too for a part of a shape now moving
             if (normal == null || ball.velocity().dot(normal) >= -Tolerances.ROUNDING_SPEED) {
                 continue;
             }
             if (ref instanceof ContactRef.Wall wall) {
-                LineSegment side = CollisionDetector.OUTER_WALLS.get(wall.side());
-                return new Touch(ref, null, normal, k -> Geometry.reflectWall(side, ball.velocity(), k));
+                return new Touch(new Contact.OuterWall(wall.side(), CollisionDetector.OUTER_WALLS.get(wall.side())),
+                        normal);
             }
             ContactRef.Part part = (ContactRef.Part) ref;
             GizmoBase gizmo = view.gizmo(part.gizmo());
-            if (part.circle()) {
-                Vect centre = gizmo.shape().circles().get(part.index()).getCenter();
-                return new Touch(ref, gizmo, normal,
-                        k -> Geometry.reflectCircle(centre, ball.position(), ball.velocity(), k));
-            }
-            LineSegment segment = gizmo.shape().segments().get(part.index());
-            return new Touch(ref, gizmo, normal, k -> Geometry.reflectWall(segment, ball.velocity(), k));
+            Shape shape = gizmo.shape();
+            return new Touch(part.circle() ? new Contact.Round(gizmo, part.index(), shape.circles().get(part.index()))
+                    : new Contact.Face(gizmo, part.index(), shape.segments().get(part.index())), normal);
         }
         return null;
     }
 
     /** The normal of one of the ball's contacts as it is now; null if that contact has ended. */
     Vect normal(Ball ball, ContactRef ref) {
-        return normalOf(ball, ref, new ArrayList<>());
+        return normalOf(ball, ref, new ArrayList<>(), Look.QUERY);
     }
 
     /** The normals of the ball's contacts other than {@code surface}, as they are now. */
@@ -197,7 +194,7 @@ final class Contacts {
         List<Vect> normals = new ArrayList<>();
         for (ContactRef ref : ball.contacts()) {
             if (!ref.equals(surface)) {
-                normalOf(ball, ref, normals);
+                normalOf(ball, ref, normals, Look.QUERY);
             }
         }
         return normals;
@@ -247,35 +244,24 @@ final class Contacts {
         return true;
     }
 
-    /** The reference a collision's contact leaves behind when the ball comes to rest on it. */
-    static ContactRef refOf(Contact contact) {
-        if (contact instanceof Contact.OuterWall wall) {
-            return new ContactRef.Wall(wall.side());
-        } else if (contact instanceof Contact.Face face) {
-            return new ContactRef.Part(face.gizmo().name(), false, face.index());
-        } else if (contact instanceof Contact.Round round) {
-            return new ContactRef.Part(round.gizmo().name(), true, round.index());
-        } else if (contact instanceof Contact.OtherBall other) {
-            return new ContactRef.OnBall(other.other().name());
-        }
-        throw new IllegalArgumentException("nothing rests on a swinging flipper: " + contact);
+    /**
+     * How a look at a contact may change the ball: a query changes nothing; a look that keeps or finds contacts puts a
+     * ball found slightly inside back to touching and, {@code HOLD}, one that has only just drifted off back onto
+     * the surface (see the constructor).
+     */
+    private enum Look {
+        QUERY, SNAP, HOLD
     }
 
     /** Adds the normal of a contact that still holds to {@code normals} and returns it; null if it has ended. */
-    private Vect normalOf(Ball ball, ContactRef ref, List<Vect> normals) {
-        return normalOf(ball, ref, normals, false);
-    }
-
-    /** With {@code hold}, a contact the ball has only just drifted off is put back (see the constructor). */
-    private Vect normalOf(Ball ball, ContactRef ref, List<Vect> normals, boolean hold) {
-        double gap = hold ? holdGap : Tolerances.CONTACT;
+    private Vect normalOf(Ball ball, ContactRef ref, List<Vect> normals, Look look) {
         Vect normal;
         if (ref instanceof ContactRef.Wall wall) {
-            normal = onSegment(ball, CollisionDetector.OUTER_WALLS.get(wall.side()), gap);
+            normal = onSegment(ball, CollisionDetector.OUTER_WALLS.get(wall.side()), look);
         } else if (ref instanceof ContactRef.Part part) {
-            normal = onPart(ball, part, gap);
+            normal = onPart(ball, part, look);
         } else {
-            normal = onBall(ball, (ContactRef.OnBall) ref, gap);
+            normal = onBall(ball, (ContactRef.OnBall) ref, look);
         }
         if (normal != null) {
             normals.add(normal);
@@ -283,24 +269,24 @@ final class Contacts {
         return normal;
     }
 
-    private Vect onPart(Ball ball, ContactRef.Part part, double gap) {
+    private Vect onPart(Ball ball, ContactRef.Part part, Look look) {
         GizmoBase gizmo = view.gizmo(part.gizmo());
-        if (gizmo == null || gizmo instanceof Flipper flipper && flipper.isMoving()
-                && !(part.circle() && part.index() == Flipper.PIVOT_CIRCLE)) {
-            return null;   // a swinging flipper holds nothing up, but its round end at the pivot does not move
+        if (gizmo == null || gizmo instanceof MovingShape moving && moving.isMoving()
+                && !(part.circle() && moving.turnsInPlace(part.index()))) {
+            return null;   // a moving shape holds nothing up, but a round end it turns in place does not move
         }
         Shape shape = gizmo.shape();
         if (part.circle()) {
-            return part.index() < shape.circles().size() ? onCircle(ball, shape.circles().get(part.index()), gap)
+            return part.index() < shape.circles().size() ? onCircle(ball, shape.circles().get(part.index()), look)
                     : null;
         }
-        return part.index() < shape.segments().size() ? onSegment(ball, shape.segments().get(part.index()), gap)
+        return part.index() < shape.segments().size() ? onSegment(ball, shape.segments().get(part.index()), look)
                 : null;
     }
 
-    private Vect onBall(Ball ball, ContactRef.OnBall on, double gap) {
+    private Vect onBall(Ball ball, ContactRef.OnBall on, Look look) {
         Ball other = view.ball(on.ball());
-        return other == null || !supports(other, ball) ? null : onCircle(ball, other.circle(), gap);
+        return other == null || !supports(other, ball) ? null : onCircle(ball, other.circle(), look);
     }
 
     /**
@@ -323,37 +309,41 @@ final class Contacts {
         return false;
     }
 
-    private Vect onSegment(Ball ball, LineSegment segment, double gap) {
+    private Vect onSegment(Ball ball, LineSegment segment, Look look) {
         Vect p = ball.position();
         Vect foot = Geometry.perpendicularPoint(segment, p);
         if (foot == null) {
             return null;   // past the end: the corner circle or the next face takes over
         }
-        return touching(ball, foot, 0, gap);
+        return touching(ball, foot, 0, look);
     }
 
-    private Vect onCircle(Ball ball, Circle circle, double gap) {
-        return touching(ball, circle.getCenter(), circle.getRadius(), gap);
+    private Vect onCircle(Ball ball, Circle circle, Look look) {
+        return touching(ball, circle.getCenter(), circle.getRadius(), look);
     }
 
     /**
-     * The normal away from a surface point (or circle centre) the ball touches, or null. A ball found slightly inside
-     * is put back to touching; one that drifted off by more than the contact tolerance but less than {@code gap},
-     * slowly, from a surface below or beside it, keeps the contact and loses the drift, and is put back onto the
-     * surface where that pushes it into nothing else; where it would, it lies a hair above the surface instead (at
-     * most g dt^2). A ball left hovering would sit still in mid-air, a visible gap under a resting ball.
+     * The normal away from a surface point (or circle centre) the ball touches, or null. Unless the look is a query,
+     * a ball found slightly inside is put back to touching; on a {@code HOLD}, one that drifted off by more than the
+     * contact tolerance but less than the hold gap, slowly, from a surface below or beside it (gravity does not pull
+     * it away), keeps the contact and loses the drift, and is put back onto the surface where that pushes it into
+     * nothing else; where it would, it lies a hair above the surface instead (at most g dt^2). A ball left hovering
+     * would sit still in mid-air, a visible gap under a resting ball.
      */
-    private Vect touching(Ball ball, Vect from, double radius, double gap) {
+    private Vect touching(Ball ball, Vect from, double radius, Look look) {
         Vect offset = ball.position().minus(from);
         double distance = offset.length();
         double touch = radius + Arena.BALL_RADIUS;
-        if (distance == 0 || distance - touch > gap) {
+        if (distance == 0 || distance - touch > (look == Look.HOLD ? holdGap : Tolerances.CONTACT)) {
             return null;
         }
         Vect normal = offset.times(1 / distance);
+        if (look == Look.QUERY) {
+            return normal;
+        }
         if (distance - touch > Tolerances.CONTACT) {
             double leaving = ball.velocity().dot(normal);
-            if (leaving > holdSpeed || normal.y() > 0) {
+            if (leaving > holdSpeed || normal.dot(gravity) > 0) {
                 return null;
             }
             ball.setVelocity(ball.velocity().minus(normal.times(Math.max(0, leaving))));
@@ -397,8 +387,8 @@ final class Contacts {
         Vect p = ball.position();
         double reach = Arena.BALL_RADIUS + Tolerances.CONTACT;
         for (GizmoBase gizmo : view.index().within(p.x() - reach, p.y() - reach, p.x() + reach, p.y() + reach)) {
-            if (gizmo instanceof Absorber || gizmo instanceof Flipper flipper && flipper.isMoving()) {
-                continue;   // an absorber captures what touches it; a swinging flipper is no support
+            if (gizmo instanceof Absorber || gizmo instanceof MovingShape moving && moving.isMoving()) {
+                continue;   // an absorber captures what touches it; a moving shape is no support
             }
             Shape shape = gizmo.shape();
             for (int i = 0; i < shape.segments().size(); i++) {
@@ -411,7 +401,7 @@ final class Contacts {
     }
 
     private void consider(Ball ball, ContactRef ref, List<Vect> normals) {
-        if (!ball.contacts().contains(ref) && normalOf(ball, ref, normals) != null) {
+        if (!ball.contacts().contains(ref) && normalOf(ball, ref, normals, Look.SNAP) != null) {
             ball.contacts().add(ref);
         }
     }

@@ -3,12 +3,13 @@ package gizmoball.model.loop;
 import java.util.List;
 
 import gizmoball.model.gizmo.Absorber;
-import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.Order;
+import gizmoball.model.gizmo.MovingShape;
 
 /**
- * What the loop may do to the board beyond moving its balls and flippers (docs/design.md, "The tick"): report what
- * happened, trigger the gizmos a hit is connected to, capture a ball, wake what a flipper's sweep reaches, and move
+ * What the loop may do to the board beyond moving its balls and moving shapes (docs/design.md, "The tick"): report what
+ * happened, trigger the gizmos a hit is connected to, capture a ball, wake what a moving shape's sweep reaches, and move
  * the board's clock on. Its reads go through {@link LoopView}.
  */
 public interface LoopActions {
@@ -17,14 +18,14 @@ public interface LoopActions {
     /** The events since the last tick's report, for this tick's. */
     List<PlayEvent> drainEvents();
 
-    /** The gizmo performs its action (stage 5), {@code now} seconds into play. */
-    void trigger(GizmoBase gizmo, double now);
+    /** The gizmo does what its connection orders (stage 5), {@code now} seconds into play. */
+    void trigger(GizmoBase gizmo, Order order, double now);
 
     /** The absorber holds the ball. */
     void capture(Ball ball, Absorber absorber);
 
-    /** Wakes every ball where the flipper's sweep can reach, and what rests on them. */
-    void wakeSweep(Flipper flipper);
+    /** Wakes every ball where the moving shape's sweep can reach, and what rests on them. */
+    void wakeSweep(MovingShape moving);
 
     /** Pairs placed on each other that have now separated collide from now on. */
     void forgetSeparatedPairs();

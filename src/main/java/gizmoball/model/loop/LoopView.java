@@ -3,8 +3,10 @@ package gizmoball.model.loop;
 import java.util.Collection;
 import java.util.List;
 
-import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.MovingShape;
+
+import physics.Vect;
 
 /**
  * What the loop (a {@link TickRun} with its detector and contacts) sees of the board: the balls, gizmos, wiring and
@@ -25,8 +27,8 @@ public interface LoopView {
     /** The named ball; null if there is none. */
     Ball ball(String name);
 
-    /** The flippers among the gizmos. */
-    List<Flipper> flippers();
+    /** The gizmos whose shapes move in play (the flippers), in board order. */
+    List<MovingShape> movingShapes();
 
     List<Connection> connections();
 
@@ -36,7 +38,8 @@ public interface LoopView {
     /** False only in benchmarks and tests that scan every gizmo instead of asking the index. */
     boolean spatialIndexEnabled();
 
-    double gravity();
+    /** The acceleration of gravity, L/s^2, as a vector on the board. */
+    Vect gravity();
 
     double mu();
 

@@ -13,14 +13,14 @@ import physics.Vect;
 
 /**
  * Keeps the energy of elastic bounces (docs/design.md, "Failure modes": energy drift). In free flight the
- * integration (gravity, then a straight move) keeps the shadow energy |u|^2/2 - g y exactly, u being the velocity
+ * integration (gravity, then a straight move) keeps the shadow energy |u|^2/2 - g . p exactly, u being the velocity
  * half a gravity kick back; an elastic bounce part-way through a tick moves it by up to g dt |v| either way, and
  * many such bounces would random-walk the energy. So the balls whose collisions in a tick were all elastic (with
  * still shapes of coefficient 1 or with each other) get the normal component of their last bounce adjusted at the
  * end of the tick to keep it; their tangential velocity is never touched. One per tick.
  */
 final class ShadowEnergy {
-    private final double gravity;
+    private final Vect gravity;
     private final double dt;
     private final Map<Ball, Double> atStart;
     /** The normal of each ball's last elastic bounce, in order of first bounce (runs stay bit-identical). */
@@ -29,7 +29,7 @@ final class ShadowEnergy {
     private final List<List<Ball>> pairs = new ArrayList<>();
 
     /** For a tick of {@code balls} balls: the books are sized for all of them, so a tick never regrows them. */
-    ShadowEnergy(double gravity, double dt, int balls) {
+    ShadowEnergy(Vect gravity, double dt, int balls) {
         this.gravity = gravity;
         this.dt = dt;
         int capacity = 2 * balls + 16;
@@ -38,10 +38,10 @@ final class ShadowEnergy {
         lost = new HashSet<>(capacity);
     }
 
-    /** After stage 1: right after the gravity kick, u = v - g dt/2 y. */
+    /** After stage 1: right after the gravity kick, u = v - g dt/2. */
     void start(Ball ball) {
-        Vect u = ball.velocity().minus(new Vect(0, gravity * dt / 2));
-        atStart.put(ball, u.dot(u) / 2 - gravity * ball.position().y());
+        Vect u = ball.velocity().minus(gravity.times(dt / 2));
+        atStart.put(ball, u.dot(u) / 2 - gravity.dot(ball.position()));
     }
 
     /** The ball lost energy this tick (a lossy surface, a rest, a capture, a flipper): it is left alone. */
@@ -66,8 +66,8 @@ final class ShadowEnergy {
     /**
      * Adjusts each group of balls that met each other (or a ball alone). Ball-ball collisions conserve a group's
      * total, so the group shares one correction: each velocity moves by lambda along the normal of the ball's last
-     * bounce (opposite normals for a pair, so momentum is kept), with w_i = v_i + g dt/2 y (u at the end of a tick)
-     * and sum |w_i + lambda n_i|^2 = sum 2 (S_i + g y_i).
+     * bounce (opposite normals for a pair, so momentum is kept), with w_i = v_i + g dt/2 (u at the end of a tick)
+     * and sum |w_i + lambda n_i|^2 = sum 2 (S_i + g . p_i).
      */
     void restore() {
         Map<Ball, List<Ball>> groups = new LinkedHashMap<>();
@@ -86,7 +86,7 @@ final class ShadowEnergy {
     }
 
     private void restore(List<Ball> group) {
-        double h = gravity * dt / 2;
+        Vect h = gravity.times(dt / 2);
         double squares = 0;
         double along = 0;
         double target = 0;
@@ -94,10 +94,10 @@ final class ShadowEnergy {
             if (lost.contains(ball) || ball.isCaptured() || !atStart.containsKey(ball)) {
                 return;
             }
-            Vect w = ball.velocity().plus(new Vect(0, h));
+            Vect w = ball.velocity().plus(h);
             squares += w.dot(w);
             along += w.dot(elasticNormals.get(ball));
-            target += 2 * (atStart.get(ball) + gravity * ball.position().y());
+            target += 2 * (atStart.get(ball) + gravity.dot(ball.position()));
         }
         int n = group.size();
         double discriminant = along * along - n * (squares - target);

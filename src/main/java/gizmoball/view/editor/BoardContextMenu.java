@@ -50,7 +50,7 @@ public final class BoardContextMenu {
         for (JMenuItem item : onSelection) {
             item.setEnabled(selected);
         }
-        rotate.setEnabled(controller.selectedGizmo().isPresent());
+        rotate.setEnabled(controller.selection().stream().anyMatch(n -> controller.board().gizmo(n).isPresent()));
         menu.show(panel, e.getX(), e.getY());
     }
 

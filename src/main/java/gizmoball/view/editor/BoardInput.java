@@ -24,7 +24,8 @@ public final class BoardInput extends MouseAdapter implements KeyListener {
     private final Consumer<MouseEvent> contextMenu;
 
     /**
-     * @param chooseEdge  asked to let the user pick down or up once Key Connect has its key (e.g. a popup menu)
+     * @param chooseEdge  asked to let the user pick the action (and for Key Connect down or up) once Key Connect has
+     *                    its key or Connect its target (e.g. a popup menu)
      * @param contextMenu a right-click (it cancels a step under way, or opens the board's context menu)
      */
     private BoardInput(Editor controller, BoardPanel panel, BooleanSupplier active, Runnable chooseEdge,
@@ -55,7 +56,7 @@ public final class BoardInput extends MouseAdapter implements KeyListener {
         panel.requestFocusInWindow();
         if (SwingUtilities.isLeftMouseButton(e)) {
             Vect p = toBoard(e);
-            controller.press(p.x(), p.y());
+            controller.press(p.x(), p.y(), e.isShiftDown());
             afterKeyOrClick();
         } else if (SwingUtilities.isRightMouseButton(e)) {
             contextMenu.accept(e);
@@ -116,7 +117,7 @@ public final class BoardInput extends MouseAdapter implements KeyListener {
     }
 
     private void afterKeyOrClick() {
-        if (controller.awaitingEdge()) {
+        if (controller.awaitingEdge() || controller.awaitingAction()) {
             chooseEdge.run();
         }
     }

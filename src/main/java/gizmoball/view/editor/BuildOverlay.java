@@ -2,6 +2,8 @@ package gizmoball.view.editor;
 
 import gizmoball.boardfile.KeyCodes;
 import gizmoball.editor.Editor;
+import gizmoball.editor.Handle;
+import gizmoball.editor.PendingStep;
 import gizmoball.editor.Preview;
 import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
@@ -46,6 +48,8 @@ public final class BuildOverlay implements BoardOverlay {
     private static final float HATCH_PITCH = 9f;
     /** Pixels between a selection outline (or footprint) and the label of keys beside it. */
     private static final double LABEL_GAP = 6;
+    /** Pixels across a resize handle of the selected absorber. */
+    private static final double HANDLE = 8;
 
     private final Editor controller;
     private final BooleanSupplier active;
@@ -65,7 +69,10 @@ public final class BuildOverlay implements BoardOverlay {
             g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
             g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
             controller.target().ifPresent(name -> outline(g, t, name, EditorColors.TARGET, false));
-            controller.selected().ifPresent(name -> paintSelection(g, t, name));
+            paintSelection(g, t);
+            if (controller.step() instanceof PendingStep.Banding band) {
+                paintBand(g, t, band);
+            }
             controller.connectSource().ifPresent(source -> {
                 outline(g, t, source.name(), EditorColors.CONNECTION, true);
                 controller.pointer().ifPresent(p -> rubberBand(g, t, source, p));
@@ -78,6 +85,40 @@ public final class BuildOverlay implements BoardOverlay {
         } finally {
             g.dispose();
         }
+    }
+
+    /**
+     * One gizmo or ball selected: outlined, with its connections and keys. Several: each outlined (what they are
+     * connected to would be a tangle of arrows; the properties panel lists the one selected last).
+     */
+    private void paintSelection(Graphics2D g, BoardTransform t) {
+        List<String> group = controller.selection();
+        if (group.size() > 1) {
+            group.forEach(name -> outline(g, t, name, EditorColors.SELECTION, false));
+            return;
+        }
+        controller.selected().ifPresent(name -> paintSelection(g, t, name));
+        for (Handle h : controller.handles()) {
+            Point2D at = t.toScreen(h.x(), h.y());
+            Rectangle2D square = new Rectangle2D.Double(at.getX() - HANDLE / 2, at.getY() - HANDLE / 2, HANDLE,
+                    HANDLE);
+            g.setColor(EditorColors.SELECTION);
+            g.fill(square);
+            g.setColor(Color.BLACK);
+            g.setStroke(new BasicStroke(1f));
+            g.draw(square);
+        }
+    }
+
+    /** The rubber band of Select: a dashed rectangle over a faint fill. */
+    private static void paintBand(Graphics2D g, BoardTransform t, PendingStep.Banding band) {
+        Rectangle2D r = screenRect(t, Math.min(band.x0(), band.x1()), Math.min(band.y0(), band.y1()),
+                Math.abs(band.x1() - band.x0()), Math.abs(band.y1() - band.y0()), 0);
+        g.setColor(EditorColors.translucent(EditorColors.SELECTION, 40));
+        g.fill(r);
+        g.setColor(EditorColors.SELECTION);
+        g.setStroke(new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[]{5f, 4f}, 0f));
+        g.draw(r);
     }
 
     private void paintSelection(Graphics2D g, BoardTransform t, String name) {
@@ -121,16 +162,26 @@ public final class BuildOverlay implements BoardOverlay {
      * red outline, which reads over every gizmo colour (a translucent red vanished over a red square).
      */
     private void paintPreview(Graphics2D g, BoardTransform t, Preview preview) {
-        Color color = preview.fits() ? EditorColors.FITS : EditorColors.REFUSED;
+        paintPreview(g, t, preview, preview.fits());
+    }
+
+    /** A group's parts are drawn as it fits or is refused as a whole. */
+    private void paintPreview(Graphics2D g, BoardTransform t, Preview preview, boolean fits) {
+        Color color = fits ? EditorColors.FITS : EditorColors.REFUSED;
         Shape shape;
-        if (preview instanceof Preview.Footprint f) {
-            shape = screenRect(t, f.x(), f.y(), f.width(), f.height(), 0);
+        if (preview instanceof Preview.Group group) {
+            group.parts().forEach(part -> paintPreview(g, t, part, fits));
+            return;
+        } else if (preview instanceof Preview.Footprint f) {
+            // A resize dragged past the opposite edge: the cells between the two edges, refused.
+            shape = screenRect(t, Math.min(f.x(), f.x() + f.width()), Math.min(f.y(), f.y() + f.height()),
+                    Math.abs(f.width()), Math.abs(f.height()), 0);
         } else {
             Preview.BallPlacement b = (Preview.BallPlacement) preview;
             shape = screenEllipse(t, b.x(), b.y(), Board.BALL_RADIUS);
             velocityArrow(g, t, b.x(), b.y(), b.vx(), b.vy(), color);
         }
-        if (preview.fits()) {
+        if (fits) {
             g.setColor(EditorColors.translucent(color, 90));
             g.fill(shape);
         } else {

@@ -79,8 +79,8 @@ public final class EditMenu extends JMenu {
         redo.setEnabled(on && controller.history().canRedo());
         undo.setText(controller.history().undoable().map(what -> "Undo: " + what).orElse("Undo"));
         redo.setText(controller.history().redoable().map(what -> "Redo: " + what).orElse("Redo"));
-        rotate.setEnabled(on && controller.selectedGizmo().isPresent());
-        boolean something = controller.selectedGizmo().isPresent() || controller.selectedBall().isPresent();
+        boolean something = !controller.selection().isEmpty();
+        rotate.setEnabled(on && controller.selection().stream().anyMatch(n -> controller.board().gizmo(n).isPresent()));
         delete.setEnabled(on && something);
         cut.setEnabled(on && something);
         copy.setEnabled(on && something);

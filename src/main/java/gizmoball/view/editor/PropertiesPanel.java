@@ -2,6 +2,7 @@ package gizmoball.view.editor;
 
 import gizmoball.boardfile.Decimals;
 import gizmoball.boardfile.KeyCodes;
+import gizmoball.boardfile.OrderWords;
 import gizmoball.editor.Editor;
 import gizmoball.model.Board;
 import gizmoball.model.BoardChange;
@@ -41,6 +42,7 @@ import java.awt.GridBagConstraints;
 import java.awt.GridBagLayout;
 import java.awt.Insets;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.awt.event.ActionEvent;
@@ -70,6 +72,8 @@ public final class PropertiesPanel extends JPanel {
 
     private static final int WIDTH = 250;
     private static final int SELECTION_WIDTH = 226;
+    /** Names of a group the selection label lists before "...". */
+    private static final int GROUP_NAMES = 5;
 
     private final Editor controller;
     private final Runnable focusBoard;
@@ -98,6 +102,7 @@ public final class PropertiesPanel extends JPanel {
     private final JList<Link> linkList = new JList<>(links);
     private final JButton removeLink = new JButton("Remove");
     private String shownSelection;
+    private List<String> shownGroup = List.of();
 
     private PropertiesPanel(Editor controller, Runnable focusBoard) {
         this.controller = controller;
@@ -128,7 +133,8 @@ public final class PropertiesPanel extends JPanel {
             }
         });
         controller.addStateListener(() -> {
-            if (!Objects.equals(controller.selected().orElse(null), panel.shownSelection)) {
+            if (!Objects.equals(controller.selected().orElse(null), panel.shownSelection)
+                    || !controller.selection().equals(panel.shownGroup)) {
                 panel.refresh();
             }
         });
@@ -153,9 +159,12 @@ public final class PropertiesPanel extends JPanel {
         RefusedValue.unmark(extraBall);
 
         shownSelection = controller.selected().orElse(null);
-        Optional<Gizmo> gizmo = controller.selectedGizmo();
-        Optional<BallView> ball = controller.selectedBall();
-        selection.setText(describe(gizmo, ball));
+        shownGroup = controller.selection();
+        // Of several selected, nothing one of them alone has is shown: an edit here would seem to apply to all.
+        boolean several = shownGroup.size() > 1;
+        Optional<Gizmo> gizmo = several ? Optional.empty() : controller.selectedGizmo();
+        Optional<BallView> ball = several ? Optional.empty() : controller.selectedBall();
+        selection.setText(several ? describe(shownGroup) : describe(gizmo, ball));
         // The ball's and the colour's rows keep their room when they do not apply, so that nothing below jumps.
         for (NumberField f : new NumberField[]{ballX, ballY, ballVx, ballVy}) {
             f.setEnabled(ball.isPresent());
@@ -194,11 +203,11 @@ public final class PropertiesPanel extends JPanel {
         });
 
         links.clear();
-        if (shownSelection != null) {
+        if (shownSelection != null && !several) {
             String name = shownSelection;
             for (Connection c : board.connections()) {
                 if (c.source().equals(TriggerSource.named(name)) || c.target().equals(name)) {
-                    links.addElement(new Link(c.source() + " \u2192 " + c.target(),
+                    links.addElement(new Link(c.source() + " \u2192 " + c.target() + OrderWords.of(c.order()),
                             () -> controller.disconnect(c.source(), c.target())));
                 }
             }
@@ -562,6 +571,13 @@ public final class PropertiesPanel extends JPanel {
         return controller.wallsSelected()
                 ? named(TriggerSource.OUTER_WALLS.name(), "the walls around the board")
                 : "Nothing selected";
+    }
+
+    /** Several selected: how many, and which (the first few). */
+    private static String describe(List<String> group) {
+        String names = String.join(", ", group.subList(0, Math.min(group.size(), GROUP_NAMES)))
+                + (group.size() > GROUP_NAMES ? ", \u2026" : "");
+        return named(group.size() + " selected", names + " (Shift+click takes one out)");
     }
 
     private static void enableAll(Container rows, boolean enabled) {

@@ -78,7 +78,7 @@ class PinchedBallsTest {
         board.setFlipperState("LF", 90, true);
         double offset = Board.BALL_RADIUS / Math.sqrt(2);   // touching the square's corner (4, 18), on the diagonal
         board.addBall("B", 4 + offset, 18 - offset, 0, 0);
-        for (int t = 0; t < TickRun.SLEEP_TICKS + 5; t++) {
+        for (int t = 0; t < Math.round(LoopSettings.STANDARD.sleepTime() / DT) + 5; t++) {
             board.tick(DT);
         }
         Vect lying = board.ball("B").orElseThrow().position();

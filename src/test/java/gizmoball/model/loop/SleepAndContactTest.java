@@ -37,7 +37,28 @@ class SleepAndContactTest {
     }
 
     /** Long enough for a ball lying still to fall asleep. */
-    private static final int SETTLE = TickRun.SLEEP_TICKS + 5;
+    private static final int SETTLE = (int) Math.round(LoopSettings.STANDARD.sleepTime() / DT) + 5;
+
+    /**
+     * Sleep is counted in seconds, so a board run at another dt keeps its meaning: a ball set on the floor comes to
+     * rest on it in its first tick (it has no contact before), and falls asleep in the tick that brings its time
+     * still on the floor to {@link LoopSettings#sleepTime()}, not after a number of ticks.
+     */
+    @ParameterizedTest
+    @CsvSource({"60", "120", "240", "25", "7"})
+    void aBallFallsAsleepAfterTheSleepTimeAtAnyTickRate(int ticksPerSecond) {
+        double dt = 1.0 / ticksPerSecond;
+        long ticksToSleep = (long) Math.ceil(LoopSettings.STANDARD.sleepTime() * ticksPerSecond - 1e-9);
+        Board board = new Board();
+        board.addBall("B", 10, Board.SIZE - R, 0, 0);
+        board.tick(dt);
+        for (int t = 1; t < ticksToSleep; t++) {
+            board.tick(dt);
+            assertThat(ball(board, "B").isAsleep()).as("tick %d of %d", t, ticksToSleep).isFalse();
+        }
+        board.tick(dt);
+        assertThat(ball(board, "B").isAsleep()).isTrue();
+    }
 
     @Test
     void aBallLyingOnTheFloorFallsAsleepAndCostsNoCollision() {

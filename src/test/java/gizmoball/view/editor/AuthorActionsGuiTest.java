@@ -6,6 +6,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.loop.TriggerSource;
+import javax.swing.JMenuItem;
 import gizmoball.view.Gui;
 import java.awt.Toolkit;
 import java.awt.datatransfer.DataFlavor;
@@ -125,6 +126,8 @@ class AuthorActionsGuiTest {
         rightClick(6.5, 16.5);
         onEdt(() -> contextItem("context.connectfromhere").doClick(0));
         w.clickCell(3, 4);
+        JMenuItem connect = onEdt(() -> EditorGui.showingMenuItem("order.connect"));
+        onEdt(() -> connect.doClick(0));
         assertThat(onEdt(() -> w.board.connections())).contains(new gizmoball.model.loop.Connection(
                 TriggerSource.gizmo("LF"), "C1"));
         Gui.clickMenu(w.window.menus(), "Undo: Connected LF \u2192 C1");

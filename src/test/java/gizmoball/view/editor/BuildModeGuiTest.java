@@ -5,15 +5,19 @@ import gizmoball.editor.Tool;
 import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.gizmo.Action;
 import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.Connection;
 import gizmoball.model.loop.TriggerSource;
 import gizmoball.session.GameSession;
 import gizmoball.session.Mode;
 import gizmoball.view.BoardPainter;
+import gizmoball.view.Gui;
+import java.util.stream.Stream;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -150,6 +154,8 @@ class BuildModeGuiTest {
         w.clickTool(Tool.CONNECT);
         w.clickCell(4, 4);
         w.clickCell(9, 9);
+        JMenuItem connect = onEdt(() -> EditorGui.showingMenuItem("order.connect"));
+        onEdt(() -> connect.doClick(0));
 
         assertThat(board.connections()).containsExactly(new Connection(TriggerSource.gizmo("C1"), "LF1"));
         JList<?> links = onEdt(() -> EditorGui.find(w.build.properties(), JList.class, "links"));
@@ -175,6 +181,34 @@ class BuildModeGuiTest {
         });
         FlipperView lf1 = (FlipperView) board.gizmo("LF1").orElseThrow();
         assertThat(lf1.angleFromRest()).isCloseTo(90, within(1e-9));
+    }
+
+    @Test
+    void keyConnectsPopupOffersTheGizmosActionsAndADelay() {
+        w.clickTool(Tool.ABSORBER);
+        w.clickCell(2, 18);
+        w.clickTool(Tool.KEY_CONNECT);
+        w.clickCell(2, 18);
+        w.key(KeyEvent.VK_SPACE);
+        List<String> offered = onEdt(() -> Stream.of("action.default", "action.fire", "action.flash", "action.raise")
+                .filter(name -> {
+                    try {
+                        EditorGui.showingMenuItem(name);
+                        return true;
+                    } catch (AssertionError absent) {
+                        return false;
+                    }
+                }).toList());
+        assertThat(offered).as("an absorber fires or flashes; it does not rise")
+                .containsExactly("action.default", "action.fire", "action.flash");
+        onEdt(() -> EditorGui.showingMenuItem("action.flash").doClick(0));
+        JTextField delay = onEdt(() -> Gui.find(EditorGui.showingMenuItem("edge.down").getParent(), JTextField.class,
+                f -> "order.delay".equals(f.getName())).orElseThrow());
+        onEdt(() -> delay.setText("0.25"));
+        onEdt(() -> EditorGui.showingMenuItem("edge.down").doClick(0));
+
+        assertThat(board.keyBindings()).containsExactly(new KeyBinding(KeyEvent.VK_SPACE, KeyEdge.DOWN, "A1",
+                Order.of(Action.FLASH).after(0.25)));
     }
 
     @Test

@@ -75,6 +75,14 @@ final class BuildWindow {
         });
     }
 
+    /** A click with Shift held (adds to the selection or takes out of it). */
+    void shiftClick(double x, double y) {
+        onEdt(() -> {
+            mouse(MouseEvent.MOUSE_PRESSED, x, y, InputEvent.SHIFT_DOWN_MASK);
+            mouse(MouseEvent.MOUSE_RELEASED, x, y, InputEvent.SHIFT_DOWN_MASK);
+        });
+    }
+
     /** The pointer moves over the board to (x, y) with no button down. */
     void hover(double x, double y) {
         onEdt(() -> {
@@ -127,8 +135,12 @@ final class BuildWindow {
     }
 
     private void mouse(int id, double x, double y) {
+        mouse(id, x, y, 0);
+    }
+
+    private void mouse(int id, double x, double y, int keys) {
         Point2D p = panel.transform().toScreen(x, y);
-        int modifiers = id == MouseEvent.MOUSE_RELEASED ? 0 : InputEvent.BUTTON1_DOWN_MASK;
+        int modifiers = keys | (id == MouseEvent.MOUSE_RELEASED ? 0 : InputEvent.BUTTON1_DOWN_MASK);
         int clicks = id == MouseEvent.MOUSE_DRAGGED ? 0 : 1;
         panel.dispatchEvent(new MouseEvent(panel, id, System.currentTimeMillis(), modifiers,
                 (int) Math.round(p.getX()), (int) Math.round(p.getY()), clicks, false, MouseEvent.BUTTON1));

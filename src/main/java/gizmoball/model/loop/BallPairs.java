@@ -1,0 +1,83 @@
+package gizmoball.model.loop;
+
+import java.util.List;
+
+import physics.Geometry;
+import physics.Vect;
+
+/**
+ * Stage 4 for two balls meeting (docs/design.md, "Piles"): an elastic bounce, or, where they meet slowly and one of
+ * them is held up, a pile that settles.
+ */
+final class BallPairs {
+    private final StepContext step;
+
+    BallPairs(StepContext step) {
+        this.step = step;
+    }
+
+    /**
+     * Balls that meet more slowly than two ticks of gravity, one of them lying on something (asleep, or in persistent
+     * contact), are pressed together in a pile, not bouncing: each that meets a supported ball stops closing on it and
+     * keeps it as a contact, as it would on a floor, and a floor feels nothing. So piles build from the bottom and
+     * settle. Otherwise the two bounce elastically, and a sleeping one wakes.
+     */
+    Struck resolve(Ball ball, Ball other) {
+        Vect normal = ball.position().minus(other.position()).unitSize();
+        double approach = -ball.velocity().minus(step.detector.motion(other)).dot(normal);
+        boolean slow = approach <= step.pressingSpeed();
+        if (slow && (Contacts.supports(other, ball) || Contacts.supports(ball, other))) {
+            restAgainst(ball, other);
+            restAgainst(other, ball);
+            if (-ball.velocity().minus(other.velocity()).dot(normal) > Tolerances.ROUNDING_SPEED) {
+                pressTogether(ball, other, normal);
+            }
+            step.restingContact = true;
+            return new Struck.OtherBall(other.name());
+        }
+        step.actions.recordEvent(new PlayEvent.Hit(new Struck.OtherBall(other.name()), null, approach, ball.name(),
+                ball.position()));
+        other.setStillTime(0);
+        if (other.isAsleep()) {
+            step.view.sleepers().wake(other);
+            step.findAwake();
+            step.schedule.forgetAll();
+        }
+        Geometry.VectPair after = Geometry.reflectBalls(ball.position(), 1, ball.velocity(), other.position(), 1,
+                other.velocity());
+        ball.setVelocity(after.v1);
+        other.setVelocity(after.v2);
+        step.energy.bounced(ball, normal, true);
+        step.energy.bounced(other, normal.neg(), true);
+        step.energy.met(ball, other);
+        return new Struck.OtherBall(other.name());
+    }
+
+    /**
+     * The support itself moves into the ball: they go on together along the normal, momentum kept, and neither
+     * presses into what else holds it (the support's floor takes what the support cannot). Each of those steps may
+     * undo a little of the other, so they repeat until the pair closes no faster than rounding: the fixed point
+     * the loop would otherwise reach only through a chain of zero-time collisions, one step each.
+     */
+    private void pressTogether(Ball ball, Ball other, Vect normal) {
+        List<Vect> holdingBall = step.contacts.normalsBesides(ball, new ContactRef.OnBall(other.name()));
+        List<Vect> holdingOther = step.contacts.normalsBesides(other, new ContactRef.OnBall(ball.name()));
+        for (int i = 0; i < step.settings.pressSteps()
+                && -ball.velocity().minus(other.velocity()).dot(normal) > Tolerances.ROUNDING_SPEED; i++) {
+            double common = (ball.velocity().dot(normal) + other.velocity().dot(normal)) / 2;
+            ball.setVelocity(Contacts.project(ball.velocity().plus(normal.times(common - ball.velocity().dot(normal))),
+                    holdingBall));
+            other.setVelocity(Contacts.project(
+                    other.velocity().plus(normal.times(common - other.velocity().dot(normal))), holdingOther));
+        }
+        step.energy.lost(ball);
+        step.energy.lost(other);
+    }
+
+    /** The ball, awake, stops closing on a supporting ball and keeps it as a contact. */
+    void restAgainst(Ball ball, Ball support) {
+        if (!ball.isAsleep() && Contacts.supports(support, ball)) {
+            step.comeToRest(ball, new ContactRef.OnBall(support.name()));
+        }
+    }
+}

@@ -1,0 +1,217 @@
+package gizmoball.model.loop;
+
+import gizmoball.model.gizmo.Absorber;
+import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.MovingShape;
+
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+
+import physics.Vect;
+
+/**
+ * Stage 4 for a collision that must be solved with everything its balls touch at once (docs/design.md, "Contact
+ * clusters"): which collisions those are, and the simultaneous solve of the cluster's normal impulses with its hits,
+ * rests and stalls.
+ */
+final class ClusterSolve {
+    private final StepContext step;
+    private final BallPairs pairs;
+
+    ClusterSolve(StepContext step, BallPairs pairs) {
+        this.step = step;
+        this.pairs = pairs;
+    }
+
+    /**
+     * The cluster of touching contacts a collision must be solved with at once, or null when the collision is a
+     * contact of its own. A collision at the very moment of a ball's last one is a chain through touching contacts;
+     * one simultaneous solve ends it, where one contact at a time would go on at no time apart. A ball that has
+     * collided {@link LoopSettings#rattleCollisions()} times in the tick and again within
+     * {@link LoopSettings#rattleTime()} is rattling between surfaces it nearly touches (a ball in the apex of a narrow
+     * pocket, without gravity to settle it): the surfaces within twice the way it went since count as touching it,
+     * so one solve ends the rattle as well.
+     */
+    ContactCluster toSolve(Collision collision) {
+        Contact contact = collision.contact();
+        if (step.view.loopMode() != LoopMode.CONTINUOUS || contact instanceof Contact.Face face
+                && face.gizmo() instanceof Absorber) {
+            return null;
+        }
+        Ball ball = collision.ball();
+        Ball other = contact instanceof Contact.OtherBall on ? on.other() : null;
+        double reach;
+        if (again(ball) || other != null && again(other)) {
+            reach = ContactCluster.TOUCHING;
+        } else if (rattling(ball)) {
+            reach = Math.min(step.settings.rattleReach(),
+                    2 * ball.velocity().length() * (step.elapsed - step.lastCollisionAt.get(ball)));
+        } else {
+            return null;
+        }
+        return ContactCluster.around(step.view, other == null ? List.of(ball) : List.of(ball, other),
+                step.detector::motion, candidate -> !step.finished.contains(candidate), reach);
+    }
+
+    private boolean rattling(Ball ball) {
+        Double last = step.lastCollisionAt.get(ball);
+        return last != null && step.elapsed - last <= step.settings.rattleTime()
+                && step.collisionsOf.getOrDefault(ball, 0) >= step.settings.rattleCollisions();
+    }
+
+    private boolean again(Ball ball) {
+        Double last = step.lastCollisionAt.get(ball);
+        return last != null && step.elapsed - last <= step.settings.zeroTime();
+    }
+
+    /**
+     * Solves the cluster's normal impulses at once ({@link NormalImpulses}): no contact is left closing, each impact
+     * bounces with its coefficient where the contacts allow it, moving shapes give velocity and take none. Where
+     * no velocity within {@link Arena#MAX_SPEED} leaves the moving parts, they stall (a jam) and the cluster is
+     * solved again with them still. Every impact is a hit that triggers; a slow one is resting contact.
+     */
+    Struck resolve(Collision collision, ContactCluster cluster) {
+        List<Ball> balls = cluster.balls();
+        NormalImpulses.Result result = solve(cluster, Set.of());
+        Set<MovingShape> stalled = new LinkedHashSet<>();
+        if (!result.feasible()) {
+            for (ContactCluster.Row row : cluster.rows()) {
+                if (row.other() instanceof ContactCluster.Other.Moving moving && stalled.add(moving.shape())) {
+                    moving.shape().stall();
+                    step.actions.recordEvent(new PlayEvent.Jammed(moving.shape().name(),
+                            balls.get(row.ball()).name()));
+                }
+            }
+            result = solve(cluster, stalled);
+        }
+        boolean woke = false;
+        for (int k = 0; k < balls.size(); k++) {
+            Ball ball = balls.get(k);
+            Vect after = new Vect(result.vx()[k], result.vy()[k]);
+            if (after.equals(step.detector.motion(ball))) {
+                continue;
+            }
+            if (ball.isAsleep()) {
+                step.view.sleepers().wake(ball);
+                woke = true;
+            }
+            ball.setVelocity(after);
+            ball.setStillTime(0);
+            step.energy.lost(ball);
+            step.changed(ball);
+        }
+        Struck hit = noteImpacts(collision, cluster, result);
+        if (woke || !stalled.isEmpty()) {
+            step.sceneChanged();
+        }
+        return hit;
+    }
+
+    private NormalImpulses.Result solve(ContactCluster cluster, Set<MovingShape> stalled) {
+        List<ContactCluster.Row> rows = cluster.rows();
+        int n = rows.size();
+        int[] a = new int[n];
+        int[] b = new int[n];
+        double[] nx = new double[n];
+        double[] ny = new double[n];
+        double[] speed = new double[n];
+        double[] restitution = new double[n];
+        double[] impact = impactSpeeds(cluster);
+        for (int i = 0; i < n; i++) {
+            ContactCluster.Row row = rows.get(i);
+            a[i] = row.ball();
+            b[i] = row.other() instanceof ContactCluster.Other.InCluster in ? in.index() : -1;
+            nx[i] = row.normal().x();
+            ny[i] = row.normal().y();
+            boolean still = row.other() instanceof ContactCluster.Other.Moving moving
+                    && stalled.contains(moving.shape());
+            speed[i] = still ? 0 : row.surfaceSpeed();
+            restitution[i] = row.restitution();
+        }
+        List<Ball> balls = cluster.balls();
+        double[] vx = new double[balls.size()];
+        double[] vy = new double[balls.size()];
+        for (int k = 0; k < balls.size(); k++) {
+            Vect v = step.detector.motion(balls.get(k));
+            vx[k] = v.x();
+            vy[k] = v.y();
+        }
+        return new NormalImpulses(balls.size(), a, b, nx, ny, speed, restitution).solve(vx, vy, impact,
+                Arena.MAX_SPEED);
+    }
+
+    /**
+     * The closing speed above which a contact of a cluster is an impact that bounces, as for a single contact
+     * ({@link StepContext#restingSpeed}): the gravity pressing the ball into a surface as the ball's other contacts in
+     * the cluster leave it, so a ball set on a floor settles, one pressed into a surface above or beside it by no
+     * gravity bounces; between balls, as for two balls alone ({@link StepContext#pressingSpeed}).
+     */
+    private double[] impactSpeeds(ContactCluster cluster) {
+        List<ContactCluster.Row> rows = cluster.rows();
+        double[] impact = new double[rows.size()];
+        for (int i = 0; i < rows.size(); i++) {
+            ContactCluster.Row row = rows.get(i);
+            if (row.other().surface()) {
+                List<Vect> others = new ArrayList<>();
+                for (int j = 0; j < rows.size(); j++) {
+                    if (j != i && rows.get(j).ball() == row.ball()) {
+                        others.add(rows.get(j).normal());
+                    }
+                }
+                impact[i] = step.restingSpeed(row.normal(), others);
+            } else {
+                impact[i] = step.pressingSpeed();
+            }
+        }
+        return impact;
+    }
+
+    /**
+     * The hits of a solved cluster (each contact whose impulse was an impact, once per surface) for the sound, the
+     * flashes and stage 5; its resting contacts become persistent contacts. Returns what the collision itself hit.
+     */
+    private Struck noteImpacts(Collision collision, ContactCluster cluster, NormalImpulses.Result result) {
+        Struck own = collision.contact().struck();
+        Set<Struck> heard = new LinkedHashSet<>();
+        List<Ball> balls = cluster.balls();
+        double[] impact = impactSpeeds(cluster);
+        for (int i = 0; i < cluster.rows().size(); i++) {
+            ContactCluster.Row row = cluster.rows().get(i);
+            Ball ball = balls.get(row.ball());
+            double change = result.compression()[i];
+            if (change <= 0) {
+                continue;
+            }
+            if (change <= impact[i]) {
+                rest(ball, row, balls);
+                continue;
+            }
+            Struck struck = row.other().struck(balls);
+            GizmoBase target = struck instanceof TriggerSource.OfGizmo gizmo ? step.view.gizmo(gizmo.gizmo()) : null;
+            if (target != null) {
+                target.markTriggered(step.now());
+            }
+            if (heard.add(struck)) {
+                GizmoKind kind = target == null ? null : target.kind();
+                step.actions.recordEvent(new PlayEvent.Hit(struck, kind, change, ball.name(), ball.position()));
+                if (struck instanceof TriggerSource source && !struck.equals(own)) {
+                    step.alsoHit.add(source);
+                }
+            }
+        }
+        return own;
+    }
+
+    private void rest(Ball ball, ContactCluster.Row row, List<Ball> balls) {
+        if (row.other() instanceof ContactCluster.Other.Still still) {
+            Contacts.attach(ball, still.ref());
+        } else if (row.other() instanceof ContactCluster.Other.InCluster in) {
+            Ball other = balls.get(in.index());
+            pairs.restAgainst(ball, other);
+            pairs.restAgainst(other, ball);
+        }
+    }
+}

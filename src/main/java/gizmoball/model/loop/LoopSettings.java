@@ -1,0 +1,49 @@
+package gizmoball.model.loop;
+
+/**
+ * The loop's tuning, each value with its unit in its name's comment (docs/design.md, "The loop's settings" and
+ * "Guards"). Lengths and speeds shared with the editor and the loader are {@link Tolerances}; the cluster solver's own
+ * limits are {@link NormalImpulses}'. The loop runs with {@link #STANDARD}; tests read the values from there.
+ *
+ * @param zeroTime                 s: a collision sooner than this after the previous one counts as zero-time
+ * @param restTicksOfGravity       ticks: a normal approach slower than this many ticks' worth of the gravity pressing
+ *                                 the ball into a surface is resting contact, not a bounce
+ * @param sleepSpeed               L/s: a ball on its contacts slower than this is still
+ * @param sleepTime                s: how long a ball must lie still on its contacts before it falls asleep
+ * @param zeroTimeHitsBeforeWedged collisions of one ball at zero time in one tick before it is stopped (guard)
+ * @param strikesOfASqueeze        strikes of one ball by one moving shape in a tick, after it came back from
+ *                                 something, that squeeze it
+ * @param strikesOfAPush           strikes of one ball by one moving shape in a tick, nothing in between, that are a push
+ * @param squeezesBeforePinched    squeezes of one ball in one tick before it is stopped with the shape (guard)
+ * @param bouncesAmongContacts     bounces among a ball's contacts within one collision: enough to leave a wedge of a
+ *                                 hundredth of a degree (guard beyond)
+ * @param pressSteps               steps that settle two pressed balls' velocities to rounding
+ * @param maxCollisionsBase        collisions of one tick, plus {@code maxCollisionsPerBall} per awake ball, after which
+ *                                 the tick ends (guard of last resort)
+ * @param maxCollisionsPerBall     see {@code maxCollisionsBase}
+ * @param maxCollisionsOfABall     collisions of one ball in one tick after which it moves no more in that tick (guard;
+ *                                 it stops only that ball)
+ * @param rattleCollisions         collisions of a ball in one tick, each soon after the last, that make it a rattle
+ *                                 solved as a cluster
+ * @param rattleTime               s: collisions of one ball this close together are a rattle
+ * @param rattleReach              L: the farthest a rattling ball's cluster reaches for what it nearly touches
+ */
+public record LoopSettings(double zeroTime, double restTicksOfGravity, double sleepSpeed, double sleepTime,
+                           int zeroTimeHitsBeforeWedged, int strikesOfASqueeze, int strikesOfAPush,
+                           int squeezesBeforePinched, int bouncesAmongContacts, int pressSteps, int maxCollisionsBase,
+                           int maxCollisionsPerBall, int maxCollisionsOfABall, int rattleCollisions, double rattleTime,
+                           double rattleReach) {
+
+    /** The settings of every board. */
+    public static final LoopSettings STANDARD = new LoopSettings(1e-12, 2, 1e-3, 0.5, 32, 2, 3, 16, 20_000, 64, 500,
+            100, 400, 8, 1e-3, 1e-3);
+
+    /**
+     * Whether a ball still for {@code stillTime} seconds, summed a tick of {@code dt} at a time, has lain still for
+     * {@link #sleepTime}: the first tick that reaches it counts, and a sum that falls short only by its rounding (far
+     * less than a thousandth of a tick) reaches it.
+     */
+    boolean stillLongEnough(double stillTime, double dt) {
+        return stillTime >= sleepTime - dt / 1024;
+    }
+}

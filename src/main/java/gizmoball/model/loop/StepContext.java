@@ -1,0 +1,134 @@
+package gizmoball.model.loop;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+import physics.Vect;
+
+/**
+ * The state of one tick, shared by the jobs of a {@link TickRun} (as Box2D passes its step context): what the board
+ * shows and lets the loop do, the tick's constants, the collision machinery, the balls' per-tick books and the
+ * counters the report gives. Lives for one tick; nothing in it outlives the report.
+ */
+final class StepContext {
+    final LoopView view;
+    final LoopActions actions;
+    final LoopSettings settings;
+    /** Seconds: the length of the tick. */
+    final double dt;
+    /** Seconds of play at the start of the tick. */
+    final double startTime;
+    /** L/s^2. */
+    final Vect gravity;
+    final Contacts contacts;
+    final ShadowEnergy energy;
+    /** SEED: balls that have had their collision this tick and move no more; CONTINUOUS: balls over their cap. */
+    final Set<Ball> finished = new HashSet<>();
+    final CollisionDetector detector;
+    final CollisionSchedule schedule;
+    /** The balls that move in this tick: neither captured nor asleep. */
+    final List<Ball> awake = new ArrayList<>();
+    /** When, in seconds since the tick began, each ball's last collision of this tick was resolved. */
+    final Map<Ball, Double> lastCollisionAt = new HashMap<>();
+    /** Collisions each ball has had in this tick, for the local collision cap. */
+    final Map<Ball, Integer> collisionsOf = new HashMap<>();
+    /** Surfaces hit besides the collision's own within the collision just resolved, for stage 5. */
+    final List<TriggerSource> alsoHit = new ArrayList<>();
+    /**
+     * The surfaces whose hit the collision being resolved has reported: the bounces among a ball's contacts within one
+     * collision (a wedge takes about 180 / its angle of them) are one hit each for the sound and the score.
+     */
+    final Set<ContactRef> reported = new HashSet<>();
+    /** Seconds of the tick simulated so far. */
+    double elapsed;
+    int collisions;
+    int zeroTimeCollisions;
+    long wedged;
+    long pinched;
+    long capped;
+    /** Whether the collision resolved last was a resting contact rather than a bounce. */
+    boolean restingContact;
+
+    StepContext(LoopView view, LoopActions actions, LoopSettings settings, double dt) {
+        this.view = view;
+        this.actions = actions;
+        this.settings = settings;
+        this.dt = dt;
+        this.startTime = view.time();
+        this.gravity = view.gravity();
+        this.contacts = new Contacts(view, gravity, dt);
+        this.energy = new ShadowEnergy(gravity, dt, view.balls().size());
+        this.detector = new CollisionDetector(view, finished);
+        this.schedule = new CollisionSchedule(detector, view.ballGrid());
+    }
+
+    /** Seconds of play now, within the tick. */
+    double now() {
+        return startTime + elapsed;
+    }
+
+    /** A trigger, a capture, a stall or a wake changed the scene: which balls move, and what they can hit. */
+    void sceneChanged() {
+        findAwake();
+        schedule.file(freeBalls(), elapsed);   // filing forgets every known collision
+    }
+
+    void findAwake() {
+        schedule.awakeChanged();
+        awake.clear();
+        for (Ball ball : view.balls()) {
+            if (!ball.isCaptured() && !ball.isAsleep()) {
+                awake.add(ball);
+            }
+        }
+    }
+
+    List<Ball> freeBalls() {
+        List<Ball> free = new ArrayList<>();
+        for (Ball ball : view.balls()) {
+            if (!ball.isCaptured()) {
+                free.add(ball);
+            }
+        }
+        return free;
+    }
+
+    /** The ball moves differently now: stage 3 asks about it again. */
+    void changed(Ball ball) {
+        schedule.forget(ball);
+        schedule.sped(ball);
+    }
+
+    /** The ball keeps the surface as a contact and loses every part of its velocity that presses into its contacts. */
+    void comeToRest(Ball ball, ContactRef ref) {
+        Contacts.attach(ball, ref);
+        ball.setVelocity(Contacts.project(ball.velocity(), contacts.normals(ball)));
+        energy.lost(ball);
+        restingContact = true;
+    }
+
+    /**
+     * L/s: a ball approaching a surface with this normal, while its other contacts have these normals, more slowly
+     * than this is resting contact: {@link LoopSettings#restTicksOfGravity()} ticks of the acceleration pressing it
+     * into the surface, which is gravity as the other contacts leave it (a ball on a slope is pressed into the wall at
+     * its foot by the slope, though gravity is parallel to the wall).
+     */
+    double restingSpeed(Vect normal, List<Vect> otherNormals) {
+        Vect pull = Contacts.project(gravity, otherNormals);
+        double pressing = Math.max(0, -pull.dot(normal));
+        return Math.max(Tolerances.ROUNDING_SPEED, settings.restTicksOfGravity() * pressing * dt);
+    }
+
+    /** L/s: two balls meeting more slowly than this, one of them held, press together (gravity's ticks' worth). */
+    double pressingSpeed() {
+        return Math.max(Tolerances.ROUNDING_SPEED, settings.restTicksOfGravity() * gravity.length() * dt);
+    }
+
+    GuardCounts guards() {
+        return new GuardCounts(wedged, pinched, capped);
+    }
+}

@@ -1,0 +1,118 @@
+package gizmoball.model.loop;
+
+import gizmoball.model.gizmo.Absorber;
+import gizmoball.model.gizmo.GizmoBase;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import physics.Vect;
+
+/**
+ * Stage 4 for a ball meeting a surface that does not move: an outer wall or a part of a still gizmo (docs/design.md,
+ * "Resting and rolling contact"). The ball bounces with the surface's coefficient, comes to rest on it when it
+ * approaches more slowly than the gravity pressing it in would explain, is wedged where a bounce would only go back
+ * and forth among its contacts, or is captured by an absorber.
+ */
+final class StillSurfaces {
+    private final StepContext step;
+
+    StillSurfaces(StepContext step) {
+        this.step = step;
+    }
+
+    /** Resolves the ball's collision with the surface; returns what it hit. */
+    TriggerSource resolve(Ball ball, Contact.StillSurface surface) {
+        GizmoBase gizmo = surface.gizmo();
+        if (gizmo != null) {
+            gizmo.markTriggered(step.now());
+        }
+        if (gizmo instanceof Absorber absorber) {
+            step.actions.recordEvent(new PlayEvent.Captured(absorber.name(), ball.name(), ball.position()));
+            step.actions.capture(ball, absorber);
+            step.energy.lost(ball);
+            step.sceneChanged();
+        } else if (bounceOff(ball, surface, surface.normal(ball.position()))) {
+            bounceAmongContacts(ball, surface.ref());
+        }
+        return surface.struck();
+    }
+
+    /** Resting contact or a bounce off a still surface; true if the ball bounced. */
+    private boolean bounceOff(Ball ball, Contact.StillSurface surface, Vect normal) {
+        ContactRef ref = surface.ref();
+        double approach = -ball.velocity().dot(normal);
+        if (approach <= step.restingSpeed(normal, step.contacts.normalsBesides(ball, ref))) {
+            step.comeToRest(ball, ref);
+            return false;
+        }
+        double coefficient = surface.reflectionCoefficient();
+        Vect bounced = surface.reflect(ball.position(), ball.velocity(), coefficient);
+        if (wedged(ball, ref, normal, bounced)) {
+            step.comeToRest(ball, ref);
+            return false;
+        }
+        if (step.reported.add(ref)) {   // a bounce, not a rest: one hit per surface and collision
+            GizmoBase gizmo = surface.gizmo();
+            step.actions.recordEvent(new PlayEvent.Hit(surface.struck(), gizmo == null ? null : gizmo.kind(),
+                    approach, ball.name(), ball.position()));
+        }
+        ball.setVelocity(bounced);
+        step.energy.bounced(ball, normal, coefficient == 1.0);
+        return true;
+    }
+
+    /**
+     * A ball that has bounced off one still surface into another it lies on (a contact) meets it at once, and then
+     * the first again: in a narrow wedge an elastic ball turns back only after about 180 / (the wedge's angle in
+     * degrees) such bounces. They are the same bounces the loop would find one at a time at no time apart, resolved
+     * here, each one a hit that triggers as any hit does (stage 5 takes them after this collision's own).
+     */
+    private void bounceAmongContacts(Ball ball, ContactRef from) {
+        List<ContactRef> among = new ArrayList<>(ball.contacts());
+        if (!among.contains(from)) {
+            among.add(from);   // met just now, not lain on: the ball may come straight back to it
+        }
+        ContactRef last = from;
+        for (int bounce = 0; bounce < step.settings.bouncesAmongContacts(); bounce++) {
+            Contacts.Touch next = step.contacts.closing(ball, among, last);
+            if (next == null) {
+                return;
+            }
+            step.collisions++;
+            step.zeroTimeCollisions++;
+            GizmoBase gizmo = next.surface().gizmo();
+            if (gizmo != null) {
+                gizmo.markTriggered(step.now());
+            }
+            step.alsoHit.add(next.surface().struck());
+            if (!bounceOff(ball, next.surface(), next.normal())) {
+                return;
+            }
+            last = next.surface().ref();
+        }
+        step.wedged++;   // guard (counted): bounces that do not end; at rest for the rest of this tick
+        ball.setVelocity(Vect.ZERO);
+        step.energy.lost(ball);
+    }
+
+    /**
+     * Whether the bounce off a surface only wedges the ball between it and what it lies on: those contacts take the
+     * bounce as resting contact (it meets each of them more slowly than it would bounce off), and what they leave of it
+     * still closes on the surface. Bouncing would go on in turn between the two without end, each time slower; it ends
+     * where the ball rests against both. A bounce fast enough to leave a contact is a bounce like any other.
+     */
+    private boolean wedged(Ball ball, ContactRef surface, Vect normal, Vect bounced) {
+        List<Vect> taking = new ArrayList<>();
+        for (ContactRef ref : ball.contacts()) {
+            Vect held = ref.equals(surface) ? null : step.contacts.normal(ball, ref);
+            if (held != null) {
+                if (-bounced.dot(held) > step.restingSpeed(held, step.contacts.normalsBesides(ball, ref))) {
+                    return false;
+                }
+                taking.add(held);
+            }
+        }
+        return !taking.isEmpty() && Contacts.project(bounced, taking).dot(normal) < -Tolerances.ROUNDING_SPEED;
+    }
+}
