@@ -25,6 +25,7 @@ import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Locale;
 import java.util.function.Consumer;
 import javax.swing.Action;
 import javax.swing.ButtonGroup;
@@ -185,6 +186,10 @@ public final class PlayFeatures {
         session.addModeListener(mode -> aimPreviewShown());
         aim.addListener(window.boardPanel()::repaint);
         window.boardPanel().addOverlay(new AimPreviewOverlay(aim::current));
+        view.addSeparator();
+        view.add(command("Zoom in", KeyEvent.VK_EQUALS, () -> window.zoom().zoom(1)));
+        view.add(command("Zoom out", KeyEvent.VK_MINUS, () -> window.zoom().zoom(-1)));
+        view.add(command("Zoom to fit", KeyEvent.VK_0, window.zoom()::fit));
         JMenuBar menus = window.menus();
         menus.add(view, Math.min(menus.getComponentIndex(menu(menus, "Mode")) + 1, menus.getMenuCount()));
         menus.revalidate();
@@ -199,6 +204,15 @@ public final class PlayFeatures {
     /** Build mode only: the path of the ball the player is placing, moving or has selected. */
     private void aimPreviewShown() {
         aim.setEnabled(settings.aimPreview() && session.mode() == Mode.BUILD);
+    }
+
+    /** An item with a Ctrl shortcut (Ctrl+wheel over the board zooms too). */
+    private static JMenuItem command(String name, int key, Runnable action) {
+        JMenuItem item = new JMenuItem(name);
+        item.setName("view." + name.replace(" ", "").toLowerCase(Locale.ROOT));
+        item.setAccelerator(KeyStroke.getKeyStroke(key, InputEvent.CTRL_DOWN_MASK));
+        item.addActionListener(e -> action.run());
+        return item;
     }
 
     /** A check box item with a Ctrl shortcut. */

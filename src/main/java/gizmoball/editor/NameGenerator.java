@@ -32,6 +32,8 @@ public final class NameGenerator {
             case LEFT_FLIPPER -> "LF";
             case RIGHT_FLIPPER -> "RF";
             case ABSORBER -> "A";
+            case SINK -> "SK";
+            case ACCELERATOR -> "AC";
         };
     }
 

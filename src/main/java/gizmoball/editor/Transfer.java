@@ -5,6 +5,7 @@ import gizmoball.boardfile.LoadResult;
 import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyBinding;
+import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.loop.BallView;
@@ -127,7 +128,7 @@ final class Transfer {
         relink(board, before, name, renamed);
     }
 
-    /** A gizmo like {@code g} of {@code from}, named {@code name}, moved by (dx, dy): kind, turns, colour, rules. */
+    /** A gizmo like {@code g} of {@code from}, named {@code name}, moved by (dx, dy): kind, turns, colour, factor, rules. */
     private static void addGizmo(Board to, Board from, Gizmo g, String name, int dx, int dy) {
         if (g.kind() == GizmoKind.ABSORBER) {
             to.addAbsorber(name, g.x() + dx, g.y() + dy, g.x() + dx + g.width(), g.y() + dy + g.height());
@@ -138,6 +139,9 @@ final class Transfer {
             to.rotate(name);
         }
         to.setColour(name, g.colour());
+        if (g instanceof AcceleratorView accelerator) {
+            to.setFactor(name, accelerator.factor());
+        }
         if (from.gameRules().ownPoints().containsKey(g.name())) {
             to.setPoints(name, from.gameRules().pointsOf(g.name(), g.kind()));
         }

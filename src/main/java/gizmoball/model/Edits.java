@@ -5,6 +5,7 @@ import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
+import gizmoball.model.gizmo.Accelerator;
 import gizmoball.model.loop.Ball;
 
 import java.util.ArrayList;
@@ -269,6 +270,18 @@ final class Edits {
             throw new BoardEditException("colour of " + gizmo + " must be a colour or empty, not null");
         }
         registry.requireGizmo(gizmo).setColour(colour);
+    }
+
+    void setFactor(String gizmo, double factor) {
+        if (!(registry.requireGizmo(gizmo) instanceof Accelerator accelerator)) {
+            throw new BoardEditException("only an accelerator has a factor: " + gizmo + " is "
+                    + registry.requireGizmo(gizmo).kind().withArticle());
+        }
+        if (!(factor >= 1 && factor <= Accelerator.MAX_FACTOR)) {
+            throw new BoardEditException("an accelerator's factor is 1 to " + (int) Accelerator.MAX_FACTOR
+                    + ", not " + factor);
+        }
+        accelerator.setFactor(factor);
     }
 
     private static double requireFinite(double coordinate, String ball) {

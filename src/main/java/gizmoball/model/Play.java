@@ -5,6 +5,7 @@ import gizmoball.model.gizmo.Action;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.Sink;
 import gizmoball.model.gizmo.Surroundings;
 import gizmoball.model.loop.Ball;
 import gizmoball.model.loop.PlayEvent;
@@ -32,6 +33,8 @@ final class Play implements Surroundings {
     private final List<PlayEvent> pendingEvents = new ArrayList<>();
     /** The absorbers that fired a ball since the board's clock last moved (in this tick). */
     private final Set<String> fired = new HashSet<>();
+    /** The balls sinks took in this tick, which leave the board when it is over. */
+    private final List<String> sunk = new ArrayList<>();
     /** Actions ordered with a delay, in the order given. */
     private final List<Delayed> delayed = new ArrayList<>();
 
@@ -171,6 +174,20 @@ final class Play implements Surroundings {
     void capture(Ball ball, Absorber absorber) {
         ball.capture(absorber.holdingPosition(Board.BALL_RADIUS));
         absorber.hold(ball.name());
+    }
+
+    /** The ball stops at the sink's centre, out of play, until {@link #removeSunk} takes it off the board. */
+    void sink(Ball ball, Sink sink) {
+        ball.capture(sink.centre());
+        sunk.add(ball.name());
+    }
+
+    /** The tick is over: the balls sinks took in it leave the board. */
+    void removeSunk() {
+        for (String ball : sunk) {
+            registry.remove(registry.ball(ball));
+        }
+        sunk.clear();
     }
 
     /** An absorber placed or moved captures the free balls it now covers. */

@@ -33,7 +33,7 @@ public final class Sounds {
         if (event instanceof PlayEvent.Swing) {
             return Optional.of(flipperSwing());
         }
-        if (event instanceof PlayEvent.Captured) {
+        if (event instanceof PlayEvent.Captured || event instanceof PlayEvent.Sunk) {
             return Optional.of(capture());
         }
         if (event instanceof PlayEvent.Fired) {
@@ -73,6 +73,8 @@ public final class Sounds {
             case CIRCLE -> 880;
             case LEFT_FLIPPER, RIGHT_FLIPPER -> 330;
             case ABSORBER -> 160;
+            case SINK -> 110;
+            case ACCELERATOR -> 1100;
         };
     }
 

@@ -12,6 +12,10 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicLong;
 import javax.swing.JComponent;
+import javax.swing.JViewport;
+import javax.swing.Scrollable;
+import javax.swing.SwingConstants;
+import java.awt.Rectangle;
 
 /**
  * The board view: observes the Board and repaints the whole board on every change (a tick, an edit, a
@@ -21,11 +25,13 @@ import javax.swing.JComponent;
  * The fixed part of the board (everything but flippers, balls and highlights) is drawn once per edit into
  * an image at the screen's device resolution and copied on each frame: antialiased drawing of hundreds of
  * gizmos would otherwise cost more than a 60 Hz frame on a slow machine.
+ * <p>
+ * It sits in a scroll pane ({@link BoardZoom}): fitting the view unless zoomed, then as large as the zoom makes it.
  */
-public final class BoardPanel extends JComponent {
+public final class BoardPanel extends JComponent implements Scrollable {
     private static final int PREFERRED_PIXELS_PER_L = 30;
     /** Room around the board for the outer walls. */
-    private static final int MARGIN = 6;
+    static final int MARGIN = 6;
 
     private final transient Board board;
     private final transient List<BoardOverlay> overlays = new ArrayList<>();
@@ -37,6 +43,8 @@ public final class BoardPanel extends JComponent {
     private final AtomicLong layout = new AtomicLong();
     private transient BufferedImage fixedImage;
     private transient List<Object> fixedImageKey;
+    /** Pixels per L the view is zoomed to (it scrolls then), or 0: the board fits the view (see {@link BoardZoom}). */
+    private int zoomedScale;
 
     private BoardPanel(Board board) {
         this.board = board;
@@ -96,6 +104,55 @@ public final class BoardPanel extends JComponent {
         }
     }
 
+    /** Zooms to {@code pixelsPerL} (0: fit the view); the caller lays out the scroll pane around it. */
+    void setZoomedScale(int pixelsPerL) {
+        zoomedScale = pixelsPerL;
+        revalidate();
+        repaint();
+    }
+
+    /** The zoom's pixels per L, or 0 when the board fits the view. */
+    int zoomedScale() {
+        return zoomedScale;
+    }
+
+    /** Zoomed, the board at its scale with the walls' margin; else the size it would like when it fits. */
+    @Override
+    public Dimension getPreferredSize() {
+        if (zoomedScale == 0) {
+            return super.getPreferredSize();
+        }
+        int side = zoomedScale * Board.SIZE + 2 * MARGIN;
+        return new Dimension(side, side);
+    }
+
+    @Override
+    public Dimension getPreferredScrollableViewportSize() {
+        return getPreferredSize();
+    }
+
+    /** One L a click of the scroll bar's arrows. */
+    @Override
+    public int getScrollableUnitIncrement(Rectangle visible, int orientation, int direction) {
+        return Math.max(1, (int) transform().scale());
+    }
+
+    @Override
+    public int getScrollableBlockIncrement(Rectangle visible, int orientation, int direction) {
+        return Math.max(1, (orientation == SwingConstants.HORIZONTAL ? visible.width : visible.height) * 9 / 10);
+    }
+
+    /** Fitting, the view's size is the viewport's; zoomed, it is its own, or the viewport's where that is larger. */
+    @Override
+    public boolean getScrollableTracksViewportWidth() {
+        return zoomedScale == 0 || getParent() instanceof JViewport v && v.getWidth() >= getPreferredSize().width;
+    }
+
+    @Override
+    public boolean getScrollableTracksViewportHeight() {
+        return zoomedScale == 0 || getParent() instanceof JViewport v && v.getHeight() >= getPreferredSize().height;
+    }
+
     /** Frames painted in the last second. */
     public int framesPerSecond() {
         return fps.fps(System.nanoTime());
@@ -109,7 +166,8 @@ public final class BoardPanel extends JComponent {
             g.setRenderingHint(RenderingHints.KEY_STROKE_CONTROL, RenderingHints.VALUE_STROKE_PURE);
             g.setRenderingHint(RenderingHints.KEY_RENDERING, RenderingHints.VALUE_RENDER_QUALITY);
             BoardTransform t = transform();
-            g.drawImage(fixedImage(g, t), 0, 0, getWidth(), getHeight(), null);
+            Rectangle visible = visibleArea();
+            g.drawImage(fixedImage(g, t, visible), visible.x, visible.y, visible.width, visible.height, null);
             for (BoardOverlay underlay : underlays) {
                 underlay.paint(g, t);
             }
@@ -123,21 +181,32 @@ public final class BoardPanel extends JComponent {
         fps.frame(System.nanoTime());
     }
 
-    /** Background and the fixed part of the board, at the device resolution of {@code g} (HiDPI stays sharp). */
-    private BufferedImage fixedImage(Graphics2D g, BoardTransform t) {
+    /** The part of the view that shows (all of it unless zoomed in a scroll pane), never empty. */
+    private Rectangle visibleArea() {
+        Rectangle visible = getVisibleRect();
+        return visible.isEmpty() ? new Rectangle(0, 0, Math.max(1, getWidth()), Math.max(1, getHeight())) : visible;
+    }
+
+    /**
+     * Background and the fixed part of the board within {@code visible}, at the device resolution of {@code g}
+     * (HiDPI stays sharp). Drawn in vector form at the view's scale, never a bitmap scaled up: zoomed in, only the
+     * part that shows is drawn, so the image stays the size of the view.
+     */
+    private BufferedImage fixedImage(Graphics2D g, BoardTransform t, Rectangle visible) {
         AffineTransform device = g.getTransform();
         double sx = device.getScaleX();
         double sy = device.getScaleY();
-        List<Object> key = List.of(getWidth(), getHeight(), sx, sy, gridVisible, layout.get());
+        List<Object> key = List.of(getWidth(), getHeight(), visible, sx, sy, gridVisible, layout.get());
         if (!key.equals(fixedImageKey)) {
-            fixedImage = new BufferedImage(Math.max(1, (int) Math.ceil(getWidth() * sx)),
-                    Math.max(1, (int) Math.ceil(getHeight() * sy)), BufferedImage.TYPE_INT_RGB);
+            fixedImage = new BufferedImage(Math.max(1, (int) Math.ceil(visible.width * sx)),
+                    Math.max(1, (int) Math.ceil(visible.height * sy)), BufferedImage.TYPE_INT_RGB);
             Graphics2D ig = fixedImage.createGraphics();
             try {
                 ig.setRenderingHints(g.getRenderingHints());
                 ig.scale(sx, sy);
+                ig.translate(-visible.x, -visible.y);
                 ig.setColor(BoardPainter.BACKGROUND);
-                ig.fillRect(0, 0, getWidth(), getHeight());
+                ig.fillRect(visible.x, visible.y, visible.width, visible.height);
                 BoardPainter.paintFixed(ig, board, t, gridVisible);
             } finally {
                 ig.dispose();

@@ -72,6 +72,7 @@ public final class GameWindow extends JFrame {
     private final GameSession session;
     private final Commands commands;
     private final BoardPanel boardPanel;
+    private final BoardZoom zoom;
     private final StatusLine statusLine = new StatusLine();
     private final Timer statusRefresh = new Timer(STATUS_REFRESH_MILLIS, e -> refreshStatus());
     private final JPanel centre = new JPanel(new BorderLayout());
@@ -101,6 +102,7 @@ public final class GameWindow extends JFrame {
         this.session = session;
         this.commands = commands;
         boardPanel = BoardPanel.of(session.board());
+        zoom = BoardZoom.of(boardPanel);
         newBoard = action("New", KeyEvent.VK_N, 0, commands::newBoard);
         open = action("Open...", KeyEvent.VK_O, 0, commands::open);
         save = action("Save", KeyEvent.VK_S, 0, commands::save);
@@ -121,7 +123,7 @@ public final class GameWindow extends JFrame {
         setDefaultCloseOperation(DO_NOTHING_ON_CLOSE);
         buildMenus();
         buildToolBar();
-        centre.add(boardPanel, BorderLayout.CENTER);
+        centre.add(zoom.component(), BorderLayout.CENTER);
         add(toolBar, BorderLayout.NORTH);
         add(centre, BorderLayout.CENTER);
         add(statusLine, BorderLayout.SOUTH);
@@ -177,6 +179,11 @@ public final class GameWindow extends JFrame {
 
     public BoardPanel boardPanel() {
         return boardPanel;
+    }
+
+    /** The board view's zoom (View menu, Ctrl+wheel). */
+    public BoardZoom zoom() {
+        return zoom;
     }
 
     public JMenuBar menus() {

@@ -1,5 +1,6 @@
 package gizmoball.view;
 
+import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.BumperView;
 import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
@@ -65,6 +66,37 @@ enum GizmoArt {
             g.fill(new Ellipse2D.Double(f.pivot().x() - hub, f.pivot().y() - hub, 2 * hub, 2 * hub));
         }
     },
+    /** A sink: its cell, with the hole the balls go into. */
+    SINK_HOLE {
+        @Override
+        Shape outline(Gizmo gizmo, Interpolation between) {
+            return new Rectangle2D.Double(gizmo.x(), gizmo.y(), 1, 1);
+        }
+
+        @Override
+        void paint(Graphics2D g, Gizmo gizmo, Interpolation between, Color fill, float pixel) {
+            super.paint(g, gizmo, between, fill, pixel);
+            g.setColor(BoardPainter.SINK_HOLE);
+            g.fill(new Ellipse2D.Double(gizmo.x() + HOLE_MARGIN, gizmo.y() + HOLE_MARGIN, 1 - 2 * HOLE_MARGIN,
+                    1 - 2 * HOLE_MARGIN));
+        }
+    },
+    /** An accelerator: a disc with a ring, so that it is not taken for a circle bumper. */
+    RINGED_DISC {
+        @Override
+        Shape outline(Gizmo gizmo, Interpolation between) {
+            return circle(((AcceleratorView) gizmo).circle());
+        }
+
+        @Override
+        void paint(Graphics2D g, Gizmo gizmo, Interpolation between, Color fill, float pixel) {
+            super.paint(g, gizmo, between, fill, pixel);
+            Circle c = ((AcceleratorView) gizmo).circle();
+            g.setColor(BoardPainter.ACCELERATOR_MARK);
+            g.setStroke(new BasicStroke((float) RING_WIDTH));
+            g.draw(circle(new Circle(c.getCenter(), c.getRadius() * RING_RADIUS)));
+        }
+    },
     /** An absorber: its whole footprint, whose size is the author's. */
     FOOTPRINT {
         @Override
@@ -73,6 +105,12 @@ enum GizmoArt {
         }
     };
 
+    /** How far (L) a sink's hole stays inside its cell. */
+    private static final double HOLE_MARGIN = 0.15;
+    /** An accelerator's ring: its radius as a part of the disc's, and its width in L. */
+    private static final double RING_RADIUS = 0.5;
+    private static final double RING_WIDTH = 0.07;
+
     /** How gizmos of that kind are drawn. */
     static GizmoArt of(GizmoKind kind) {
         return switch (kind) {
@@ -80,6 +118,8 @@ enum GizmoArt {
             case CIRCLE -> DISC;
             case LEFT_FLIPPER, RIGHT_FLIPPER -> FLIPPER_BAR;
             case ABSORBER -> FOOTPRINT;
+            case SINK -> SINK_HOLE;
+            case ACCELERATOR -> RINGED_DISC;
         };
     }
 

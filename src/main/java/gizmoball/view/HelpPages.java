@@ -69,7 +69,9 @@ final class HelpPages {
     static String game(GameRules rules) {
         String scoring = "A real hit scores the gizmo's points (unless the board gives it its own: circle "
                 + Points.defaultFor(GizmoKind.CIRCLE) + ", triangle " + Points.defaultFor(GizmoKind.TRIANGLE)
-                + ", square " + Points.defaultFor(GizmoKind.SQUARE) + ", others 0).";
+                + ", square " + Points.defaultFor(GizmoKind.SQUARE) + ", accelerator "
+                + Points.defaultFor(GizmoKind.ACCELERATOR) + ", others 0; a sink scores its own points when it takes"
+                + " a ball).";
         if (!rules.isGame()) {
             return "This board has no drain: it is a sandbox, which never ends. " + scoring;
         }
@@ -99,6 +101,9 @@ final class HelpPages {
                 .append(" fill the rectangle (the taken places are skipped). A selected absorber has")
                 .append(" <b>handles</b> at its corners and edges: drag one to resize it. Each is one undo")
                 .append(" step.</p>")
+                .append("<p><b>Zoom</b>: Ctrl+wheel over the board zooms about the pointer, Ctrl+= and Ctrl+-")
+                .append(" about the middle, <b>Ctrl+0</b> fits the whole board again (View menu); zoomed, the")
+                .append(" wheel scrolls.</p>")
                 .append("<p><b>Delete</b> deletes the selection, the <b>arrow keys</b> move it,")
                 .append(" <b>Esc</b> or right-click cancels a half-done step; <b>Ctrl+Z</b> undo,")
                 .append(" <b>Ctrl+Y</b> redo. Every edit can be undone.</p>")

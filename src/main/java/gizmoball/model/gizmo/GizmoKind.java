@@ -8,7 +8,7 @@ import java.util.Locale;
  * that plays each and the name the player sees.
  */
 public enum GizmoKind {
-    SQUARE(1), CIRCLE(1), TRIANGLE(1), LEFT_FLIPPER(2), RIGHT_FLIPPER(2), ABSORBER(1);
+    SQUARE(1), CIRCLE(1), TRIANGLE(1), LEFT_FLIPPER(2), RIGHT_FLIPPER(2), ABSORBER(1), SINK(1), ACCELERATOR(1);
 
     private final int side;
 
@@ -31,7 +31,7 @@ public enum GizmoKind {
     public boolean rotates() {
         return switch (this) {
             case SQUARE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER -> true;
-            case CIRCLE, ABSORBER -> false;
+            case CIRCLE, ABSORBER, SINK, ACCELERATOR -> false;
         };
     }
 
@@ -41,7 +41,7 @@ public enum GizmoKind {
      */
     public List<Action> actions() {
         return switch (this) {
-            case SQUARE, CIRCLE, TRIANGLE -> List.of(Action.FLASH);
+            case SQUARE, CIRCLE, TRIANGLE, SINK, ACCELERATOR -> List.of(Action.FLASH);
             case LEFT_FLIPPER, RIGHT_FLIPPER -> List.of(Action.TOGGLE, Action.RAISE, Action.LOWER, Action.FLASH);
             case ABSORBER -> List.of(Action.FIRE, Action.FLASH);
         };
@@ -56,7 +56,7 @@ public enum GizmoKind {
     public Action pressAction() {
         return switch (this) {
             case LEFT_FLIPPER, RIGHT_FLIPPER -> Action.RAISE;
-            case SQUARE, CIRCLE, TRIANGLE, ABSORBER -> defaultAction();
+            case SQUARE, CIRCLE, TRIANGLE, ABSORBER, SINK, ACCELERATOR -> defaultAction();
         };
     }
 
@@ -64,7 +64,7 @@ public enum GizmoKind {
     public Action releaseAction() {
         return switch (this) {
             case LEFT_FLIPPER, RIGHT_FLIPPER -> Action.LOWER;
-            case SQUARE, CIRCLE, TRIANGLE, ABSORBER -> defaultAction();
+            case SQUARE, CIRCLE, TRIANGLE, ABSORBER, SINK, ACCELERATOR -> defaultAction();
         };
     }
 
@@ -75,7 +75,7 @@ public enum GizmoKind {
     public boolean canDrain() {
         return switch (this) {
             case ABSORBER -> true;
-            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER -> false;
+            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR -> false;
         };
     }
 
@@ -100,6 +100,8 @@ public enum GizmoKind {
             case SQUARE, CIRCLE, TRIANGLE -> new Bumper(this, name, x, y);
             case LEFT_FLIPPER, RIGHT_FLIPPER -> new Flipper(this, name, x, y);
             case ABSORBER -> throw new IllegalArgumentException("an absorber is made from its corners, not a cell");
+            case SINK -> new Sink(name, x, y);
+            case ACCELERATOR -> new Accelerator(name, x, y);
         };
     }
 }

@@ -9,6 +9,7 @@ import gizmoball.model.BoardChange;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.game.GameRules;
 import gizmoball.model.game.Points;
+import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.BallView;
@@ -84,6 +85,7 @@ public final class PropertiesPanel extends JPanel {
     private final JTextField extraBall = new JTextField(7);
     private final NumberField points = new NumberField("gizmo.points");
     private final JCheckBox drain = new JCheckBox("Drain: its balls are lost");
+    private final NumberField factor = new NumberField("gizmo.factor");
     private final JLabel selection = new JLabel();
     private final JTextField name = new JTextField(7);
     private final NumberField cellX = new NumberField("gizmo.x");
@@ -190,6 +192,12 @@ public final class PropertiesPanel extends JPanel {
         points.setText(gizmo.map(g -> Integer.toString(board.gameRules().pointsOf(g.name(), g.kind()))).orElse(""));
         RefusedValue.unmark(points);
         drain.setEnabled(gizmo.filter(g -> g.kind().canDrain()).isPresent());
+        Optional<AcceleratorView> accelerator = gizmo.filter(g -> g instanceof AcceleratorView)
+                .map(g -> (AcceleratorView) g);
+        factor.setEnabled(accelerator.isPresent());
+        factor.setText("");
+        accelerator.ifPresent(a -> factor.show(a.factor()));
+        RefusedValue.unmark(factor);
         drain.setSelected(gizmo.filter(g -> board.gameRules().isDrain(g.name())).isPresent());
         gizmo.ifPresent(g -> {
             colour.setText(g.colour().map(Editor::hex).orElse(""));
@@ -271,7 +279,18 @@ public final class PropertiesPanel extends JPanel {
         points.addActionListener(e -> applyPoints());
         restoreOnEscape(points);
         JPanel pointsRow = new JPanel(new GridBagLayout());
-        row(pointsRow, 0, "Points", points);
+        factor.setToolTipText("An accelerator: how many times faster a ball leaves it, 1 to 5");
+        factor.setColumns(3);
+        factor.addActionListener(e -> applyFactor());
+        restoreOnEscape(factor);
+        // One row for both, so that the panel is no taller for the accelerator's own value.
+        JPanel pointsAndFactor = new JPanel(new BorderLayout(4, 0));
+        JPanel factorPart = new JPanel(new BorderLayout(4, 0));
+        factorPart.add(new JLabel("x"), BorderLayout.WEST);
+        factorPart.add(factor, BorderLayout.CENTER);
+        pointsAndFactor.add(points, BorderLayout.CENTER);
+        pointsAndFactor.add(factorPart, BorderLayout.EAST);
+        row(pointsRow, 0, "Points", pointsAndFactor);
         p.add(pointsRow, wide(constraints(0, 3)));
         drain.setName("gizmo.drain");
         drain.setToolTipText("A ball this absorber captures is lost to the game; the next one waits in it");
@@ -480,6 +499,20 @@ public final class PropertiesPanel extends JPanel {
             focusBoard.run();
         } else {
             keepRefused(game);
+        }
+    }
+
+    private void applyFactor() {
+        Optional<Gizmo> gizmo = controller.selectedGizmo();
+        Optional<double[]> v = values(factor);
+        if (gizmo.isEmpty() || v.isEmpty()) {
+            return;
+        }
+        String typed = factor.getText();
+        if (controller.setFactor(gizmo.get().name(), v.get()[0])) {
+            focusBoard.run();
+        } else {
+            keepRefused(Map.of(factor, typed));
         }
     }
 
