@@ -27,6 +27,8 @@ enum CommandWord {
     ACCELERATOR("Accelerator", "<name> <x> <y>", true),
     /** Extension gizmo: adds a ball at its mouth when triggered. */
     SPAWNER("Spawner", "<name> <x> <y>", true),
+    /** Extension gizmo: solid or open, switched by triggers. */
+    GATE("Gate", "<name> <x> <y>", true),
     /** A spawner's velocity for its balls, where it is not zero. */
     SPAWN_VELOCITY("SpawnVelocity", "<name> <vx> <vy>", true),
     BALL("Ball", "<name> <x> <y> <vx> <vy>"),
@@ -95,6 +97,7 @@ enum CommandWord {
             case SINK -> SINK;
             case ACCELERATOR -> ACCELERATOR;
             case SPAWNER -> SPAWNER;
+            case GATE -> GATE;
         };
     }
 

@@ -35,6 +35,7 @@ public final class NameGenerator {
             case SINK -> "SK";
             case ACCELERATOR -> "AC";
             case SPAWNER -> "SP";
+            case GATE -> "G";
         };
     }
 

@@ -4,6 +4,7 @@ import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.Action;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.MovingShape;
+import gizmoball.model.gizmo.Gate;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.Sink;
 import gizmoball.model.gizmo.Spawner;
@@ -11,11 +12,14 @@ import gizmoball.model.gizmo.Surroundings;
 import gizmoball.model.loop.Ball;
 import gizmoball.model.loop.PlayEvent;
 import gizmoball.model.loop.Sleepers;
+import gizmoball.model.loop.Tolerances;
 
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashSet;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 
 import physics.Vect;
@@ -36,6 +40,8 @@ final class Play implements Surroundings {
     private final Set<String> fired = new HashSet<>();
     /** Whether a tick is running: spawns wait for its end. */
     private boolean ticking;
+    /** The gates told to open (true) or close during this tick, the last order of each. */
+    private final Map<String, Boolean> gateOrders = new LinkedHashMap<>();
     /** The spawners told to spawn during this tick, in order. */
     private final List<String> toSpawn = new ArrayList<>();
     /** The balls sinks took in this tick, which leave the board when it is over. */
@@ -195,10 +201,50 @@ final class Play implements Surroundings {
         }
     }
 
-    /** A tick starts or ends: spawns asked for while it runs wait for its end. */
+    /**
+     * Opens the gate, or closes it over a clear cell (else it waits open, and closes at the first tick end with the
+     * cell clear); during a tick at the tick's end, so that the loop never loses a surface it is resolving. Balls
+     * forget their contacts and wake, as after an edit: what they lay on may have gone.
+     */
+    @Override
+    public void switchGate(Gate gate, boolean open) {
+        if (ticking) {
+            gateOrders.put(gate.name(), open);
+        } else {
+            switchNow(gate, open);
+        }
+    }
+
+    private void switchNow(Gate gate, boolean open) {
+        boolean wasOpen = gate.isOpen();
+        if (open) {
+            gate.set(true, false);
+        } else {
+            boolean blocked = registry.balls().stream()
+                    .anyMatch(b -> gate.closedOver(b.position()) < Board.BALL_RADIUS - Tolerances.PLACEMENT);
+            gate.set(blocked, blocked);
+        }
+        if (gate.isOpen() != wasOpen) {
+            sleepers.disturbAll();
+        }
+    }
+
+    /** A tick starts or ends: spawns and gates asked for while it runs wait for its end. */
     void ticking(boolean inTick) {
         ticking = inTick;
         if (!inTick) {
+            Map<String, Boolean> gates = new LinkedHashMap<>(gateOrders);
+            gateOrders.clear();
+            for (GizmoBase gizmo : registry.gizmos()) {
+                if (gizmo instanceof Gate gate && gate.isClosing() && !gates.containsKey(gate.name())) {
+                    gates.put(gate.name(), false);   // still waiting to close: the cell may be clear now
+                }
+            }
+            gates.forEach((name, open) -> {
+                if (registry.gizmo(name) instanceof Gate gate) {
+                    switchNow(gate, open);
+                }
+            });
             List<String> due = List.copyOf(toSpawn);
             toSpawn.clear();
             for (String name : due) {

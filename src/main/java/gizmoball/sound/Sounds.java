@@ -76,6 +76,7 @@ public final class Sounds {
             case SINK -> 110;
             case ACCELERATOR -> 1100;
             case SPAWNER -> 440;
+            case GATE -> 600;
         };
     }
 

@@ -63,6 +63,7 @@ public final class BoardPainter {
             case SINK -> new Color(0x5a6478);
             case ACCELERATOR -> new Color(0xff8a1f);
             case SPAWNER -> new Color(0x2bb3a6);
+            case GATE -> new Color(0xc9a46b);
         };
     }
 

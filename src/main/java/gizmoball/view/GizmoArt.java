@@ -4,6 +4,7 @@ import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.BumperView;
 import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.GateView;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.SpawnerView;
 import java.awt.BasicStroke;
@@ -123,6 +124,30 @@ enum GizmoArt {
             g.fill(arrow);
         }
     },
+    /** A gate: its cell filled while closed, only a dashed outline of it while open. */
+    GATE_CELL {
+        @Override
+        boolean changesInPlay() {
+            return true;
+        }
+
+        @Override
+        Shape outline(Gizmo gizmo, Interpolation between) {
+            return new Rectangle2D.Double(gizmo.x(), gizmo.y(), 1, 1);
+        }
+
+        @Override
+        void paint(Graphics2D g, Gizmo gizmo, Interpolation between, Color fill, float pixel) {
+            if (!((GateView) gizmo).isOpen()) {
+                super.paint(g, gizmo, between, fill, pixel);
+                return;
+            }
+            g.setColor(fill);
+            g.setStroke(new BasicStroke(2 * pixel, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10,
+                    new float[] {0.15f, 0.1f}, 0));
+            g.draw(new Rectangle2D.Double(gizmo.x() + pixel, gizmo.y() + pixel, 1 - 2 * pixel, 1 - 2 * pixel));
+        }
+    },
     /** An absorber: its whole footprint, whose size is the author's. */
     FOOTPRINT {
         @Override
@@ -147,6 +172,7 @@ enum GizmoArt {
             case SINK -> SINK_HOLE;
             case ACCELERATOR -> RINGED_DISC;
             case SPAWNER -> SPAWNER_MOUTH;
+            case GATE -> GATE_CELL;
         };
     }
 

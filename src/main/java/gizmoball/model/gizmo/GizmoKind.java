@@ -8,7 +8,7 @@ import java.util.Locale;
  * that plays each and the name the player sees.
  */
 public enum GizmoKind {
-    SQUARE(1), CIRCLE(1), TRIANGLE(1), LEFT_FLIPPER(2), RIGHT_FLIPPER(2), ABSORBER(1), SINK(1), ACCELERATOR(1), SPAWNER(1);
+    SQUARE(1), CIRCLE(1), TRIANGLE(1), LEFT_FLIPPER(2), RIGHT_FLIPPER(2), ABSORBER(1), SINK(1), ACCELERATOR(1), SPAWNER(1), GATE(1);
 
     private final int side;
 
@@ -31,7 +31,7 @@ public enum GizmoKind {
     public boolean rotates() {
         return switch (this) {
             case SQUARE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SPAWNER -> true;
-            case CIRCLE, ABSORBER, SINK, ACCELERATOR -> false;
+            case CIRCLE, ABSORBER, SINK, ACCELERATOR, GATE -> false;
         };
     }
 
@@ -45,6 +45,7 @@ public enum GizmoKind {
             case LEFT_FLIPPER, RIGHT_FLIPPER -> List.of(Action.TOGGLE, Action.RAISE, Action.LOWER, Action.FLASH);
             case ABSORBER -> List.of(Action.FIRE, Action.FLASH);
             case SPAWNER -> List.of(Action.SPAWN, Action.FLASH);
+            case GATE -> List.of(Action.TOGGLE, Action.OPEN, Action.CLOSE, Action.FLASH);
         };
     }
 
@@ -53,18 +54,23 @@ public enum GizmoKind {
         return actions().get(0);
     }
 
-    /** What a key bound to its press makes it do unless the binding says: a flipper rises, others do their default. */
+    /**
+     * What a key bound to its press makes it do unless the binding says: a flipper rises, a gate opens (so that a held
+     * key holds either), others do their default.
+     */
     public Action pressAction() {
         return switch (this) {
             case LEFT_FLIPPER, RIGHT_FLIPPER -> Action.RAISE;
+            case GATE -> Action.OPEN;
             case SQUARE, CIRCLE, TRIANGLE, ABSORBER, SINK, ACCELERATOR, SPAWNER -> defaultAction();
         };
     }
 
-    /** What a key bound to its release makes it do unless the binding says: a flipper falls, others do their default. */
+    /** What a key bound to its release makes it do unless the binding says: a flipper falls, a gate closes, others their default. */
     public Action releaseAction() {
         return switch (this) {
             case LEFT_FLIPPER, RIGHT_FLIPPER -> Action.LOWER;
+            case GATE -> Action.CLOSE;
             case SQUARE, CIRCLE, TRIANGLE, ABSORBER, SINK, ACCELERATOR, SPAWNER -> defaultAction();
         };
     }
@@ -76,7 +82,7 @@ public enum GizmoKind {
     public boolean canDrain() {
         return switch (this) {
             case ABSORBER -> true;
-            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER -> false;
+            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER, GATE -> false;
         };
     }
 
@@ -104,6 +110,7 @@ public enum GizmoKind {
             case SINK -> new Sink(name, x, y);
             case ACCELERATOR -> new Accelerator(name, x, y);
             case SPAWNER -> new Spawner(name, x, y);
+            case GATE -> new Gate(name, x, y);
         };
     }
 }

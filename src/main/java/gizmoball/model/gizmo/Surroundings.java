@@ -10,6 +10,12 @@ public interface Surroundings {
     /** The absorber was triggered: it fires its longest-held ball, if the spot above it is free. */
     void fire(Absorber absorber);
 
+    /**
+     * The gate was told to be open ({@code open}) or closed: it closes only over a clear cell, else waits open until
+     * the cell is clear.
+     */
+    void switchGate(Gate gate, boolean open);
+
     /** The spawner was told to spawn: a ball at its mouth, if it is free and the board has room for one more. */
     void spawn(Spawner spawner);
 

@@ -65,7 +65,7 @@ public final class ToolIcon implements Icon {
         double m = MARGIN;
         double s = SIZE - 2 * m;
         return switch (tool) {
-            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, ABSORBER, SINK, ACCELERATOR, SPAWNER ->
+            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, ABSORBER, SINK, ACCELERATOR, SPAWNER, GATE ->
                     kindSymbol(tool.kind().orElseThrow());
             case BALL -> g -> {
                 fill(g, EditorColors.BALL, new Ellipse2D.Double(6, 12, 10, 10));
@@ -121,6 +121,13 @@ public final class ToolIcon implements Icon {
                 arrow.closePath();
                 g.setColor(BoardPainter.SPAWNER_MARK);
                 g.fill(arrow);
+            };
+            case GATE -> g -> {
+                fill(g, colour(kind), new Rectangle2D.Double(m, m, s / 2 - 1, s));
+                g.setColor(colour(kind));
+                g.setStroke(new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10,
+                        new float[] {2.5f, 2f}, 0));
+                g.draw(new Rectangle2D.Double(m + s / 2 + 1, m, s / 2 - 1, s));
             };
             case ACCELERATOR -> g -> {
                 fill(g, colour(kind), new Ellipse2D.Double(m, m, s, s));

@@ -131,6 +131,7 @@ class DefaultBoardFromScratchGuiTest {
             case SINK -> Tool.SINK;
             case ACCELERATOR -> Tool.ACCELERATOR;
             case SPAWNER -> Tool.SPAWNER;
+            case GATE -> Tool.GATE;
         };
         w.clickTool(tool);
         w.dragCells(g.x(), g.y(), g.x() + g.width() - 1, g.y() + g.height() - 1);
