@@ -1,11 +1,18 @@
 package physics;
 
+import java.io.IOException;
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Instant;
+import java.time.ZoneOffset;
+import java.time.format.DateTimeFormatter;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Random;
 import java.util.function.IntToDoubleFunction;
@@ -13,7 +20,9 @@ import java.util.function.IntToDoubleFunction;
 /**
  * A plain micro-benchmark, not a test: {@code gradle :physics-lib:benchmark} prints nanoseconds per call of every
  * public collision and reflection method of {@link Geometry}, then the ratio of each rotating method to its static
- * counterpart on the same scenes. Numbers depend on the machine and its load.
+ * counterpart on the same scenes, and writes both as Markdown tables to the file its one argument names (the
+ * build gives {@code docs/bench/physics-lib.md}), so that documents link to a run instead of retyping one. Numbers
+ * depend on the machine and its load, which the page states.
  * <p>
  * Each method runs over the same {@value #SCENES} flipper-sized scenes (fixed seed), so the branch predictor
  * cannot learn one answer. Each figure is the fastest of {@value #ROUNDS} timed rounds after a warm-up, timed in
@@ -37,7 +46,20 @@ public final class GeometryBenchmark {
                          Circle touchingFace, Circle touchingCircle, Circle other, Vect otherVelocity) {
     }
 
-    public static void main(String[] args) {
+    /** Each rotating method beside its static counterpart on the same scenes. */
+    private static final List<List<String>> PAIRS = List.of(
+            List.of("timeUntilRotatingWallCollision", "timeUntilWallCollision"),
+            List.of("timeUntilRotatingCircleCollision", "timeUntilCircleCollision"),
+            List.of("reflectRotatingWall (coefficient)", "reflectWall (coefficient)"),
+            List.of("reflectRotatingCircle (coefficient)", "reflectCircle (coefficient)"));
+
+    /** {@code [PAGE]}: also write the figures as Markdown to that file. */
+    public static void main(String[] args) throws IOException {
+        if (args.length > 1) {
+            throw new IllegalArgumentException("usage: GeometryBenchmark [PAGE.md]");
+        }
+        String start = DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm 'UTC'").format(Instant.now().atOffset(ZoneOffset.UTC));
+        double loadAtStart = load();
         List<Scene> scenes = scenes();
         Scene[] s = scenes.toArray(new Scene[0]);
         Map<String, Double> ns = new LinkedHashMap<>();
@@ -77,11 +99,50 @@ public final class GeometryBenchmark {
 
         System.out.println();
         System.out.printf("%-40s %12s%n", "rotating / static", "ratio");
-        ratio(ns, "timeUntilRotatingWallCollision", "timeUntilWallCollision");
-        ratio(ns, "timeUntilRotatingCircleCollision", "timeUntilCircleCollision");
-        ratio(ns, "reflectRotatingWall (coefficient)", "reflectWall (coefficient)");
-        ratio(ns, "reflectRotatingCircle (coefficient)", "reflectCircle (coefficient)");
+        for (List<String> pair : PAIRS) {
+            System.out.printf("%-40s %11.1fx%n", pair.get(0), ns.get(pair.get(0)) / ns.get(pair.get(1)));
+        }
         System.out.println("(sink " + sink + ")");
+        if (args.length == 1) {
+            Path page = Path.of(args[0]);
+            Files.createDirectories(page.toAbsolutePath().getParent());
+            Files.writeString(page, page(ns, start, loadAtStart));
+            System.out.println("wrote " + page.toAbsolutePath());
+        }
+    }
+
+    /** The figures as Markdown: when and under what load, every method, then each rotating method against its static one. */
+    private static String page(Map<String, Double> ns, String start, double loadAtStart) {
+        StringBuilder md = new StringBuilder("# physics-lib: nanoseconds per call\n\n");
+        md.append(String.format(Locale.ROOT, "Written by `gradle :physics-lib:benchmark` (do not edit: the next run rewrites "
+                + "it). Run of %s, load average %.2f at the start and %.2f at the end on %d processors. Each method runs "
+                + "over the same %d flipper-sized scenes (fixed seed); each figure is the fastest of %d rounds of the "
+                + "thread's CPU time after a warm-up (`physics.GeometryBenchmark`).%n%n", start, loadAtStart, load(),
+                Runtime.getRuntime().availableProcessors(), SCENES, ROUNDS));
+        md.append("| method | ns per call |\n|---|---:|\n");
+        ns.forEach((name, value) -> md.append(String.format(Locale.ROOT, "| %s | %.1f |%n", code(name), value)));
+        md.append("\n| rotating method | ns per call | static method | ns per call | rotating / static |\n")
+                .append("|---|---:|---|---:|---:|\n");
+        for (List<String> pair : PAIRS) {
+            double rotating = ns.get(pair.get(0));
+            double fixed = ns.get(pair.get(1));
+            md.append(String.format(Locale.ROOT, "| %s | %.1f | %s | %.1f | %.1fx |%n", code(pair.get(0)), rotating,
+                    code(pair.get(1)), fixed, rotating / fixed));
+        }
+        return md.toString();
+    }
+
+    /** A method's name as code, its variant in words: {@code `reflectWall` (coefficient)}. */
+    private static String code(String name) {
+        if (name.startsWith("(")) {
+            return name;
+        }
+        int space = name.indexOf(' ');
+        return space < 0 ? "`" + name + "`" : "`" + name.substring(0, space) + "`" + name.substring(space);
+    }
+
+    private static double load() {
+        return ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage();
     }
 
     /**
@@ -150,7 +211,4 @@ public final class GeometryBenchmark {
         sink += sum;
     }
 
-    private static void ratio(Map<String, Double> ns, String rotating, String fixed) {
-        System.out.printf("%-40s %11.1fx%n", rotating, ns.get(rotating) / ns.get(fixed));
-    }
 }

@@ -108,10 +108,15 @@ public final class BenchMain {
         page.preview(preview);
 
         stdout.println("steady state");
-        SteadyState.run(stdout, boards, peers, effort.steady(), out, page);
+        SteadyState.Result steady = SteadyState.run(stdout, boards, peers, effort.steady(), out, page);
 
         stdout.println();
-        FuzzSurvey.run(stdout, effort.fuzz(), out);
+        FuzzSurvey.Totals fuzz = FuzzSurvey.run(stdout, effort.fuzz(), out);
+
+        List<Targets.Verdict> verdicts = new ArrayList<>(Targets.steadyState(steady));
+        verdicts.addAll(Targets.fuzz(fuzz));
+        Targets.print(stdout, verdicts);
+        page.targets(verdicts);
 
         double seconds = (System.nanoTime() - wallStart) / 1e9;
         page.write(out, seconds);

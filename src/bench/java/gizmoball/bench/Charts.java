@@ -80,7 +80,7 @@ final class Charts {
 
     /**
      * Cost per tick against tick number, mean and max of each bin of ticks (log), with the start of the measured
-     * window and the targets of issue 10 (mean 50 us, max 2 ms) marked.
+     * window and the targets of its mean and max ({@link Targets}) marked.
      */
     static void tickCost(Path dir, String board, List<SteadyState.Bin> bins, int binTicks, int windowStart)
             throws IOException {
@@ -99,15 +99,15 @@ final class Charts {
         double top = bins.stream().mapToDouble(SteadyState.Bin::maxUs).max().orElse(1);
         double bottom = bins.stream().mapToDouble(SteadyState.Bin::meanUs).min().orElse(1);
         // Both target lines stay in view, however far from them the run was.
-        chart.getStyler().setYAxisMin(Math.min(bottom, SteadyState.TARGET_MEAN_US) / 2);
-        chart.getStyler().setYAxisMax(Math.max(top, SteadyState.TARGET_MAX_US) * 2);
+        chart.getStyler().setYAxisMin(Math.min(bottom, Targets.STRESS_MEAN_US) / 2);
+        chart.getStyler().setYAxisMax(Math.max(top, Targets.STRESS_MAX_US) * 2);
         double right = x.length == 0 ? 0 : x[x.length - 1];
         chart.addAnnotation(new AnnotationText("measured from here ->", windowStart + right * 0.08, top, false));
-        for (double target : new double[] {SteadyState.TARGET_MEAN_US, SteadyState.TARGET_MAX_US}) {
+        for (double target : new double[] {Targets.STRESS_MEAN_US, Targets.STRESS_MAX_US}) {
             chart.addAnnotation(new AnnotationLine(target, false, false));
         }
-        chart.addAnnotation(new AnnotationText("target mean", right * 0.93, SteadyState.TARGET_MEAN_US * 1.25, false));
-        chart.addAnnotation(new AnnotationText("target max", right * 0.93, SteadyState.TARGET_MAX_US * 1.25, false));
+        chart.addAnnotation(new AnnotationText("target mean", right * 0.93, Targets.STRESS_MEAN_US * 1.25, false));
+        chart.addAnnotation(new AnnotationText("target max", right * 0.93, Targets.STRESS_MAX_US * 1.25, false));
         save(chart, dir.resolve("steady-state-" + board.replace(".txt", "") + ".png"));
     }
 

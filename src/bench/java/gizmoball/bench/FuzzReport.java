@@ -20,7 +20,7 @@ final class FuzzReport {
         StringBuilder md = new StringBuilder();
         md.append("| run | boards | clean | guards fired (wedged, pinched, cap) | jams | balls inside a gizmo "
                 + "| balls inside a ball | escapes | NaN | energy gained | frozen | slowest tick (CPU) "
-                + "| ticks over 2 ms | hovering (noted) |\n");
+                + "| ticks over " + Targets.ms(Targets.FUZZ_TICK_NANOS) + " ms | hovering (noted) |\n");
         md.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
         md.append(String.format(Locale.ROOT, "| seeds %d-%d, %,d ticks | %,d | %,d | %,d on %d boards (%,d, %,d, %,d) "
                         + "| %,d on %d boards | %s | %s | %s | %s | %s of %d boards checked | %s | %.2f ms%s | %,d | %s |\n",
@@ -75,7 +75,8 @@ final class FuzzReport {
         for (Violation.Kind kind : Violation.Kind.values()) {
             csv.append(',').append(kind.name().toLowerCase(Locale.ROOT));
         }
-        csv.append(",energy_checked,slowest_tick_us,slowest_tick,ticks_over_2ms,failure\n");
+        csv.append(",energy_checked,slowest_tick_us,slowest_tick,ticks_over_").append(Targets.ms(Targets.FUZZ_TICK_NANOS))
+                .append("ms,failure\n");
         for (FuzzSurvey.Played r : runs) {
             FuzzPlay.Outcome o = r.outcome();
             csv.append(String.format(Locale.ROOT, "%d,%d,%d,%b,%d,%d,%d,%d,%d", r.fuzzCase().seed(),

@@ -32,8 +32,6 @@ import java.util.concurrent.Future;
  * <p>{@link #main} runs it alone: {@code [--quick] [--boards N] [--ticks T] [--seed S] [--out DIR]}.
  */
 public final class FuzzSurvey {
-    /** The budget for one tick of CPU. */
-    static final long TARGET_TICK_NANOS = 2_000_000;
     /** The first seed of the benchmark's boards (the fuzz test's seeds are small numbers: these are others). */
     static final long FIRST_SEED = 1_000_000;
     /** Reproduction files written, at most. */
@@ -82,11 +80,14 @@ public final class FuzzSurvey {
         }
         effort = new Effort(boards == null ? effort.boards() : boards, ticks == null ? effort.ticks() : ticks,
                 seed == null ? effort.firstSeed() : seed);
-        run(System.out, effort, out);
+        Targets.print(System.out, Targets.fuzz(run(System.out, effort, out)));
     }
 
-    /** The whole part: every board played and checked, the table printed and written with the details in dir. */
-    static void run(PrintStream out, Effort effort, Path dir) throws IOException {
+    /**
+     * The whole part: every board played and checked, the table printed and written with the details in dir; the sums
+     * are returned for the targets.
+     */
+    static Totals run(PrintStream out, Effort effort, Path dir) throws IOException {
         out.printf(Locale.ROOT, "dense-board fuzz: %,d boards from seed %d, %,d ticks each%n", effort.boards(),
                 effort.firstSeed(), effort.ticks());
         THREADS.setThreadCpuTimeEnabled(true);
@@ -127,6 +128,7 @@ public final class FuzzSurvey {
         Files.writeString(dir.resolve("fuzz.md"), FuzzReport.markdown(effort, runs, table));
         Files.writeString(dir.resolve("fuzz.csv"), FuzzReport.csv(runs));
         writeReproductions(dir.resolve("fuzz-failures"), runs);
+        return Totals.of(runs);
     }
 
     /** One board: a copy of it is kept for its reproduction file, the board itself is played with every tick timed. */
@@ -142,7 +144,7 @@ public final class FuzzSurvey {
                 slowest[0] = nanos;
                 slowest[1] = tick;
             }
-            slowest[2] += nanos > TARGET_TICK_NANOS ? 1 : 0;
+            slowest[2] += nanos > Targets.FUZZ_TICK_NANOS ? 1 : 0;
             slowest[3] += nanos;
             if (slowest[3] > BOARD_BUDGET_NANOS) {
                 throw new IllegalStateException(String.format(Locale.ROOT, "stopped: over the budget of %.0f s of "

@@ -12,19 +12,38 @@ import java.util.Locale;
 
 /**
  * results.md: the figures of one run of the benchmark as Markdown tables, so that documents link to them instead of
- * retyping numbers that change with every run. Each part of the run adds its section as it finishes.
+ * retyping numbers that change with every run. Each part of the run adds its section as it finishes; the targets,
+ * judged at the end, come first.
  */
 final class ResultsPage {
+    private final boolean quick;
+    private final StringBuilder header = new StringBuilder();
+    private final StringBuilder targets = new StringBuilder();
     private final StringBuilder page = new StringBuilder();
 
     /** A page headed by when the run began, how much work it does and the machine's load then. */
     ResultsPage(boolean quick) {
-        page.append("# Benchmark results\n\n")
+        this.quick = quick;
+        header.append("# Benchmark results\n\n")
                 .append("Written by `gradle bench").append(quick ? " -Pquick" : "").append("` (do not edit: the next run ")
                 .append("rewrites it). Run of ")
                 .append(DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm 'UTC'").format(Instant.now().atOffset(ZoneOffset.UTC)))
                 .append(", ").append(quick ? "quick (shorter windows and fewer samples)" : "full").append(", ")
                 .append(load()).append(". What each part measures and why: [README.md](README.md).\n");
+    }
+
+    /** Issue 20's targets against this run ({@link Targets}: what each asks, what was measured, met or not). */
+    void targets(List<Targets.Verdict> verdicts) {
+        targets.append("\n## Targets of issue 20 (benchmark figures on 2 cores)\n\n");
+        if (quick) {
+            targets.append("A quick run: its windows, pile and fuzz are shorter than those the targets are stated for, so "
+                    + "these verdicts only preview a full run's.\n\n");
+        }
+        targets.append("| target | this run | verdict |\n|---|---|---|\n");
+        for (Targets.Verdict v : verdicts) {
+            targets.append("| ").append(v.target()).append(" | ").append(v.measured()).append(" | ").append(v.verdict())
+                    .append(" |\n");
+        }
     }
 
     /** Each scene at the game's tick length: every loop's cost and error (the other tick lengths: accuracy.csv). */
@@ -103,9 +122,10 @@ final class ResultsPage {
     void write(Path dir, double wallSeconds) throws IOException {
         section("The run");
         page.append(String.format(Locale.ROOT, "%.0f s wall time; at the end, %s. Beside this page: the printed "
-                + "report (`bench-output.txt`), the CSV files, the charts and the fuzz survey (`fuzz.md`).%n",
-                wallSeconds, load()));
-        Files.writeString(dir.resolve("results.md"), page);
+                + "report (`bench-output.txt`), the CSV files, the charts, the fuzz survey (`fuzz.md`) and the physics "
+                + "library's timings per method (written by `gradle :physics-lib:benchmark`, which this run ran "
+                + "first).%n", wallSeconds, load()));
+        Files.writeString(dir.resolve("results.md"), header.toString() + targets + page);
     }
 
     private void section(String title) {
@@ -119,7 +139,7 @@ final class ResultsPage {
     }
 
     /** Microseconds: one decimal below 100, whole above, as the table reads best. */
-    private static String us(double v) {
+    static String us(double v) {
         return v < 100 ? String.format(Locale.ROOT, "%.1f", v) : String.format(Locale.ROOT, "%,.0f", v);
     }
 }

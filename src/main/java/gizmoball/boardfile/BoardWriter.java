@@ -4,14 +4,18 @@ import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.game.GameRules;
 import gizmoball.model.gizmo.AbsorberView;
+import gizmoball.model.gizmo.Accelerator;
+import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.SpawnerView;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.stream.Collectors;
+import physics.Vect;
 
 /**
  * The canonical form of a board: one command per line, gizmos (in the board's order), then rotations, the
@@ -44,6 +48,14 @@ final class BoardWriter {
             gizmo.colour().ifPresent(colour -> commands.add(new Command.Colour(gizmo.name(), colour)));
         }
         for (Gizmo gizmo : board.gizmos()) {
+            if (gizmo instanceof AcceleratorView accelerator && accelerator.factor() != Accelerator.DEFAULT_FACTOR) {
+                commands.add(new Command.Factor(gizmo.name(), accelerator.factor()));
+            }
+            if (gizmo instanceof SpawnerView spawner && !spawner.velocity().equals(Vect.ZERO)) {
+                commands.add(new Command.SpawnVelocity(gizmo.name(), spawner.velocity().x(), spawner.velocity().y()));
+            }
+        }
+        for (Gizmo gizmo : board.gizmos()) {
             // Only where play moved it: a board as built is written as before, and other implementations skip it.
             if (gizmo instanceof FlipperView flipper && (flipper.angleFromRest() != 0 || flipper.isActive())) {
                 commands.add(new Command.FlipperState(flipper.name(), flipper.angleFromRest(), flipper.isActive()));
@@ -63,7 +75,13 @@ final class BoardWriter {
         commands.add(new Command.Gravity(board.gravity()));
         commands.add(new Command.Friction(board.mu(), board.mu2()));
         commands.addAll(game(board));
-        return commands;
+        return commands.stream().map(c -> namesOurs(board, c) ? new Command.Marked(c) : c).toList();
+    }
+
+    /** Whether the command names a gizmo only this game has: a standard loader must skip it with the gizmo. */
+    private static boolean namesOurs(Board board, Command command) {
+        return command.references().stream()
+                .anyMatch(name -> board.gizmo(name).filter(g -> CommandWord.of(g.kind()).ours()).isPresent());
     }
 
     private static List<Command> game(Board board) {

@@ -44,6 +44,33 @@ public sealed interface Command {
         return Subject.line(toLine());
     }
 
+    /**
+     * A standard command about something only this game has (an extension gizmo), written with {@code #@} before it
+     * so that a loader of the standard format skips it with the gizmo's own line: {@code #@Connect SK LF}.
+     */
+    record Marked(Command command) implements Command {
+        public void applyTo(Board board) {
+            command.applyTo(board);
+        }
+
+        public String toLine() {
+            String line = command.toLine();
+            return line.startsWith(CommandWord.OURS) ? line : CommandWord.OURS + line;
+        }
+
+        public List<String> references() {
+            return command.references();
+        }
+
+        public Optional<String> defines() {
+            return command.defines();
+        }
+
+        public Subject subject() {
+            return command.subject();
+        }
+    }
+
     /** Square, Circle, Triangle, LeftFlipper or RightFlipper with the top-left cell of its footprint. */
     record AddGizmo(GizmoKind kind, String name, int x, int y) implements Command {
         public void applyTo(Board board) {
@@ -230,6 +257,44 @@ public sealed interface Command {
 
         public Subject subject() {
             return new Subject("colour", name);
+        }
+    }
+
+    /** {@code #@Factor <name> <factor>}: how many times faster the accelerator sends a ball away. */
+    record Factor(String name, double factor) implements Command {
+        public void applyTo(Board board) {
+            board.setFactor(name, factor);
+        }
+
+        public String toLine() {
+            return CommandWord.FACTOR.written() + " " + name + " " + format(factor);
+        }
+
+        public List<String> references() {
+            return List.of(name);
+        }
+
+        public Subject subject() {
+            return new Subject("factor", name);
+        }
+    }
+
+    /** {@code #@SpawnVelocity <name> <vx> <vy>}: the velocity of the balls the spawner adds. */
+    record SpawnVelocity(String name, double vx, double vy) implements Command {
+        public void applyTo(Board board) {
+            board.setSpawnVelocity(name, vx, vy);
+        }
+
+        public String toLine() {
+            return CommandWord.SPAWN_VELOCITY.written() + " " + name + " " + format(vx) + " " + format(vy);
+        }
+
+        public List<String> references() {
+            return List.of(name);
+        }
+
+        public Subject subject() {
+            return new Subject("spawn velocity", name);
         }
     }
 

@@ -2,6 +2,7 @@ package gizmoball.boardfile;
 
 import gizmoball.model.Board;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.gizmo.Accelerator;
 import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.TriggerSource;
@@ -9,6 +10,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.OptionalDouble;
 import java.util.OptionalInt;
 import java.util.Set;
@@ -33,9 +35,30 @@ final class CommandParser {
      * The first words that other implementations' files really use for commands of their own (the peer boards'
      * extensions: gizmos, connections of the mouse, settings); any other unknown word is simply unknown.
      */
-    private static final Set<String> PEER_EXTENSIONS = Set.of("sink", "spawner", "accelerator", "booster",
+    private static final Set<String> PEER_EXTENSIONS = Set.of("booster",
             "teleporter", "portal", "rhombus", "octagon", "multiball", "gate", "spinner", "deathsquare",
             "outerwall", "mouseconnect", "timeperupdate");
+    /**
+     * Other implementations' gizmos that are ours as well, written bare with name, x and y, and how each is read
+     * (their code's behaviour: lheckemann's and d-g-n's sinks remove the ball; tomcurran's accelerator speeds it up
+     * 1.4 times a hit, d-g-n's booster 2 times).
+     */
+    private static final Map<String, PeerGizmo> PEER_GIZMOS = Map.of(
+            "sink", new PeerGizmo(CommandWord.SINK, "a ball that touches it leaves the board, as in the game that"
+                    + " wrote it"),
+            "accelerator", new PeerGizmo(CommandWord.ACCELERATOR, "a round bumper that speeds the ball up "
+                    + Decimals.format(Accelerator.DEFAULT_FACTOR) + " times a hit (1.4 times in the game that wrote it:"
+                    + " #@Factor sets it)"),
+            "spawner", new PeerGizmo(CommandWord.SPAWNER, "adds a ball at rest above it when triggered, as the game"
+                    + " that wrote it adds one (#@SpawnVelocity gives it a velocity)"),
+            "booster", new PeerGizmo(CommandWord.ACCELERATOR, "a round bumper that speeds the ball up "
+                    + Decimals.format(Accelerator.DEFAULT_FACTOR) + " times a hit (2 times in the game that wrote it:"
+                    + " #@Factor sets it)"));
+
+    /** A peer's gizmo command read as one of ours: the word it is read as, and what that means here. */
+    private record PeerGizmo(CommandWord word, String meaning) {
+    }
+
     private static final Pattern AXES = Pattern.compile("[XYZ]{2}", Pattern.CASE_INSENSITIVE);
     private static final Pattern WORD = Pattern.compile("[A-Za-z][A-Za-z0-9_]*");
     private static final Pattern HEX_COLOUR = Pattern.compile("#[0-9a-fA-F]{6}");
@@ -81,6 +104,12 @@ final class CommandParser {
         }
         if (first.equals("color") || first.equals("colour")) {
             return new Parsed(colour(words, notes), notes);
+        }
+        PeerGizmo peer = markedOurs ? null : PEER_GIZMOS.get(first);
+        if (peer != null && words.size() == 1 + peer.word().argumentCount()) {
+            notes.add("'" + words.get(0) + "' of another implementation read as " + peer.word().written() + ": "
+                    + peer.meaning());
+            return new Parsed(parse(peer.word(), words.subList(1, words.size()), notes), notes);
         }
         CommandWord word = CommandWord.lookup(words.get(0)).orElseThrow(() -> unknownCommand(words));
         if (word.ours() && !markedOurs) {
@@ -143,7 +172,8 @@ final class CommandParser {
                     + " (" + word.usage() + "), found " + args.size());
         }
         return switch (word) {
-            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER -> new Command.AddGizmo(word.kind(),
+            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER, GATE ->
+                    new Command.AddGizmo(word.kind(),
                     args.get(0), cell("x", args.get(1)), cell("y", args.get(2)));
             case ABSORBER -> absorber(args, notes);
             case BALL -> new Command.AddBall(args.get(0), ballCoordinate("x", args.get(1)),
@@ -155,6 +185,9 @@ final class CommandParser {
             case KEY_CONNECT -> keyConnect(args, notes);
             case FLIPPER_STATE -> new Command.FlipperState(args.get(0), number("angle", args.get(1)),
                     direction(args.get(2)));
+            case FACTOR -> new Command.Factor(args.get(0), number("factor", args.get(1)));
+            case SPAWN_VELOCITY -> new Command.SpawnVelocity(args.get(0), number("vx", args.get(1)),
+                    number("vy", args.get(2)));
             case GRAVITY -> new Command.Gravity(number("gravity", args.get(0)));
             case FRICTION -> new Command.Friction(number("mu", args.get(0)), number("mu2", args.get(1)));
             case BALLS -> new Command.BallsPerGame(wholeNumber("balls per game", args.get(0)));

@@ -21,6 +21,16 @@ enum CommandWord {
     LEFT_FLIPPER("LeftFlipper", "<name> <x> <y>"),
     RIGHT_FLIPPER("RightFlipper", "<name> <x> <y>"),
     ABSORBER("Absorber", "<name> <x1> <y1> <x2> <y2>"),
+    /** Extension gizmo: takes the balls that touch it out of play. */
+    SINK("Sink", "<name> <x> <y>", true),
+    /** Extension gizmo: a round bumper that speeds the ball up. */
+    ACCELERATOR("Accelerator", "<name> <x> <y>", true),
+    /** Extension gizmo: adds a ball at its mouth when triggered. */
+    SPAWNER("Spawner", "<name> <x> <y>", true),
+    /** Extension gizmo: solid or open, switched by triggers. */
+    GATE("Gate", "<name> <x> <y>", true),
+    /** A spawner's velocity for its balls, where it is not zero. */
+    SPAWN_VELOCITY("SpawnVelocity", "<name> <vx> <vy>", true),
     BALL("Ball", "<name> <x> <y> <vx> <vy>"),
     ROTATE("Rotate", "<name>"),
     DELETE("Delete", "<name>"),
@@ -28,6 +38,8 @@ enum CommandWord {
     CONNECT("Connect", "<name1> <name2>"),
     KEY_CONNECT("KeyConnect", "key <keycode> down|up|change <name>"),
     COLOUR("Colour", "<name> <red> <green> <blue>"),
+    /** An accelerator's factor, where it is not the default. */
+    FACTOR("Factor", "<name> <factor>", true),
     /** Play state: a flipper's angle and direction, written by a save during play. */
     FLIPPER_STATE("FlipperAngle", "<name> <degrees> up|down", true),
     GRAVITY("Gravity", "<g>"),
@@ -82,6 +94,10 @@ enum CommandWord {
             case LEFT_FLIPPER -> LEFT_FLIPPER;
             case RIGHT_FLIPPER -> RIGHT_FLIPPER;
             case ABSORBER -> ABSORBER;
+            case SINK -> SINK;
+            case ACCELERATOR -> ACCELERATOR;
+            case SPAWNER -> SPAWNER;
+            case GATE -> GATE;
         };
     }
 

@@ -1,5 +1,2 @@
-/**
- * Input into board calls: the game loop and speed (and watching a replay), key forwarding, file commands, the Game
- * menu's games (new game, game over, high scores, watch, save replay), modal pause, settings.
- */
+/** Input into board calls: the game loop and its speed, keys, file commands, the Game menu, pause, settings. */
 package gizmoball.controller;

@@ -1,5 +1,6 @@
 package gizmoball.editor;
 
+import gizmoball.boardfile.Decimals;
 import gizmoball.boardfile.KeyCodes;
 import gizmoball.boardfile.OrderWords;
 import gizmoball.model.Board;
@@ -7,10 +8,12 @@ import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.game.GameRules;
+import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Rgb;
+import gizmoball.model.gizmo.SpawnerView;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.TriggerSource;
 import java.awt.event.KeyEvent;
@@ -372,6 +375,25 @@ public final class Editor {
             return true;
         }
         return edit(gizmo + " scores " + points, b -> b.setPoints(gizmo, points));
+    }
+
+    /** How many times faster the accelerator sends a ball away (one undo step; the same value again is no edit). */
+    public boolean setFactor(String accelerator, double factor) {
+        if (board.gizmo(accelerator).filter(g -> g instanceof AcceleratorView a && a.factor() == factor).isPresent()) {
+            return true;
+        }
+        return edit(accelerator + " speeds balls up " + Decimals.format(factor) + " times",
+                b -> b.setFactor(accelerator, factor));
+    }
+
+    /** The velocity of the balls the spawner adds (one undo step; the same value again is no edit). */
+    public boolean setSpawnVelocity(String spawner, double vx, double vy) {
+        if (board.gizmo(spawner).filter(g -> g instanceof SpawnerView s && s.velocity().equals(new Vect(vx, vy)))
+                .isPresent()) {
+            return true;
+        }
+        return edit(spawner + " spawns balls at (" + Decimals.format(vx) + ", " + Decimals.format(vy) + ") L/s",
+                b -> b.setSpawnVelocity(spawner, vx, vy));
     }
 
     /** Makes an absorber a drain of the game or an ordinary absorber (one undo step). */
@@ -904,7 +926,8 @@ public final class Editor {
 
     private ToolHandler newHandler(Tool t) {
         return switch (t) {
-            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER -> new PlaceGizmoTool(this, t.kind().orElseThrow());
+            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER, GATE ->
+                    new PlaceGizmoTool(this, t.kind().orElseThrow());
             case ABSORBER -> new PlaceAbsorberTool(this);
             case BALL -> new PlaceBallTool(this);
             case SELECT -> new SelectTool(this);

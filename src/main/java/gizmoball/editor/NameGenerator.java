@@ -32,6 +32,10 @@ public final class NameGenerator {
             case LEFT_FLIPPER -> "LF";
             case RIGHT_FLIPPER -> "RF";
             case ABSORBER -> "A";
+            case SINK -> "SK";
+            case ACCELERATOR -> "AC";
+            case SPAWNER -> "SP";
+            case GATE -> "G";
         };
     }
 

@@ -15,6 +15,12 @@ public enum Tool {
     LEFT_FLIPPER(KeyEvent.VK_L, GizmoKind.LEFT_FLIPPER, "click the top-left cell of a 2x2 box; drag to fill a rectangle"),
     RIGHT_FLIPPER(KeyEvent.VK_R, GizmoKind.RIGHT_FLIPPER, "click the top-left cell of a 2x2 box; drag to fill a rectangle"),
     ABSORBER(KeyEvent.VK_A, GizmoKind.ABSORBER, "drag out a rectangle of cells"),
+    SINK(KeyEvent.VK_I, GizmoKind.SINK, "click a cell to place a sink: a ball that touches it leaves the board"),
+    ACCELERATOR(KeyEvent.VK_E, GizmoKind.ACCELERATOR,
+            "click a cell to place an accelerator: a round bumper that sends the ball away faster"),
+    SPAWNER(KeyEvent.VK_W, GizmoKind.SPAWNER,
+            "click a cell to place a spawner: triggered, it adds a ball at its mouth (turn it to aim the mouth)"),
+    GATE(KeyEvent.VK_G, GizmoKind.GATE, "click a cell to place a gate: solid, or open while triggers say"),
     BALL("Ball", KeyEvent.VK_B, null, "click to place a ball; drag before releasing to give it a velocity"),
     SELECT("Select / Move", KeyEvent.VK_M, null, "click to select (Shift+click adds), drag from empty space to select many, drag what is selected"
             + " to move it, drag an absorber's handle to resize it"),

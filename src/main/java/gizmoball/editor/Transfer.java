@@ -5,7 +5,9 @@ import gizmoball.boardfile.LoadResult;
 import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyBinding;
+import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.SpawnerView;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
@@ -127,7 +129,7 @@ final class Transfer {
         relink(board, before, name, renamed);
     }
 
-    /** A gizmo like {@code g} of {@code from}, named {@code name}, moved by (dx, dy): kind, turns, colour, rules. */
+    /** A gizmo like {@code g} of {@code from}, named {@code name}, moved by (dx, dy): kind, turns, colour, factor, rules. */
     private static void addGizmo(Board to, Board from, Gizmo g, String name, int dx, int dy) {
         if (g.kind() == GizmoKind.ABSORBER) {
             to.addAbsorber(name, g.x() + dx, g.y() + dy, g.x() + dx + g.width(), g.y() + dy + g.height());
@@ -138,6 +140,12 @@ final class Transfer {
             to.rotate(name);
         }
         to.setColour(name, g.colour());
+        if (g instanceof AcceleratorView accelerator) {
+            to.setFactor(name, accelerator.factor());
+        }
+        if (g instanceof SpawnerView spawner) {
+            to.setSpawnVelocity(name, spawner.velocity().x(), spawner.velocity().y());
+        }
         if (from.gameRules().ownPoints().containsKey(g.name())) {
             to.setPoints(name, from.gameRules().pointsOf(g.name(), g.kind()));
         }

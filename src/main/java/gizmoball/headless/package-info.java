@@ -1,5 +1,2 @@
-/**
- * The headless runner: load a board, run it for some ticks (to a key script), write it out, with the game's report
- * and replay; or play a replay file again and check its score.
- */
+/** The headless runner: play a board for some ticks (to a key script) and write it out, or check a replay. */
 package gizmoball.headless;

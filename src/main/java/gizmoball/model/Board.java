@@ -6,12 +6,14 @@ import gizmoball.model.game.GameRules;
 import gizmoball.model.game.KeyPress;
 import gizmoball.model.game.Playfield;
 import gizmoball.model.gizmo.Absorber;
+import gizmoball.model.gizmo.Accelerator;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Rgb;
+import gizmoball.model.gizmo.Sink;
 import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Ball;
 import gizmoball.model.loop.BallGrid;
@@ -262,6 +264,18 @@ public final class Board {
         edited();
     }
 
+    /** How many times faster an accelerator sends a ball away (1 to {@link Accelerator#MAX_FACTOR}; 1.5 unless set). */
+    public void setFactor(String accelerator, double factor) {
+        edits.setFactor(accelerator, factor);
+        edited();
+    }
+
+    /** The velocity of the balls the spawner adds (finite, at most {@link #MAX_SPEED}; at rest unless set). */
+    public void setSpawnVelocity(String spawner, double vx, double vy) {
+        edits.setSpawnVelocity(spawner, vx, vy);
+        edited();
+    }
+
     public void setGravity(double g) {
         if (!Double.isFinite(g)) {
             throw new BoardEditException("gravity must be a finite number, got " + g);
@@ -416,7 +430,10 @@ public final class Board {
             throw new IllegalArgumentException("tick length must be finite and not negative, got " + dt);
         }
         play.performDue(time);
+        play.ticking(true);
         lastTick = new TickRun(loop, loop, dt).run();
+        play.ticking(false);
+        play.removeSunk();
         ticks++;
         game.afterTick(ticks, lastTick.events());
         guardsFired = guardsFired.plus(lastTick.guards());
@@ -555,6 +572,22 @@ public final class Board {
         public void removeBall(String ball) {
             registry.remove(registry.ball(ball));
         }
+
+        @Override
+        public boolean serveNextBall() {
+            for (GizmoBase gizmo : registry.gizmos()) {
+                if (gizmo instanceof Absorber absorber && gameRules.isDrain(absorber.name())) {
+                    String name = play.freshBallName();
+                    Vect at = absorber.holdingPosition(BALL_RADIUS);
+                    Ball ball = new Ball(name, at, Vect.ZERO);
+                    registry.add(ball);
+                    play.capture(ball, absorber);
+                    return true;
+                }
+            }
+            return false;
+        }
+
     }
 
     /** The board as the loop sees it and acts on it: the one way in for a {@link TickRun}. */
@@ -667,6 +700,11 @@ public final class Board {
         @Override
         public void capture(Ball ball, Absorber absorber) {
             play.capture(ball, absorber);
+        }
+
+        @Override
+        public void sink(Ball ball, Sink sink) {
+            play.sink(ball, sink);
         }
 
         @Override

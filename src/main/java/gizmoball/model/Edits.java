@@ -5,6 +5,8 @@ import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
+import gizmoball.model.gizmo.Accelerator;
+import gizmoball.model.gizmo.Spawner;
 import gizmoball.model.loop.Ball;
 
 import java.util.ArrayList;
@@ -269,6 +271,31 @@ final class Edits {
             throw new BoardEditException("colour of " + gizmo + " must be a colour or empty, not null");
         }
         registry.requireGizmo(gizmo).setColour(colour);
+    }
+
+    void setFactor(String gizmo, double factor) {
+        if (!(registry.requireGizmo(gizmo) instanceof Accelerator accelerator)) {
+            throw new BoardEditException("only an accelerator has a factor: " + gizmo + " is "
+                    + registry.requireGizmo(gizmo).kind().withArticle());
+        }
+        if (!(factor >= 1 && factor <= Accelerator.MAX_FACTOR)) {
+            throw new BoardEditException("an accelerator's factor is 1 to " + (int) Accelerator.MAX_FACTOR
+                    + ", not " + factor);
+        }
+        accelerator.setFactor(factor);
+    }
+
+    void setSpawnVelocity(String gizmo, double vx, double vy) {
+        if (!(registry.requireGizmo(gizmo) instanceof Spawner spawner)) {
+            throw new BoardEditException("only a spawner has a velocity for its balls: " + gizmo + " is "
+                    + registry.requireGizmo(gizmo).kind().withArticle());
+        }
+        Vect velocity = new Vect(vx, vy);
+        if (!Double.isFinite(vx) || !Double.isFinite(vy) || velocity.length() > Board.MAX_SPEED) {
+            throw new BoardEditException("a spawner's velocity is finite and at most " + (int) Board.MAX_SPEED
+                    + " L/s fast, not (" + vx + ", " + vy + ")");
+        }
+        spawner.setVelocity(velocity);
     }
 
     private static double requireFinite(double coordinate, String ball) {

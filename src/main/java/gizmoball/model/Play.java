@@ -4,16 +4,22 @@ import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.Action;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.MovingShape;
+import gizmoball.model.gizmo.Gate;
 import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.Sink;
+import gizmoball.model.gizmo.Spawner;
 import gizmoball.model.gizmo.Surroundings;
 import gizmoball.model.loop.Ball;
 import gizmoball.model.loop.PlayEvent;
 import gizmoball.model.loop.Sleepers;
+import gizmoball.model.loop.Tolerances;
 
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashSet;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 
 import physics.Vect;
@@ -32,6 +38,14 @@ final class Play implements Surroundings {
     private final List<PlayEvent> pendingEvents = new ArrayList<>();
     /** The absorbers that fired a ball since the board's clock last moved (in this tick). */
     private final Set<String> fired = new HashSet<>();
+    /** Whether a tick is running: spawns wait for its end. */
+    private boolean ticking;
+    /** The gates told to open (true) or close during this tick, the last order of each. */
+    private final Map<String, Boolean> gateOrders = new LinkedHashMap<>();
+    /** The spawners told to spawn during this tick, in order. */
+    private final List<String> toSpawn = new ArrayList<>();
+    /** The balls sinks took in this tick, which leave the board when it is over. */
+    private final List<String> sunk = new ArrayList<>();
     /** Actions ordered with a delay, in the order given. */
     private final List<Delayed> delayed = new ArrayList<>();
 
@@ -171,6 +185,111 @@ final class Play implements Surroundings {
     void capture(Ball ball, Absorber absorber) {
         ball.capture(absorber.holdingPosition(Board.BALL_RADIUS));
         absorber.hold(ball.name());
+    }
+
+    /**
+     * Adds a ball at the spawner's mouth with its velocity, if the mouth is free and the board holds fewer than
+     * {@link Spawner#MAX_BALLS}; during a tick (a hit triggered it) at the tick's end, so that the loop meets no ball
+     * it did not start with.
+     */
+    @Override
+    public void spawn(Spawner spawner) {
+        if (ticking) {
+            toSpawn.add(spawner.name());
+        } else {
+            spawnNow(spawner);
+        }
+    }
+
+    /**
+     * Opens the gate, or closes it over a clear cell (else it waits open, and closes at the first tick end with the
+     * cell clear); during a tick at the tick's end, so that the loop never loses a surface it is resolving. Balls
+     * forget their contacts and wake, as after an edit: what they lay on may have gone.
+     */
+    @Override
+    public void switchGate(Gate gate, boolean open) {
+        if (ticking) {
+            gateOrders.put(gate.name(), open);
+        } else {
+            switchNow(gate, open);
+        }
+    }
+
+    private void switchNow(Gate gate, boolean open) {
+        boolean wasOpen = gate.isOpen();
+        if (open) {
+            gate.set(true, false);
+        } else {
+            boolean blocked = registry.balls().stream()
+                    .anyMatch(b -> gate.closedOver(b.position()) < Board.BALL_RADIUS - Tolerances.PLACEMENT);
+            gate.set(blocked, blocked);
+        }
+        if (gate.isOpen() != wasOpen) {
+            sleepers.disturbAll();
+        }
+    }
+
+    /** A tick starts or ends: spawns and gates asked for while it runs wait for its end. */
+    void ticking(boolean inTick) {
+        ticking = inTick;
+        if (!inTick) {
+            Map<String, Boolean> gates = new LinkedHashMap<>(gateOrders);
+            gateOrders.clear();
+            for (GizmoBase gizmo : registry.gizmos()) {
+                if (gizmo instanceof Gate gate && gate.isClosing() && !gates.containsKey(gate.name())) {
+                    gates.put(gate.name(), false);   // still waiting to close: the cell may be clear now
+                }
+            }
+            gates.forEach((name, open) -> {
+                if (registry.gizmo(name) instanceof Gate gate) {
+                    switchNow(gate, open);
+                }
+            });
+            List<String> due = List.copyOf(toSpawn);
+            toSpawn.clear();
+            for (String name : due) {
+                if (registry.gizmo(name) instanceof Spawner spawner) {
+                    spawnNow(spawner);
+                }
+            }
+        }
+    }
+
+    private void spawnNow(Spawner spawner) {
+        Vect mouth = spawner.mouth(Board.BALL_RADIUS);
+        if (registry.balls().size() >= Spawner.MAX_BALLS || !rules.freeForBall(mouth)) {
+            return;
+        }
+        Ball ball = new Ball(freshBallName(), mouth, Vect.ZERO);
+        ball.setVelocity(spawner.velocity());
+        registry.add(ball);
+        recordEvent(new PlayEvent.Spawned(spawner.name(), ball.name()));
+        double margin = 4 * Board.BALL_RADIUS;
+        sleepers.wakeWithin(mouth.x() - margin, mouth.y() - margin, mouth.x() + margin, mouth.y() + margin);
+    }
+
+    /** "Ball1", "Ball2", ...: the first name no gizmo or ball of the board has. */
+    String freshBallName() {
+        for (int n = 1; ; n++) {
+            String name = "Ball" + n;
+            if (registry.gizmo(name) == null && registry.ball(name) == null) {
+                return name;
+            }
+        }
+    }
+
+    /** The ball stops at the sink's centre, out of play, until {@link #removeSunk} takes it off the board. */
+    void sink(Ball ball, Sink sink) {
+        ball.capture(sink.centre());
+        sunk.add(ball.name());
+    }
+
+    /** The tick is over: the balls sinks took in it leave the board. */
+    void removeSunk() {
+        for (String ball : sunk) {
+            registry.remove(registry.ball(ball));
+        }
+        sunk.clear();
     }
 
     /** An absorber placed or moved captures the free balls it now covers. */

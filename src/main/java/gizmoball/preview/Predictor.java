@@ -57,6 +57,8 @@ public final class Predictor {
         private final List<Prediction.Point> path = new ArrayList<>();
         private final List<Vect> collisions = new ArrayList<>();
         private Optional<Prediction.Trigger> trigger = Optional.empty();
+        /** A sink took the ball: nothing more to predict. */
+        private boolean sunk;
 
         private Run(Board copy, String ball, int ticks, double dt) {
             this.copy = copy;
@@ -67,7 +69,7 @@ public final class Predictor {
         }
 
         public boolean isDone() {
-            return path.size() > ticks;
+            return sunk || path.size() > ticks;
         }
 
         /**
@@ -87,8 +89,13 @@ public final class Predictor {
                 for (PlayEvent event : copy.lastTick().events()) {
                     captured |= hitBy(event);
                 }
-                BallView b = copy.ball(ball).orElseThrow();
-                path.add(new Prediction.Point(b.position(), !b.isCaptured() && !captured));
+                Optional<BallView> b = copy.ball(ball);
+                if (b.isEmpty()) {
+                    sunk = true;   // a sink took it: its path ends where it went in
+                    path.add(new Prediction.Point(collisions.get(collisions.size() - 1), false));
+                    break;
+                }
+                path.add(new Prediction.Point(b.get().position(), !b.get().isCaptured() && !captured));
             }
             return new Prediction(ball, path, collisions, trigger, (path.size() - 1) * dt, !isDone());
         }
@@ -106,6 +113,9 @@ public final class Predictor {
             } else if (event instanceof PlayEvent.Captured captured && ball.equals(captured.ball())) {
                 struck = TriggerSource.gizmo(captured.absorber());
                 at = captured.at();
+            } else if (event instanceof PlayEvent.Sunk sunkBy && ball.equals(sunkBy.ball())) {
+                struck = TriggerSource.gizmo(sunkBy.sink());
+                at = sunkBy.at();
             } else {
                 return false;
             }
@@ -117,7 +127,7 @@ public final class Predictor {
                     trigger = Optional.of(new Prediction.Trigger(source.name(), at, targets));
                 }
             }
-            return event instanceof PlayEvent.Captured;
+            return event instanceof PlayEvent.Captured || event instanceof PlayEvent.Sunk;
         }
 
         private static Prediction.Point point(BallView b) {

@@ -33,10 +33,10 @@ public final class Sounds {
         if (event instanceof PlayEvent.Swing) {
             return Optional.of(flipperSwing());
         }
-        if (event instanceof PlayEvent.Captured) {
+        if (event instanceof PlayEvent.Captured || event instanceof PlayEvent.Sunk) {
             return Optional.of(capture());
         }
-        if (event instanceof PlayEvent.Fired) {
+        if (event instanceof PlayEvent.Fired || event instanceof PlayEvent.Spawned) {
             return Optional.of(fire());
         }
         throw new IllegalArgumentException("no sound for " + event);
@@ -73,6 +73,10 @@ public final class Sounds {
             case CIRCLE -> 880;
             case LEFT_FLIPPER, RIGHT_FLIPPER -> 330;
             case ABSORBER -> 160;
+            case SINK -> 110;
+            case ACCELERATOR -> 1100;
+            case SPAWNER -> 440;
+            case GATE -> 600;
         };
     }
 

@@ -28,6 +28,12 @@ public final class BoardPainter {
     static final Color WALLS = new Color(0x9aa3b5);
     static final Color GRID = new Color(0x323a4d);
     static final Color BALL = new Color(0xf2f2f2);
+    /** The hole in a sink's cell, where the balls it takes go. */
+    public static final Color SINK_HOLE = new Color(0x07080b);
+    /** The arrow on a spawner that points to its mouth. */
+    public static final Color SPAWNER_MARK = new Color(0xe8fffb);
+    /** The ring on an accelerator that tells it from a circle bumper. */
+    public static final Color ACCELERATOR_MARK = new Color(0xfff1d6);
     /** Size in L of the number of balls an absorber holds, written on the ball in its corner. */
     private static final float HELD_COUNT_FONT = 0.36f;
     private static final Color HELD_COUNT = new Color(0x202020);
@@ -54,6 +60,10 @@ public final class BoardPainter {
             case TRIANGLE -> new Color(0x3d86f0);
             case LEFT_FLIPPER, RIGHT_FLIPPER -> new Color(0xf2b705);
             case ABSORBER -> new Color(0xb24fd6);
+            case SINK -> new Color(0x5a6478);
+            case ACCELERATOR -> new Color(0xff8a1f);
+            case SPAWNER -> new Color(0x2bb3a6);
+            case GATE -> new Color(0xc9a46b);
         };
     }
 

@@ -1,9 +1,12 @@
 package gizmoball.view;
 
+import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.BumperView;
 import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.GateView;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.SpawnerView;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Graphics2D;
@@ -65,6 +68,86 @@ enum GizmoArt {
             g.fill(new Ellipse2D.Double(f.pivot().x() - hub, f.pivot().y() - hub, 2 * hub, 2 * hub));
         }
     },
+    /** A sink: its cell, with the hole the balls go into. */
+    SINK_HOLE {
+        @Override
+        Shape outline(Gizmo gizmo, Interpolation between) {
+            return new Rectangle2D.Double(gizmo.x(), gizmo.y(), 1, 1);
+        }
+
+        @Override
+        void paint(Graphics2D g, Gizmo gizmo, Interpolation between, Color fill, float pixel) {
+            super.paint(g, gizmo, between, fill, pixel);
+            g.setColor(BoardPainter.SINK_HOLE);
+            g.fill(new Ellipse2D.Double(gizmo.x() + HOLE_MARGIN, gizmo.y() + HOLE_MARGIN, 1 - 2 * HOLE_MARGIN,
+                    1 - 2 * HOLE_MARGIN));
+        }
+    },
+    /** An accelerator: a disc with a ring, so that it is not taken for a circle bumper. */
+    RINGED_DISC {
+        @Override
+        Shape outline(Gizmo gizmo, Interpolation between) {
+            return circle(((AcceleratorView) gizmo).circle());
+        }
+
+        @Override
+        void paint(Graphics2D g, Gizmo gizmo, Interpolation between, Color fill, float pixel) {
+            super.paint(g, gizmo, between, fill, pixel);
+            Circle c = ((AcceleratorView) gizmo).circle();
+            g.setColor(BoardPainter.ACCELERATOR_MARK);
+            g.setStroke(new BasicStroke((float) RING_WIDTH));
+            g.draw(circle(new Circle(c.getCenter(), c.getRadius() * RING_RADIUS)));
+        }
+    },
+    /** A spawner: its cell, with an arrow to the mouth its balls come out of. */
+    SPAWNER_MOUTH {
+        @Override
+        Shape outline(Gizmo gizmo, Interpolation between) {
+            return new Rectangle2D.Double(gizmo.x(), gizmo.y(), 1, 1);
+        }
+
+        @Override
+        void paint(Graphics2D g, Gizmo gizmo, Interpolation between, Color fill, float pixel) {
+            super.paint(g, gizmo, between, fill, pixel);
+            Vect centre = new Vect(gizmo.x() + 0.5, gizmo.y() + 0.5);
+            Vect out = ((SpawnerView) gizmo).mouth(0).minus(centre);   // half a cell towards the mouth
+            Vect across = new Vect(-out.y(), out.x());
+            Path2D.Double arrow = new Path2D.Double();
+            Vect tip = centre.plus(out.times(0.8));
+            Vect left = centre.minus(out.times(0.3)).plus(across.times(0.6));
+            Vect right = centre.minus(out.times(0.3)).minus(across.times(0.6));
+            arrow.moveTo(tip.x(), tip.y());
+            arrow.lineTo(left.x(), left.y());
+            arrow.lineTo(right.x(), right.y());
+            arrow.closePath();
+            g.setColor(BoardPainter.SPAWNER_MARK);
+            g.fill(arrow);
+        }
+    },
+    /** A gate: its cell filled while closed, only a dashed outline of it while open. */
+    GATE_CELL {
+        @Override
+        boolean changesInPlay() {
+            return true;
+        }
+
+        @Override
+        Shape outline(Gizmo gizmo, Interpolation between) {
+            return new Rectangle2D.Double(gizmo.x(), gizmo.y(), 1, 1);
+        }
+
+        @Override
+        void paint(Graphics2D g, Gizmo gizmo, Interpolation between, Color fill, float pixel) {
+            if (!((GateView) gizmo).isOpen()) {
+                super.paint(g, gizmo, between, fill, pixel);
+                return;
+            }
+            g.setColor(fill);
+            g.setStroke(new BasicStroke(2 * pixel, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10,
+                    new float[] {0.15f, 0.1f}, 0));
+            g.draw(new Rectangle2D.Double(gizmo.x() + pixel, gizmo.y() + pixel, 1 - 2 * pixel, 1 - 2 * pixel));
+        }
+    },
     /** An absorber: its whole footprint, whose size is the author's. */
     FOOTPRINT {
         @Override
@@ -73,6 +156,12 @@ enum GizmoArt {
         }
     };
 
+    /** How far (L) a sink's hole stays inside its cell. */
+    private static final double HOLE_MARGIN = 0.15;
+    /** An accelerator's ring: its radius as a part of the disc's, and its width in L. */
+    private static final double RING_RADIUS = 0.5;
+    private static final double RING_WIDTH = 0.07;
+
     /** How gizmos of that kind are drawn. */
     static GizmoArt of(GizmoKind kind) {
         return switch (kind) {
@@ -80,6 +169,10 @@ enum GizmoArt {
             case CIRCLE -> DISC;
             case LEFT_FLIPPER, RIGHT_FLIPPER -> FLIPPER_BAR;
             case ABSORBER -> FOOTPRINT;
+            case SINK -> SINK_HOLE;
+            case ACCELERATOR -> RINGED_DISC;
+            case SPAWNER -> SPAWNER_MOUTH;
+            case GATE -> GATE_CELL;
         };
     }
 

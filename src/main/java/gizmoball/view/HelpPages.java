@@ -69,7 +69,9 @@ final class HelpPages {
     static String game(GameRules rules) {
         String scoring = "A real hit scores the gizmo's points (unless the board gives it its own: circle "
                 + Points.defaultFor(GizmoKind.CIRCLE) + ", triangle " + Points.defaultFor(GizmoKind.TRIANGLE)
-                + ", square " + Points.defaultFor(GizmoKind.SQUARE) + ", others 0).";
+                + ", square " + Points.defaultFor(GizmoKind.SQUARE) + ", accelerator "
+                + Points.defaultFor(GizmoKind.ACCELERATOR) + ", others 0; a sink scores its own points when it takes"
+                + " a ball).";
         if (!rules.isGame()) {
             return "This board has no drain: it is a sandbox, which never ends. " + scoring;
         }

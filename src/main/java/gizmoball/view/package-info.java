@@ -1,5 +1,2 @@
-/**
- * The Swing views of play: the window, the board view, the status line, the score panel and launch hint, dialogs
- * (game over, high scores) and help.
- */
+/** The Swing views of play: the window, the board, the status line, the score panel, dialogs and help. */
 package gizmoball.view;

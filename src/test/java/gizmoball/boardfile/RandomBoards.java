@@ -6,7 +6,9 @@ import gizmoball.model.game.Points;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.gizmo.Action;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.TriggerSource;
 import java.util.List;
@@ -69,7 +71,45 @@ final class RandomBoards {
             board.setFriction(random.nextDouble() * 0.1, random.nextDouble() * 0.1);
         }
         addGame(board);
+        addExtensions(board);
         return board;
+    }
+
+    /**
+     * Issue 22, drawn last so that the rest of each board is what it was before: sinks and accelerators (some with
+     * a factor of their own), and connections and key bindings with actions and delays.
+     */
+    private void addExtensions(Board board) {
+        if (random.nextBoolean()) {
+            return;
+        }
+        int gizmos = 1 + random.nextInt(4);
+        for (int i = 0; i < gizmos; i++) {
+            String name = name();
+            GizmoKind kind = random.nextBoolean() ? GizmoKind.SINK : GizmoKind.ACCELERATOR;
+            attempt(() -> board.addGizmo(kind, name, random.nextInt(20), random.nextInt(20)));
+            if (kind == GizmoKind.ACCELERATOR && random.nextBoolean()) {
+                attempt(() -> board.setFactor(name, 1 + random.nextInt(17) / 4.0));
+            }
+        }
+        List<String> names = board.gizmos().stream().map(Gizmo::name).toList();
+        if (names.isEmpty()) {
+            return;
+        }
+        int orders = random.nextInt(4);
+        for (int i = 0; i < orders; i++) {
+            Gizmo target = board.gizmo(pick(names)).orElseThrow();
+            List<Action> actions = target.kind().actions();
+            Order order = new Order(random.nextBoolean() ? Optional.empty()
+                    : Optional.of(actions.get(random.nextInt(actions.size()))),
+                    random.nextBoolean() ? 0 : random.nextInt(40) / 8.0);
+            if (random.nextBoolean()) {
+                attempt(() -> board.connect(TriggerSource.gizmo(pick(names)), target.name(), order));
+            } else {
+                attempt(() -> board.bindKey(KEY_CODES[random.nextInt(KEY_CODES.length)],
+                        KeyEdge.values()[random.nextInt(KeyEdge.values().length)], target.name(), order));
+            }
+        }
     }
 
     /** Drawn last, so that the rest of each board is what it was before boards had games. */

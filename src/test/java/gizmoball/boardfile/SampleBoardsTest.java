@@ -20,7 +20,7 @@ class SampleBoardsTest {
     private static final Path BOARDS = Path.of("boards");
 
     @ParameterizedTest
-    @ValueSource(strings = {"default.txt", "multiball.txt", "rube-goldberg.txt", "stress.txt"})
+    @ValueSource(strings = {"default.txt", "extensions.txt", "multiball.txt", "rube-goldberg.txt", "stress.txt"})
     void loadsStrictlyAndRunsWithTheInvariantsHolding(String name) throws IOException, BoardFileException {
         Board board = BoardFiles.load(BOARDS.resolve(name));
         assertThat(Invariants.violations(board)).isEmpty();
@@ -43,6 +43,16 @@ class SampleBoardsTest {
         assertThat(board.gizmo("A").orElseThrow().kind()).isEqualTo(GizmoKind.ABSORBER);
         assertThat(board.connections()).extracting(c -> c.target()).contains("LF", "RF");
         assertThat(board.balls()).hasSize(1);
+    }
+
+    @Test
+    void theExtensionsBoardShowsOffTheSinksTheAcceleratorsAndTheWiringKit() throws Exception {
+        Board board = BoardFiles.load(BOARDS.resolve("extensions.txt"));
+        assertThat(board.gizmos()).extracting(g -> g.kind()).contains(GizmoKind.SINK, GizmoKind.ACCELERATOR,
+                GizmoKind.SPAWNER);
+        assertThat(board.connections()).anyMatch(c -> c.order().delay() > 0 && c.order().action().isPresent());
+        assertThat(board.keyBindings()).anyMatch(k -> k.order().delay() > 0);
+        assertThat(board.gameRules().isGame()).isTrue();
     }
 
     @Test

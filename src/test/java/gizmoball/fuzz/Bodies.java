@@ -1,10 +1,12 @@
 package gizmoball.fuzz;
 
 import gizmoball.model.gizmo.Absorber;
+import gizmoball.model.gizmo.Accelerator;
 import gizmoball.model.gizmo.Bumper;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Sink;
 
 import java.util.List;
 
@@ -27,6 +29,12 @@ final class Bodies {
         }
         if (gizmo instanceof Flipper flipper) {
             return flipper(flipper);
+        }
+        if (gizmo instanceof Sink sink) {
+            return rectangle(sink.x(), sink.y(), 1, 1);
+        }
+        if (gizmo instanceof Accelerator accelerator) {
+            return new Solid.Disc(new Point(accelerator.x() + 0.5, accelerator.y() + 0.5), BUMPER_RADIUS);
         }
         Absorber absorber = (Absorber) gizmo;
         return rectangle(absorber.x(), absorber.y(), absorber.width(), absorber.height());

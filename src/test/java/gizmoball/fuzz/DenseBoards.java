@@ -13,7 +13,7 @@ import java.util.SplittableRandom;
 
 /**
  * Random dense boards from a seed, as players build them (issue 20, "Your own fuzz"): bumpers of every kind in every
- * rotation packed in blocks, corridors one or two cells wide, checkerboards and scattered; flippers in pockets of
+ * rotation (accelerators and sinks among them, issue 22, except where energy must be kept) packed in blocks, corridors one or two cells wide, checkerboards and scattered; flippers in pockets of
  * bumpers, in facing pairs (tongs) and in clumps, some starting part-way through a swing; absorbers along the floor
  * and elsewhere, many firing themselves; 5-40 balls placed free, touching gizmos, flippers (their pivot ends too) and
  * each other, at up to 100 L/s; keys bound to the flippers and absorbers and a script pressing them. Gravity and
@@ -28,6 +28,8 @@ public final class DenseBoards {
     /** Key codes the boards bind: letters, space and the arrows (any code works; these read well in a file). */
     private static final int[] KEY_CODES = {32, 37, 38, 39, 40, 65, 68, 70, 74, 75, 76, 77, 81, 83, 87, 88, 90};
     private static final GizmoKind[] BUMPERS = {GizmoKind.SQUARE, GizmoKind.CIRCLE, GizmoKind.TRIANGLE};
+    /** The still extension gizmos, drawn among the bumpers of a board whose energy need not be kept. */
+    private static final GizmoKind[] EXTENSIONS = {GizmoKind.ACCELERATOR, GizmoKind.SINK};
     private static final int SIZE = Board.SIZE;
 
     private final SplittableRandom random;
@@ -51,8 +53,12 @@ public final class DenseBoards {
         return new FuzzCase(seed, board, keys, ticks, String.join("; ", generator.recipe));
     }
 
+    /** Whether the extension gizmos are drawn too: not on a board whose kinetic energy must be kept. */
+    private boolean extensions;
+
     private Board build() {
         boolean energyKept = random.nextInt(7) == 0;
+        extensions = !energyKept;
         physics(energyKept);
         if (!energyKept) {
             absorbers();
@@ -219,6 +225,9 @@ public final class DenseBoards {
     // ------------------------------------------------------------------------------------------------ bumpers
 
     private GizmoKind randomBumper() {
+        if (extensions && random.nextInt(6) == 0) {
+            return EXTENSIONS[random.nextInt(EXTENSIONS.length)];
+        }
         return BUMPERS[random.nextInt(BUMPERS.length)];
     }
 

@@ -2,6 +2,8 @@ package gizmoball.fuzz;
 
 import gizmoball.model.Board;
 import gizmoball.model.gizmo.Absorber;
+import gizmoball.model.gizmo.Accelerator;
+import gizmoball.model.gizmo.Sink;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.loop.BallView;
@@ -77,7 +79,8 @@ public final class TickChecker {
                 movers = true;
                 continue;
             }
-            movers |= gizmo instanceof Absorber;
+            // What changes the balls' energy other than the contract's loss: capture, removal, a boost.
+            movers |= gizmo instanceof Absorber || gizmo instanceof Sink || gizmo instanceof Accelerator;
             Body body = new Body(gizmo.name(), Bodies.of(gizmo));
             still.add(body);
             file(body);

@@ -59,11 +59,7 @@ class WiringKitTest {
 
         State after = State.of(board);
         assertThat(board.gizmo("G").orElseThrow().lastTriggeredAt()).as("it flashes").isEqualTo(board.time());
-        State expected = switch (action) {
-            case RAISE, TOGGLE -> before.withFlipperActive(true);   // toggled from rest: up
-            case LOWER, FLASH -> before;
-            case FIRE -> before.withHeld(0);
-        };
+        State expected = expected(kind, action, before);
         assertThat(after).isEqualTo(expected);
     }
 
@@ -81,11 +77,7 @@ class WiringKitTest {
         double hit = board.gizmo("S").orElseThrow().lastTriggeredAt();
         assertThat(hit).as("the ball hit the square").isFinite();
         assertThat(board.gizmo("G").orElseThrow().lastTriggeredAt()).as("it flashed at the hit").isEqualTo(hit);
-        State expected = switch (action) {
-            case RAISE, TOGGLE -> before.withFlipperActive(true);
-            case LOWER, FLASH -> before;
-            case FIRE -> before.withHeld(0);
-        };
+        State expected = expected(kind, action, before);
         assertThat(State.of(board)).isEqualTo(expected);
     }
 
@@ -224,24 +216,45 @@ class WiringKitTest {
         assertThat(board.gizmos()).isEmpty();
     }
 
+    /** What the action does to a gizmo of the kind at rest (a flipper down, a gate closed). */
+    private static State expected(GizmoKind kind, Action action, State before) {
+        return switch (action) {
+            case RAISE -> before.withFlipperActive(true);
+            case TOGGLE -> kind == GizmoKind.GATE ? before.withGateOpen() : before.withFlipperActive(true);
+            case OPEN -> before.withGateOpen();
+            case LOWER, CLOSE, FLASH -> before;
+            case FIRE -> before.withHeld(0);
+            case SPAWN -> before.withOneMoreBall();
+        };
+    }
+
     private static FlipperView flipper(Board board) {
         return (FlipperView) board.gizmo("G").orElseThrow();
     }
 
-    /** What an action can change: whether the flipper is up, how many balls the absorber holds. */
-    private record State(boolean flipperActive, int held) {
+    /** What an action can change: whether the flipper is up, how many balls the absorber holds, how many there are. */
+    private record State(boolean flipperActive, int held, int balls, boolean gateOpen) {
         static State of(Board board) {
             Gizmo g = board.gizmo("G").orElseThrow();
             return new State(g instanceof FlipperView f && f.isActive(),
-                    (int) board.balls().stream().filter(BallView::isCaptured).count());
+                    (int) board.balls().stream().filter(BallView::isCaptured).count(), board.balls().size(),
+                    g instanceof gizmoball.model.gizmo.GateView gate && gate.isOpen());
         }
 
         State withFlipperActive(boolean active) {
-            return new State(active, held);
+            return new State(active, held, balls, gateOpen);
         }
 
         State withHeld(int n) {
-            return new State(flipperActive, n);
+            return new State(flipperActive, n, balls, gateOpen);
+        }
+
+        State withOneMoreBall() {
+            return new State(flipperActive, held, balls + 1, gateOpen);
+        }
+
+        State withGateOpen() {
+            return new State(flipperActive, held, balls, true);
         }
     }
 }

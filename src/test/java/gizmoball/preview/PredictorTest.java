@@ -102,6 +102,22 @@ class PredictorTest {
     }
 
     @Test
+    void aBallASinkTakesEndsItsPathWhereItWentIn() {
+        Board board = new Board();
+        board.addGizmo(GizmoKind.SINK, "SK", 10, 12);
+        board.addGizmo(GizmoKind.CIRCLE, "C", 3, 3);
+        board.connect(TriggerSource.gizmo("SK"), "C");
+        board.addBall("B", 10.5, 8, 0, 0);
+        Prediction p = unhurried.predict(board, "B", 3, DT, Long.MAX_VALUE);
+        assertThat(p.shortened()).as("the whole prediction: there is nothing after the sink").isFalse();
+        assertThat(p.collisions()).hasSize(1);
+        assertThat(p.collisions().get(0).y()).isCloseTo(12 - Board.BALL_RADIUS, within(1e-9));
+        assertThat(p.path().get(p.path().size() - 1)).isEqualTo(new Prediction.Point(p.collisions().get(0), false));
+        assertThat(p.trigger().orElseThrow().targets()).containsExactly("C");
+        assertThat(board.ball("B")).as("the design keeps its ball").isPresent();
+    }
+
+    @Test
     void eachCollisionIsADotAndTheFirstTriggerNamesWhatItDrives() {
         Board board = new Board();
         board.setFriction(0, 0);

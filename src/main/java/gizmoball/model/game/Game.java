@@ -1,5 +1,6 @@
 package gizmoball.model.game;
 
+import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.loop.PlayEvent;
 import gizmoball.model.loop.TriggerSource;
 import java.util.ArrayList;
@@ -72,6 +73,14 @@ public final class Game implements GameProgress {
                 scored(tick, rules, gizmo.gizmo(), rules.pointsOf(gizmo.gizmo(), hit.kind()));
             } else if (event instanceof PlayEvent.Captured captured && rules.isDrain(captured.absorber()) && !over) {
                 drained(tick, captured);
+            } else if (event instanceof PlayEvent.Sunk sunk && rules.isGame() && !over) {
+                // Gone from the board already: lost as a drained ball is; the next, if any, waits in a drain.
+                scored(tick, rules, sunk.sink(), rules.pointsOf(sunk.sink(), GizmoKind.SINK));
+                drains.add(new Drain(tick, sunk.ball(), sunk.sink()));
+                if (toCome > 0 && field.serveNextBall()) {
+                    toCome--;
+                }
+                over = field.ballCount() == 0;
             }
         }
     }

@@ -10,4 +10,10 @@ public interface Playfield {
 
     /** Takes a ball a drain captured off the board: the game has no ball to give in its place. */
     void removeBall(String ball);
+
+    /**
+     * A sink took the ball in play and balls are still to come: the next one is put where a drained ball would
+     * wait, held in the first drain that can hold it (an absorber). False if the board has none.
+     */
+    boolean serveNextBall();
 }

@@ -10,13 +10,18 @@ public final class Points {
     private Points() {
     }
 
-    /** The bumpers score, the more the harder they are to hit; flippers and absorbers, like the walls, score nothing. */
+    /**
+     * The bumpers score, the more the harder they are to hit (an accelerator a little: it is easy to hit again);
+     * flippers, absorbers and sinks, like the walls, score nothing unless the board says (a sink scores when it
+     * takes a ball).
+     */
     public static int defaultFor(GizmoKind kind) {
         return switch (kind) {
             case SQUARE -> 10;
             case TRIANGLE -> 25;
             case CIRCLE -> 50;
-            case LEFT_FLIPPER, RIGHT_FLIPPER, ABSORBER -> 0;
+            case ACCELERATOR -> 20;
+            case LEFT_FLIPPER, RIGHT_FLIPPER, ABSORBER, SINK, SPAWNER, GATE -> 0;
         };
     }
 }

@@ -13,10 +13,16 @@ public enum Action {
     RAISE,
     /** A flipper swings back to rest. */
     LOWER,
-    /** A flipper swings to the stop it is not swinging to. */
+    /** A flipper swings to the stop it is not swinging to; a gate opens if closed, closes if open. */
     TOGGLE,
     /** An absorber fires its longest-held ball. */
     FIRE,
+    /** A gate lets balls through. */
+    OPEN,
+    /** A gate becomes solid, as soon as no ball is in its cell. */
+    CLOSE,
+    /** A spawner adds a ball at its mouth. */
+    SPAWN,
     /** Lights up and does nothing else. */
     FLASH;
 

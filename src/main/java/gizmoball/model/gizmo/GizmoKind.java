@@ -8,7 +8,7 @@ import java.util.Locale;
  * that plays each and the name the player sees.
  */
 public enum GizmoKind {
-    SQUARE(1), CIRCLE(1), TRIANGLE(1), LEFT_FLIPPER(2), RIGHT_FLIPPER(2), ABSORBER(1);
+    SQUARE(1), CIRCLE(1), TRIANGLE(1), LEFT_FLIPPER(2), RIGHT_FLIPPER(2), ABSORBER(1), SINK(1), ACCELERATOR(1), SPAWNER(1), GATE(1);
 
     private final int side;
 
@@ -30,8 +30,8 @@ public enum GizmoKind {
      */
     public boolean rotates() {
         return switch (this) {
-            case SQUARE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER -> true;
-            case CIRCLE, ABSORBER -> false;
+            case SQUARE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SPAWNER -> true;
+            case CIRCLE, ABSORBER, SINK, ACCELERATOR, GATE -> false;
         };
     }
 
@@ -41,9 +41,11 @@ public enum GizmoKind {
      */
     public List<Action> actions() {
         return switch (this) {
-            case SQUARE, CIRCLE, TRIANGLE -> List.of(Action.FLASH);
+            case SQUARE, CIRCLE, TRIANGLE, SINK, ACCELERATOR -> List.of(Action.FLASH);
             case LEFT_FLIPPER, RIGHT_FLIPPER -> List.of(Action.TOGGLE, Action.RAISE, Action.LOWER, Action.FLASH);
             case ABSORBER -> List.of(Action.FIRE, Action.FLASH);
+            case SPAWNER -> List.of(Action.SPAWN, Action.FLASH);
+            case GATE -> List.of(Action.TOGGLE, Action.OPEN, Action.CLOSE, Action.FLASH);
         };
     }
 
@@ -52,19 +54,24 @@ public enum GizmoKind {
         return actions().get(0);
     }
 
-    /** What a key bound to its press makes it do unless the binding says: a flipper rises, others do their default. */
+    /**
+     * What a key bound to its press makes it do unless the binding says: a flipper rises, a gate opens (so that a held
+     * key holds either), others do their default.
+     */
     public Action pressAction() {
         return switch (this) {
             case LEFT_FLIPPER, RIGHT_FLIPPER -> Action.RAISE;
-            case SQUARE, CIRCLE, TRIANGLE, ABSORBER -> defaultAction();
+            case GATE -> Action.OPEN;
+            case SQUARE, CIRCLE, TRIANGLE, ABSORBER, SINK, ACCELERATOR, SPAWNER -> defaultAction();
         };
     }
 
-    /** What a key bound to its release makes it do unless the binding says: a flipper falls, others do their default. */
+    /** What a key bound to its release makes it do unless the binding says: a flipper falls, a gate closes, others their default. */
     public Action releaseAction() {
         return switch (this) {
             case LEFT_FLIPPER, RIGHT_FLIPPER -> Action.LOWER;
-            case SQUARE, CIRCLE, TRIANGLE, ABSORBER -> defaultAction();
+            case GATE -> Action.CLOSE;
+            case SQUARE, CIRCLE, TRIANGLE, ABSORBER, SINK, ACCELERATOR, SPAWNER -> defaultAction();
         };
     }
 
@@ -75,7 +82,7 @@ public enum GizmoKind {
     public boolean canDrain() {
         return switch (this) {
             case ABSORBER -> true;
-            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER -> false;
+            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER, GATE -> false;
         };
     }
 
@@ -100,6 +107,10 @@ public enum GizmoKind {
             case SQUARE, CIRCLE, TRIANGLE -> new Bumper(this, name, x, y);
             case LEFT_FLIPPER, RIGHT_FLIPPER -> new Flipper(this, name, x, y);
             case ABSORBER -> throw new IllegalArgumentException("an absorber is made from its corners, not a cell");
+            case SINK -> new Sink(name, x, y);
+            case ACCELERATOR -> new Accelerator(name, x, y);
+            case SPAWNER -> new Spawner(name, x, y);
+            case GATE -> new Gate(name, x, y);
         };
     }
 }

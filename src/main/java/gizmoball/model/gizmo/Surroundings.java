@@ -11,6 +11,15 @@ public interface Surroundings {
     void fire(Absorber absorber);
 
     /**
+     * The gate was told to be open ({@code open}) or closed: it closes only over a clear cell, else waits open until
+     * the cell is clear.
+     */
+    void switchGate(Gate gate, boolean open);
+
+    /** The spawner was told to spawn: a ball at its mouth, if it is free and the board has room for one more. */
+    void spawn(Spawner spawner);
+
+    /**
      * The flipper was driven ({@code wasMoving}: whether it was swinging before): one that starts to swing wakes
      * the balls in its box, where all of its sweep lies.
      */

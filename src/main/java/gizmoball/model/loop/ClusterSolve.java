@@ -4,6 +4,7 @@ import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.MovingShape;
+import gizmoball.model.gizmo.Sink;
 
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
@@ -38,7 +39,7 @@ final class ClusterSolve {
     ContactCluster toSolve(Collision collision) {
         Contact contact = collision.contact();
         if (step.view.loopMode() != LoopMode.CONTINUOUS || contact instanceof Contact.Face face
-                && face.gizmo() instanceof Absorber) {
+                && (face.gizmo() instanceof Absorber || face.gizmo() instanceof Sink)) {
             return null;
         }
         Ball ball = collision.ball();

@@ -4,6 +4,7 @@ import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Shape;
+import gizmoball.model.gizmo.Sink;
 
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
@@ -149,8 +150,8 @@ final class ContactCluster {
         }
         double reach = Arena.BALL_RADIUS + touching;
         for (GizmoBase gizmo : view.index().within(p.x() - reach, p.y() - reach, p.x() + reach, p.y() + reach)) {
-            if (gizmo instanceof Absorber) {
-                continue;   // what touches an absorber is captured by it, not held
+            if (gizmo instanceof Absorber || gizmo instanceof Sink) {
+                continue;   // what touches an absorber or a sink is taken by it, not held
             }
             Shape shape = gizmo.shape();
             if (gizmo instanceof MovingShape moving && moving.isMoving()) {

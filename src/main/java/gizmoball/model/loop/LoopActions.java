@@ -4,6 +4,7 @@ import java.util.List;
 
 import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.Sink;
 import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.MovingShape;
 
@@ -23,6 +24,9 @@ public interface LoopActions {
 
     /** The absorber holds the ball. */
     void capture(Ball ball, Absorber absorber);
+
+    /** The sink takes the ball out of play: it stops at once and leaves the board when the tick is over. */
+    void sink(Ball ball, Sink sink);
 
     /** Wakes every ball where the moving shape's sweep can reach, and what rests on them. */
     void wakeSweep(MovingShape moving);

@@ -29,6 +29,17 @@ public sealed interface PlayEvent {
     record Captured(String absorber, String ball, Vect at) implements PlayEvent {
     }
 
+    /**
+     * A sink took {@code ball} out of play, its centre at {@code at} when it touched the sink; the board removes it
+     * once the tick is over.
+     */
+    record Sunk(String sink, String ball, Vect at) implements PlayEvent {
+    }
+
+    /** A spawner added the ball {@code ball} at its mouth. */
+    record Spawned(String spawner, String ball) implements PlayEvent {
+    }
+
     /** An absorber fired a ball. */
     record Fired(String absorber) implements PlayEvent {
     }

@@ -1,7 +1,9 @@
 package gizmoball.model.loop;
 
 import gizmoball.model.gizmo.Absorber;
+import gizmoball.model.gizmo.Accelerator;
 import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.Sink;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -12,7 +14,8 @@ import physics.Vect;
  * Stage 4 for a ball meeting a surface that does not move: an outer wall or a part of a still gizmo (docs/design.md,
  * "Resting and rolling contact"). The ball bounces with the surface's coefficient, comes to rest on it when it
  * approaches more slowly than the gravity pressing it in would explain, is wedged where a bounce would only go back
- * and forth among its contacts, or is captured by an absorber.
+ * and forth among its contacts, is captured by an absorber, is taken out of play by a sink, or leaves an accelerator
+ * faster.
  */
 final class StillSurfaces {
     private final StepContext step;
@@ -30,6 +33,11 @@ final class StillSurfaces {
         if (gizmo instanceof Absorber absorber) {
             step.actions.recordEvent(new PlayEvent.Captured(absorber.name(), ball.name(), ball.position()));
             step.actions.capture(ball, absorber);
+            step.energy.lost(ball);
+            step.sceneChanged();
+        } else if (gizmo instanceof Sink sink) {
+            step.actions.recordEvent(new PlayEvent.Sunk(sink.name(), ball.name(), ball.position()));
+            step.actions.sink(ball, sink);
             step.energy.lost(ball);
             step.sceneChanged();
         } else if (bounceOff(ball, surface, surface.normal(ball.position()))) {
@@ -56,6 +64,11 @@ final class StillSurfaces {
             GizmoBase gizmo = surface.gizmo();
             step.actions.recordEvent(new PlayEvent.Hit(surface.struck(), gizmo == null ? null : gizmo.kind(),
                     approach, ball.name(), ball.position()));
+        }
+        if (surface.gizmo() instanceof Accelerator accelerator) {
+            ball.setVelocity(accelerator.boost(bounced, Arena.MAX_SPEED));
+            step.energy.lost(ball);   // it gained energy: the shadow energy leaves it alone
+            return true;
         }
         ball.setVelocity(bounced);
         step.energy.bounced(ball, normal, coefficient == 1.0);

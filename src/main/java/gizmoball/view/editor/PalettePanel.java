@@ -68,6 +68,8 @@ public final class PalettePanel extends JPanel {
 
     /** The tool's name, then its shortcut key greyed, so the keys are learnt by looking at the palette. */
     private static String label(Tool tool) {
-        return "<html>" + tool.label() + " <font color=gray>" + KeyCodes.name(tool.shortcut()) + "</font></html>";
+        // nobr: a label laid out once at a narrower width (the compact palette) must not keep two lines' height.
+        return "<html><nobr>" + tool.label() + " <font color=gray>" + KeyCodes.name(tool.shortcut())
+                + "</font></nobr></html>";
     }
 }

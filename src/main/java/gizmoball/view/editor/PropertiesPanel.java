@@ -9,8 +9,10 @@ import gizmoball.model.BoardChange;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.game.GameRules;
 import gizmoball.model.game.Points;
+import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.Rgb;
+import gizmoball.model.gizmo.SpawnerView;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import gizmoball.model.loop.TriggerSource;
@@ -84,6 +86,7 @@ public final class PropertiesPanel extends JPanel {
     private final JTextField extraBall = new JTextField(7);
     private final NumberField points = new NumberField("gizmo.points");
     private final JCheckBox drain = new JCheckBox("Drain: its balls are lost");
+    private final NumberField factor = new NumberField("gizmo.factor");
     private final JLabel selection = new JLabel();
     private final JTextField name = new JTextField(7);
     private final NumberField cellX = new NumberField("gizmo.x");
@@ -172,7 +175,14 @@ public final class PropertiesPanel extends JPanel {
                 f.setText("");
             }
         }
-        applyBall.setEnabled(ball.isPresent());
+        Optional<SpawnerView> spawner = gizmo.filter(g -> g instanceof SpawnerView).map(g -> (SpawnerView) g);
+        applyBall.setEnabled(ball.isPresent() || spawner.isPresent());
+        spawner.ifPresent(sp -> {
+            ballVx.setEnabled(true);
+            ballVy.setEnabled(true);
+            ballVx.show(sp.velocity().x());
+            ballVy.show(sp.velocity().y());
+        });
         enableAll(nameRows, gizmo.isPresent() || ball.isPresent());
         name.setText(gizmo.map(Gizmo::name).or(() -> ball.map(BallView::name)).orElse(""));
         RefusedValue.unmark(name);
@@ -190,6 +200,12 @@ public final class PropertiesPanel extends JPanel {
         points.setText(gizmo.map(g -> Integer.toString(board.gameRules().pointsOf(g.name(), g.kind()))).orElse(""));
         RefusedValue.unmark(points);
         drain.setEnabled(gizmo.filter(g -> g.kind().canDrain()).isPresent());
+        Optional<AcceleratorView> accelerator = gizmo.filter(g -> g instanceof AcceleratorView)
+                .map(g -> (AcceleratorView) g);
+        factor.setEnabled(accelerator.isPresent());
+        factor.setText("");
+        accelerator.ifPresent(a -> factor.show(a.factor()));
+        RefusedValue.unmark(factor);
         drain.setSelected(gizmo.filter(g -> board.gameRules().isDrain(g.name())).isPresent());
         gizmo.ifPresent(g -> {
             colour.setText(g.colour().map(Editor::hex).orElse(""));
@@ -271,7 +287,18 @@ public final class PropertiesPanel extends JPanel {
         points.addActionListener(e -> applyPoints());
         restoreOnEscape(points);
         JPanel pointsRow = new JPanel(new GridBagLayout());
-        row(pointsRow, 0, "Points", points);
+        factor.setToolTipText("An accelerator: how many times faster a ball leaves it, 1 to 5");
+        factor.setColumns(3);
+        factor.addActionListener(e -> applyFactor());
+        restoreOnEscape(factor);
+        // One row for both, so that the panel is no taller for the accelerator's own value.
+        JPanel pointsAndFactor = new JPanel(new BorderLayout(4, 0));
+        JPanel factorPart = new JPanel(new BorderLayout(4, 0));
+        factorPart.add(new JLabel("x"), BorderLayout.WEST);
+        factorPart.add(factor, BorderLayout.CENTER);
+        pointsAndFactor.add(points, BorderLayout.CENTER);
+        pointsAndFactor.add(factorPart, BorderLayout.EAST);
+        row(pointsRow, 0, "Points", pointsAndFactor);
         p.add(pointsRow, wide(constraints(0, 3)));
         drain.setName("gizmo.drain");
         drain.setToolTipText("A ball this absorber captures is lost to the game; the next one waits in it");
@@ -483,6 +510,20 @@ public final class PropertiesPanel extends JPanel {
         }
     }
 
+    private void applyFactor() {
+        Optional<Gizmo> gizmo = controller.selectedGizmo();
+        Optional<double[]> v = values(factor);
+        if (gizmo.isEmpty() || v.isEmpty()) {
+            return;
+        }
+        String typed = factor.getText();
+        if (controller.setFactor(gizmo.get().name(), v.get()[0])) {
+            focusBoard.run();
+        } else {
+            keepRefused(Map.of(factor, typed));
+        }
+    }
+
     private void applyPoints() {
         Optional<Gizmo> gizmo = controller.selectedGizmo();
         Optional<double[]> v = values(points);
@@ -510,6 +551,12 @@ public final class PropertiesPanel extends JPanel {
     }
 
     private void applyBall() {
+        Optional<SpawnerView> spawner = controller.selectedGizmo().filter(g -> g instanceof SpawnerView)
+                .map(g -> (SpawnerView) g);
+        if (spawner.isPresent()) {
+            applySpawnVelocity(spawner.get());
+            return;
+        }
         Optional<BallView> ball = controller.selectedBall();
         NumberField[] fields = {ballX, ballY, ballVx, ballVy};
         Optional<double[]> v = values(fields);
@@ -520,6 +567,21 @@ public final class PropertiesPanel extends JPanel {
         Map<JTextField, String> typed = changed(fields,
                 new double[] {b.position().x(), b.position().y(), b.velocity().x(), b.velocity().y()});
         if (controller.setBall(b.name(), v.get()[0], v.get()[1], v.get()[2], v.get()[3])) {
+            focusBoard.run();
+        } else {
+            keepRefused(typed);
+        }
+    }
+
+    /** A spawner's balls' velocity, in the ball's vx and vy fields (its balls are what they describe). */
+    private void applySpawnVelocity(SpawnerView spawner) {
+        NumberField[] fields = {ballVx, ballVy};
+        Optional<double[]> v = values(fields);
+        if (v.isEmpty()) {
+            return;
+        }
+        Map<JTextField, String> typed = changed(fields, new double[] {spawner.velocity().x(), spawner.velocity().y()});
+        if (controller.setSpawnVelocity(spawner.name(), v.get()[0], v.get()[1])) {
             focusBoard.run();
         } else {
             keepRefused(typed);

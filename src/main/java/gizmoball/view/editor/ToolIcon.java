@@ -65,7 +65,8 @@ public final class ToolIcon implements Icon {
         double m = MARGIN;
         double s = SIZE - 2 * m;
         return switch (tool) {
-            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, ABSORBER -> kindSymbol(tool.kind().orElseThrow());
+            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, ABSORBER, SINK, ACCELERATOR, SPAWNER, GATE ->
+                    kindSymbol(tool.kind().orElseThrow());
             case BALL -> g -> {
                 fill(g, EditorColors.BALL, new Ellipse2D.Double(6, 12, 10, 10));
                 arrow(g, EditorColors.ICON_INK, 14, 14, 23, 5);
@@ -106,6 +107,34 @@ public final class ToolIcon implements Icon {
             case LEFT_FLIPPER -> g -> flipper(g, m, m, s, true);
             case RIGHT_FLIPPER -> g -> flipper(g, m, m, s, false);
             case ABSORBER -> g -> fill(g, colour(kind), new Rectangle2D.Double(4, SIZE / 2.0, SIZE - 8, 8));
+            case SINK -> g -> {
+                fill(g, colour(kind), new Rectangle2D.Double(m, m, s, s));
+                g.setColor(BoardPainter.SINK_HOLE);
+                g.fill(new Ellipse2D.Double(m + s * 0.15, m + s * 0.15, s * 0.7, s * 0.7));
+            };
+            case SPAWNER -> g -> {
+                fill(g, colour(kind), new Rectangle2D.Double(m, m, s, s));
+                Path2D arrow = new Path2D.Double();
+                arrow.moveTo(SIZE / 2.0, m + 2);
+                arrow.lineTo(m + 3, SIZE / 2.0 + 3);
+                arrow.lineTo(SIZE - m - 3, SIZE / 2.0 + 3);
+                arrow.closePath();
+                g.setColor(BoardPainter.SPAWNER_MARK);
+                g.fill(arrow);
+            };
+            case GATE -> g -> {
+                fill(g, colour(kind), new Rectangle2D.Double(m, m, s / 2 - 1, s));
+                g.setColor(colour(kind));
+                g.setStroke(new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10,
+                        new float[] {2.5f, 2f}, 0));
+                g.draw(new Rectangle2D.Double(m + s / 2 + 1, m, s / 2 - 1, s));
+            };
+            case ACCELERATOR -> g -> {
+                fill(g, colour(kind), new Ellipse2D.Double(m, m, s, s));
+                g.setColor(BoardPainter.ACCELERATOR_MARK);
+                g.setStroke(new BasicStroke(1.5f));
+                g.draw(new Ellipse2D.Double(m + s * 0.27, m + s * 0.27, s * 0.46, s * 0.46));
+            };
         };
     }
 

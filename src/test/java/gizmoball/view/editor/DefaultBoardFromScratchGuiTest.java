@@ -128,6 +128,10 @@ class DefaultBoardFromScratchGuiTest {
             case LEFT_FLIPPER -> Tool.LEFT_FLIPPER;
             case RIGHT_FLIPPER -> Tool.RIGHT_FLIPPER;
             case ABSORBER -> Tool.ABSORBER;
+            case SINK -> Tool.SINK;
+            case ACCELERATOR -> Tool.ACCELERATOR;
+            case SPAWNER -> Tool.SPAWNER;
+            case GATE -> Tool.GATE;
         };
         w.clickTool(tool);
         w.dragCells(g.x(), g.y(), g.x() + g.width() - 1, g.y() + g.height() - 1);

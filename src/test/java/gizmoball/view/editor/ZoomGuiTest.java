@@ -1,5 +1,6 @@
 package gizmoball.view.editor;
 
+import static gizmoball.view.Gui.await;
 import static gizmoball.view.Gui.onEdt;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
@@ -29,6 +30,11 @@ class ZoomGuiTest {
     @BeforeEach
     void open() {
         w = BuildWindow.open();
+        // Tall enough for the whole palette: a side that scrolls at the default size may gain or lose its bar as
+        // the zoomed view relays the window out, and move the board under the pointer by half the bar's width.
+        onEdt(() -> w.window.setSize(1280, 1000));
+        await("the window to grow", () -> w.window.getHeight() >= 1000);
+        onEdt(() -> w.window.validate());
     }
 
     @AfterEach

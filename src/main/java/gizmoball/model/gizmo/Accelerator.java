@@ -1,0 +1,76 @@
+package gizmoball.model.gizmo;
+
+import physics.Circle;
+import physics.Vect;
+
+/**
+ * A round 1x1 bumper that sends every ball that really hits it away faster: the bounce is elastic, then the speed is
+ * multiplied by its factor, never beyond the board's speed limit (the loop applies both, {@link #boost}).
+ */
+public final class Accelerator extends GizmoBase implements AcceleratorView {
+    /** The factor of an accelerator the author has not given one. */
+    public static final double DEFAULT_FACTOR = 1.5;
+    /** The largest factor: a ball at 10 L/s leaves at the speed limit after two hits. */
+    public static final double MAX_FACTOR = 5;
+    static final double RADIUS = 0.5;
+    private double factor = DEFAULT_FACTOR;
+
+    Accelerator(String name, int x, int y) {
+        super(name, GizmoKind.ACCELERATOR, x, y);
+        rebuildShape();
+    }
+
+    private Accelerator(Accelerator other) {
+        super(other);
+        this.factor = other.factor;
+    }
+
+    @Override
+    public double reflectionCoefficient() {
+        return 1.0;
+    }
+
+    @Override
+    public double factor() {
+        return factor;
+    }
+
+    /**
+     * Sets the factor, 1 to {@link #MAX_FACTOR} (the board has checked it). For the board and its loop, not for views.
+     */
+    public void setFactor(double newFactor) {
+        factor = newFactor;
+    }
+
+    /**
+     * The velocity of a ball leaving it: {@code bounced} (the elastic bounce) times the factor, at most
+     * {@code maxSpeed} fast. For the board and its loop, not for views.
+     */
+    public Vect boost(Vect bounced, double maxSpeed) {
+        double speed = bounced.length();
+        if (speed == 0) {
+            return bounced;
+        }
+        return bounced.times(Math.min(factor, maxSpeed / speed));
+    }
+
+    @Override
+    public Circle circle() {
+        return new Circle(x() + 0.5, y() + 0.5, RADIUS);
+    }
+
+    @Override
+    Shape buildShape() {
+        return Shape.circle(circle());
+    }
+
+    @Override
+    public double signedDistance(Vect p) {
+        return Solids.toDisc(circle().getCenter(), RADIUS, p);
+    }
+
+    @Override
+    public Accelerator copy() {
+        return new Accelerator(this);
+    }
+}

@@ -1,0 +1,2 @@
+/** Stability tests: long runs of hard cases (corners, seams, piles, pinches, fast balls) with invariants every tick. */
+package gizmoball.stability;
