@@ -54,8 +54,23 @@ sealed interface Contact {
         }
     }
 
+    /** A still surface that is a segment: it reflects as a wall, about the normal from its line. */
+    sealed interface Flat extends StillSurface {
+        LineSegment segment();
+
+        @Override
+        default Vect normal(Vect centre) {
+            return fromLine(segment(), centre);
+        }
+
+        @Override
+        default Vect reflect(Vect centre, Vect velocity, double coefficient) {
+            return Geometry.reflectWall(segment(), velocity, coefficient);
+        }
+    }
+
     /** Outer wall {@code side} (0 top, 1 right, 2 bottom, 3 left). */
-    record OuterWall(int side, LineSegment segment) implements StillSurface {
+    record OuterWall(int side, LineSegment segment) implements Flat {
         @Override
         public GizmoBase gizmo() {
             return null;
@@ -65,33 +80,13 @@ sealed interface Contact {
         public ContactRef ref() {
             return new ContactRef.Wall(side);
         }
-
-        @Override
-        public Vect normal(Vect centre) {
-            return fromLine(segment, centre);
-        }
-
-        @Override
-        public Vect reflect(Vect centre, Vect velocity, double coefficient) {
-            return Geometry.reflectWall(segment, velocity, coefficient);
-        }
     }
 
     /** Segment {@code index} of a still gizmo's shape: a side of a polygon bumper, an absorber or a still flipper. */
-    record Face(GizmoBase gizmo, int index, LineSegment segment) implements StillSurface {
+    record Face(GizmoBase gizmo, int index, LineSegment segment) implements Flat {
         @Override
         public ContactRef ref() {
             return new ContactRef.Part(gizmo.name(), false, index);
-        }
-
-        @Override
-        public Vect normal(Vect centre) {
-            return fromLine(segment, centre);
-        }
-
-        @Override
-        public Vect reflect(Vect centre, Vect velocity, double coefficient) {
-            return Geometry.reflectWall(segment, velocity, coefficient);
         }
     }
 
