@@ -110,7 +110,7 @@ final class ContactCluster {
         cluster.balls.addAll(members);
         for (int i = 0; i < cluster.balls.size(); i++) {
             Ball ball = cluster.balls.get(i);
-            cluster.surfaces(view, i, ball);
+            cluster.surfaces(view, i, ball, motion);
             for (Ball other : view.balls()) {
                 if (other == ball || other.isCaptured() || view.passingThrough(ball, other)
                         || gap(ball.position(), other.position(), 2 * Arena.BALL_RADIUS) > cluster.touching) {
@@ -121,6 +121,9 @@ final class ContactCluster {
                     continue;   // its row was made from the other side
                 }
                 Vect normal = ball.position().minus(other.position()).unitSize();
+                if (grazes(normal, motion.apply(ball).minus(motion.apply(other)))) {
+                    continue;
+                }
                 if (j < 0 && cluster.balls.size() < MAX_BALLS && movable.test(other)) {
                     cluster.balls.add(other);
                     j = cluster.balls.size() - 1;
@@ -143,7 +146,7 @@ final class ContactCluster {
         return rows;
     }
 
-    private void surfaces(LoopView view, int index, Ball ball) {
+    private void surfaces(LoopView view, int index, Ball ball, Function<Ball, Vect> motion) {
         Vect p = ball.position();
         for (int side = 0; side < CollisionDetector.OUTER_WALLS.size(); side++) {
             still(index, p, CollisionDetector.OUTER_WALLS.get(side), new ContactRef.Wall(side), null);
@@ -163,9 +166,11 @@ final class ContactCluster {
             }
             for (int i = 0; i < shape.circles().size(); i++) {
                 Circle circle = shape.circles().get(i);
-                if (gap(p, circle.getCenter(), circle.getRadius() + Arena.BALL_RADIUS) <= touching) {
+                Vect normal = p.minus(circle.getCenter()).unitSize();
+                if (gap(p, circle.getCenter(), circle.getRadius() + Arena.BALL_RADIUS) <= touching
+                        && !grazes(normal, motion.apply(ball))) {
                     rows.add(new Row(index, new Other.Still(new ContactRef.Part(gizmo.name(), true, i), gizmo),
-                            p.minus(circle.getCenter()).unitSize(), 0, gizmo.reflectionCoefficient()));
+                            normal, 0, gizmo.reflectionCoefficient()));
                 }
             }
         }
@@ -210,6 +215,17 @@ final class ContactCluster {
                         moving.reflectionCoefficient()));
             }
         }
+    }
+
+    /**
+     * Whether a round contact (another ball, a circle) closes only as a graze: within {@link Tolerances#GRAZE_ANGLE}
+     * of tangent, as the detector sees it. Two balls sliding past each other in a gap that just fits them close so at
+     * the instant they pass; left alone they overlap by less than 1e-12 L, while a row for it would ask the cluster
+     * for impulses thousands of times their speed, past any velocity the walls above and below them allow.
+     */
+    private static boolean grazes(Vect normal, Vect relative) {
+        double closing = -relative.dot(normal);
+        return closing > 0 && closing <= Tolerances.GRAZE_ANGLE * relative.length();
     }
 
     private static double gap(Vect p, Vect q, double touch) {

@@ -47,6 +47,7 @@ final class StepContext {
     double elapsed;
     int collisions;
     int zeroTimeCollisions;
+    int simultaneousCollisions;
     long wedged;
     long pinched;
     long capped;
@@ -130,5 +131,31 @@ final class StepContext {
 
     GuardCounts guards() {
         return new GuardCounts(wedged, pinched, capped);
+    }
+
+    /**
+     * Whether the collision continues a chain: its ball, or the ball it meets, had a collision of its own at this
+     * very moment (within {@link LoopSettings#zeroTime()}). Balls apart that collide at the same instant are not a
+     * chain: each is the first of its own.
+     */
+    boolean chained(Collision collision) {
+        if (recentlyCollided(collision.ball())) {
+            return true;
+        }
+        return collision.contact() instanceof Contact.OtherBall other && recentlyCollided(other.other());
+    }
+
+    private boolean recentlyCollided(Ball ball) {
+        Double last = lastCollisionAt.get(ball);
+        return last != null && elapsed - last <= settings.zeroTime();
+    }
+
+    /** Counts a collision, found {@code after} seconds past the one before it, as chained, simultaneous or neither. */
+    void countTiming(boolean chained, double after) {
+        if (chained) {
+            zeroTimeCollisions++;
+        } else if (after <= settings.zeroTime()) {
+            simultaneousCollisions++;
+        }
     }
 }
