@@ -27,14 +27,16 @@ class Issue20ReproductionsTest {
     }
 
     /**
-     * Boards of our own fuzz ({@code gradle fuzz}, seeds 1000190 and 1000149) that once ran into the collision cap:
-     * a ball that met another and then, at the same instant, a sink's corner was solved as a cluster, whose rows skip
-     * what a sink takes, so nothing changed and it met the corner again 400 times; two balls passing each other in a
-     * slot that fits them exactly, without gravity, made a cluster row of their graze that no impulse within the
-     * speed limit could satisfy.
+     * Boards of our own fuzz ({@code gradle fuzz}) that once ran into the collision cap. Seed 1000190: a ball that met
+     * another and then, at the same instant, a sink's corner was solved as a cluster, whose rows skip what a sink
+     * takes, so nothing changed and it met the corner again 400 times. Seeds 1000149, 1000115 and 1000989: balls
+     * sliding past each other where they just fit (two in a slot 1 L wide, four in a 1x1 box), closing only as a
+     * graze, made cluster rows no impulse within the speed limit could satisfy, or the detector met again what the
+     * cluster let pass.
      */
     @ParameterizedTest(name = "{0}")
-    @ValueSource(strings = {"sink-corner-in-a-chain.txt", "passing-in-a-slot.txt"})
+    @ValueSource(strings = {"sink-corner-in-a-chain.txt", "passing-in-a-slot.txt", "sliding-past-in-a-slot.txt",
+            "four-in-a-box.txt"})
     void boardsTheFuzzFoundPlayCleanly(String file) throws Exception {
         assertPlaysCleanly("/fuzz-found/", file);
     }

@@ -121,7 +121,8 @@ final class ContactCluster {
                     continue;   // its row was made from the other side
                 }
                 Vect normal = ball.position().minus(other.position()).unitSize();
-                if (grazes(normal, motion.apply(ball).minus(motion.apply(other)))) {
+                if (CollisionDetector.grazes(ball.position().minus(other.position()), motion.apply(ball).minus(motion.apply(other)),
+                        2 * Arena.BALL_RADIUS)) {
                     continue;
                 }
                 if (j < 0 && cluster.balls.size() < MAX_BALLS && movable.test(other)) {
@@ -166,11 +167,11 @@ final class ContactCluster {
             }
             for (int i = 0; i < shape.circles().size(); i++) {
                 Circle circle = shape.circles().get(i);
-                Vect normal = p.minus(circle.getCenter()).unitSize();
-                if (gap(p, circle.getCenter(), circle.getRadius() + Arena.BALL_RADIUS) <= touching
-                        && !grazes(normal, motion.apply(ball))) {
+                double touch = circle.getRadius() + Arena.BALL_RADIUS;
+                if (gap(p, circle.getCenter(), touch) <= touching
+                        && !CollisionDetector.grazes(p.minus(circle.getCenter()), motion.apply(ball), touch)) {
                     rows.add(new Row(index, new Other.Still(new ContactRef.Part(gizmo.name(), true, i), gizmo),
-                            normal, 0, gizmo.reflectionCoefficient()));
+                            p.minus(circle.getCenter()).unitSize(), 0, gizmo.reflectionCoefficient()));
                 }
             }
         }
@@ -215,17 +216,6 @@ final class ContactCluster {
                         moving.reflectionCoefficient()));
             }
         }
-    }
-
-    /**
-     * Whether a round contact (another ball, a circle) closes only as a graze: within {@link Tolerances#GRAZE_ANGLE}
-     * of tangent, as the detector sees it. Two balls sliding past each other in a gap that just fits them close so at
-     * the instant they pass; left alone they overlap by less than 1e-12 L, while a row for it would ask the cluster
-     * for impulses thousands of times their speed, past any velocity the walls above and below them allow.
-     */
-    private static boolean grazes(Vect normal, Vect relative) {
-        double closing = -relative.dot(normal);
-        return closing > 0 && closing <= Tolerances.GRAZE_ANGLE * relative.length();
     }
 
     private static double gap(Vect p, Vect q, double touch) {
