@@ -13,6 +13,7 @@ import java.util.Comparator;
 import java.util.List;
 import java.util.Objects;
 import java.util.Optional;
+import gizmoball.model.gizmo.PortalView;
 
 /**
  * Everything a board file records about a board, as a value, so two boards can be compared with equals (Board
@@ -22,8 +23,9 @@ import java.util.Optional;
 public record BoardContents(List<GizmoState> gizmos, List<BallState> balls, List<Connection> connections,
                      List<KeyBinding> keyBindings, double gravity, double mu, double mu2, GameRules game) {
 
+    /** @param pair the portal a portal is paired with; empty for every other gizmo */
     public record GizmoState(String name, GizmoKind kind, int x, int y, int width, int height, int rotation,
-                      Optional<Rgb> colour) {
+                      Optional<Rgb> colour, Optional<String> pair) {
     }
 
     /** Doubles compared exactly (records use Double.compare semantics), so a lost bit shows. */
@@ -76,7 +78,8 @@ public record BoardContents(List<GizmoState> gizmos, List<BallState> balls, List
     }
 
     private static GizmoState state(Gizmo g) {
-        return new GizmoState(g.name(), g.kind(), g.x(), g.y(), g.width(), g.height(), g.rotation(), g.colour());
+        return new GizmoState(g.name(), g.kind(), g.x(), g.y(), g.width(), g.height(), g.rotation(), g.colour(),
+                g instanceof PortalView portal ? portal.pair() : Optional.empty());
     }
 
     private static BallState state(BallView b) {

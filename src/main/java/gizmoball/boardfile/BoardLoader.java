@@ -2,6 +2,8 @@ package gizmoball.boardfile;
 
 import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
+import gizmoball.model.gizmo.PortalView;
+import gizmoball.model.loop.TriggerSource;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashMap;
@@ -19,7 +21,8 @@ import java.util.Set;
  * <p>What other implementations write is read as they meant it, each with a note: a command naming a gizmo or
  * ball that a later line defines waits for that line and is applied right after it (some savers write the
  * connections before the gizmos); a ball whose name another ball already has gets a fresh name; balls placed on
- * each other are loaded (the loop lets them pass through each other until they separate).
+ * each other are loaded (the loop lets them pass through each other until they separate); a bare {@code Connect}
+ * between two portals (tomcurran's and d-g-n's way of linking them; ours is written {@code #@Connect}) pairs them.
  */
 final class BoardLoader {
 
@@ -120,6 +123,8 @@ final class BoardLoader {
             try {
                 if (line.command() instanceof Command.AddBall ball) {
                     addBall(line, ball);
+                } else if (peersLink(line) != null) {
+                    pairLinked(line, peersLink(line));
                 } else {
                     line.command().applyTo(board);
                 }
@@ -159,6 +164,40 @@ final class BoardLoader {
                 stillWaitedOn.addAll(names);
             }
             return Optional.empty();
+        }
+
+        /** A bare connection from a portal to a portal (another implementation's link), or null. */
+        private Command.Connect peersLink(ParsedFile.Line line) {
+            return line.command() instanceof Command.Connect c && !line.line().text().strip().startsWith(CommandWord.OURS)
+                    && c.source() instanceof TriggerSource.OfGizmo from && portal(from.gizmo()) != null
+                    && portal(c.target()) != null ? c : null;
+        }
+
+        private PortalView portal(String name) {
+            return board.gizmo(name).filter(PortalView.class::isInstance).map(PortalView.class::cast).orElse(null);
+        }
+
+        /**
+         * Pairs two portals a peer's connection links, where neither has a pair yet: a portal of this game has one,
+         * both ways, where the peers' links go one way and a portal may have several (refused, saying so).
+         */
+        private void pairLinked(ParsedFile.Line line, Command.Connect link) {
+            String from = ((TriggerSource.OfGizmo) link.source()).gizmo();
+            String to = link.target();
+            if (portal(from).pair().equals(Optional.of(to))) {
+                throw new BoardEditException(from + " and " + to + " are paired already");
+            }
+            for (String name : List.of(from, to)) {
+                Optional<String> pair = portal(name).pair();
+                if (pair.isPresent()) {
+                    throw new BoardEditException("portal " + name + " is paired with " + pair.get() + " already: a"
+                            + " portal of this game has one pair, a ball going through it both ways");
+                }
+            }
+            new Command.Pair(from, to).applyTo(board);
+            note(line, "'Connect' from a portal to a portal, another implementation's link, read as "
+                    + new Command.Pair(from, to).toLine() + ": a ball entering either leaves by the other (in the game"
+                    + " that wrote it, from " + from + " to " + to + ")");
         }
 
         /** A ball named like an earlier ball gets a fresh name; one placed on other balls is loaded with a note. */

@@ -8,6 +8,7 @@ import gizmoball.model.gizmo.Accelerator;
 import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.PortalView;
 import gizmoball.model.gizmo.SpawnerView;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
@@ -19,7 +20,7 @@ import physics.Vect;
 
 /**
  * The canonical form of a board: one command per line, gizmos (in the board's order), then rotations, the
- * colours of gizmos that have their own, the play state of flippers play has moved, balls, connections, key bindings,
+ * colours of gizmos that have their own, their own values (factors, spawn velocities, portals' pairs), the play state of flippers play has moved, balls, connections, key bindings,
  * gravity and friction, then the game: balls per game, the extra-ball score, the drains and the gizmos' own points
  * (each only where the board has it, so a board without them is written as the standard format has it). Reading it
  * back gives an equal board.
@@ -53,6 +54,13 @@ final class BoardWriter {
             }
             if (gizmo instanceof SpawnerView spawner && !spawner.velocity().equals(Vect.ZERO)) {
                 commands.add(new Command.SpawnVelocity(gizmo.name(), spawner.velocity().x(), spawner.velocity().y()));
+            }
+        }
+        List<String> paired = new ArrayList<>();
+        for (Gizmo gizmo : board.gizmos()) {
+            if (gizmo instanceof PortalView portal && portal.pair().isPresent() && !paired.contains(gizmo.name())) {
+                commands.add(new Command.Pair(gizmo.name(), portal.pair().get()));   // once, from the first of the two
+                paired.add(portal.pair().get());
             }
         }
         for (Gizmo gizmo : board.gizmos()) {

@@ -279,6 +279,21 @@ public sealed interface Command {
         }
     }
 
+    /** {@code #@Pair <portal> <portal>}: a ball entering either portal's mouth leaves by the other's. */
+    record Pair(String first, String second) implements Command {
+        public void applyTo(Board board) {
+            board.pair(first, second);
+        }
+
+        public String toLine() {
+            return CommandWord.PAIR.written() + " " + first + " " + second;
+        }
+
+        public List<String> references() {
+            return List.of(first, second);
+        }
+    }
+
     /** {@code #@SpawnVelocity <name> <vx> <vy>}: the velocity of the balls the spawner adds. */
     record SpawnVelocity(String name, double vx, double vy) implements Command {
         public void applyTo(Board board) {

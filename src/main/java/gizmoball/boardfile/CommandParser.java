@@ -35,15 +35,24 @@ final class CommandParser {
      * The first words that other implementations' files really use for commands of their own (the peer boards'
      * extensions: gizmos, connections of the mouse, settings); any other unknown word is simply unknown.
      */
-    private static final Set<String> PEER_EXTENSIONS = Set.of("booster",
-            "teleporter", "portal", "rhombus", "octagon", "multiball", "gate", "spinner", "deathsquare",
+    private static final Set<String> PEER_EXTENSIONS = Set.of("booster", "rhombus", "octagon", "multiball", "gate", "spinner", "deathsquare",
             "outerwall", "mouseconnect", "timeperupdate");
+    /** How a peer's portal or teleporter is read (the pair comes from a Connect or TeleporterConnect line). */
+    private static final String PORTAL_MEANING = "a portal whose mouth faces up (turned by Rotate); a ball entering"
+            + " it leaves by the portal a Connect or TeleporterConnect line links it to, as in the game that wrote it";
+
     /**
      * Other implementations' gizmos that are ours as well, written bare with name, x and y, and how each is read
      * (their code's behaviour: lheckemann's and d-g-n's sinks remove the ball; tomcurran's accelerator speeds it up
-     * 1.4 times a hit, d-g-n's booster 2 times).
+     * 1.4 times a hit, d-g-n's booster 2 times; tomcurran's portals, d-g-n's and bartoszl's teleporters send a ball on
+     * to the one they are connected to, bartoszl's turned as we turn it). A bare {@code Connect} between two portals is
+     * such a link too: the loader reads it as {@code #@Pair} (ours would be written {@code #@Connect}).
      */
     private static final Map<String, PeerGizmo> PEER_GIZMOS = Map.of(
+            "portal", new PeerGizmo(CommandWord.PORTAL, PORTAL_MEANING),
+            "teleporter", new PeerGizmo(CommandWord.PORTAL, PORTAL_MEANING),
+            "teleporterconnect", new PeerGizmo(CommandWord.PAIR, "a ball entering either teleporter leaves by the"
+                    + " other, turned by their rotations, as in the game that wrote it"),
             "sink", new PeerGizmo(CommandWord.SINK, "a ball that touches it leaves the board, as in the game that"
                     + " wrote it"),
             "accelerator", new PeerGizmo(CommandWord.ACCELERATOR, "a round bumper that speeds the ball up "
@@ -111,6 +120,12 @@ final class CommandParser {
                     + peer.meaning());
             return new Parsed(parse(peer.word(), words.subList(1, words.size()), notes), notes);
         }
+        if (peer != null) {
+            throw peerArguments(words, peer.word());
+        }
+        if (!markedOurs && PEER_EXTENSIONS.contains(first)) {
+            throw unknownCommand(words);   // another's extension, though one of ours has its name (tomcurran's Gate)
+        }
         CommandWord word = CommandWord.lookup(words.get(0)).orElseThrow(() -> unknownCommand(words));
         if (word.ours() && !markedOurs) {
             throw new Refusal(word.spelling() + " is an addition of this game to the format: it is written "
@@ -173,7 +188,7 @@ final class CommandParser {
         }
         return switch (word) {
             case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER, GATE,
-                    DROP_TARGET ->
+                    DROP_TARGET, PORTAL ->
                     new Command.AddGizmo(word.kind(),
                     args.get(0), cell("x", args.get(1)), cell("y", args.get(2)));
             case ABSORBER -> absorber(args, notes);
@@ -187,6 +202,7 @@ final class CommandParser {
             case FLIPPER_STATE -> new Command.FlipperState(args.get(0), number("angle", args.get(1)),
                     direction(args.get(2)));
             case FACTOR -> new Command.Factor(args.get(0), number("factor", args.get(1)));
+            case PAIR -> new Command.Pair(args.get(0), args.get(1));
             case SPAWN_VELOCITY -> new Command.SpawnVelocity(args.get(0), number("vx", args.get(1)),
                     number("vy", args.get(2)));
             case GRAVITY -> new Command.Gravity(number("gravity", args.get(0)));
@@ -326,6 +342,18 @@ final class CommandParser {
         if (form != null) {
             throw mit3d(form);
         }
+    }
+
+    /** A peer's gizmo line with other arguments than ours takes: a portal with its exit's cell is named as such. */
+    private static Refusal peerArguments(List<String> words, CommandWord word) {
+        int found = words.size() - 1;
+        String why = word == CommandWord.PORTAL && found == 5 && allNumbers(words.subList(2, 6))
+                ? ": a portal and the cell of its exit on one line, another implementation's form whose exit has no name;"
+                        + " this game's portals are two gizmos, each #@Portal <name> <x> <y>, joined by #@Pair"
+                : "";
+        return new Refusal("wrong number of arguments: '" + words.get(0) + "' of another implementation is read as "
+                + word.written() + ", which takes " + word.argumentCount() + " (" + word.usage() + "), found " + found
+                + why);
     }
 
     private static Refusal mit3d(String form) {

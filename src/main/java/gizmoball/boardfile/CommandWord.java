@@ -31,6 +31,10 @@ enum CommandWord {
     GATE("Gate", "<name> <x> <y>", true),
     /** Extension gizmo: solid until hit, then down until a trigger raises it. */
     DROP_TARGET("DropTarget", "<name> <x> <y>", true),
+    /** Extension gizmo: a ball entering its mouth leaves by its pair's. */
+    PORTAL("Portal", "<name> <x> <y>", true),
+    /** Two portals paired with each other. */
+    PAIR("Pair", "<portal> <portal>", true),
     /** A spawner's velocity for its balls, where it is not zero. */
     SPAWN_VELOCITY("SpawnVelocity", "<name> <vx> <vy>", true),
     BALL("Ball", "<name> <x> <y> <vx> <vy>"),
@@ -101,6 +105,7 @@ enum CommandWord {
             case SPAWNER -> SPAWNER;
             case GATE -> GATE;
             case DROP_TARGET -> DROP_TARGET;
+            case PORTAL -> PORTAL;
         };
     }
 

@@ -12,6 +12,7 @@ import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Order;
+import gizmoball.model.gizmo.PortalView;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.gizmo.SpawnerView;
 import gizmoball.model.loop.BallView;
@@ -394,6 +395,19 @@ public final class Editor {
         }
         return edit(spawner + " spawns balls at (" + Decimals.format(vx) + ", " + Decimals.format(vy) + ") L/s",
                 b -> b.setSpawnVelocity(spawner, vx, vy));
+    }
+
+    /**
+     * Pairs the portal with the portal named {@code other}, or with an empty name leaves it without a pair (one undo
+     * step; the same pair again is no edit).
+     */
+    public boolean setPair(String portal, String other) {
+        Optional<String> now = board.gizmo(portal).filter(g -> g instanceof PortalView).flatMap(g -> ((PortalView) g).pair());
+        if (now.orElse("").equals(other)) {
+            return true;
+        }
+        return other.isEmpty() ? edit(portal + " has no pair: a wall", b -> b.unpair(portal))
+                : edit(portal + " and " + other + " are a pair of portals", b -> b.pair(portal, other));
     }
 
     /** Makes an absorber a drain of the game or an ordinary absorber (one undo step). */
@@ -927,7 +941,7 @@ public final class Editor {
     private ToolHandler newHandler(Tool t) {
         return switch (t) {
             case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER, GATE,
-                    DROP_TARGET ->
+                    DROP_TARGET, PORTAL ->
                     new PlaceGizmoTool(this, t.kind().orElseThrow());
             case ABSORBER -> new PlaceAbsorberTool(this);
             case BALL -> new PlaceBallTool(this);

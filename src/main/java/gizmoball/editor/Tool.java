@@ -23,6 +23,8 @@ public enum Tool {
     GATE(KeyEvent.VK_G, GizmoKind.GATE, "click a cell to place a gate: solid, or open while triggers say"),
     DROP_TARGET(KeyEvent.VK_J, GizmoKind.DROP_TARGET,
             "click a cell to place a drop target: solid until a ball hits it, then down until a trigger raises it"),
+    PORTAL(KeyEvent.VK_P, GizmoKind.PORTAL, "click a cell to place a portal: a ball entering its mouth (turn it to aim"
+            + " the mouth) leaves by its pair's, named in the properties (Pair)"),
     BALL("Ball", KeyEvent.VK_B, null, "click to place a ball; drag before releasing to give it a velocity"),
     SELECT("Select / Move", KeyEvent.VK_M, null, "click to select (Shift+click adds), drag from empty space to select many, drag what is selected"
             + " to move it, drag an absorber's handle to resize it"),

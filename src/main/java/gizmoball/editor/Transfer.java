@@ -7,6 +7,7 @@ import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.PortalView;
 import gizmoball.model.gizmo.SpawnerView;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.loop.BallView;
@@ -106,7 +107,7 @@ final class Transfer {
 
     /**
      * Gives the gizmo or ball {@code name} the name {@code newName}, with everything that names it following:
-     * connections, key bindings, colour, rotation, points and drain.
+     * connections, key bindings, its portal's pair, colour, rotation, points and drain.
      */
     static void rename(Board board, String name, String newName) {
         if (newName.isEmpty() || newName.chars().anyMatch(Character::isWhitespace)) {
@@ -154,8 +155,14 @@ final class Transfer {
         }
     }
 
-    /** The connections and key bindings of {@code from} among the names {@code renamed} knows, renamed. */
+    /** The connections, key bindings and pairs of portals of {@code from} among the names {@code renamed} knows, renamed. */
     private static void link(Board to, Board from, Map<String, String> renamed) {
+        for (Gizmo g : from.gizmos()) {
+            if (g instanceof PortalView portal && renamed.containsKey(g.name())
+                    && portal.pair().filter(renamed::containsKey).isPresent()) {
+                to.pair(renamed.get(g.name()), renamed.get(portal.pair().get()));
+            }
+        }
         for (Connection c : from.connections()) {
             if (c.source() instanceof TriggerSource.OfGizmo s && renamed.containsKey(s.gizmo())
                     && renamed.containsKey(c.target())) {
@@ -169,8 +176,10 @@ final class Transfer {
         }
     }
 
-    /** After a rename: every connection and binding that named the gizmo, walls' connections included. */
+    /** After a rename: every connection, binding and pair that named the gizmo, walls' connections included. */
     private static void relink(Board to, Board from, String name, Map<String, String> renamed) {
+        from.gizmo(name).filter(PortalView.class::isInstance).flatMap(g -> ((PortalView) g).pair())
+                .ifPresent(other -> to.pair(renamed.get(name), other));
         for (Connection c : from.connections()) {
             boolean fromIt = c.source() instanceof TriggerSource.OfGizmo s && s.gizmo().equals(name);
             if (fromIt || c.target().equals(name)) {

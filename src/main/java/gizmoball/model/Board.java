@@ -276,6 +276,21 @@ public final class Board {
         edited();
     }
 
+    /**
+     * Pairs two portals: a ball entering either's mouth leaves by the other's. Each leaves the pair it had, whose
+     * other portal is left without one (a wall).
+     */
+    public void pair(String portal, String other) {
+        edits.pair(portal, other);
+        edited();
+    }
+
+    /** The portal and its pair are left without one: walls both. */
+    public void unpair(String portal) {
+        edits.unpair(portal);
+        edited();
+    }
+
     public void setGravity(double g) {
         if (!Double.isFinite(g)) {
             throw new BoardEditException("gravity must be a finite number, got " + g);

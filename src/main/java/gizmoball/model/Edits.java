@@ -6,6 +6,7 @@ import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.gizmo.Accelerator;
+import gizmoball.model.gizmo.Portal;
 import gizmoball.model.gizmo.Spawner;
 import gizmoball.model.loop.Ball;
 
@@ -123,6 +124,9 @@ final class Edits {
         GizmoBase gizmo = registry.gizmo(name);
         Ball ball = registry.ball(name);
         if (gizmo != null) {
+            if (gizmo instanceof Portal portal) {
+                unpair(portal);
+            }
             registry.remove(gizmo);
             wiring.forget(name);
         } else if (ball != null) {
@@ -296,6 +300,40 @@ final class Edits {
                     + " L/s fast, not (" + vx + ", " + vy + ")");
         }
         spawner.setVelocity(velocity);
+    }
+
+    /**
+     * Pairs two portals with each other, each leaving the pair it had (a portal has one pair; its old partner is left
+     * without).
+     */
+    void pair(String first, String second) {
+        Portal a = requirePortal(first);
+        Portal b = requirePortal(second);
+        if (a == b) {
+            throw new BoardEditException("a portal cannot be paired with itself: " + first);
+        }
+        unpair(a);
+        unpair(b);
+        a.setPair(Optional.of(second));
+        b.setPair(Optional.of(first));
+    }
+
+    /** The portal and its pair, if it has one, are left without. */
+    void unpair(String portal) {
+        unpair(requirePortal(portal));
+    }
+
+    private void unpair(Portal portal) {
+        portal.pair().map(registry::gizmo).ifPresent(other -> ((Portal) other).setPair(Optional.empty()));
+        portal.setPair(Optional.empty());
+    }
+
+    private Portal requirePortal(String name) {
+        GizmoBase gizmo = registry.requireGizmo(name);
+        if (!(gizmo instanceof Portal portal)) {
+            throw new BoardEditException("only portals are paired: " + name + " is " + gizmo.kind().withArticle());
+        }
+        return portal;
     }
 
     private static double requireFinite(double coordinate, String ball) {

@@ -116,6 +116,9 @@ public final class Predictor {
             } else if (event instanceof PlayEvent.Sunk sunkBy && ball.equals(sunkBy.ball())) {
                 struck = TriggerSource.gizmo(sunkBy.sink());
                 at = sunkBy.at();
+            } else if (event instanceof PlayEvent.Teleported through && ball.equals(through.ball())) {
+                struck = TriggerSource.gizmo(through.portal());
+                at = through.at();
             } else {
                 return false;
             }
@@ -127,7 +130,8 @@ public final class Predictor {
                     trigger = Optional.of(new Prediction.Trigger(source.name(), at, targets));
                 }
             }
-            return event instanceof PlayEvent.Captured || event instanceof PlayEvent.Sunk;
+            return event instanceof PlayEvent.Captured || event instanceof PlayEvent.Sunk
+                    || event instanceof PlayEvent.Teleported;   // no line from the mouth to the pair's
         }
 
         private static Prediction.Point point(BallView b) {

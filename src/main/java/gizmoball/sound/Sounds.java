@@ -36,7 +36,8 @@ public final class Sounds {
         if (event instanceof PlayEvent.Captured || event instanceof PlayEvent.Sunk) {
             return Optional.of(capture());
         }
-        if (event instanceof PlayEvent.Fired || event instanceof PlayEvent.Spawned) {
+        if (event instanceof PlayEvent.Fired || event instanceof PlayEvent.Spawned
+                || event instanceof PlayEvent.Teleported) {
             return Optional.of(fire());
         }
         throw new IllegalArgumentException("no sound for " + event);
@@ -78,6 +79,7 @@ public final class Sounds {
             case SPAWNER -> 440;
             case GATE -> 600;
             case DROP_TARGET -> 780;
+            case PORTAL -> 250;
         };
     }
 

@@ -32,6 +32,8 @@ public final class BoardPainter {
     public static final Color SINK_HOLE = new Color(0x07080b);
     /** The arrow on a spawner that points to its mouth. */
     public static final Color SPAWNER_MARK = new Color(0xe8fffb);
+    /** A portal's mouth while it has a pair; without one the mouth is drawn as its frame, a wall. */
+    public static final Color PORTAL_MOUTH = new Color(0x9ff3ff);
     /** The bull's-eye on a drop target that is up. */
     public static final Color TARGET_MARK = new Color(0xfff0f5);
     /** The ring on an accelerator that tells it from a circle bumper. */
@@ -67,6 +69,7 @@ public final class BoardPainter {
             case SPAWNER -> new Color(0x2bb3a6);
             case GATE -> new Color(0xc9a46b);
             case DROP_TARGET -> new Color(0xe8467c);
+            case PORTAL -> new Color(0x6a5cff);
         };
     }
 

@@ -7,6 +7,7 @@ import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GateView;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.PortalView;
 import gizmoball.model.gizmo.SpawnerView;
 import java.awt.BasicStroke;
 import java.awt.Color;
@@ -178,6 +179,31 @@ enum GizmoArt {
             g.fill(new Ellipse2D.Double(gizmo.x() + 0.4, gizmo.y() + 0.4, 0.2, 0.2));
         }
     },
+    /**
+     * A portal: its cell, with a glowing band along the side its mouth faces while it has a pair (a portal without one
+     * is a wall: its band is the cell's own colour, darker) and a dot toward the mouth.
+     */
+    PORTAL_CELL {
+        @Override
+        Shape outline(Gizmo gizmo, Interpolation between) {
+            return new Rectangle2D.Double(gizmo.x(), gizmo.y(), 1, 1);
+        }
+
+        @Override
+        void paint(Graphics2D g, Gizmo gizmo, Interpolation between, Color fill, float pixel) {
+            super.paint(g, gizmo, between, fill, pixel);
+            PortalView portal = (PortalView) gizmo;
+            Vect out = portal.facing();
+            Vect centre = new Vect(gizmo.x() + 0.5, gizmo.y() + 0.5);
+            Vect bandCentre = centre.plus(out.times(0.5 - MOUTH_BAND / 2));
+            double w = out.x() == 0 ? 1 - 2 * pixel : MOUTH_BAND;
+            double h = out.x() == 0 ? MOUTH_BAND : 1 - 2 * pixel;
+            g.setColor(portal.pair().isPresent() ? BoardPainter.PORTAL_MOUTH : fill.darker());
+            g.fill(new Rectangle2D.Double(bandCentre.x() - w / 2, bandCentre.y() - h / 2, w, h));
+            Vect dot = centre.minus(out.times(0.1));
+            g.fill(new Ellipse2D.Double(dot.x() - 0.12, dot.y() - 0.12, 0.24, 0.24));
+        }
+    },
     /** An absorber: its whole footprint, whose size is the author's. */
     FOOTPRINT {
         @Override
@@ -188,6 +214,8 @@ enum GizmoArt {
 
     /** How far (L) a sink's hole stays inside its cell. */
     private static final double HOLE_MARGIN = 0.15;
+    /** L: how deep a portal's mouth band reaches into its cell. */
+    private static final double MOUTH_BAND = 0.22;
     /** L: the height of a drop target that is down, lying at the bottom of its cell. */
     private static final double DOWN_STRIP = 0.15;
     /** An accelerator's ring: its radius as a part of the disc's, and its width in L. */
@@ -206,6 +234,7 @@ enum GizmoArt {
             case SPAWNER -> SPAWNER_MOUTH;
             case GATE -> GATE_CELL;
             case DROP_TARGET -> TARGET_CELL;
+            case PORTAL -> PORTAL_CELL;
         };
     }
 

@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import gizmoball.model.Board;
 import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.PortalView;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -22,6 +23,11 @@ class ExtensionLinesTest {
             #@Accelerator AD 8 5
             #@Factor AD 2.5
             #@DropTarget DT 12 3
+            #@Portal P1 14 14
+            #@Portal P2 3 14
+            #@Portal P3 8 10
+            #@Rotate P2
+            #@Pair P2 P1
             Connect C LF
             #@Connect SK LF
             #@Connect C AC
@@ -37,6 +43,10 @@ class ExtensionLinesTest {
         Board board = BoardFiles.load("test", OURS);
         assertThat(board.gizmo("SK").orElseThrow().kind()).isEqualTo(GizmoKind.SINK);
         assertThat(board.gizmo("DT").orElseThrow().kind()).isEqualTo(GizmoKind.DROP_TARGET);
+        assertThat(((PortalView) board.gizmo("P1").orElseThrow()).pair()).contains("P2");
+        assertThat(((PortalView) board.gizmo("P3").orElseThrow()).pair()).isEmpty();
+        assertThat(BoardFiles.toText(board)).as("written once, from the first in the board's order")
+                .contains("#@Pair P1 P2\n").doesNotContain("#@Pair P2 P1");
         assertThat(((AcceleratorView) board.gizmo("AD").orElseThrow()).factor()).isEqualTo(2.5);
         assertThat(((AcceleratorView) board.gizmo("AC").orElseThrow()).factor()).isEqualTo(1.5);
         String written = BoardFiles.toText(board);
@@ -45,6 +55,42 @@ class ExtensionLinesTest {
                 .containsExactly("Circle C 2 2", "LeftFlipper LF 6 16", "Connect C LF", "Gravity 25.0",
                         "Friction 0.025 0.025");
         assertThat(BoardContents.of(BoardFiles.load("again", written))).isEqualTo(BoardContents.of(board));
+    }
+
+    @Test
+    void thePeersPortalsTeleportersAndTheirLinksAreReadAsOursAndALinkToASecondPortalIsRefused() {
+        LoadResult result = BoardFiles.loadSkippingBadLines("peer", """
+                Portal Portal12 11 12
+                Portal Portal13 13 4
+                Portal Portal14 5 4
+                Teleporter TEL23 2 3
+                Teleporter TEL123 12 3
+                Rotate TEL23
+                TeleporterConnect TEL23 TEL123
+                Connect Portal12 Portal14
+                Connect Portal14 Portal13
+                Connect Portal12 Portal14
+                #@Connect Portal13 Portal12
+                Portal P1 1 9 17 1
+                """);
+        Board board = result.board();
+        assertThat(((PortalView) board.gizmo("Portal12").orElseThrow()).pair()).contains("Portal14");
+        assertThat(((PortalView) board.gizmo("TEL123").orElseThrow()).pair()).contains("TEL23");
+        assertThat(((PortalView) board.gizmo("Portal13").orElseThrow()).pair()).as("ours is a connection").isEmpty();
+        assertThat(board.gizmo("TEL23").orElseThrow().rotation()).isEqualTo(1);
+        assertThat(board.connections()).hasSize(1);
+        assertThat(result.skippedLines()).extracting(BoardFileError::line, BoardFileError::reason).containsExactly(
+                org.assertj.core.groups.Tuple.tuple(9, "portal Portal14 is paired with Portal12 already: a portal of"
+                        + " this game has one pair, a ball going through it both ways"),
+                org.assertj.core.groups.Tuple.tuple(10, "Portal12 and Portal14 are paired already"),
+                org.assertj.core.groups.Tuple.tuple(12, "wrong number of arguments: 'Portal' of another implementation"
+                        + " is read as #@Portal, which takes 3 (#@Portal <name> <x> <y>), found 5: a portal and the cell"
+                        + " of its exit on one line, another implementation's form whose exit has no name; this game's"
+                        + " portals are two gizmos, each #@Portal <name> <x> <y>, joined by #@Pair"));
+        assertThat(result.notes()).extracting(BoardFileNote::line).containsExactly(1, 2, 3, 4, 5, 7, 8);
+        assertThat(result.notes().get(6).note()).isEqualTo("'Connect' from a portal to a portal, another"
+                + " implementation's link, read as #@Pair Portal12 Portal14: a ball entering either leaves by the other"
+                + " (in the game that wrote it, from Portal12 to Portal14)");
     }
 
     @Test

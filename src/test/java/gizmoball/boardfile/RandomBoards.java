@@ -25,7 +25,8 @@ final class RandomBoards {
     private static final GizmoKind[] PLACEABLE = {GizmoKind.SQUARE, GizmoKind.CIRCLE, GizmoKind.TRIANGLE,
             GizmoKind.LEFT_FLIPPER, GizmoKind.RIGHT_FLIPPER};
     /** Issue 22's kinds of a fixed place that the property test draws. */
-    private static final GizmoKind[] EXTENSIONS = {GizmoKind.SINK, GizmoKind.ACCELERATOR, GizmoKind.DROP_TARGET};
+    private static final GizmoKind[] EXTENSIONS = {GizmoKind.SINK, GizmoKind.ACCELERATOR, GizmoKind.DROP_TARGET,
+            GizmoKind.PORTAL};
 
     private final Random random;
 
@@ -79,7 +80,7 @@ final class RandomBoards {
 
     /**
      * Issue 22, drawn last so that the rest of each board is what it was before: sinks, accelerators (some with a
-     * factor of their own) and drop targets, and connections and key bindings with actions and delays.
+     * factor of their own), drop targets and portals (paired at random), and connections and key bindings with actions and delays.
      */
     private void addExtensions(Board board) {
         if (random.nextBoolean()) {
@@ -93,6 +94,13 @@ final class RandomBoards {
             if (kind == GizmoKind.ACCELERATOR && random.nextBoolean()) {
                 attempt(() -> board.setFactor(name, 1 + random.nextInt(17) / 4.0));
             }
+        }
+        List<String> portals = board.gizmos().stream().filter(g -> g.kind() == GizmoKind.PORTAL).map(Gizmo::name)
+                .toList();
+        for (int i = 0; i + 1 < portals.size(); i += 1 + random.nextInt(2)) {
+            String first = portals.get(i);
+            String second = portals.get(i + 1);
+            attempt(() -> board.pair(first, second));
         }
         List<String> names = board.gizmos().stream().map(Gizmo::name).toList();
         if (names.isEmpty()) {

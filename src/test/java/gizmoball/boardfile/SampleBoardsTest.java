@@ -49,7 +49,8 @@ class SampleBoardsTest {
     void theExtensionsBoardShowsOffTheSinksTheAcceleratorsAndTheWiringKit() throws Exception {
         Board board = BoardFiles.load(BOARDS.resolve("extensions.txt"));
         assertThat(board.gizmos()).extracting(g -> g.kind()).contains(GizmoKind.SINK, GizmoKind.ACCELERATOR,
-                GizmoKind.SPAWNER);
+                GizmoKind.SPAWNER, GizmoKind.DROP_TARGET, GizmoKind.PORTAL);
+        assertThat(((gizmoball.model.gizmo.PortalView) board.gizmo("PL").orElseThrow()).pair()).contains("PR");
         assertThat(board.connections()).anyMatch(c -> c.order().delay() > 0 && c.order().action().isPresent());
         assertThat(board.keyBindings()).anyMatch(k -> k.order().delay() > 0);
         assertThat(board.gameRules().isGame()).isTrue();

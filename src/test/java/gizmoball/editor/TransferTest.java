@@ -94,6 +94,33 @@ class TransferTest {
     }
 
     @Test
+    void aPairTypedInThePropertiesIsOneUndoStepAndFollowsARenameAndACopyOfBoth() {
+        board.addGizmo(GizmoKind.PORTAL, "P1", 1, 1);
+        board.addGizmo(GizmoKind.PORTAL, "P2", 15, 1);
+        assertThat(editor.setPair("P1", "P2")).isTrue();
+        assertThat(pair("P2")).contains("P1");
+        assertThat(editor.setPair("P1", "C1")).as("a circle is no portal").isFalse();
+        assertThat(messages).last().asString().contains("only portals are paired: C1 is a circle");
+
+        assertThat(editor.rename("P2", "Exit")).isTrue();
+        assertThat(pair("P1")).contains("Exit");
+        editor.selectAll(List.of("P1", "Exit"), false);
+        String text = editor.copySelected().orElseThrow();
+        assertThat(editor.paste(text)).isTrue();
+        assertThat(pair("P2")).as("the copies (fresh names P2, P3) are each other's pair").contains("P3");
+        assertThat(pair("P1")).contains("Exit");
+
+        assertThat(editor.setPair("P1", "")).isTrue();
+        assertThat(pair("Exit")).isEmpty();
+        editor.undo();
+        assertThat(pair("Exit")).contains("P1");
+    }
+
+    private Optional<String> pair(String portal) {
+        return ((gizmoball.model.gizmo.PortalView) gizmo(portal)).pair();
+    }
+
+    @Test
     void copyThenPasteOnAnotherBoardPutsItWhereItWasUnderAFreshName() {
         editor.select("T1");
         String text = editor.copySelected().orElseThrow();

@@ -6,6 +6,7 @@ import gizmoball.model.gizmo.Bumper;
 import gizmoball.model.gizmo.DropTargetView;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.GateView;
+import gizmoball.model.gizmo.PortalView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Sink;
@@ -32,7 +33,7 @@ final class Bodies {
         if (gizmo instanceof Flipper flipper) {
             return flipper(flipper);
         }
-        if (gizmo instanceof Sink || switches(gizmo)) {
+        if (gizmo instanceof Sink || gizmo instanceof PortalView || switches(gizmo)) {
             return rectangle(gizmo.x(), gizmo.y(), 1, 1);   // a gate's or drop target's cell, when it is there
         }
         if (gizmo instanceof Accelerator accelerator) {

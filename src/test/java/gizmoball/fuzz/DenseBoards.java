@@ -13,8 +13,8 @@ import java.util.SplittableRandom;
 
 /**
  * Random dense boards from a seed, as players build them (issue 20, "Your own fuzz"): bumpers of every kind in every
- * rotation (accelerators, sinks, gates and drop targets among them, issue 22, except where energy must be kept; the
- * gates and drop targets switched by keys and hits) packed in blocks, corridors one or two cells wide, checkerboards and scattered; flippers in pockets of
+ * rotation (accelerators, sinks, gates, drop targets and portals among them, issue 22, except where energy must be
+ * kept; the gates and drop targets switched by keys and hits, most portals paired) packed in blocks, corridors one or two cells wide, checkerboards and scattered; flippers in pockets of
  * bumpers, in facing pairs (tongs) and in clumps, some starting part-way through a swing; absorbers along the floor
  * and elsewhere, many firing themselves; 5-40 balls placed free, touching gizmos, flippers (their pivot ends too) and
  * each other, at up to 100 L/s; keys bound to the flippers and absorbers and a script pressing them. Gravity and
@@ -34,7 +34,7 @@ public final class DenseBoards {
      * gates and drop targets among them are wired to switch in play.
      */
     private static final GizmoKind[] EXTENSIONS = {GizmoKind.ACCELERATOR, GizmoKind.SINK, GizmoKind.DROP_TARGET,
-            GizmoKind.GATE};
+            GizmoKind.GATE, GizmoKind.PORTAL};
     private static final int SIZE = Board.SIZE;
 
     private final SplittableRandom random;
@@ -43,6 +43,7 @@ public final class DenseBoards {
     private final List<String> bumpers = new ArrayList<>();
     private final List<String> flippers = new ArrayList<>();
     private final List<String> absorbers = new ArrayList<>();
+    private final List<String> portals = new ArrayList<>();
     /** Gates and drop targets: solid cells that play switches to nothing and back. */
     private final List<String> switchedCells = new ArrayList<>();
     private final List<Integer> keysUsed = new ArrayList<>();
@@ -72,6 +73,7 @@ public final class DenseBoards {
             flippers();
         }
         packBumpers();
+        pairPortals();
         if (!energyKept) {
             wire();
         }
@@ -259,6 +261,18 @@ public final class DenseBoards {
                 blocks, corridors, density));
     }
 
+    /** Portals in pairs as they were placed (one in five left alone: a wall), often facing walls and bumpers. */
+    private void pairPortals() {
+        for (int i = 0; i + 1 < portals.size(); i += 2) {
+            if (random.nextInt(5) > 0) {
+                board.pair(portals.get(i), portals.get(i + 1));
+            }
+        }
+        if (!portals.isEmpty()) {
+            recipe.add(portals.size() + " portals");
+        }
+    }
+
     /** A rectangle of cells nearly all filled with bumpers. */
     private void block() {
         int x = random.nextInt(SIZE);
@@ -311,7 +325,8 @@ public final class DenseBoards {
     private void bumper(GizmoKind kind, int x, int y, int turns) {
         String name = gizmo(kind, kind.name().substring(0, 1), x, y, turns);
         if (name != null) {
-            (kind == GizmoKind.GATE || kind == GizmoKind.DROP_TARGET ? switchedCells : bumpers).add(name);
+            (kind == GizmoKind.GATE || kind == GizmoKind.DROP_TARGET ? switchedCells
+                    : kind == GizmoKind.PORTAL ? portals : bumpers).add(name);
         }
     }
 

@@ -8,6 +8,7 @@ import gizmoball.model.Board;
 import gizmoball.model.gizmo.BumperView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.PortalView;
 import gizmoball.model.loop.BallView;
 import java.awt.Color;
 import java.awt.Graphics2D;
@@ -70,10 +71,13 @@ class BoardFilesPaintTest {
             if (gizmo.kind() == GizmoKind.LEFT_FLIPPER || gizmo.kind() == GizmoKind.RIGHT_FLIPPER) {
                 continue;
             }
-            // A triangle at its centroid, a sink or a spawner on its frame (the centre is a hole, an arrow), anything
-            // else at its centre.
+            // A triangle at its centroid, a sink, a spawner or a drop target on its frame (the centre is a hole, an
+            // arrow, a bull's-eye), a portal on the side away from its mouth, anything else at its centre.
             Vect inside = gizmo instanceof BumperView b && gizmo.kind() == GizmoKind.TRIANGLE ? centroid(b.outline())
+                    : gizmo instanceof PortalView portal
+                    ? new Vect(gizmo.x() + 0.5, gizmo.y() + 0.5).minus(portal.facing().times(0.4))
                     : gizmo.kind() == GizmoKind.SINK || gizmo.kind() == GizmoKind.SPAWNER
+                    || gizmo.kind() == GizmoKind.DROP_TARGET
                     ? new Vect(gizmo.x() + 0.1, gizmo.y() + 0.5)
                     : new Vect(gizmo.x() + gizmo.width() / 2.0, gizmo.y() + gizmo.height() / 2.0);
             assertThat(pixel(image, t, inside)).as("%s: %s at %s", file, gizmo.name(), inside)

@@ -9,7 +9,7 @@ import java.util.Locale;
  */
 public enum GizmoKind {
     SQUARE(1), CIRCLE(1), TRIANGLE(1), LEFT_FLIPPER(2), RIGHT_FLIPPER(2), ABSORBER(1), SINK(1), ACCELERATOR(1), SPAWNER(1), GATE(1),
-    DROP_TARGET(1);
+    DROP_TARGET(1), PORTAL(1);
 
     private final int side;
 
@@ -31,7 +31,7 @@ public enum GizmoKind {
      */
     public boolean rotates() {
         return switch (this) {
-            case SQUARE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SPAWNER -> true;
+            case SQUARE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SPAWNER, PORTAL -> true;
             case CIRCLE, ABSORBER, SINK, ACCELERATOR, GATE, DROP_TARGET -> false;
         };
     }
@@ -42,7 +42,7 @@ public enum GizmoKind {
      */
     public List<Action> actions() {
         return switch (this) {
-            case SQUARE, CIRCLE, TRIANGLE, SINK, ACCELERATOR -> List.of(Action.FLASH);
+            case SQUARE, CIRCLE, TRIANGLE, SINK, ACCELERATOR, PORTAL -> List.of(Action.FLASH);
             case LEFT_FLIPPER, RIGHT_FLIPPER -> List.of(Action.TOGGLE, Action.RAISE, Action.LOWER, Action.FLASH);
             case ABSORBER -> List.of(Action.FIRE, Action.FLASH);
             case SPAWNER -> List.of(Action.SPAWN, Action.FLASH);
@@ -64,7 +64,7 @@ public enum GizmoKind {
         return switch (this) {
             case LEFT_FLIPPER, RIGHT_FLIPPER -> Action.RAISE;
             case GATE -> Action.OPEN;
-            case SQUARE, CIRCLE, TRIANGLE, ABSORBER, SINK, ACCELERATOR, SPAWNER, DROP_TARGET -> defaultAction();
+            case SQUARE, CIRCLE, TRIANGLE, ABSORBER, SINK, ACCELERATOR, SPAWNER, DROP_TARGET, PORTAL -> defaultAction();
         };
     }
 
@@ -73,7 +73,7 @@ public enum GizmoKind {
         return switch (this) {
             case LEFT_FLIPPER, RIGHT_FLIPPER -> Action.LOWER;
             case GATE -> Action.CLOSE;
-            case SQUARE, CIRCLE, TRIANGLE, ABSORBER, SINK, ACCELERATOR, SPAWNER, DROP_TARGET -> defaultAction();
+            case SQUARE, CIRCLE, TRIANGLE, ABSORBER, SINK, ACCELERATOR, SPAWNER, DROP_TARGET, PORTAL -> defaultAction();
         };
     }
 
@@ -84,7 +84,8 @@ public enum GizmoKind {
     public boolean canDrain() {
         return switch (this) {
             case ABSORBER -> true;
-            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER, GATE, DROP_TARGET -> false;
+            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER, GATE, DROP_TARGET,
+                    PORTAL -> false;
         };
     }
 
@@ -114,6 +115,7 @@ public enum GizmoKind {
             case SPAWNER -> new Spawner(name, x, y);
             case GATE -> new Gate(name, x, y);
             case DROP_TARGET -> new DropTarget(name, x, y);
+            case PORTAL -> new Portal(name, x, y);
         };
     }
 }

@@ -38,9 +38,11 @@ final class ClusterSolve {
      */
     ContactCluster toSolve(Collision collision) {
         Contact contact = collision.contact();
-        // What touches an absorber or a sink, on a face or at a corner, is taken, never a contact of a cluster.
+        // What touches an absorber or a sink, on a face or at a corner, is taken, never a contact of a cluster; what
+        // meets the open mouth of a portal with room beyond passes through it.
         if (step.view.loopMode() != LoopMode.CONTINUOUS || contact instanceof Contact.StillSurface surface
-                && (surface.gizmo() instanceof Absorber || surface.gizmo() instanceof Sink)) {
+                && (surface.gizmo() instanceof Absorber || surface.gizmo() instanceof Sink)
+                || Passages.of(step.view, collision.ball(), contact) != null) {
             return null;
         }
         Ball ball = collision.ball();

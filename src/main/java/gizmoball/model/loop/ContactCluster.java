@@ -163,7 +163,9 @@ final class ContactCluster {
                 continue;
             }
             for (int i = 0; i < shape.segments().size(); i++) {
-                still(index, p, shape.segments().get(i), new ContactRef.Part(gizmo.name(), false, i), gizmo);
+                if (Passages.through(view, ball, gizmo, i) == null) {   // an open mouth with room passes the ball on
+                    still(index, p, shape.segments().get(i), new ContactRef.Part(gizmo.name(), false, i), gizmo);
+                }
             }
             for (int i = 0; i < shape.circles().size(); i++) {
                 Circle circle = shape.circles().get(i);

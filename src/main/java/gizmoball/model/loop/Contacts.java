@@ -276,6 +276,9 @@ final class Contacts {
                 && !(part.circle() && moving.turnsInPlace(part.index()))) {
             return null;   // a moving shape holds nothing up, but a round end it turns in place does not move
         }
+        if (!part.circle() && Passages.through(view, ball, gizmo, part.index()) != null) {
+            return null;   // an open mouth with room beyond holds nothing up: the ball goes through
+        }
         Shape shape = gizmo.shape();
         if (part.circle()) {
             return part.index() < shape.circles().size() ? onCircle(ball, shape.circles().get(part.index()), look)
@@ -349,7 +352,7 @@ final class Contacts {
             }
             ball.setVelocity(ball.velocity().minus(normal.times(Math.max(0, leaving))));
             Vect onSurface = from.plus(normal.times(touch));
-            if (clearAt(ball, onSurface)) {
+            if (clearAt(view, ball, onSurface)) {
                 ball.moveTo(onSurface);
             }
         } else if (touch - distance > SNAP_DEPTH) {
@@ -359,7 +362,7 @@ final class Contacts {
     }
 
     /** Whether the ball could lie at {@code p} without entering a wall, a gizmo or another ball. */
-    private boolean clearAt(Ball ball, Vect p) {
+    static boolean clearAt(LoopView view, Ball ball, Vect p) {
         double r = Arena.BALL_RADIUS;
         double inner = r - Tolerances.CONTACT;
         if (p.x() < inner || p.y() < inner || p.x() > Arena.SIZE - inner || p.y() > Arena.SIZE - inner) {

@@ -36,6 +36,13 @@ public sealed interface PlayEvent {
     record Sunk(String sink, String ball, Vect at) implements PlayEvent {
     }
 
+    /**
+     * {@code ball} entered the mouth of the portal {@code portal}, its centre at {@code at}, and left by the mouth of
+     * its pair {@code exit}.
+     */
+    record Teleported(String portal, String exit, String ball, Vect at) implements PlayEvent {
+    }
+
     /** A spawner added the ball {@code ball} at its mouth. */
     record Spawned(String spawner, String ball) implements PlayEvent {
     }

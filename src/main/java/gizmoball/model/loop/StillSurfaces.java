@@ -3,6 +3,7 @@ package gizmoball.model.loop;
 import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.Accelerator;
 import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.Portal;
 import gizmoball.model.gizmo.Sink;
 
 import java.util.ArrayList;
@@ -14,8 +15,8 @@ import physics.Vect;
  * Stage 4 for a ball meeting a surface that does not move: an outer wall or a part of a still gizmo (docs/design.md,
  * "Resting and rolling contact"). The ball bounces with the surface's coefficient, comes to rest on it when it
  * approaches more slowly than the gravity pressing it in would explain, is wedged where a bounce would only go back
- * and forth among its contacts, is captured by an absorber, is taken out of play by a sink, or leaves an accelerator
- * faster.
+ * and forth among its contacts, is captured by an absorber, is taken out of play by a sink, leaves an accelerator
+ * faster, or leaves by the pair of the portal whose mouth it meets (docs/design.md, "Portals").
  */
 final class StillSurfaces {
     private final StepContext step;
@@ -30,6 +31,7 @@ final class StillSurfaces {
         if (gizmo != null) {
             gizmo.markTriggered(step.now());
         }
+        Portal.Passage passage = Passages.of(step.view, ball, surface);
         if (gizmo instanceof Absorber absorber) {
             step.actions.recordEvent(new PlayEvent.Captured(absorber.name(), ball.name(), ball.position()));
             step.actions.capture(ball, absorber);
@@ -40,10 +42,35 @@ final class StillSurfaces {
             step.actions.sink(ball, sink);
             step.energy.lost(ball);
             step.sceneChanged();
+        } else if (passage != null) {
+            enter(ball, (Portal) gizmo, passage);
         } else if (bounceOff(ball, surface, surface.normal(ball.position()))) {
             bounceAmongContacts(ball, surface.ref());
         }
         return surface.struck();
+    }
+
+    /**
+     * The ball meets the open mouth of a portal with room beyond, at any speed: it leaves by the mouth of the pair,
+     * touching it from outside ({@link Portal#passage}); it forgets its contacts, the balls that lay on it theirs on it,
+     * and what is near where it comes out wakes. (Where the room is taken, the mouth is a wall: {@link #resolve}.)
+     */
+    private void enter(Ball ball, Portal portal, Portal.Passage out) {
+        Portal exit = (Portal) step.view.gizmo(portal.pair().orElseThrow());
+        step.actions.recordEvent(new PlayEvent.Teleported(portal.name(), exit.name(), ball.name(), ball.position()));
+        ContactRef on = new ContactRef.OnBall(ball.name());
+        for (Ball other : step.view.balls()) {
+            other.contacts().remove(on);
+        }
+        step.view.sleepers().wake(ball);   // and what slept on it: it has gone from under them
+        ball.disturb();
+        ball.moveTo(out.centre());
+        ball.setVelocity(out.velocity());
+        double margin = 4 * Arena.BALL_RADIUS;
+        step.view.sleepers().wakeWithin(out.centre().x() - margin, out.centre().y() - margin,
+                out.centre().x() + margin, out.centre().y() + margin);
+        step.energy.lost(ball);   // its height changed: the shadow energy leaves it alone
+        step.sceneChanged();
     }
 
     /** Resting contact or a bounce off a still surface; true if the ball bounced. */

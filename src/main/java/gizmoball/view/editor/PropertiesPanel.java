@@ -12,6 +12,7 @@ import gizmoball.model.game.Points;
 import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.Rgb;
+import gizmoball.model.gizmo.PortalView;
 import gizmoball.model.gizmo.SpawnerView;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
@@ -87,6 +88,7 @@ public final class PropertiesPanel extends JPanel {
     private final NumberField points = new NumberField("gizmo.points");
     private final JCheckBox drain = new JCheckBox("Drain: its balls are lost");
     private final NumberField factor = new NumberField("gizmo.factor");
+    private final JTextField pair = new JTextField(5);
     private final JLabel selection = new JLabel();
     private final JTextField name = new JTextField(7);
     private final NumberField cellX = new NumberField("gizmo.x");
@@ -206,6 +208,10 @@ public final class PropertiesPanel extends JPanel {
         factor.setText("");
         accelerator.ifPresent(a -> factor.show(a.factor()));
         RefusedValue.unmark(factor);
+        Optional<PortalView> portal = gizmo.filter(g -> g instanceof PortalView).map(g -> (PortalView) g);
+        pair.setEnabled(portal.isPresent());
+        pair.setText(portal.flatMap(PortalView::pair).orElse(""));
+        RefusedValue.unmark(pair);
         drain.setSelected(gizmo.filter(g -> board.gameRules().isDrain(g.name())).isPresent());
         gizmo.ifPresent(g -> {
             colour.setText(g.colour().map(Editor::hex).orElse(""));
@@ -306,6 +312,10 @@ public final class PropertiesPanel extends JPanel {
             controller.setDrain(g.name(), drain.isSelected());
             focusBoard.run();
         }));
+        pair.setName("gizmo.pair");
+        pair.setToolTipText("A portal: the portal a ball entering its mouth leaves by (empty: none, a wall)");
+        pair.addActionListener(e -> applyPair());
+        restoreOnEscape(pair);
         p.add(drain, wide(constraints(0, 4)));
         p.add(nameRows(), wide(constraints(0, 5)));
 
@@ -391,6 +401,7 @@ public final class PropertiesPanel extends JPanel {
             cell.add(i == 0 ? cellX : cellY, half);
         }
         row(nameRows, 1, "Cell x, y", cell);
+        row(nameRows, 2, "Pair", pair);   // a portal's: beside its name, the name of the portal it leads to
         for (NumberField f : new NumberField[] {cellX, cellY}) {
             f.setToolTipText("The gizmo's top-left cell; Enter moves it there");
             f.addActionListener(e -> applyCell());
@@ -521,6 +532,19 @@ public final class PropertiesPanel extends JPanel {
             focusBoard.run();
         } else {
             keepRefused(Map.of(factor, typed));
+        }
+    }
+
+    private void applyPair() {
+        Optional<Gizmo> gizmo = controller.selectedGizmo();
+        if (gizmo.isEmpty()) {
+            return;
+        }
+        String typed = pair.getText();
+        if (controller.setPair(gizmo.get().name(), typed.strip())) {
+            focusBoard.run();
+        } else {
+            keepRefused(Map.of(pair, typed));
         }
     }
 

@@ -66,7 +66,7 @@ public final class ToolIcon implements Icon {
         double s = SIZE - 2 * m;
         return switch (tool) {
             case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, ABSORBER, SINK, ACCELERATOR, SPAWNER, GATE,
-                    DROP_TARGET ->
+                    DROP_TARGET, PORTAL ->
                     kindSymbol(tool.kind().orElseThrow());
             case BALL -> g -> {
                 fill(g, EditorColors.BALL, new Ellipse2D.Double(6, 12, 10, 10));
@@ -129,6 +129,12 @@ public final class ToolIcon implements Icon {
                 g.setStroke(new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10,
                         new float[] {2.5f, 2f}, 0));
                 g.draw(new Rectangle2D.Double(m + s / 2 + 1, m, s / 2 - 1, s));
+            };
+            case PORTAL -> g -> {
+                fill(g, colour(kind), new Rectangle2D.Double(m, m, s, s));
+                g.setColor(BoardPainter.PORTAL_MOUTH);
+                g.fill(new Rectangle2D.Double(m + 1, m + 1, s - 2, s * 0.22));
+                g.fill(new Ellipse2D.Double(SIZE / 2.0 - 2.5, SIZE / 2.0 - 1.5, 5, 5));
             };
             case DROP_TARGET -> g -> {
                 fill(g, colour(kind), new Rectangle2D.Double(m, m, s, s * 0.7));
