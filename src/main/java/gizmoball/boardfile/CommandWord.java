@@ -29,6 +29,10 @@ enum CommandWord {
     SPAWNER("Spawner", "<name> <x> <y>", true),
     /** Extension gizmo: solid or open, switched by triggers. */
     GATE("Gate", "<name> <x> <y>", true),
+    /** Extension gizmo: a bar turning without end about the centre of its 2x2 box. */
+    SPINNER("Spinner", "<name> <x> <y>", true),
+    /** A spinner's speed and way in turns per second (negative: anticlockwise), where it is not the default. */
+    SPINNER_SPEED("SpinnerSpeed", "<name> <turns-per-second>", true),
     /** A spawner's velocity for its balls, where it is not zero. */
     SPAWN_VELOCITY("SpawnVelocity", "<name> <vx> <vy>", true),
     BALL("Ball", "<name> <x> <y> <vx> <vy>"),
@@ -42,6 +46,8 @@ enum CommandWord {
     FACTOR("Factor", "<name> <factor>", true),
     /** Play state: a flipper's angle and direction, written by a save during play. */
     FLIPPER_STATE("FlipperAngle", "<name> <degrees> up|down", true),
+    /** Play state: a spinner's angle and whether it turns, written by a save during play. */
+    SPINNER_STATE("SpinnerAngle", "<name> <radians> running|stopped", true),
     GRAVITY("Gravity", "<g>"),
     FRICTION("Friction", "<mu> <mu2>"),
     /** The game: balls per game. */
@@ -98,6 +104,7 @@ enum CommandWord {
             case ACCELERATOR -> ACCELERATOR;
             case SPAWNER -> SPAWNER;
             case GATE -> GATE;
+            case SPINNER -> SPINNER;
         };
     }
 

@@ -36,6 +36,7 @@ public final class NameGenerator {
             case ACCELERATOR -> "AC";
             case SPAWNER -> "SP";
             case GATE -> "G";
+            case SPINNER -> "SN";
         };
     }
 

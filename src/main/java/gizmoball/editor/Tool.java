@@ -21,6 +21,8 @@ public enum Tool {
     SPAWNER(KeyEvent.VK_W, GizmoKind.SPAWNER,
             "click a cell to place a spawner: triggered, it adds a ball at its mouth (turn it to aim the mouth)"),
     GATE(KeyEvent.VK_G, GizmoKind.GATE, "click a cell to place a gate: solid, or open while triggers say"),
+    SPINNER(KeyEvent.VK_Y, GizmoKind.SPINNER,
+            "click the top-left cell of a 2x2 box to place a spinner: a bar that turns without end"),
     BALL("Ball", KeyEvent.VK_B, null, "click to place a ball; drag before releasing to give it a velocity"),
     SELECT("Select / Move", KeyEvent.VK_M, null, "click to select (Shift+click adds), drag from empty space to select many, drag what is selected"
             + " to move it, drag an absorber's handle to resize it"),

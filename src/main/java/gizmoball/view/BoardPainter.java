@@ -64,6 +64,7 @@ public final class BoardPainter {
             case ACCELERATOR -> new Color(0xff8a1f);
             case SPAWNER -> new Color(0x2bb3a6);
             case GATE -> new Color(0xc9a46b);
+            case SPINNER -> new Color(0xe85fb0);
         };
     }
 

@@ -21,6 +21,7 @@ public final class Points {
             case TRIANGLE -> 25;
             case CIRCLE -> 50;
             case ACCELERATOR -> 20;
+            case SPINNER -> 5;
             case LEFT_FLIPPER, RIGHT_FLIPPER, ABSORBER, SINK, SPAWNER, GATE -> 0;
         };
     }
