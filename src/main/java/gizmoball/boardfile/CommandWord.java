@@ -29,6 +29,8 @@ enum CommandWord {
     SPAWNER("Spawner", "<name> <x> <y>", true),
     /** Extension gizmo: solid or open, switched by triggers. */
     GATE("Gate", "<name> <x> <y>", true),
+    /** Extension gizmo: solid until hit, then down until a trigger raises it. */
+    DROP_TARGET("DropTarget", "<name> <x> <y>", true),
     /** A spawner's velocity for its balls, where it is not zero. */
     SPAWN_VELOCITY("SpawnVelocity", "<name> <vx> <vy>", true),
     BALL("Ball", "<name> <x> <y> <vx> <vy>"),
@@ -98,6 +100,7 @@ enum CommandWord {
             case ACCELERATOR -> ACCELERATOR;
             case SPAWNER -> SPAWNER;
             case GATE -> GATE;
+            case DROP_TARGET -> DROP_TARGET;
         };
     }
 

@@ -21,6 +21,8 @@ public enum Tool {
     SPAWNER(KeyEvent.VK_W, GizmoKind.SPAWNER,
             "click a cell to place a spawner: triggered, it adds a ball at its mouth (turn it to aim the mouth)"),
     GATE(KeyEvent.VK_G, GizmoKind.GATE, "click a cell to place a gate: solid, or open while triggers say"),
+    DROP_TARGET(KeyEvent.VK_J, GizmoKind.DROP_TARGET,
+            "click a cell to place a drop target: solid until a ball hits it, then down until a trigger raises it"),
     BALL("Ball", KeyEvent.VK_B, null, "click to place a ball; drag before releasing to give it a velocity"),
     SELECT("Select / Move", KeyEvent.VK_M, null, "click to select (Shift+click adds), drag from empty space to select many, drag what is selected"
             + " to move it, drag an absorber's handle to resize it"),

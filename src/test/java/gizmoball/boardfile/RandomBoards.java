@@ -24,6 +24,8 @@ final class RandomBoards {
     private static final int[] KEY_CODES = {32, 47, 65, 76, 81, 87, 90, 10, 37, 38, 39, 40, 127, 112};
     private static final GizmoKind[] PLACEABLE = {GizmoKind.SQUARE, GizmoKind.CIRCLE, GizmoKind.TRIANGLE,
             GizmoKind.LEFT_FLIPPER, GizmoKind.RIGHT_FLIPPER};
+    /** Issue 22's kinds of a fixed place that the property test draws. */
+    private static final GizmoKind[] EXTENSIONS = {GizmoKind.SINK, GizmoKind.ACCELERATOR, GizmoKind.DROP_TARGET};
 
     private final Random random;
 
@@ -76,8 +78,8 @@ final class RandomBoards {
     }
 
     /**
-     * Issue 22, drawn last so that the rest of each board is what it was before: sinks and accelerators (some with
-     * a factor of their own), and connections and key bindings with actions and delays.
+     * Issue 22, drawn last so that the rest of each board is what it was before: sinks, accelerators (some with a
+     * factor of their own) and drop targets, and connections and key bindings with actions and delays.
      */
     private void addExtensions(Board board) {
         if (random.nextBoolean()) {
@@ -86,7 +88,7 @@ final class RandomBoards {
         int gizmos = 1 + random.nextInt(4);
         for (int i = 0; i < gizmos; i++) {
             String name = name();
-            GizmoKind kind = random.nextBoolean() ? GizmoKind.SINK : GizmoKind.ACCELERATOR;
+            GizmoKind kind = EXTENSIONS[random.nextInt(EXTENSIONS.length)];
             attempt(() -> board.addGizmo(kind, name, random.nextInt(20), random.nextInt(20)));
             if (kind == GizmoKind.ACCELERATOR && random.nextBoolean()) {
                 attempt(() -> board.setFactor(name, 1 + random.nextInt(17) / 4.0));

@@ -52,6 +52,8 @@ public final class TickChecker {
     private final List<List<Body>> cells = new ArrayList<>();
     private final List<Body> still = new ArrayList<>();
     private final List<Flipper> flippers = new ArrayList<>();
+    /** Gates and drop targets: their cells are bodies only while they are there (read after every tick). */
+    private final List<Gizmo> switching = new ArrayList<>();
     /** The boxes flippers swing in: nothing of a flipper is ever outside its 2 x 2 box. */
     private final List<Body> flipperBoxes = new ArrayList<>();
     private final boolean energyKept;
@@ -77,6 +79,10 @@ public final class TickChecker {
                 flippers.add(flipper);
                 flipperBoxes.add(new Body(flipper.name(), Bodies.box(flipper)));
                 movers = true;
+                continue;
+            }
+            if (Bodies.switches(gizmo)) {
+                switching.add(gizmo);
                 continue;
             }
             // What changes the balls' energy other than the contract's loss: capture, removal, a boost.
@@ -135,6 +141,11 @@ public final class TickChecker {
         List<Body> moving = new ArrayList<>();
         for (Flipper flipper : flippers) {
             moving.add(new Body(flipper.name(), Bodies.flipper(flipper)));
+        }
+        for (Gizmo cell : switching) {
+            if (Bodies.present(cell)) {
+                moving.add(new Body(cell.name(), Bodies.of(cell)));
+            }
         }
         double[] gaps = new double[free.size()];
         for (int i = 0; i < free.size(); i++) {
@@ -261,6 +272,9 @@ public final class TickChecker {
         }
         for (Body box : flipperBoxes) {
             nearest = Math.min(nearest, box.solid().signedDistance(x, y) - R);
+        }
+        for (Gizmo cell : switching) {
+            nearest = Math.min(nearest, Bodies.of(cell).signedDistance(x, y) - R);   // there or not, it was near
         }
         for (BallView other : free) {
             BallAt was = before.get(other.name());

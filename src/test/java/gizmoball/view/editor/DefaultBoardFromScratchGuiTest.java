@@ -132,6 +132,7 @@ class DefaultBoardFromScratchGuiTest {
             case ACCELERATOR -> Tool.ACCELERATOR;
             case SPAWNER -> Tool.SPAWNER;
             case GATE -> Tool.GATE;
+            case DROP_TARGET -> Tool.DROP_TARGET;
         };
         w.clickTool(tool);
         w.dragCells(g.x(), g.y(), g.x() + g.width() - 1, g.y() + g.height() - 1);
