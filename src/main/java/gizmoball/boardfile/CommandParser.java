@@ -178,7 +178,8 @@ final class CommandParser {
                     + " (" + word.usage() + "), found " + args.size());
         }
         return switch (word) {
-            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER, GATE, SPINNER ->
+            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER, GATE,
+                    DROP_TARGET, SPINNER ->
                     new Command.AddGizmo(word.kind(),
                     args.get(0), cell("x", args.get(1)), cell("y", args.get(2)));
             case ABSORBER -> absorber(args, notes);

@@ -29,6 +29,8 @@ enum CommandWord {
     SPAWNER("Spawner", "<name> <x> <y>", true),
     /** Extension gizmo: solid or open, switched by triggers. */
     GATE("Gate", "<name> <x> <y>", true),
+    /** Extension gizmo: solid until hit, then down until a trigger raises it. */
+    DROP_TARGET("DropTarget", "<name> <x> <y>", true),
     /** Extension gizmo: a bar turning without end about the centre of its 2x2 box. */
     SPINNER("Spinner", "<name> <x> <y>", true),
     /** A spinner's speed and way in turns per second (negative: anticlockwise), where it is not the default. */
@@ -104,6 +106,7 @@ enum CommandWord {
             case ACCELERATOR -> ACCELERATOR;
             case SPAWNER -> SPAWNER;
             case GATE -> GATE;
+            case DROP_TARGET -> DROP_TARGET;
             case SPINNER -> SPINNER;
         };
     }

@@ -36,6 +36,7 @@ public final class NameGenerator {
             case ACCELERATOR -> "AC";
             case SPAWNER -> "SP";
             case GATE -> "G";
+            case DROP_TARGET -> "DT";
             case SPINNER -> "SN";
         };
     }

@@ -21,6 +21,8 @@ public enum Tool {
     SPAWNER(KeyEvent.VK_W, GizmoKind.SPAWNER,
             "click a cell to place a spawner: triggered, it adds a ball at its mouth (turn it to aim the mouth)"),
     GATE(KeyEvent.VK_G, GizmoKind.GATE, "click a cell to place a gate: solid, or open while triggers say"),
+    DROP_TARGET(KeyEvent.VK_J, GizmoKind.DROP_TARGET,
+            "click a cell to place a drop target: solid until a ball hits it, then down until a trigger raises it"),
     SPINNER(KeyEvent.VK_Y, GizmoKind.SPINNER,
             "click the top-left cell of a 2x2 box to place a spinner: a bar that turns without end"),
     BALL("Ball", KeyEvent.VK_B, null, "click to place a ball; drag before releasing to give it a velocity"),

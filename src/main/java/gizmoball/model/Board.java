@@ -451,6 +451,7 @@ public final class Board {
         play.performDue(time);
         play.ticking(true);
         lastTick = new TickRun(loop, loop, dt).run();
+        play.dropHitTargets(lastTick.events());
         play.ticking(false);
         play.removeSunk();
         ticks++;

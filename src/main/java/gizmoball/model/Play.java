@@ -4,15 +4,17 @@ import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.Action;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.MovingShape;
-import gizmoball.model.gizmo.Gate;
+import gizmoball.model.gizmo.DropTarget;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.Sink;
 import gizmoball.model.gizmo.Spawner;
 import gizmoball.model.gizmo.Spinner;
 import gizmoball.model.gizmo.Surroundings;
+import gizmoball.model.gizmo.SwitchedCell;
 import gizmoball.model.loop.Ball;
 import gizmoball.model.loop.PlayEvent;
 import gizmoball.model.loop.Sleepers;
+import gizmoball.model.loop.TriggerSource;
 import gizmoball.model.loop.Tolerances;
 
 import java.util.ArrayList;
@@ -41,8 +43,8 @@ final class Play implements Surroundings {
     private final Set<String> fired = new HashSet<>();
     /** Whether a tick is running: spawns wait for its end. */
     private boolean ticking;
-    /** The gates told to open (true) or close during this tick, the last order of each. */
-    private final Map<String, Boolean> gateOrders = new LinkedHashMap<>();
+    /** The gates and drop targets told to be solid (true) or nothing during this tick, the last order of each. */
+    private final Map<String, Boolean> cellOrders = new LinkedHashMap<>();
     /** The spawners told to spawn during this tick, in order. */
     private final List<String> toSpawn = new ArrayList<>();
     /** The balls sinks took in this tick, which leave the board when it is over. */
@@ -211,47 +213,60 @@ final class Play implements Surroundings {
     }
 
     /**
-     * Opens the gate, or closes it over a clear cell (else it waits open, and closes at the first tick end with the
-     * cell clear); during a tick at the tick's end, so that the loop never loses a surface it is resolving. Balls
-     * forget their contacts and wake, as after an edit: what they lay on may have gone.
+     * Makes the gate or drop target nothing, or solid over a clear cell (else it waits as nothing, and becomes solid at
+     * the first tick end with the cell clear); during a tick at the tick's end, so that the loop never loses a surface
+     * it is resolving. Balls forget their contacts and wake, as after an edit: what they lay on may have gone.
      */
     @Override
-    public void switchGate(Gate gate, boolean open) {
+    public void switchCell(SwitchedCell cell, boolean solid) {
         if (ticking) {
-            gateOrders.put(gate.name(), open);
+            cellOrders.put(cell.name(), solid);
         } else {
-            switchNow(gate, open);
+            switchNow(cell, solid);
         }
     }
 
-    private void switchNow(Gate gate, boolean open) {
-        boolean wasOpen = gate.isOpen();
-        if (open) {
-            gate.set(true, false);
-        } else {
+    private void switchNow(SwitchedCell cell, boolean solid) {
+        boolean wasSolid = cell.isSolid();
+        if (solid) {
             boolean blocked = registry.balls().stream()
-                    .anyMatch(b -> gate.closedOver(b.position()) < Board.BALL_RADIUS - Tolerances.PLACEMENT);
-            gate.set(blocked, blocked);
+                    .anyMatch(b -> cell.solidOver(b.position()) < Board.BALL_RADIUS - Tolerances.PLACEMENT);
+            cell.set(!blocked, blocked);
+        } else {
+            cell.set(false, false);
         }
-        if (gate.isOpen() != wasOpen) {
+        if (cell.isSolid() != wasSolid) {
             sleepers.disturbAll();
         }
     }
 
-    /** A tick starts or ends: spawns and gates asked for while it runs wait for its end. */
+    /**
+     * The tick that is ending reported these events: every drop target a ball hit in it goes down at its end (after
+     * any order it was given in the tick: the hit is what the ball saw last).
+     */
+    void dropHitTargets(List<PlayEvent> events) {
+        for (PlayEvent event : events) {
+            if (event instanceof PlayEvent.Hit hit && hit.struck() instanceof TriggerSource.OfGizmo struck
+                    && registry.gizmo(struck.gizmo()) instanceof DropTarget target) {
+                cellOrders.put(target.name(), false);
+            }
+        }
+    }
+
+    /** A tick starts or ends: spawns, gates and drop targets asked for while it runs wait for its end. */
     void ticking(boolean inTick) {
         ticking = inTick;
         if (!inTick) {
-            Map<String, Boolean> gates = new LinkedHashMap<>(gateOrders);
-            gateOrders.clear();
+            Map<String, Boolean> cells = new LinkedHashMap<>(cellOrders);
+            cellOrders.clear();
             for (GizmoBase gizmo : registry.gizmos()) {
-                if (gizmo instanceof Gate gate && gate.isClosing() && !gates.containsKey(gate.name())) {
-                    gates.put(gate.name(), false);   // still waiting to close: the cell may be clear now
+                if (gizmo instanceof SwitchedCell cell && cell.isWaiting() && !cells.containsKey(cell.name())) {
+                    cells.put(cell.name(), true);   // still waiting to be solid: the cell may be clear now
                 }
             }
-            gates.forEach((name, open) -> {
-                if (registry.gizmo(name) instanceof Gate gate) {
-                    switchNow(gate, open);
+            cells.forEach((name, solid) -> {
+                if (registry.gizmo(name) instanceof SwitchedCell cell) {
+                    switchNow(cell, solid);
                 }
             });
             List<String> due = List.copyOf(toSpawn);

@@ -77,6 +77,7 @@ public final class Sounds {
             case ACCELERATOR -> 1100;
             case SPAWNER -> 440;
             case GATE -> 600;
+            case DROP_TARGET -> 780;
             case SPINNER -> 392;
         };
     }

@@ -32,6 +32,8 @@ public final class BoardPainter {
     public static final Color SINK_HOLE = new Color(0x07080b);
     /** The arrow on a spawner that points to its mouth. */
     public static final Color SPAWNER_MARK = new Color(0xe8fffb);
+    /** The bull's-eye on a drop target that is up. */
+    public static final Color TARGET_MARK = new Color(0xfff0f5);
     /** The ring on an accelerator that tells it from a circle bumper. */
     public static final Color ACCELERATOR_MARK = new Color(0xfff1d6);
     /** Size in L of the number of balls an absorber holds, written on the ball in its corner. */
@@ -64,6 +66,7 @@ public final class BoardPainter {
             case ACCELERATOR -> new Color(0xff8a1f);
             case SPAWNER -> new Color(0x2bb3a6);
             case GATE -> new Color(0xc9a46b);
+            case DROP_TARGET -> new Color(0xe8467c);
             case SPINNER -> new Color(0xe85fb0);
         };
     }

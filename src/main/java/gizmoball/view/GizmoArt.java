@@ -2,6 +2,7 @@ package gizmoball.view;
 
 import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.BumperView;
+import gizmoball.model.gizmo.DropTargetView;
 import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GateView;
@@ -159,6 +160,35 @@ enum GizmoArt {
             g.draw(new Rectangle2D.Double(gizmo.x() + pixel, gizmo.y() + pixel, 1 - 2 * pixel, 1 - 2 * pixel));
         }
     },
+    /**
+     * A drop target: up, its cell filled with a bull's-eye; down, only a flat strip along the bottom of the cell, the
+     * target lying in its slot.
+     */
+    TARGET_CELL {
+        @Override
+        boolean changesInPlay() {
+            return true;
+        }
+
+        @Override
+        Shape outline(Gizmo gizmo, Interpolation between) {
+            return new Rectangle2D.Double(gizmo.x(), gizmo.y(), 1, 1);
+        }
+
+        @Override
+        void paint(Graphics2D g, Gizmo gizmo, Interpolation between, Color fill, float pixel) {
+            if (((DropTargetView) gizmo).isDown()) {
+                BoardPainter.paintShape(g, new Rectangle2D.Double(gizmo.x(), gizmo.y() + 1 - DOWN_STRIP, 1,
+                        DOWN_STRIP), fill.darker(), pixel);
+                return;
+            }
+            super.paint(g, gizmo, between, fill, pixel);
+            g.setColor(BoardPainter.TARGET_MARK);
+            g.setStroke(new BasicStroke((float) RING_WIDTH));
+            g.draw(new Ellipse2D.Double(gizmo.x() + 0.2, gizmo.y() + 0.2, 0.6, 0.6));
+            g.fill(new Ellipse2D.Double(gizmo.x() + 0.4, gizmo.y() + 0.4, 0.2, 0.2));
+        }
+    },
     /** An absorber: its whole footprint, whose size is the author's. */
     FOOTPRINT {
         @Override
@@ -169,6 +199,8 @@ enum GizmoArt {
 
     /** How far (L) a sink's hole stays inside its cell. */
     private static final double HOLE_MARGIN = 0.15;
+    /** L: the height of a drop target that is down, lying at the bottom of its cell. */
+    private static final double DOWN_STRIP = 0.15;
     /** An accelerator's ring: its radius as a part of the disc's, and its width in L. */
     private static final double RING_RADIUS = 0.5;
     private static final double RING_WIDTH = 0.07;
@@ -184,6 +216,7 @@ enum GizmoArt {
             case ACCELERATOR -> RINGED_DISC;
             case SPAWNER -> SPAWNER_MOUTH;
             case GATE -> GATE_CELL;
+            case DROP_TARGET -> TARGET_CELL;
             case SPINNER -> SPINNER_BAR;
         };
     }

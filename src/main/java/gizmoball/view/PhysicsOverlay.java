@@ -97,6 +97,7 @@ public final class PhysicsOverlay implements BoardOverlay {
         }
         lines.add(String.format(Locale.ROOT, "  %-10s %8.1f us", "total", total / 1e3));
         lines.add(String.format(Locale.ROOT, "collisions %d (%d at zero time)", r.collisions(), r.zeroTimeCollisions()));
+        lines.add(String.format(Locale.ROOT, "  %d at once apart", r.simultaneousCollisions()));
         lines.add(String.format(Locale.ROOT, "balls awake %d, asleep %d", r.ballsAwake(), r.ballsAsleep()));
         return lines;
     }

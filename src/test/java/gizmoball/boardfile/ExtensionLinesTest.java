@@ -8,7 +8,8 @@ import gizmoball.model.gizmo.GizmoKind;
 import org.junit.jupiter.api.Test;
 
 /**
- * The extension gizmos in files: ours are written {@code #@Sink}, {@code #@Accelerator} (and {@code #@Factor}), with
+ * The extension gizmos in files: ours are written {@code #@Sink}, {@code #@Accelerator} (and {@code #@Factor}),
+ * {@code #@DropTarget}, with
  * every standard line naming them marked too; the peers' bare {@code Sink}, {@code Accelerator} and {@code Booster}
  * are read as ours, each with a note saying how.
  */
@@ -20,10 +21,12 @@ class ExtensionLinesTest {
             #@Accelerator AC 5 5
             #@Accelerator AD 8 5
             #@Factor AD 2.5
+            #@DropTarget DT 12 3
             Connect C LF
             #@Connect SK LF
             #@Connect C AC
             #@KeyConnect key 32 down AD
+            #@Connect AC DT
             #@Colour SK 10 20 30
             Gravity 25.0
             Friction 0.025 0.025
@@ -33,6 +36,7 @@ class ExtensionLinesTest {
     void extensionGizmosAndEveryStandardLineNamingThemAreMarkedAndReadBackEqual() throws BoardFileException {
         Board board = BoardFiles.load("test", OURS);
         assertThat(board.gizmo("SK").orElseThrow().kind()).isEqualTo(GizmoKind.SINK);
+        assertThat(board.gizmo("DT").orElseThrow().kind()).isEqualTo(GizmoKind.DROP_TARGET);
         assertThat(((AcceleratorView) board.gizmo("AD").orElseThrow()).factor()).isEqualTo(2.5);
         assertThat(((AcceleratorView) board.gizmo("AC").orElseThrow()).factor()).isEqualTo(1.5);
         String written = BoardFiles.toText(board);

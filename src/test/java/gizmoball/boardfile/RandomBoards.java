@@ -24,8 +24,9 @@ final class RandomBoards {
     private static final int[] KEY_CODES = {32, 47, 65, 76, 81, 87, 90, 10, 37, 38, 39, 40, 127, 112};
     private static final GizmoKind[] PLACEABLE = {GizmoKind.SQUARE, GizmoKind.CIRCLE, GizmoKind.TRIANGLE,
             GizmoKind.LEFT_FLIPPER, GizmoKind.RIGHT_FLIPPER};
-    /** Our own gizmos the boards draw, with the values of their own. */
-    private static final GizmoKind[] EXTENSIONS = {GizmoKind.SINK, GizmoKind.ACCELERATOR, GizmoKind.SPINNER};
+    /** Issue 22's kinds that the property test draws (a spinner with a speed of its own, sometimes). */
+    private static final GizmoKind[] EXTENSIONS = {GizmoKind.SINK, GizmoKind.ACCELERATOR, GizmoKind.DROP_TARGET,
+            GizmoKind.SPINNER};
 
     private final Random random;
 
@@ -78,8 +79,9 @@ final class RandomBoards {
     }
 
     /**
-     * Issue 22, drawn last so that the rest of each board is what it was before: sinks, accelerators and spinners
-     * (some with a factor or a speed of their own), and connections and key bindings with actions and delays.
+     * Issue 22, drawn last so that the rest of each board is what it was before: sinks, accelerators (some with a
+     * factor of their own), drop targets and spinners (some with a speed of their own), and connections and key
+     * bindings with actions and delays.
      */
     private void addExtensions(Board board) {
         if (random.nextBoolean()) {

@@ -3,7 +3,9 @@ package gizmoball.fuzz;
 import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.Accelerator;
 import gizmoball.model.gizmo.Bumper;
+import gizmoball.model.gizmo.DropTargetView;
 import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.GateView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Sink;
@@ -34,14 +36,24 @@ final class Bodies {
         if (gizmo instanceof Spinner spinner) {
             return spinner(spinner);
         }
-        if (gizmo instanceof Sink sink) {
-            return rectangle(sink.x(), sink.y(), 1, 1);
+        if (gizmo instanceof Sink || switches(gizmo)) {
+            return rectangle(gizmo.x(), gizmo.y(), 1, 1);   // a gate's or drop target's cell, when it is there
         }
         if (gizmo instanceof Accelerator accelerator) {
             return new Solid.Disc(new Point(accelerator.x() + 0.5, accelerator.y() + 0.5), BUMPER_RADIUS);
         }
         Absorber absorber = (Absorber) gizmo;
         return rectangle(absorber.x(), absorber.y(), absorber.width(), absorber.height());
+    }
+
+    /** Whether play makes its body come and go: a gate (open: no body) and a drop target (down: no body). */
+    static boolean switches(Gizmo gizmo) {
+        return gizmo instanceof GateView || gizmo instanceof DropTargetView;
+    }
+
+    /** Whether its body is there now: not for an open gate or a drop target that is down. */
+    static boolean present(Gizmo gizmo) {
+        return !(gizmo instanceof GateView gate && gate.isOpen() || gizmo instanceof DropTargetView target && target.isDown());
     }
 
     private static Solid bumper(Bumper bumper) {

@@ -15,7 +15,8 @@ import java.util.SplittableRandom;
 
 /**
  * Random dense boards from a seed, as players build them (issue 20, "Your own fuzz"): bumpers of every kind in every
- * rotation (accelerators and sinks among them, issue 22, except where energy must be kept) packed in blocks,
+ * rotation (accelerators, sinks, gates and drop targets among them, issue 22, except where energy must be kept; the
+ * gates and drop targets switched by keys and hits) packed in blocks,
  * spinners turning either way (added last, keys reverse, start and stop them, bumpers trigger them), corridors one or two cells wide, checkerboards and scattered; flippers in pockets of
  * bumpers, in facing pairs (tongs) and in clumps, some starting part-way through a swing; absorbers along the floor
  * and elsewhere, many firing themselves; 5-40 balls placed free, touching gizmos, flippers (their pivot ends too) and
@@ -31,8 +32,12 @@ public final class DenseBoards {
     /** Key codes the boards bind: letters, space and the arrows (any code works; these read well in a file). */
     private static final int[] KEY_CODES = {32, 37, 38, 39, 40, 65, 68, 70, 74, 75, 76, 77, 81, 83, 87, 88, 90};
     private static final GizmoKind[] BUMPERS = {GizmoKind.SQUARE, GizmoKind.CIRCLE, GizmoKind.TRIANGLE};
-    /** The still extension gizmos, drawn among the bumpers of a board whose energy need not be kept. */
-    private static final GizmoKind[] EXTENSIONS = {GizmoKind.ACCELERATOR, GizmoKind.SINK};
+    /**
+     * The extension gizmos of a fixed place, drawn among the bumpers of a board whose energy need not be kept; the
+     * gates and drop targets among them are wired to switch in play.
+     */
+    private static final GizmoKind[] EXTENSIONS = {GizmoKind.ACCELERATOR, GizmoKind.SINK, GizmoKind.DROP_TARGET,
+            GizmoKind.GATE};
     private static final int SIZE = Board.SIZE;
 
     private final SplittableRandom random;
@@ -47,6 +52,8 @@ public final class DenseBoards {
     private final List<String> bumpers = new ArrayList<>();
     private final List<String> flippers = new ArrayList<>();
     private final List<String> absorbers = new ArrayList<>();
+    /** Gates and drop targets: solid cells that play switches to nothing and back. */
+    private final List<String> switchedCells = new ArrayList<>();
     private final List<Integer> keysUsed = new ArrayList<>();
     private int serial;
 
@@ -361,7 +368,7 @@ public final class DenseBoards {
     private void bumper(GizmoKind kind, int x, int y, int turns) {
         String name = gizmo(kind, kind.name().substring(0, 1), x, y, turns);
         if (name != null) {
-            bumpers.add(name);
+            (kind == GizmoKind.GATE || kind == GizmoKind.DROP_TARGET ? switchedCells : bumpers).add(name);
         }
     }
 
@@ -411,6 +418,14 @@ public final class DenseBoards {
         }
         List<String> targets = new ArrayList<>(flippers);
         targets.addAll(absorbers);
+        for (String cell : switchedCells) {
+            // A gate toggles, a drop target rises, at a hit on a bumper or a wall, or while a key says: over balls too.
+            if (random.nextBoolean() || bumpers.isEmpty()) {
+                board.bindKey(key(), random.nextBoolean() ? KeyEdge.DOWN : KeyEdge.CHANGE, cell);
+            } else {
+                board.connect(TriggerSource.gizmo(bumpers.get(random.nextInt(bumpers.size()))), cell);
+            }
+        }
         int connections = targets.isEmpty() ? 0 : random.nextInt(6);
         for (int i = 0; i < connections; i++) {
             String target = targets.get(random.nextInt(targets.size()));

@@ -54,6 +54,8 @@ public final class TickChecker {
     private final List<Body> still = new ArrayList<>();
     private final List<Flipper> flippers = new ArrayList<>();
     private final List<Spinner> spinners = new ArrayList<>();
+    /** Gates and drop targets: their cells are bodies only while they are there (read after every tick). */
+    private final List<Gizmo> switching = new ArrayList<>();
     /** The boxes flippers and spinners turn in: nothing of either is ever outside its 2 x 2 box. */
     private final List<Body> flipperBoxes = new ArrayList<>();
     private final boolean energyKept;
@@ -85,6 +87,10 @@ public final class TickChecker {
                 spinners.add(spinner);
                 flipperBoxes.add(new Body(spinner.name(), Bodies.box(spinner)));
                 movers = true;
+                continue;
+            }
+            if (Bodies.switches(gizmo)) {
+                switching.add(gizmo);
                 continue;
             }
             // What changes the balls' energy other than the contract's loss: capture, removal, a boost.
@@ -146,6 +152,11 @@ public final class TickChecker {
         }
         for (Spinner spinner : spinners) {
             moving.add(new Body(spinner.name(), Bodies.spinner(spinner)));
+        }
+        for (Gizmo cell : switching) {
+            if (Bodies.present(cell)) {
+                moving.add(new Body(cell.name(), Bodies.of(cell)));
+            }
         }
         double[] gaps = new double[free.size()];
         for (int i = 0; i < free.size(); i++) {
@@ -272,6 +283,9 @@ public final class TickChecker {
         }
         for (Body box : flipperBoxes) {
             nearest = Math.min(nearest, box.solid().signedDistance(x, y) - R);
+        }
+        for (Gizmo cell : switching) {
+            nearest = Math.min(nearest, Bodies.of(cell).signedDistance(x, y) - R);   // there or not, it was near
         }
         for (BallView other : free) {
             BallAt was = before.get(other.name());

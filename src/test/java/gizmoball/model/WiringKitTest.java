@@ -220,7 +220,7 @@ class WiringKitTest {
     /** What the action does to a gizmo of the kind at rest (a flipper down, a gate closed). */
     private static State expected(GizmoKind kind, Action action, State before) {
         return switch (action) {
-            case RAISE -> before.withFlipperActive(true);
+            case RAISE -> kind == GizmoKind.DROP_TARGET ? before : before.withFlipperActive(true);   // a target is up
             case TOGGLE -> kind == GizmoKind.GATE ? before.withGateOpen() : before.withFlipperActive(true);
             case OPEN -> before.withGateOpen();
             case LOWER, CLOSE, FLASH -> before;

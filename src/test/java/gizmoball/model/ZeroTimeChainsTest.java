@@ -7,6 +7,7 @@ import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.GuardCounts;
 
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
@@ -167,5 +168,27 @@ class ZeroTimeChainsTest {
         assertThat(longestChain).isLessThanOrEqualTo(2);
         assertThat(board.guardsFired()).isEqualTo(GuardCounts.NONE);
         assertThat(slowestA).as("the impact came back out of the wedge to A").isLessThan(0);
+    }
+
+    /**
+     * Two balls far apart dropped from the same height meet the floor at the same instant: no chain, so neither
+     * collision is at zero time; the second is counted as at once apart. From 10 L up they fall 9.75 L onto the
+     * bottom wall at sqrt(2 g 9.75) = 22 L/s, far above resting.
+     */
+    @Test
+    void ballsApartMeetingTheFloorAtOnceAreNoChain() {
+        Board board = new Board();
+        board.addBall("A", 5, 10, 0, 0);
+        board.addBall("B", 15, 10, 0, 0);
+        int collisions = 0;
+        int simultaneous = 0;
+        for (int t = 0; t < 60; t++) {
+            board.tick(DT);
+            assertThat(board.lastTick().zeroTimeCollisions()).as("tick %d", t).isZero();
+            collisions += board.lastTick().collisions();
+            simultaneous += board.lastTick().simultaneousCollisions();
+        }
+        assertThat(collisions).isEqualTo(2);
+        assertThat(simultaneous).isEqualTo(1);
     }
 }

@@ -36,7 +36,7 @@ class PhysicsOverlayTest {
         TickReport r = scriptedTick();
         assertThat(r.collisions()).isEqualTo(1);
         assertThat(r.ballsAwake()).isEqualTo(1);
-        assertThat(PhysicsOverlay.panelLines(r)).contains("collisions 1 (0 at zero time)", "balls awake 1, asleep 0")
+        assertThat(PhysicsOverlay.panelLines(r)).contains("collisions 1 (0 at zero time)", "  0 at once apart", "balls awake 1, asleep 0")
                 .filteredOn(line -> line.matches("[1-6] .* us")).hasSize(6);
     }
 

@@ -11,7 +11,8 @@ public final class Points {
     }
 
     /**
-     * The bumpers score, the more the harder they are to hit (an accelerator a little: it is easy to hit again);
+     * The bumpers score, the more the harder they are to hit (an accelerator a little: it is easy to hit again; a
+     * drop target most, hit once until it is raised again);
      * flippers, absorbers and sinks, like the walls, score nothing unless the board says (a sink scores when it
      * takes a ball).
      */
@@ -21,6 +22,7 @@ public final class Points {
             case TRIANGLE -> 25;
             case CIRCLE -> 50;
             case ACCELERATOR -> 20;
+            case DROP_TARGET -> 100;
             case SPINNER -> 5;
             case LEFT_FLIPPER, RIGHT_FLIPPER, ABSORBER, SINK, SPAWNER, GATE -> 0;
         };

@@ -9,7 +9,7 @@ import java.util.Optional;
  * ({@link GizmoKind#actions}). Every gizmo can flash: light up, as a hit lights it, and do nothing else.
  */
 public enum Action {
-    /** A flipper swings to its active stop and stays there. */
+    /** A flipper swings to its active stop and stays there; a drop target rises, as soon as no ball is in its cell. */
     RAISE,
     /** A flipper swings back to rest. */
     LOWER,

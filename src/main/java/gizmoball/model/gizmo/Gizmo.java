@@ -6,7 +6,8 @@ import java.util.Optional;
  * A gizmo on the board as views, controllers and the editor see it, read only (each kind adds its own read-only
  * view). Coordinates are whole cells; the footprint is the rectangle x..x+width, y..y+height.
  */
-public sealed interface Gizmo permits BumperView, FlipperView, AbsorberView, SinkView, AcceleratorView, SpawnerView, GateView, SpinnerView {
+public sealed interface Gizmo permits BumperView, FlipperView, AbsorberView, SinkView, AcceleratorView, SpawnerView, GateView,
+        DropTargetView, SpinnerView {
     String name();
 
     GizmoKind kind();

@@ -11,10 +11,10 @@ public interface Surroundings {
     void fire(Absorber absorber);
 
     /**
-     * The gate was told to be open ({@code open}) or closed: it closes only over a clear cell, else waits open until
-     * the cell is clear.
+     * The gate or drop target was told to be solid ({@code solid}: a gate closed, a target up) or nothing: it becomes
+     * solid only over a clear cell, else waits as nothing until the cell is clear.
      */
-    void switchGate(Gate gate, boolean open);
+    void switchCell(SwitchedCell cell, boolean solid);
 
     /** The spawner was told to spawn: a ball at its mouth, if it is free and the board has room for one more. */
     void spawn(Spawner spawner);

@@ -38,8 +38,9 @@ final class ClusterSolve {
      */
     ContactCluster toSolve(Collision collision) {
         Contact contact = collision.contact();
-        if (step.view.loopMode() != LoopMode.CONTINUOUS || contact instanceof Contact.Face face
-                && (face.gizmo() instanceof Absorber || face.gizmo() instanceof Sink)) {
+        // What touches an absorber or a sink, on a face or at a corner, is taken, never a contact of a cluster.
+        if (step.view.loopMode() != LoopMode.CONTINUOUS || contact instanceof Contact.StillSurface surface
+                && (surface.gizmo() instanceof Absorber || surface.gizmo() instanceof Sink)) {
             return null;
         }
         Ball ball = collision.ball();
@@ -76,7 +77,8 @@ final class ClusterSolve {
      */
     Struck resolve(Collision collision, ContactCluster cluster) {
         List<Ball> balls = cluster.balls();
-        NormalImpulses.Result result = solve(cluster, Set.of());
+        boolean carried = carried(collision);
+        NormalImpulses.Result result = solve(cluster, Set.of(), carried);
         Set<MovingShape> stalled = new LinkedHashSet<>();
         if (!result.feasible()) {
             for (ContactCluster.Row row : cluster.rows()) {
@@ -86,7 +88,7 @@ final class ClusterSolve {
                             balls.get(row.ball()).name()));
                 }
             }
-            result = solve(cluster, stalled);
+            result = solve(cluster, stalled, carried);
         }
         boolean woke = false;
         for (int k = 0; k < balls.size(); k++) {
@@ -111,7 +113,18 @@ final class ClusterSolve {
         return hit;
     }
 
-    private NormalImpulses.Result solve(ContactCluster cluster, Set<MovingShape> stalled) {
+    /**
+     * Whether the collision is a ball rattling ({@link #rattling}): struck back and forth across gaps ever smaller
+     * between what it nearly touches, in a pocket almost closed, or closing on it as a moving shape swings in (each
+     * strike of which sends it back faster). Bounce by bounce the rattle would go on for ever, or faster and faster;
+     * its limit is the ball at rest against what it rattles between, carried along by what moves, which is what the
+     * solve gives it: every contact of the cluster inelastic. It loses energy and gains none.
+     */
+    private boolean carried(Collision collision) {
+        return rattling(collision.ball());
+    }
+
+    private NormalImpulses.Result solve(ContactCluster cluster, Set<MovingShape> stalled, boolean carried) {
         List<ContactCluster.Row> rows = cluster.rows();
         int n = rows.size();
         int[] a = new int[n];
@@ -130,7 +143,7 @@ final class ClusterSolve {
             boolean still = row.other() instanceof ContactCluster.Other.Moving moving
                     && stalled.contains(moving.shape());
             speed[i] = still ? 0 : row.surfaceSpeed();
-            restitution[i] = row.restitution();
+            restitution[i] = carried ? 0 : row.restitution();
         }
         List<Ball> balls = cluster.balls();
         double[] vx = new double[balls.size()];

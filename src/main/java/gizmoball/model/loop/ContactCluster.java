@@ -110,7 +110,7 @@ final class ContactCluster {
         cluster.balls.addAll(members);
         for (int i = 0; i < cluster.balls.size(); i++) {
             Ball ball = cluster.balls.get(i);
-            cluster.surfaces(view, i, ball);
+            cluster.surfaces(view, i, ball, motion);
             for (Ball other : view.balls()) {
                 if (other == ball || other.isCaptured() || view.passingThrough(ball, other)
                         || gap(ball.position(), other.position(), 2 * Arena.BALL_RADIUS) > cluster.touching) {
@@ -121,6 +121,10 @@ final class ContactCluster {
                     continue;   // its row was made from the other side
                 }
                 Vect normal = ball.position().minus(other.position()).unitSize();
+                if (CollisionDetector.grazes(ball.position().minus(other.position()), motion.apply(ball).minus(motion.apply(other)),
+                        2 * Arena.BALL_RADIUS)) {
+                    continue;
+                }
                 if (j < 0 && cluster.balls.size() < MAX_BALLS && movable.test(other)) {
                     cluster.balls.add(other);
                     j = cluster.balls.size() - 1;
@@ -143,7 +147,7 @@ final class ContactCluster {
         return rows;
     }
 
-    private void surfaces(LoopView view, int index, Ball ball) {
+    private void surfaces(LoopView view, int index, Ball ball, Function<Ball, Vect> motion) {
         Vect p = ball.position();
         for (int side = 0; side < CollisionDetector.OUTER_WALLS.size(); side++) {
             still(index, p, CollisionDetector.OUTER_WALLS.get(side), new ContactRef.Wall(side), null);
@@ -163,7 +167,9 @@ final class ContactCluster {
             }
             for (int i = 0; i < shape.circles().size(); i++) {
                 Circle circle = shape.circles().get(i);
-                if (gap(p, circle.getCenter(), circle.getRadius() + Arena.BALL_RADIUS) <= touching) {
+                double touch = circle.getRadius() + Arena.BALL_RADIUS;
+                if (gap(p, circle.getCenter(), touch) <= touching
+                        && !CollisionDetector.grazes(p.minus(circle.getCenter()), motion.apply(ball), touch)) {
                     rows.add(new Row(index, new Other.Still(new ContactRef.Part(gizmo.name(), true, i), gizmo),
                             p.minus(circle.getCenter()).unitSize(), 0, gizmo.reflectionCoefficient()));
                 }

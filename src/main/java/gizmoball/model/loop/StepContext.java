@@ -1,5 +1,7 @@
 package gizmoball.model.loop;
 
+import gizmoball.model.gizmo.MovingShape;
+
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
@@ -47,6 +49,7 @@ final class StepContext {
     double elapsed;
     int collisions;
     int zeroTimeCollisions;
+    int simultaneousCollisions;
     long wedged;
     long pinched;
     long capped;
@@ -75,6 +78,22 @@ final class StepContext {
     void sceneChanged() {
         findAwake();
         schedule.file(freeBalls(), elapsed);   // filing forgets every known collision
+    }
+
+    /**
+     * A moving shape changed how it moves (turned round, started, stopped): only the balls that can reach its box in
+     * what is left of the tick can meet it otherwise than they were going to, so only their collisions with the scene
+     * are asked again; where it woke balls (its sweep wakes what lies in its box), everything is filed afresh.
+     */
+    void movingShapeChanged(MovingShape moving) {
+        int wasAwake = awake.size();
+        findAwake();
+        if (awake.size() != wasAwake) {
+            schedule.file(freeBalls(), elapsed);
+            return;
+        }
+        schedule.forgetReaching(moving.x(), moving.y(), moving.x() + moving.width(), moving.y() + moving.height(),
+                dt - elapsed);
     }
 
     void findAwake() {
@@ -130,5 +149,31 @@ final class StepContext {
 
     GuardCounts guards() {
         return new GuardCounts(wedged, pinched, capped);
+    }
+
+    /**
+     * Whether the collision continues a chain: its ball, or the ball it meets, had a collision of its own at this
+     * very moment (within {@link LoopSettings#zeroTime()}). Balls apart that collide at the same instant are not a
+     * chain: each is the first of its own.
+     */
+    boolean chained(Collision collision) {
+        if (recentlyCollided(collision.ball())) {
+            return true;
+        }
+        return collision.contact() instanceof Contact.OtherBall other && recentlyCollided(other.other());
+    }
+
+    private boolean recentlyCollided(Ball ball) {
+        Double last = lastCollisionAt.get(ball);
+        return last != null && elapsed - last <= settings.zeroTime();
+    }
+
+    /** Counts a collision, found {@code after} seconds past the one before it, as chained, simultaneous or neither. */
+    void countTiming(boolean chained, double after) {
+        if (chained) {
+            zeroTimeCollisions++;
+        } else if (after <= settings.zeroTime()) {
+            simultaneousCollisions++;
+        }
     }
 }

@@ -178,14 +178,13 @@ public final class TickRun {
         step.restingContact = false;
         step.reported.clear();
         ball.setStillTime(0);
+        boolean chained = step.chained(collision);
+        step.countTiming(chained, collision.time());
         ContactCluster cluster = clusters.toSolve(collision);
         if (cluster != null) {
             Struck hit = clusters.resolve(collision, cluster);
             forgetWhatChanged(collision);
             noteCollision(collision);
-            if (collision.time() <= step.settings.zeroTime()) {
-                step.zeroTimeCollisions++;
-            }
             return hit;
         }
         noteCollision(collision);
@@ -201,8 +200,7 @@ public final class TickRun {
             hit = still.resolve(ball, (Contact.StillSurface) contact);
         }
         forgetWhatChanged(collision);
-        if (collision.time() <= step.settings.zeroTime()) {
-            step.zeroTimeCollisions++;
+        if (chained) {
             if (zeroTimeHits.merge(ball, 1, Integer::sum) > step.settings.zeroTimeHitsBeforeWedged()
                     && !(contact instanceof Contact.MovingPart)) {
                 step.wedged++;   // guard (counted): at rest for the rest of this tick
@@ -221,7 +219,14 @@ public final class TickRun {
                 GizmoBase target = step.view.gizmo(connection.target());
                 if (target != null) {
                     step.actions.trigger(target, connection.order(), now);
-                    step.sceneChanged();   // a flipper turned round, an absorber fired, balls woke
+                    if (connection.order().delay() > 0) {
+                        continue;   // nothing happens until the delay has run
+                    }
+                    if (target instanceof MovingShape moving) {
+                        step.movingShapeChanged(moving);   // it turned round, or started, or flashed
+                    } else {
+                        step.sceneChanged();   // an absorber fired, a gate switched, a ball was spawned
+                    }
                 }
             }
         }
@@ -243,7 +248,8 @@ public final class TickRun {
             }
         }
         nanos.put(Stage.REDRAWING, view.lastRedrawNanos());
-        return new TickReport(view.time(), nanos, step.collisions, step.zeroTimeCollisions, step.awake.size(), asleep,
+        return new TickReport(view.time(), nanos, step.collisions, step.zeroTimeCollisions,
+                step.simultaneousCollisions, step.awake.size(), asleep,
                 step.guards(), step.actions.drainEvents(), balls);
     }
 

@@ -65,7 +65,8 @@ public final class ToolIcon implements Icon {
         double m = MARGIN;
         double s = SIZE - 2 * m;
         return switch (tool) {
-            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, ABSORBER, SINK, ACCELERATOR, SPAWNER, GATE, SPINNER ->
+            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, ABSORBER, SINK, ACCELERATOR, SPAWNER, GATE,
+                    DROP_TARGET, SPINNER ->
                     kindSymbol(tool.kind().orElseThrow());
             case BALL -> g -> {
                 fill(g, EditorColors.BALL, new Ellipse2D.Double(6, 12, 10, 10));
@@ -128,6 +129,12 @@ public final class ToolIcon implements Icon {
                 g.setStroke(new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10,
                         new float[] {2.5f, 2f}, 0));
                 g.draw(new Rectangle2D.Double(m + s / 2 + 1, m, s / 2 - 1, s));
+            };
+            case DROP_TARGET -> g -> {
+                fill(g, colour(kind), new Rectangle2D.Double(m, m, s, s * 0.7));
+                fill(g, colour(kind).darker(), new Rectangle2D.Double(m, m + s * 0.85, s, s * 0.15));
+                g.setColor(BoardPainter.TARGET_MARK);
+                g.fill(new Ellipse2D.Double(SIZE / 2.0 - 2.5, m + s * 0.35 - 2.5, 5, 5));
             };
             case SPINNER -> g -> spinner(g, m, s);
             case ACCELERATOR -> g -> {

@@ -113,6 +113,39 @@ class PinchedBallsTest {
     }
 
     /**
+     * Two balls in that pocket (stress.txt's, with the square under it gone): A lies in the notch where the circles
+     * meet, B lies on A, and the flipper swings down onto B. Struck one at a time, A and B would rattle between the
+     * circles, each other and the flipper, every strike of the swinging flipper sending them back faster and the
+     * strikes ever closer together (stress.txt had 160 a tick, at up to 110 L/s). Their limit is the pair carried in
+     * contact: once a ball rattles the cluster is solved inelastic, so a tick never holds many more collisions than
+     * the rattle takes to be seen.
+     */
+    @Test
+    void twoBallsInAPocketUnderASwingingFlipperAreCarriedNotRattled() {
+        Board board = new Board();
+        board.addGizmo(GizmoKind.LEFT_FLIPPER, "LF", 4, 16);
+        board.addGizmo(GizmoKind.CIRCLE, "C3_17", 3, 17);
+        board.addGizmo(GizmoKind.CIRCLE, "C4_18", 4, 18);
+        board.bindKey(90, KeyEdge.DOWN, "LF");
+        board.bindKey(90, KeyEdge.UP, "LF");
+        board.setFlipperState("LF", 90, true);
+        // the circles' centres (3.5, 17.5) and (4.5, 18.5) meet at (4, 18); A touches both, up and to the right
+        double r = Board.BALL_RADIUS;
+        double along = Math.sqrt((0.5 + r) * (0.5 + r) - 0.5) / Math.sqrt(2);
+        board.addBall("A", 4 + along, 18 - along, 0, 0);
+        board.addBall("B", 4 + along + 2 * r * Math.cos(0.3), 18 - along - 2 * r * Math.sin(0.3), 0, 0);
+        board.keyUp(90);
+        int most = 0;
+        for (int t = 0; t < 120; t++) {
+            board.tick(DT);
+            assertThat(Invariants.violations(board)).as("tick %d", t).isEmpty();
+            most = Math.max(most, board.lastTick().collisions());
+        }
+        assertThat(most).isLessThanOrEqualTo(3 * LoopSettings.STANDARD.rattleCollisions());
+        assertThat(board.guardsFired()).isEqualTo(GuardCounts.NONE);
+    }
+
+    /**
      * Two flippers side by side swinging up together close on a ball between them like tongs. Bounced from one to
      * the other in a closing gap it would be struck ever faster; coming back from the other flipper is coming back
      * from something, so it is squeezed out, or jams the pair. No guard, a handful of collisions a tick at most.

@@ -132,6 +132,7 @@ class DefaultBoardFromScratchGuiTest {
             case ACCELERATOR -> Tool.ACCELERATOR;
             case SPAWNER -> Tool.SPAWNER;
             case GATE -> Tool.GATE;
+            case DROP_TARGET -> Tool.DROP_TARGET;
             case SPINNER -> Tool.SPINNER;
         };
         w.clickTool(tool);
