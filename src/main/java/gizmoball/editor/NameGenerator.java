@@ -38,6 +38,7 @@ public final class NameGenerator {
             case GATE -> "G";
             case DROP_TARGET -> "DT";
             case PORTAL -> "P";
+            case SPINNER -> "SN";
         };
     }
 

@@ -14,6 +14,7 @@ import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.gizmo.Sink;
+import gizmoball.model.gizmo.Spinner;
 import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Ball;
 import gizmoball.model.loop.BallGrid;
@@ -285,9 +286,33 @@ public final class Board {
         edited();
     }
 
+    /** Puts a drop target down, as play left it (a board saved during play): nothing until it is raised. */
+    public void setTargetDown(String target) {
+        edits.setTargetDown(target);
+        edited();
+    }
+
     /** The portal and its pair are left without one: walls both. */
     public void unpair(String portal) {
         edits.unpair(portal);
+        edited();
+    }
+
+    /**
+     * A spinner's speed and way in turns per second: positive clockwise on the screen, negative anticlockwise, nonzero
+     * and at most {@link Spinner#MAX_TURNS_PER_SECOND} either way (one turn a second clockwise unless set).
+     */
+    public void setSpinnerSpeed(String spinner, double turnsPerSecond) {
+        edits.setSpinnerSpeed(spinner, turnsPerSecond);
+        edited();
+    }
+
+    /**
+     * Puts a spinner where play left it: its bar at {@code radians} (from +x toward +y), turning or stopped. A board
+     * saved during play keeps its spinners this way; no free ball may be inside the bar there.
+     */
+    public void setSpinnerState(String spinner, double radians, boolean running) {
+        edits.setSpinnerState(spinner, radians, running);
         edited();
     }
 

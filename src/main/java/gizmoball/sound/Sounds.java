@@ -80,6 +80,7 @@ public final class Sounds {
             case GATE -> 600;
             case DROP_TARGET -> 780;
             case PORTAL -> 250;
+            case SPINNER -> 392;
         };
     }
 

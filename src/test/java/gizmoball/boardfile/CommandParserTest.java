@@ -59,8 +59,10 @@ class CommandParserTest {
                 Arguments.of("Colour S1 256 0 0", "red 256 is not a colour channel 0..255"),
                 Arguments.of("Color S1 0 0", "wrong number of arguments: Colour takes <name> and"),
                 Arguments.of("Multiball S 1 2", "Multiball S: an extension of another implementation, not part of the format"),
-                Arguments.of("Sink S 1 2 3", "Sink is an addition of this game to the format: it is written #@Sink"),
-                Arguments.of("Booster 0_2 0", "Booster 0_2: an extension of another implementation, not part of the format"),
+                Arguments.of("Sink S 1 2 3", "wrong number of arguments: 'Sink' of another implementation is read as"
+                        + " #@Sink, which takes 3 (#@Sink <name> <x> <y>), found 4"),
+                Arguments.of("Booster 0_2 0", "wrong number of arguments: 'Booster' of another implementation is read"
+                        + " as #@Accelerator, which takes 3 (#@Accelerator <name> <x> <y>), found 2"),
                 Arguments.of("Flipper F1 1 2", "a Flipper of no known side"),
                 Arguments.of("Bumper", "unknown command 'Bumper'"),
                 Arguments.of("Sqaure S1 1 1", "unknown command 'Sqaure' (did you mean Square?)"),
@@ -69,7 +71,7 @@ class CommandParserTest {
                 Arguments.of("Circel C 1 1", "unknown command 'Circel' (did you mean Circle?)"),
                 Arguments.of("KeyConect key 32 down A", "unknown command 'KeyConect' (did you mean KeyConnect?)"),
                 Arguments.of("Gravty 25", "unknown command 'Gravty' (did you mean Gravity?)"),
-                Arguments.of("Spinner SP 1 1", "Spinner SP: an extension of another implementation, not part of the format"),
+                Arguments.of("Rhombus SP 1 1", "Rhombus SP: an extension of another implementation, not part of the format"),
                 Arguments.of("MouseConnect 1 A", "MouseConnect: an extension of another implementation, not part of the format"),
                 Arguments.of("Square S1 1", "wrong number of arguments: Square takes 3 (Square <name> <x> <y>), found 2"),
                 Arguments.of("LeftFlipper LF87 8 7 false", "wrong number of arguments: LeftFlipper takes 3"),

@@ -72,13 +72,15 @@ class BoardFilesPaintTest {
                 continue;
             }
             // A triangle at its centroid, a sink, a spawner or a drop target on its frame (the centre is a hole, an
-            // arrow, a bull's-eye), a portal on the side away from its mouth, anything else at its centre.
+            // arrow, a bull's-eye), a portal on the side away from its mouth, a spinner on its bar (lying flat as
+            // loaded) half-way out from its hub, anything else at its centre.
             Vect inside = gizmo instanceof BumperView b && gizmo.kind() == GizmoKind.TRIANGLE ? centroid(b.outline())
                     : gizmo instanceof PortalView portal
                     ? new Vect(gizmo.x() + 0.5, gizmo.y() + 0.5).minus(portal.facing().times(0.4))
                     : gizmo.kind() == GizmoKind.SINK || gizmo.kind() == GizmoKind.SPAWNER
                     || gizmo.kind() == GizmoKind.DROP_TARGET
                     ? new Vect(gizmo.x() + 0.1, gizmo.y() + 0.5)
+                    : gizmo.kind() == GizmoKind.SPINNER ? new Vect(gizmo.x() + 0.5, gizmo.y() + 1)
                     : new Vect(gizmo.x() + gizmo.width() / 2.0, gizmo.y() + gizmo.height() / 2.0);
             assertThat(pixel(image, t, inside)).as("%s: %s at %s", file, gizmo.name(), inside)
                     .isEqualTo(BoardPainter.colourOf(gizmo));

@@ -28,7 +28,7 @@ import physics.Vect;
  */
 final class CollisionDetector {
     /** Margin around a ball's swept box when asking the spatial index (touching shapes must be found). */
-    private static final double REACH_MARGIN = 1e-6;
+    static final double REACH_MARGIN = 1e-6;
     /**
      * Slices of a flipper's swing over which the rotating search bounds the ball's motion. Any value finds the
      * same contacts; more slices take fewer search steps for fast balls. Ours, because the API has no constant.

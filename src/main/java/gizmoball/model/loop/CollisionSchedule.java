@@ -5,12 +5,15 @@ import java.util.Arrays;
 import java.util.Collection;
 import java.util.List;
 
+import physics.Vect;
+
 /**
  * Stage 3 over the whole board: the earliest collision of any awake ball within the time left in the tick. It keeps
  * each ball's earliest collision with the scene (walls and gizmos) and with the other balls, in seconds since the
  * tick began, so that after a collision only the balls it changed are asked again, not every ball against
- * everything. What a collision changes is forgotten by the loop: the balls involved, or everything when a
- * trigger, a capture, a launch, a wake-up or a held flipper changes the scene. Ball pairs come from a
+ * everything. What a collision changes is forgotten by the loop: the balls involved; the balls that can reach a
+ * moving shape a trigger turned round; everything when another trigger, a capture, a launch, a wake-up or a held
+ * flipper changes the scene. Ball pairs come from a
  * {@link BallGrid}, so a ball is asked only about the balls it can reach.
  */
 final class CollisionSchedule {
@@ -221,6 +224,23 @@ final class CollisionSchedule {
             }
         }
         pointedAtCount[slot] = 0;
+    }
+
+    /**
+     * Something in the box from (x0, y0) to (x1, y1) moves otherwise than it did: every filed ball that can reach the
+     * box within {@code window} seconds asks again about the scene (its collisions with balls stand).
+     */
+    void forgetReaching(double x0, double y0, double x1, double y1, double window) {
+        for (int slot = 0; slot < filed; slot++) {
+            Ball ball = bySlot[slot];
+            double reach = Arena.BALL_RADIUS + CollisionDetector.speedBound(detector.motion(ball)) * window
+                    + CollisionDetector.REACH_MARGIN;
+            Vect p = ball.position();
+            if (p.x() + reach >= x0 && p.x() - reach <= x1 && p.y() + reach >= y0 && p.y() - reach <= y1) {
+                withScene[slot] = null;
+                markUnknown(slot);
+            }
+        }
     }
 
     void forgetAll() {

@@ -1,5 +1,7 @@
 package gizmoball.model.loop;
 
+import gizmoball.model.gizmo.MovingShape;
+
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
@@ -76,6 +78,22 @@ final class StepContext {
     void sceneChanged() {
         findAwake();
         schedule.file(freeBalls(), elapsed);   // filing forgets every known collision
+    }
+
+    /**
+     * A moving shape changed how it moves (turned round, started, stopped): only the balls that can reach its box in
+     * what is left of the tick can meet it otherwise than they were going to, so only their collisions with the scene
+     * are asked again; where it woke balls (its sweep wakes what lies in its box), everything is filed afresh.
+     */
+    void movingShapeChanged(MovingShape moving) {
+        int wasAwake = awake.size();
+        findAwake();
+        if (awake.size() != wasAwake) {
+            schedule.file(freeBalls(), elapsed);
+            return;
+        }
+        schedule.forgetReaching(moving.x(), moving.y(), moving.x() + moving.width(), moving.y() + moving.height(),
+                dt - elapsed);
     }
 
     void findAwake() {

@@ -219,7 +219,14 @@ public final class TickRun {
                 GizmoBase target = step.view.gizmo(connection.target());
                 if (target != null) {
                     step.actions.trigger(target, connection.order(), now);
-                    step.sceneChanged();   // a flipper turned round, an absorber fired, balls woke
+                    if (connection.order().delay() > 0) {
+                        continue;   // nothing happens until the delay has run
+                    }
+                    if (target instanceof MovingShape moving) {
+                        step.movingShapeChanged(moving);   // it turned round, or started, or flashed
+                    } else {
+                        step.sceneChanged();   // an absorber fired, a gate switched, a ball was spawned
+                    }
                 }
             }
         }

@@ -134,6 +134,7 @@ class DefaultBoardFromScratchGuiTest {
             case GATE -> Tool.GATE;
             case DROP_TARGET -> Tool.DROP_TARGET;
             case PORTAL -> Tool.PORTAL;
+            case SPINNER -> Tool.SPINNER;
         };
         w.clickTool(tool);
         w.dragCells(g.x(), g.y(), g.x() + g.width() - 1, g.y() + g.height() - 1);
