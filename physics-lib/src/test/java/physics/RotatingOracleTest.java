@@ -181,13 +181,18 @@ class RotatingOracleTest {
     }
 
     static void assertAgreesWithOracle(long seed, WorldGap gap, double t) {
-        double oracle = gap.firstContact(FORESIGHT);
+        assertAgreesWithOracle(seed, gap, t, FORESIGHT);
+    }
+
+    /** As above, over a foresight of {@code foresight} seconds. */
+    static void assertAgreesWithOracle(long seed, WorldGap gap, double t, double foresight) {
+        double oracle = gap.firstContact(foresight);
         if (oracle < Double.POSITIVE_INFINITY) {
             assertThat(t).as("seed %d: oracle contact at %s must not be missed or reported late", seed, oracle)
                     .isLessThanOrEqualTo(oracle + CONTACT);
         }
         if (t < Double.POSITIVE_INFINITY) {
-            assertThat(t).as("seed %d: inside the foresight window", seed).isBetween(0.0, FORESIGHT);
+            assertThat(t).as("seed %d: inside the foresight window", seed).isBetween(0.0, foresight);
             assertThat(Math.abs(gap.at(t))).as("seed %d: gap at the reported time %s", seed, t)
                     .isLessThanOrEqualTo(CONTACT);
         }

@@ -9,6 +9,8 @@ import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.SpawnerView;
+import gizmoball.model.gizmo.Spinner;
+import gizmoball.model.gizmo.SpinnerView;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import java.util.ArrayList;
@@ -51,6 +53,9 @@ final class BoardWriter {
             if (gizmo instanceof AcceleratorView accelerator && accelerator.factor() != Accelerator.DEFAULT_FACTOR) {
                 commands.add(new Command.Factor(gizmo.name(), accelerator.factor()));
             }
+            if (gizmo instanceof SpinnerView spinner && spinner.turnsPerSecond() != Spinner.DEFAULT_TURNS_PER_SECOND) {
+                commands.add(new Command.SpinnerSpeed(gizmo.name(), spinner.turnsPerSecond()));
+            }
             if (gizmo instanceof SpawnerView spawner && !spawner.velocity().equals(Vect.ZERO)) {
                 commands.add(new Command.SpawnVelocity(gizmo.name(), spawner.velocity().x(), spawner.velocity().y()));
             }
@@ -59,6 +64,9 @@ final class BoardWriter {
             // Only where play moved it: a board as built is written as before, and other implementations skip it.
             if (gizmo instanceof FlipperView flipper && (flipper.angleFromRest() != 0 || flipper.isActive())) {
                 commands.add(new Command.FlipperState(flipper.name(), flipper.angleFromRest(), flipper.isActive()));
+            }
+            if (gizmo instanceof SpinnerView spinner && (spinner.angle() != 0 || !spinner.isRunning())) {
+                commands.add(new Command.SpinnerState(spinner.name(), spinner.angle(), spinner.isRunning()));
             }
         }
         for (BallView ball : board.balls()) {

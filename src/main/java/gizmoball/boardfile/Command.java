@@ -279,6 +279,45 @@ public sealed interface Command {
         }
     }
 
+    /** {@code #@SpinnerSpeed <name> <turns>}: how many turns a second the spinner makes, negative anticlockwise. */
+    record SpinnerSpeed(String name, double turnsPerSecond) implements Command {
+        public void applyTo(Board board) {
+            board.setSpinnerSpeed(name, turnsPerSecond);
+        }
+
+        public String toLine() {
+            return CommandWord.SPINNER_SPEED.written() + " " + name + " " + format(turnsPerSecond);
+        }
+
+        public List<String> references() {
+            return List.of(name);
+        }
+
+        public Subject subject() {
+            return new Subject("spinner speed", name);
+        }
+    }
+
+    /** {@code #@SpinnerAngle <name> <radians> running|stopped}: where play left a spinner. */
+    record SpinnerState(String name, double radians, boolean running) implements Command {
+        public void applyTo(Board board) {
+            board.setSpinnerState(name, radians, running);
+        }
+
+        public String toLine() {
+            return CommandWord.SPINNER_STATE.written() + " " + name + " " + format(radians) + " "
+                    + (running ? "running" : "stopped");
+        }
+
+        public List<String> references() {
+            return List.of(name);
+        }
+
+        public Subject subject() {
+            return new Subject("spinner state", name);
+        }
+    }
+
     /** {@code #@SpawnVelocity <name> <vx> <vy>}: the velocity of the balls the spawner adds. */
     record SpawnVelocity(String name, double vx, double vy) implements Command {
         public void applyTo(Board board) {

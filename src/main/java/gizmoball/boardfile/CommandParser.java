@@ -5,6 +5,7 @@ import gizmoball.model.KeyEdge;
 import gizmoball.model.gizmo.Accelerator;
 import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Rgb;
+import gizmoball.model.gizmo.Spinner;
 import gizmoball.model.loop.TriggerSource;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -36,12 +37,13 @@ final class CommandParser {
      * extensions: gizmos, connections of the mouse, settings); any other unknown word is simply unknown.
      */
     private static final Set<String> PEER_EXTENSIONS = Set.of("booster",
-            "teleporter", "portal", "rhombus", "octagon", "multiball", "gate", "spinner", "deathsquare",
+            "teleporter", "portal", "rhombus", "octagon", "multiball", "gate", "deathsquare",
             "outerwall", "mouseconnect", "timeperupdate");
     /**
      * Other implementations' gizmos that are ours as well, written bare with name, x and y, and how each is read
      * (their code's behaviour: lheckemann's and d-g-n's sinks remove the ball; tomcurran's accelerator speeds it up
-     * 1.4 times a hit, d-g-n's booster 2 times).
+     * 1.4 times a hit, d-g-n's booster 2 times; the spinners of tomcurran, d-g-n and NiklavsM turn about the centre
+     * of a 2x2 box at 2 pi rad/s, 1080 deg/s and pi rad/s, NiklavsM's reversed by a trigger).
      */
     private static final Map<String, PeerGizmo> PEER_GIZMOS = Map.of(
             "sink", new PeerGizmo(CommandWord.SINK, "a ball that touches it leaves the board, as in the game that"
@@ -53,7 +55,11 @@ final class CommandParser {
                     + " that wrote it adds one (#@SpawnVelocity gives it a velocity)"),
             "booster", new PeerGizmo(CommandWord.ACCELERATOR, "a round bumper that speeds the ball up "
                     + Decimals.format(Accelerator.DEFAULT_FACTOR) + " times a hit (2 times in the game that wrote it:"
-                    + " #@Factor sets it)"));
+                    + " #@Factor sets it)"),
+            "spinner", new PeerGizmo(CommandWord.SPINNER, "a bar turning without end about the centre of its 2x2"
+                    + " box, " + Decimals.format(Spinner.DEFAULT_TURNS_PER_SECOND) + " turn a second clockwise, that a"
+                    + " trigger reverses (the games that wrote them turn theirs half a turn to 3 turns a second:"
+                    + " #@SpinnerSpeed sets it)"));
 
     /** A peer's gizmo command read as one of ours: the word it is read as, and what that means here. */
     private record PeerGizmo(CommandWord word, String meaning) {
@@ -173,7 +179,7 @@ final class CommandParser {
         }
         return switch (word) {
             case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER, GATE,
-                    DROP_TARGET ->
+                    DROP_TARGET, SPINNER ->
                     new Command.AddGizmo(word.kind(),
                     args.get(0), cell("x", args.get(1)), cell("y", args.get(2)));
             case ABSORBER -> absorber(args, notes);
@@ -187,6 +193,9 @@ final class CommandParser {
             case FLIPPER_STATE -> new Command.FlipperState(args.get(0), number("angle", args.get(1)),
                     direction(args.get(2)));
             case FACTOR -> new Command.Factor(args.get(0), number("factor", args.get(1)));
+            case SPINNER_SPEED -> new Command.SpinnerSpeed(args.get(0), number("turns per second", args.get(1)));
+            case SPINNER_STATE -> new Command.SpinnerState(args.get(0), number("angle", args.get(1)),
+                    running(args.get(2)));
             case SPAWN_VELOCITY -> new Command.SpawnVelocity(args.get(0), number("vx", args.get(1)),
                     number("vy", args.get(2)));
             case GRAVITY -> new Command.Gravity(number("gravity", args.get(0)));
@@ -207,6 +216,16 @@ final class CommandParser {
             return false;
         }
         throw new Refusal("a flipper's direction is up or down, not " + word);
+    }
+
+    private static boolean running(String word) throws Refusal {
+        if (word.equalsIgnoreCase("running")) {
+            return true;
+        }
+        if (word.equalsIgnoreCase("stopped")) {
+            return false;
+        }
+        throw new Refusal("a spinner is running or stopped, not " + word);
     }
 
     /** {@code Flipper <name> <x> <y>}: the side is in the name, LF... or RF... */

@@ -31,6 +31,10 @@ enum CommandWord {
     GATE("Gate", "<name> <x> <y>", true),
     /** Extension gizmo: solid until hit, then down until a trigger raises it. */
     DROP_TARGET("DropTarget", "<name> <x> <y>", true),
+    /** Extension gizmo: a bar turning without end about the centre of its 2x2 box. */
+    SPINNER("Spinner", "<name> <x> <y>", true),
+    /** A spinner's speed and way in turns per second (negative: anticlockwise), where it is not the default. */
+    SPINNER_SPEED("SpinnerSpeed", "<name> <turns-per-second>", true),
     /** A spawner's velocity for its balls, where it is not zero. */
     SPAWN_VELOCITY("SpawnVelocity", "<name> <vx> <vy>", true),
     BALL("Ball", "<name> <x> <y> <vx> <vy>"),
@@ -44,6 +48,8 @@ enum CommandWord {
     FACTOR("Factor", "<name> <factor>", true),
     /** Play state: a flipper's angle and direction, written by a save during play. */
     FLIPPER_STATE("FlipperAngle", "<name> <degrees> up|down", true),
+    /** Play state: a spinner's angle and whether it turns, written by a save during play. */
+    SPINNER_STATE("SpinnerAngle", "<name> <radians> running|stopped", true),
     GRAVITY("Gravity", "<g>"),
     FRICTION("Friction", "<mu> <mu2>"),
     /** The game: balls per game. */
@@ -101,6 +107,7 @@ enum CommandWord {
             case SPAWNER -> SPAWNER;
             case GATE -> GATE;
             case DROP_TARGET -> DROP_TARGET;
+            case SPINNER -> SPINNER;
         };
     }
 

@@ -927,7 +927,7 @@ public final class Editor {
     private ToolHandler newHandler(Tool t) {
         return switch (t) {
             case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER, GATE,
-                    DROP_TARGET ->
+                    DROP_TARGET, SPINNER ->
                     new PlaceGizmoTool(this, t.kind().orElseThrow());
             case ABSORBER -> new PlaceAbsorberTool(this);
             case BALL -> new PlaceBallTool(this);

@@ -37,6 +37,7 @@ public final class NameGenerator {
             case SPAWNER -> "SP";
             case GATE -> "G";
             case DROP_TARGET -> "DT";
+            case SPINNER -> "SN";
         };
     }
 

@@ -23,6 +23,8 @@ public enum Tool {
     GATE(KeyEvent.VK_G, GizmoKind.GATE, "click a cell to place a gate: solid, or open while triggers say"),
     DROP_TARGET(KeyEvent.VK_J, GizmoKind.DROP_TARGET,
             "click a cell to place a drop target: solid until a ball hits it, then down until a trigger raises it"),
+    SPINNER(KeyEvent.VK_Y, GizmoKind.SPINNER,
+            "click the top-left cell of a 2x2 box to place a spinner: a bar that turns without end"),
     BALL("Ball", KeyEvent.VK_B, null, "click to place a ball; drag before releasing to give it a velocity"),
     SELECT("Select / Move", KeyEvent.VK_M, null, "click to select (Shift+click adds), drag from empty space to select many, drag what is selected"
             + " to move it, drag an absorber's handle to resize it"),

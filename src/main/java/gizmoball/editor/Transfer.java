@@ -8,6 +8,7 @@ import gizmoball.model.KeyBinding;
 import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.SpawnerView;
+import gizmoball.model.gizmo.SpinnerView;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
@@ -129,7 +130,7 @@ final class Transfer {
         relink(board, before, name, renamed);
     }
 
-    /** A gizmo like {@code g} of {@code from}, named {@code name}, moved by (dx, dy): kind, turns, colour, factor, rules. */
+    /** A gizmo like {@code g} of {@code from}, named {@code name}, moved by (dx, dy): kind, turns, colour, factor, speed, rules. */
     private static void addGizmo(Board to, Board from, Gizmo g, String name, int dx, int dy) {
         if (g.kind() == GizmoKind.ABSORBER) {
             to.addAbsorber(name, g.x() + dx, g.y() + dy, g.x() + dx + g.width(), g.y() + dy + g.height());
@@ -145,6 +146,9 @@ final class Transfer {
         }
         if (g instanceof SpawnerView spawner) {
             to.setSpawnVelocity(name, spawner.velocity().x(), spawner.velocity().y());
+        }
+        if (g instanceof SpinnerView spinner) {
+            to.setSpinnerSpeed(name, spinner.turnsPerSecond());
         }
         if (from.gameRules().ownPoints().containsKey(g.name())) {
             to.setPoints(name, from.gameRules().pointsOf(g.name(), g.kind()));

@@ -14,6 +14,7 @@ import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.gizmo.Sink;
+import gizmoball.model.gizmo.Spinner;
 import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Ball;
 import gizmoball.model.loop.BallGrid;
@@ -273,6 +274,24 @@ public final class Board {
     /** The velocity of the balls the spawner adds (finite, at most {@link #MAX_SPEED}; at rest unless set). */
     public void setSpawnVelocity(String spawner, double vx, double vy) {
         edits.setSpawnVelocity(spawner, vx, vy);
+        edited();
+    }
+
+    /**
+     * A spinner's speed and way in turns per second: positive clockwise on the screen, negative anticlockwise, nonzero
+     * and at most {@link Spinner#MAX_TURNS_PER_SECOND} either way (one turn a second clockwise unless set).
+     */
+    public void setSpinnerSpeed(String spinner, double turnsPerSecond) {
+        edits.setSpinnerSpeed(spinner, turnsPerSecond);
+        edited();
+    }
+
+    /**
+     * Puts a spinner where play left it: its bar at {@code radians} (from +x toward +y), turning or stopped. A board
+     * saved during play keeps its spinners this way; no free ball may be inside the bar there.
+     */
+    public void setSpinnerState(String spinner, double radians, boolean running) {
+        edits.setSpinnerState(spinner, radians, running);
         edited();
     }
 

@@ -7,6 +7,7 @@ import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.gizmo.Accelerator;
 import gizmoball.model.gizmo.Spawner;
+import gizmoball.model.gizmo.Spinner;
 import gizmoball.model.loop.Ball;
 
 import java.util.ArrayList;
@@ -283,6 +284,36 @@ final class Edits {
                     + ", not " + factor);
         }
         accelerator.setFactor(factor);
+    }
+
+    void setSpinnerSpeed(String gizmo, double turnsPerSecond) {
+        Spinner spinner = spinner(gizmo, "a speed of its own");
+        if (!(turnsPerSecond != 0 && Math.abs(turnsPerSecond) <= Spinner.MAX_TURNS_PER_SECOND)) {
+            throw new BoardEditException("a spinner turns up to " + (int) Spinner.MAX_TURNS_PER_SECOND
+                    + " times a second either way (not 0: stop it instead), not " + turnsPerSecond);
+        }
+        spinner.setTurnsPerSecond(turnsPerSecond);
+    }
+
+    void setSpinnerState(String gizmo, double radians, boolean running) {
+        Spinner target = spinner(gizmo, "an angle");
+        if (!Double.isFinite(radians)) {
+            throw new BoardEditException("spinner " + gizmo + ": angle " + radians + " is not a finite number");
+        }
+        Spinner candidate = target.copy();
+        candidate.setAngle(radians);
+        refuseIfPresent(rules.ballOverlap(candidate).map(ball -> PlacementRules.wouldOverlap("spinner " + gizmo
+                + " at " + radians + " radians", "ball", ball)));
+        target.setAngle(radians);
+        target.setRunning(running);
+    }
+
+    private Spinner spinner(String gizmo, String what) {
+        if (!(registry.requireGizmo(gizmo) instanceof Spinner spinner)) {
+            throw new BoardEditException("only a spinner has " + what + ": " + gizmo + " is "
+                    + registry.requireGizmo(gizmo).kind().withArticle());
+        }
+        return spinner;
     }
 
     void setSpawnVelocity(String gizmo, double vx, double vy) {

@@ -8,6 +8,7 @@ import gizmoball.model.gizmo.DropTarget;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.Sink;
 import gizmoball.model.gizmo.Spawner;
+import gizmoball.model.gizmo.Spinner;
 import gizmoball.model.gizmo.Surroundings;
 import gizmoball.model.gizmo.SwitchedCell;
 import gizmoball.model.loop.Ball;
@@ -145,6 +146,14 @@ final class Play implements Surroundings {
         if (flipper.isMoving() && !wasMoving) {
             recordEvent(new PlayEvent.Swing(flipper.name(), flipper.isActive()));
             wakeSweep(flipper);
+        }
+    }
+
+    /** A spinner that starts to turn wakes every ball in its box and what rests on them. */
+    @Override
+    public void spun(Spinner spinner, boolean wasMoving) {
+        if (spinner.isMoving() && !wasMoving) {
+            wakeSweep(spinner);
         }
     }
 

@@ -78,6 +78,7 @@ public final class Sounds {
             case SPAWNER -> 440;
             case GATE -> 600;
             case DROP_TARGET -> 780;
+            case SPINNER -> 392;
         };
     }
 

@@ -67,6 +67,7 @@ public final class BoardPainter {
             case SPAWNER -> new Color(0x2bb3a6);
             case GATE -> new Color(0xc9a46b);
             case DROP_TARGET -> new Color(0xe8467c);
+            case SPINNER -> new Color(0xe85fb0);
         };
     }
 

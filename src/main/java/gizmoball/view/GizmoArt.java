@@ -8,6 +8,7 @@ import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GateView;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.SpawnerView;
+import gizmoball.model.gizmo.SpinnerView;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Graphics2D;
@@ -57,16 +58,26 @@ enum GizmoArt {
         @Override
         void paint(Graphics2D g, Gizmo gizmo, Interpolation between, Color fill, float pixel) {
             FlipperView f = (FlipperView) gizmo;
-            Line2D bar = bar(f, between);
-            g.setColor(fill.darker());
-            g.setStroke(roundCapped(2 * f.radius()));
-            g.draw(bar);
-            g.setColor(fill);
-            g.setStroke(roundCapped(2 * f.radius() - 2 * pixel));
-            g.draw(bar);
-            double hub = f.radius() / 3;
-            g.setColor(fill.darker().darker());
-            g.fill(new Ellipse2D.Double(f.pivot().x() - hub, f.pivot().y() - hub, 2 * hub, 2 * hub));
+            paintBar(g, bar(f, between), f.radius(), f.pivot(), fill, pixel);
+        }
+    },
+    /** A spinner: its bar with round ends across the pivot, at the angle play has turned it to, and a hub. */
+    SPINNER_BAR {
+        @Override
+        boolean changesInPlay() {
+            return true;
+        }
+
+        @Override
+        Shape outline(Gizmo gizmo, Interpolation between) {
+            SpinnerView s = (SpinnerView) gizmo;
+            return roundCapped(2 * s.radius()).createStrokedShape(bar(s, between));
+        }
+
+        @Override
+        void paint(Graphics2D g, Gizmo gizmo, Interpolation between, Color fill, float pixel) {
+            SpinnerView s = (SpinnerView) gizmo;
+            paintBar(g, bar(s, between), s.radius(), s.pivot(), fill, pixel);
         }
     },
     /** A sink: its cell, with the hole the balls go into. */
@@ -206,6 +217,7 @@ enum GizmoArt {
             case SPAWNER -> SPAWNER_MOUTH;
             case GATE -> GATE_CELL;
             case DROP_TARGET -> TARGET_CELL;
+            case SPINNER -> SPINNER_BAR;
         };
     }
 
@@ -227,6 +239,27 @@ enum GizmoArt {
 
     private static Line2D bar(FlipperView f, Interpolation between) {
         return new Line2D.Double(f.pivot().toPoint2D(), between.tip(f).toPoint2D());
+    }
+
+    /** From one end's centre to the other's, at the angle drawn between two ticks. */
+    private static Line2D bar(SpinnerView s, Interpolation between) {
+        double angle = between.angle(s);
+        double arm = s.ends().get(1).minus(s.pivot()).length();
+        Vect along = new Vect(arm * Math.cos(angle), arm * Math.sin(angle));
+        return new Line2D.Double(s.pivot().minus(along).toPoint2D(), s.pivot().plus(along).toPoint2D());
+    }
+
+    /** A bar of round ends {@code radius}, with a one-pixel darker edge and a hub at its pivot. */
+    private static void paintBar(Graphics2D g, Line2D bar, double radius, Vect pivot, Color fill, float pixel) {
+        g.setColor(fill.darker());
+        g.setStroke(roundCapped(2 * radius));
+        g.draw(bar);
+        g.setColor(fill);
+        g.setStroke(roundCapped(2 * radius - 2 * pixel));
+        g.draw(bar);
+        double hub = radius / 3;
+        g.setColor(fill.darker().darker());
+        g.fill(new Ellipse2D.Double(pivot.x() - hub, pivot.y() - hub, 2 * hub, 2 * hub));
     }
 
     private static BasicStroke roundCapped(double width) {

@@ -3,6 +3,7 @@ package gizmoball.view;
 import gizmoball.model.Board;
 import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.SpinnerView;
 import gizmoball.model.loop.BallView;
 import java.util.HashMap;
 import java.util.Map;
@@ -14,7 +15,7 @@ import physics.Vect;
  * at the tick before the last to the board at the last, as far as the real time since has come towards the next
  * tick ({@link #setFraction}). Only the drawing: the model, its ticks and replays are untouched.
  * <p>
- * A free ball moves in a straight line between ticks; a flipper turns about its pivot. What was not there at the
+ * A free ball moves in a straight line between ticks; a flipper or a spinner turns about its pivot. What was not there at the
  * tick before (a ball placed, fired from an absorber, caught by one) and any change other than a tick (an edit, a
  * load, Reset) are drawn where they are.
  */
@@ -23,12 +24,15 @@ final class Interpolation {
     private Map<String, Vect> ballsNow = Map.of();
     private Map<String, Vect> tipsBefore = Map.of();
     private Map<String, Vect> tipsNow = Map.of();
+    private Map<String, Double> anglesBefore = Map.of();
+    private Map<String, Double> anglesNow = Map.of();
     private double fraction = 1;
 
     /** The board ticked: the last tick's positions become the ones drawn from. */
     void ticked(Board board) {
         ballsBefore = ballsNow;
         tipsBefore = tipsNow;
+        anglesBefore = anglesNow;
         take(board);
     }
 
@@ -37,6 +41,7 @@ final class Interpolation {
         take(board);
         ballsBefore = ballsNow;
         tipsBefore = tipsNow;
+        anglesBefore = anglesNow;
     }
 
     /** How far real time has come from the last tick towards the next, 0..1 (1 when the game is stopped). */
@@ -74,6 +79,16 @@ final class Interpolation {
         return pivot.plus(new Vect(length * StrictMath.cos(angle), length * StrictMath.sin(angle)));
     }
 
+    /** At what angle to draw the spinner's bar: turned the short way from its angle at the tick before. */
+    double angle(SpinnerView spinner) {
+        Double before = anglesBefore.get(spinner.name());
+        double now = spinner.angle();
+        if (before == null || !Double.valueOf(now).equals(anglesNow.get(spinner.name()))) {
+            return now;
+        }
+        return before + StrictMath.IEEEremainder(now - before, 2 * Math.PI) * fraction;
+    }
+
     private void take(Board board) {
         Map<String, Vect> balls = new HashMap<>();
         for (BallView ball : board.balls()) {
@@ -82,12 +97,16 @@ final class Interpolation {
             }
         }
         Map<String, Vect> tips = new HashMap<>();
+        Map<String, Double> angles = new HashMap<>();
         for (Gizmo gizmo : board.gizmos()) {
             if (gizmo instanceof FlipperView flipper) {
                 tips.put(flipper.name(), flipper.tip());
+            } else if (gizmo instanceof SpinnerView spinner) {
+                angles.put(spinner.name(), spinner.angle());
             }
         }
         ballsNow = balls;
         tipsNow = tips;
+        anglesNow = angles;
     }
 }

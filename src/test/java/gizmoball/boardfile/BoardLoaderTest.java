@@ -103,12 +103,12 @@ class BoardLoaderTest {
 
     @Test
     void reportsSyntaxAndBoardErrorsTogetherInLineOrder() {
-        String text = String.join("\n", "Square S 1 1", "Square T 1 1", "Spinner X 3 3", "Connect S Ghost",
+        String text = String.join("\n", "Square S 1 1", "Square T 1 1", "Rhombus X 3 3", "Connect S Ghost",
                 "Circle C 4.5 4", "Circle C 4 4");
         BoardFileException refused = catchThrowableOfType(() -> BoardFiles.load("f", text), BoardFileException.class);
         assertThat(refused.errors()).extracting(BoardFileError::line).containsExactly(2, 3, 4, 5);
         assertThat(refused.errors().get(1).reason())
-                .isEqualTo("Spinner X: an extension of another implementation, not part of the format");
+                .isEqualTo("Rhombus X: an extension of another implementation, not part of the format");
     }
 
     @Test

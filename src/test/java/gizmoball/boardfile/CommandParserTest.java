@@ -69,7 +69,7 @@ class CommandParserTest {
                 Arguments.of("Circel C 1 1", "unknown command 'Circel' (did you mean Circle?)"),
                 Arguments.of("KeyConect key 32 down A", "unknown command 'KeyConect' (did you mean KeyConnect?)"),
                 Arguments.of("Gravty 25", "unknown command 'Gravty' (did you mean Gravity?)"),
-                Arguments.of("Spinner SP 1 1", "Spinner SP: an extension of another implementation, not part of the format"),
+                Arguments.of("Rhombus SP 1 1", "Rhombus SP: an extension of another implementation, not part of the format"),
                 Arguments.of("MouseConnect 1 A", "MouseConnect: an extension of another implementation, not part of the format"),
                 Arguments.of("Square S1 1", "wrong number of arguments: Square takes 3 (Square <name> <x> <y>), found 2"),
                 Arguments.of("LeftFlipper LF87 8 7 false", "wrong number of arguments: LeftFlipper takes 3"),

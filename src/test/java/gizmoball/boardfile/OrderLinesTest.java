@@ -85,7 +85,7 @@ class OrderLinesTest {
                         + " game to the format: the line is written #@KeyConnect");
         assertThatThrownBy(() -> BoardFiles.load("t", "Absorber A 0 19 20 20\n#@KeyConnect key 32 down A shoot\n"))
                 .isInstanceOf(BoardFileException.class)
-                .hasMessageContaining("unknown action 'shoot': an action is one of raise, lower, toggle, fire, open, close, spawn, flash");
+                .hasMessageContaining("unknown action 'shoot': an action is one of raise, lower, toggle, fire, open, close, spawn, reverse, start, stop, flash");
         assertThatThrownBy(() -> BoardFiles.load("t", "Absorber A 0 19 20 20\n#@KeyConnect key 32 down A raise\n"))
                 .isInstanceOf(BoardFileException.class)
                 .hasMessageContaining("A is an absorber, which can fire or flash, not raise");

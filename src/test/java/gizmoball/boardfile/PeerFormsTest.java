@@ -220,7 +220,7 @@ class PeerFormsTest {
         LoadResult result = BoardFiles.loadSkippingBadLines("f", fixture("refused-forms.txt"));
 
         assertThat(result.skippedLines()).extracting(BoardFileError::line, BoardFileError::reason).containsExactly(
-                tuple(1, "Spinner SP1: an extension of another implementation, not part of the format"),
+                tuple(1, "Rhombus SP1: an extension of another implementation, not part of the format"),
                 tuple(2, "Teleporter TEL1: an extension of another implementation, not part of the format"),
                 tuple(3, "MouseConnect: an extension of another implementation, not part of the format"),
                 tuple(4, "x coordinate 250 is far outside the 20x20 board: pixel coordinates, it seems, but the"

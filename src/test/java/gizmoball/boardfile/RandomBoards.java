@@ -24,8 +24,9 @@ final class RandomBoards {
     private static final int[] KEY_CODES = {32, 47, 65, 76, 81, 87, 90, 10, 37, 38, 39, 40, 127, 112};
     private static final GizmoKind[] PLACEABLE = {GizmoKind.SQUARE, GizmoKind.CIRCLE, GizmoKind.TRIANGLE,
             GizmoKind.LEFT_FLIPPER, GizmoKind.RIGHT_FLIPPER};
-    /** Issue 22's kinds of a fixed place that the property test draws. */
-    private static final GizmoKind[] EXTENSIONS = {GizmoKind.SINK, GizmoKind.ACCELERATOR, GizmoKind.DROP_TARGET};
+    /** Issue 22's kinds that the property test draws (a spinner with a speed of its own, sometimes). */
+    private static final GizmoKind[] EXTENSIONS = {GizmoKind.SINK, GizmoKind.ACCELERATOR, GizmoKind.DROP_TARGET,
+            GizmoKind.SPINNER};
 
     private final Random random;
 
@@ -79,7 +80,8 @@ final class RandomBoards {
 
     /**
      * Issue 22, drawn last so that the rest of each board is what it was before: sinks, accelerators (some with a
-     * factor of their own) and drop targets, and connections and key bindings with actions and delays.
+     * factor of their own), drop targets and spinners (some with a speed of their own), and connections and key
+     * bindings with actions and delays.
      */
     private void addExtensions(Board board) {
         if (random.nextBoolean()) {
@@ -92,6 +94,9 @@ final class RandomBoards {
             attempt(() -> board.addGizmo(kind, name, random.nextInt(20), random.nextInt(20)));
             if (kind == GizmoKind.ACCELERATOR && random.nextBoolean()) {
                 attempt(() -> board.setFactor(name, 1 + random.nextInt(17) / 4.0));
+            }
+            if (kind == GizmoKind.SPINNER && random.nextBoolean()) {
+                attempt(() -> board.setSpinnerSpeed(name, (random.nextBoolean() ? 1 : -1) * (1 + random.nextInt(12)) / 4.0));
             }
         }
         List<String> names = board.gizmos().stream().map(Gizmo::name).toList();

@@ -9,12 +9,13 @@ import gizmoball.model.gizmo.GateView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Sink;
+import gizmoball.model.gizmo.Spinner;
 
 import java.util.List;
 
 /**
  * The solid body of each gizmo, built from what a view may read (kind, footprint cell, size, rotation, a flipper's
- * angle) and the product description's shapes (SPEC.md, "Gizmos"), never from the game's own shapes or distances.
+ * angle, a spinner's) and the product description's shapes (SPEC.md, "Gizmos"), never from the game's own shapes or distances.
  */
 final class Bodies {
     /** A flipper's bar: 2 L long with round ends of radius 0.25 L, so the ends' centres are 1.5 L apart. */
@@ -31,6 +32,9 @@ final class Bodies {
         }
         if (gizmo instanceof Flipper flipper) {
             return flipper(flipper);
+        }
+        if (gizmo instanceof Spinner spinner) {
+            return spinner(spinner);
         }
         if (gizmo instanceof Sink || switches(gizmo)) {
             return rectangle(gizmo.x(), gizmo.y(), 1, 1);   // a gate's or drop target's cell, when it is there
@@ -70,9 +74,22 @@ final class Bodies {
                 new Point(x, y + height)));
     }
 
-    /** The 2 x 2 box a flipper swings in, whatever its angle and rotation. */
-    static Solid box(Flipper flipper) {
-        return rectangle(flipper.x(), flipper.y(), flipper.width(), flipper.height());
+    /** The 2 x 2 box a flipper or a spinner turns in, whatever its angle and rotation. */
+    static Solid box(Gizmo gizmo) {
+        return rectangle(gizmo.x(), gizmo.y(), gizmo.width(), gizmo.height());
+    }
+
+    /**
+     * A spinner's bar at its current angle (radians from +x toward +y): as a flipper's, 2 L long with round ends of
+     * radius 0.25, centred on its box, so its ends' centres lie 0.75 L either side of the box's centre (issue 22).
+     */
+    static Solid.Capsule spinner(Spinner spinner) {
+        double cx = spinner.x() + 1;
+        double cy = spinner.y() + 1;
+        double arm = FLIPPER_REACH / 2;
+        double dx = arm * Math.cos(spinner.angle());
+        double dy = arm * Math.sin(spinner.angle());
+        return new Solid.Capsule(new Point(cx - dx, cy - dy), new Point(cx + dx, cy + dy), FLIPPER_RADIUS);
     }
 
     /**

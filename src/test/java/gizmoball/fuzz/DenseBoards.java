@@ -3,7 +3,9 @@ package gizmoball.fuzz;
 import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.gizmo.Action;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Order;
 import gizmoball.model.loop.TriggerSource;
 
 import java.util.ArrayList;
@@ -14,7 +16,8 @@ import java.util.SplittableRandom;
 /**
  * Random dense boards from a seed, as players build them (issue 20, "Your own fuzz"): bumpers of every kind in every
  * rotation (accelerators, sinks, gates and drop targets among them, issue 22, except where energy must be kept; the
- * gates and drop targets switched by keys and hits) packed in blocks, corridors one or two cells wide, checkerboards and scattered; flippers in pockets of
+ * gates and drop targets switched by keys and hits) packed in blocks,
+ * spinners turning either way (added last, keys reverse, start and stop them, bumpers trigger them), corridors one or two cells wide, checkerboards and scattered; flippers in pockets of
  * bumpers, in facing pairs (tongs) and in clumps, some starting part-way through a swing; absorbers along the floor
  * and elsewhere, many firing themselves; 5-40 balls placed free, touching gizmos, flippers (their pivot ends too) and
  * each other, at up to 100 L/s; keys bound to the flippers and absorbers and a script pressing them. Gravity and
@@ -38,6 +41,12 @@ public final class DenseBoards {
     private static final int SIZE = Board.SIZE;
 
     private final SplittableRandom random;
+    /**
+     * The spinners' own chance: they are drawn last, into what is free, from a stream of their own, so that every
+     * board is the one it was before spinners were drawn, with spinners added (issue 22).
+     */
+    private final SplittableRandom spinnerRandom;
+    private static final long SPINNER_STREAM = 0x5b1_22L;
     private final Board board = new Board();
     private final List<String> recipe = new ArrayList<>();
     private final List<String> bumpers = new ArrayList<>();
@@ -50,6 +59,7 @@ public final class DenseBoards {
 
     private DenseBoards(long seed) {
         random = new SplittableRandom(seed);
+        spinnerRandom = new SplittableRandom(seed ^ SPINNER_STREAM);
     }
 
     /** The board of {@code seed} with a key script for {@code ticks} ticks of play. */
@@ -77,6 +87,9 @@ public final class DenseBoards {
         }
         int balls = new BallPlacer(random, board, this::nextName).place(5 + random.nextInt(36));
         recipe.add(balls + " balls");
+        if (!energyKept) {
+            spinners();
+        }
         return board;
     }
 
@@ -227,6 +240,50 @@ public final class DenseBoards {
             flippers.add(name);
         }
         return name;
+    }
+
+    // ------------------------------------------------------------------------------------------------ spinners
+
+    /**
+     * Up to three spinners (issue 22) where there is room once the rest is built (among the bumpers, on balls that
+     * its bar will bat), at speeds from a quarter turn to three turns a second either way, some starting at an
+     * angle of their own; the keys already bound also reverse, start or stop them, and the bumpers trigger them.
+     */
+    private void spinners() {
+        SplittableRandom r = spinnerRandom;
+        int count = r.nextInt(4);
+        List<String> spinners = new ArrayList<>();
+        for (int i = 0; i < count * 20 && spinners.size() < count; i++) {
+            String name = nextName("SN");
+            try {
+                board.addGizmo(GizmoKind.SPINNER, name, r.nextInt(SIZE - 1), r.nextInt(SIZE - 1));
+            } catch (BoardEditException refused) {
+                continue;   // taken, or on a ball: another spot
+            }
+            spinners.add(name);
+            double turns = r.nextInt(3) == 0 ? 1 : round(r.nextDouble(0.25, 3));
+            board.setSpinnerSpeed(name, r.nextBoolean() ? turns : -turns);
+            if (r.nextInt(3) == 0) {
+                try {
+                    board.setSpinnerState(name, r.nextDouble(0, 2 * Math.PI), r.nextInt(4) > 0);
+                } catch (BoardEditException onABall) {
+                    // the bar there would lie on a ball: it starts lying flat
+                }
+            }
+            Action[] actions = {Action.REVERSE, Action.START, Action.STOP};
+            for (int k = 0; k < 2 && !keysUsed.isEmpty(); k++) {
+                try {
+                    board.bindKey(keysUsed.get(r.nextInt(keysUsed.size())), KeyEdge.DOWN, name,
+                            Order.of(actions[r.nextInt(actions.length)]));
+                } catch (BoardEditException duplicate) {
+                    // the same key drawn again for the spinner: one binding fewer
+                }
+            }
+            if (!bumpers.isEmpty() && r.nextBoolean()) {
+                board.connect(TriggerSource.gizmo(bumpers.get(r.nextInt(bumpers.size()))), name);
+            }
+        }
+        recipe.add(spinners.size() + " spinners");
     }
 
     // ------------------------------------------------------------------------------------------------ bumpers

@@ -85,6 +85,7 @@ class DenseBoardsTest {
         int startedSwinging = 0;
         int heavy = 0;
         int upsideDown = 0;
+        int spinners = 0;
         for (FuzzCase c : CASES) {
             Board board = c.board();
             for (Gizmo g : board.gizmos()) {
@@ -93,6 +94,7 @@ class DenseBoardsTest {
                     flipperNeighbours += touchesAnother(board, f) ? 1 : 0;
                     startedSwinging += f.angleFromRest() > 0 ? 1 : 0;
                 }
+                spinners += g.kind() == GizmoKind.SPINNER ? 1 : 0;
             }
             for (Connection connection : board.connections()) {
                 selfFiring += connection.source().equals(TriggerSource.gizmo(connection.target())) ? 1 : 0;
@@ -109,7 +111,8 @@ class DenseBoardsTest {
                 assertThat(kindsAndTurns).contains(kind + " " + turns);
             }
         }
-        assertThat(kindsAndTurns).contains("CIRCLE 0", "ABSORBER 0");
+        assertThat(kindsAndTurns).contains("CIRCLE 0", "ABSORBER 0", "SINK 0", "ACCELERATOR 0", "SPINNER 0");
+        assertThat(spinners).as("spinners").isGreaterThan(20);
         assertThat(flipperNeighbours).as("flippers next to other gizmos").isGreaterThan(100);
         assertThat(selfFiring).as("absorbers firing themselves").isGreaterThan(30);
         assertThat(energyKept).as("boards keeping energy").isBetween(8, 40);

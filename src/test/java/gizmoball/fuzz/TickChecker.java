@@ -4,6 +4,7 @@ import gizmoball.model.Board;
 import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.Accelerator;
 import gizmoball.model.gizmo.Sink;
+import gizmoball.model.gizmo.Spinner;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.loop.BallView;
@@ -52,9 +53,10 @@ public final class TickChecker {
     private final List<List<Body>> cells = new ArrayList<>();
     private final List<Body> still = new ArrayList<>();
     private final List<Flipper> flippers = new ArrayList<>();
+    private final List<Spinner> spinners = new ArrayList<>();
     /** Gates and drop targets: their cells are bodies only while they are there (read after every tick). */
     private final List<Gizmo> switching = new ArrayList<>();
-    /** The boxes flippers swing in: nothing of a flipper is ever outside its 2 x 2 box. */
+    /** The boxes flippers and spinners turn in: nothing of either is ever outside its 2 x 2 box. */
     private final List<Body> flipperBoxes = new ArrayList<>();
     private final boolean energyKept;
     private final double gravity;
@@ -78,6 +80,12 @@ public final class TickChecker {
             if (gizmo instanceof Flipper flipper) {
                 flippers.add(flipper);
                 flipperBoxes.add(new Body(flipper.name(), Bodies.box(flipper)));
+                movers = true;
+                continue;
+            }
+            if (gizmo instanceof Spinner spinner) {
+                spinners.add(spinner);
+                flipperBoxes.add(new Body(spinner.name(), Bodies.box(spinner)));
                 movers = true;
                 continue;
             }
@@ -141,6 +149,9 @@ public final class TickChecker {
         List<Body> moving = new ArrayList<>();
         for (Flipper flipper : flippers) {
             moving.add(new Body(flipper.name(), Bodies.flipper(flipper)));
+        }
+        for (Spinner spinner : spinners) {
+            moving.add(new Body(spinner.name(), Bodies.spinner(spinner)));
         }
         for (Gizmo cell : switching) {
             if (Bodies.present(cell)) {

@@ -77,11 +77,11 @@ class HeadlessRunnerTest {
 
     @Test
     void aBadBoardExitsTwoWithEveryBadLineOnStandardError() throws Exception {
-        Path file = board("Square S 1 1\nSquare S 2 2\nSpinner X 1 1\n");
+        Path file = board("Square S 1 1\nSquare S 2 2\nRhombus X 1 1\n");
         assertThat(run("--headless", "--ticks", "10", file.toString())).isEqualTo(HeadlessRunner.BAD_INPUT);
         assertThat(stdout()).isEmpty();
         assertThat(stderr()).contains(file + ":2: name S is already used: Square S 2 2",
-                file + ":3: Spinner X: an extension of another implementation, not part of the format: Spinner X 1 1");
+                file + ":3: Rhombus X: an extension of another implementation, not part of the format: Rhombus X 1 1");
     }
 
     @Test

@@ -8,6 +8,7 @@ import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Order;
+import gizmoball.model.gizmo.SpinnerView;
 import gizmoball.model.loop.BallView;
 import java.util.ArrayList;
 import java.util.List;
@@ -225,6 +226,9 @@ class WiringKitTest {
             case LOWER, CLOSE, FLASH -> before;
             case FIRE -> before.withHeld(0);
             case SPAWN -> before.withOneMoreBall();
+            case REVERSE -> before.withSpinnerTurns(-before.spinnerTurns());
+            case START -> before;   // a spinner turns from the start
+            case STOP -> before.withSpinnerRunning(false);
         };
     }
 
@@ -232,29 +236,42 @@ class WiringKitTest {
         return (FlipperView) board.gizmo("G").orElseThrow();
     }
 
-    /** What an action can change: whether the flipper is up, how many balls the absorber holds, how many there are. */
-    private record State(boolean flipperActive, int held, int balls, boolean gateOpen) {
+    /**
+     * What an action can change: whether the flipper is up, how many balls the absorber holds, how many there are,
+     * whether the gate is open, the spinner's speed and way (0 for another kind) and whether it runs.
+     */
+    private record State(boolean flipperActive, int held, int balls, boolean gateOpen, double spinnerTurns,
+                         boolean spinnerRunning) {
         static State of(Board board) {
             Gizmo g = board.gizmo("G").orElseThrow();
             return new State(g instanceof FlipperView f && f.isActive(),
                     (int) board.balls().stream().filter(BallView::isCaptured).count(), board.balls().size(),
-                    g instanceof gizmoball.model.gizmo.GateView gate && gate.isOpen());
+                    g instanceof gizmoball.model.gizmo.GateView gate && gate.isOpen(),
+                    g instanceof SpinnerView s ? s.turnsPerSecond() : 0, g instanceof SpinnerView s && s.isRunning());
         }
 
         State withFlipperActive(boolean active) {
-            return new State(active, held, balls, gateOpen);
+            return new State(active, held, balls, gateOpen, spinnerTurns, spinnerRunning);
         }
 
         State withHeld(int n) {
-            return new State(flipperActive, n, balls, gateOpen);
+            return new State(flipperActive, n, balls, gateOpen, spinnerTurns, spinnerRunning);
         }
 
         State withOneMoreBall() {
-            return new State(flipperActive, held, balls + 1, gateOpen);
+            return new State(flipperActive, held, balls + 1, gateOpen, spinnerTurns, spinnerRunning);
         }
 
         State withGateOpen() {
-            return new State(flipperActive, held, balls, true);
+            return new State(flipperActive, held, balls, true, spinnerTurns, spinnerRunning);
+        }
+
+        State withSpinnerTurns(double turns) {
+            return new State(flipperActive, held, balls, gateOpen, turns, spinnerRunning);
+        }
+
+        State withSpinnerRunning(boolean running) {
+            return new State(flipperActive, held, balls, gateOpen, spinnerTurns, running);
         }
     }
 }

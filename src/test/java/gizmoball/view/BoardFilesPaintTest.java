@@ -70,11 +70,12 @@ class BoardFilesPaintTest {
             if (gizmo.kind() == GizmoKind.LEFT_FLIPPER || gizmo.kind() == GizmoKind.RIGHT_FLIPPER) {
                 continue;
             }
-            // A triangle at its centroid, a sink or a spawner on its frame (the centre is a hole, an arrow), anything
-            // else at its centre.
+            // A triangle at its centroid, a sink or a spawner on its frame (the centre is a hole, an arrow), a
+            // spinner on its bar (lying flat as loaded) half-way out from its hub, anything else at its centre.
             Vect inside = gizmo instanceof BumperView b && gizmo.kind() == GizmoKind.TRIANGLE ? centroid(b.outline())
                     : gizmo.kind() == GizmoKind.SINK || gizmo.kind() == GizmoKind.SPAWNER
                     ? new Vect(gizmo.x() + 0.1, gizmo.y() + 0.5)
+                    : gizmo.kind() == GizmoKind.SPINNER ? new Vect(gizmo.x() + 0.5, gizmo.y() + 1)
                     : new Vect(gizmo.x() + gizmo.width() / 2.0, gizmo.y() + gizmo.height() / 2.0);
             assertThat(pixel(image, t, inside)).as("%s: %s at %s", file, gizmo.name(), inside)
                     .isEqualTo(BoardPainter.colourOf(gizmo));

@@ -19,7 +19,7 @@ import org.junit.jupiter.api.Test;
 /** The notes of a load (lines read in another implementation's way) in the problems dialog (needs a display). */
 class LoadNotesGuiTest extends WindowOnFiles {
     private static final String NOTES_ONLY = "Square S 1 1\ncolor S #99b3ff\nBall B 5 5\n";
-    private static final String NOTES_AND_ERRORS = "Connect S C\nSquare S 1 1\nCircle C 3 3\nSpinner X 5 5\n";
+    private static final String NOTES_AND_ERRORS = "Connect S C\nSquare S 1 1\nCircle C 3 3\nRhombus X 5 5\n";
 
     @Test
     void aFileWithOnlyNotesLoadsAndThenListsThemWithLineNumbers() throws Exception {
@@ -48,7 +48,7 @@ class LoadNotesGuiTest extends WindowOnFiles {
         SwingUtilities.invokeLater(() -> app.files().open(file));
         JDialog dialog = awaitProblemsDialog();
         assertThat(listed(dialog, "loadProblems.list")).containsExactly(
-                "line 4: Spinner X 5 5   <- Spinner X: an extension of another implementation, not part of the format");
+                "line 4: Rhombus X 5 5   <- Rhombus X: an extension of another implementation, not part of the format");
         assertThat(listed(dialog, "loadProblems.notes.list")).containsExactly(
                 "line 1: Connect S C   <- applied after line 3, which defines C");
         assertThat(onEdt(() -> Gui.find(dialog.getContentPane(), JLabel.class,

@@ -23,6 +23,7 @@ public final class Points {
             case CIRCLE -> 50;
             case ACCELERATOR -> 20;
             case DROP_TARGET -> 100;
+            case SPINNER -> 5;
             case LEFT_FLIPPER, RIGHT_FLIPPER, ABSORBER, SINK, SPAWNER, GATE -> 0;
         };
     }

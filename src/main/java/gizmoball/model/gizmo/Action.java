@@ -23,6 +23,12 @@ public enum Action {
     CLOSE,
     /** A spawner adds a ball at its mouth. */
     SPAWN,
+    /** A spinner turns the other way. */
+    REVERSE,
+    /** A spinner turns. */
+    START,
+    /** A spinner stops where it is. */
+    STOP,
     /** Lights up and does nothing else. */
     FLASH;
 

@@ -7,7 +7,7 @@ import java.util.Optional;
  * view). Coordinates are whole cells; the footprint is the rectangle x..x+width, y..y+height.
  */
 public sealed interface Gizmo permits BumperView, FlipperView, AbsorberView, SinkView, AcceleratorView, SpawnerView, GateView,
-        DropTargetView {
+        DropTargetView, SpinnerView {
     String name();
 
     GizmoKind kind();

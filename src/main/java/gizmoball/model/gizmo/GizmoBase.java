@@ -10,7 +10,7 @@ import physics.Vect;
  * The members the board and its loop need beyond that are public only because the board lives in another
  * package; each says so: only the board changes gizmos, after it has checked the change on a copy.
  */
-public abstract sealed class GizmoBase permits Bumper, Flipper, Absorber, Sink, Accelerator, Spawner, SwitchedCell {
+public abstract sealed class GizmoBase permits Bumper, Flipper, Absorber, Sink, Accelerator, Spawner, SwitchedCell, Spinner {
     private final String name;
     private final GizmoKind kind;
     private int x;

@@ -9,7 +9,7 @@ import java.util.Locale;
  */
 public enum GizmoKind {
     SQUARE(1), CIRCLE(1), TRIANGLE(1), LEFT_FLIPPER(2), RIGHT_FLIPPER(2), ABSORBER(1), SINK(1), ACCELERATOR(1), SPAWNER(1), GATE(1),
-    DROP_TARGET(1);
+    DROP_TARGET(1), SPINNER(2);
 
     private final int side;
 
@@ -32,7 +32,8 @@ public enum GizmoKind {
     public boolean rotates() {
         return switch (this) {
             case SQUARE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SPAWNER -> true;
-            case CIRCLE, ABSORBER, SINK, ACCELERATOR, GATE, DROP_TARGET -> false;
+            // A spinner turns through every angle anyway: a quarter turn of its start changes nothing of its play.
+            case CIRCLE, ABSORBER, SINK, ACCELERATOR, GATE, DROP_TARGET, SPINNER -> false;
         };
     }
 
@@ -48,6 +49,7 @@ public enum GizmoKind {
             case SPAWNER -> List.of(Action.SPAWN, Action.FLASH);
             case GATE -> List.of(Action.TOGGLE, Action.OPEN, Action.CLOSE, Action.FLASH);
             case DROP_TARGET -> List.of(Action.RAISE, Action.FLASH);
+            case SPINNER -> List.of(Action.REVERSE, Action.START, Action.STOP, Action.FLASH);
         };
     }
 
@@ -64,7 +66,7 @@ public enum GizmoKind {
         return switch (this) {
             case LEFT_FLIPPER, RIGHT_FLIPPER -> Action.RAISE;
             case GATE -> Action.OPEN;
-            case SQUARE, CIRCLE, TRIANGLE, ABSORBER, SINK, ACCELERATOR, SPAWNER, DROP_TARGET -> defaultAction();
+            case SQUARE, CIRCLE, TRIANGLE, ABSORBER, SINK, ACCELERATOR, SPAWNER, DROP_TARGET, SPINNER -> defaultAction();
         };
     }
 
@@ -73,7 +75,7 @@ public enum GizmoKind {
         return switch (this) {
             case LEFT_FLIPPER, RIGHT_FLIPPER -> Action.LOWER;
             case GATE -> Action.CLOSE;
-            case SQUARE, CIRCLE, TRIANGLE, ABSORBER, SINK, ACCELERATOR, SPAWNER, DROP_TARGET -> defaultAction();
+            case SQUARE, CIRCLE, TRIANGLE, ABSORBER, SINK, ACCELERATOR, SPAWNER, DROP_TARGET, SPINNER -> defaultAction();
         };
     }
 
@@ -84,7 +86,8 @@ public enum GizmoKind {
     public boolean canDrain() {
         return switch (this) {
             case ABSORBER -> true;
-            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER, GATE, DROP_TARGET -> false;
+            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER, GATE, DROP_TARGET,
+                    SPINNER -> false;
         };
     }
 
@@ -114,6 +117,7 @@ public enum GizmoKind {
             case SPAWNER -> new Spawner(name, x, y);
             case GATE -> new Gate(name, x, y);
             case DROP_TARGET -> new DropTarget(name, x, y);
+            case SPINNER -> new Spinner(name, x, y);
         };
     }
 }

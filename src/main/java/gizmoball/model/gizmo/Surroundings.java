@@ -24,4 +24,10 @@ public interface Surroundings {
      * the balls in its box, where all of its sweep lies.
      */
     void swung(Flipper flipper, boolean wasMoving);
+
+    /**
+     * The spinner was driven ({@code wasMoving}: whether it was turning before): one that starts to turn wakes the
+     * balls in its box, where all of its sweep lies.
+     */
+    void spun(Spinner spinner, boolean wasMoving);
 }

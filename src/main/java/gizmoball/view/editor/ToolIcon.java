@@ -66,7 +66,7 @@ public final class ToolIcon implements Icon {
         double s = SIZE - 2 * m;
         return switch (tool) {
             case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, ABSORBER, SINK, ACCELERATOR, SPAWNER, GATE,
-                    DROP_TARGET ->
+                    DROP_TARGET, SPINNER ->
                     kindSymbol(tool.kind().orElseThrow());
             case BALL -> g -> {
                 fill(g, EditorColors.BALL, new Ellipse2D.Double(6, 12, 10, 10));
@@ -136,6 +136,7 @@ public final class ToolIcon implements Icon {
                 g.setColor(BoardPainter.TARGET_MARK);
                 g.fill(new Ellipse2D.Double(SIZE / 2.0 - 2.5, m + s * 0.35 - 2.5, 5, 5));
             };
+            case SPINNER -> g -> spinner(g, m, s);
             case ACCELERATOR -> g -> {
                 fill(g, colour(kind), new Ellipse2D.Double(m, m, s, s));
                 g.setColor(BoardPainter.ACCELERATOR_MARK);
@@ -185,6 +186,24 @@ public final class ToolIcon implements Icon {
         g.draw(new Line2D.Double(barX, y + 3, barX, y + size - 3));
         g.setColor(EditorColors.ICON_BACKGROUND);
         g.fill(new Ellipse2D.Double(barX - 1.5, y + 1.5, 3, 3));
+        g.setStroke(new BasicStroke(2f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+    }
+
+    /** The spinner's 2x2 box, faint, with its bar across it at 30 degrees and the circle its ends sweep. */
+    private static void spinner(Graphics2D g, double m, double size) {
+        g.setColor(EditorColors.translucent(EditorColors.ICON_INK, 70));
+        g.setStroke(new BasicStroke(1f));
+        g.draw(new Rectangle2D.Double(m, m, size, size));
+        g.draw(new Ellipse2D.Double(m, m, size, size));
+        double c = SIZE / 2.0;
+        double arm = size / 2 - 3;
+        double dx = arm * Math.cos(Math.PI / 6);
+        double dy = arm * Math.sin(Math.PI / 6);
+        g.setColor(colour(GizmoKind.SPINNER));
+        g.setStroke(new BasicStroke(6f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+        g.draw(new Line2D.Double(c - dx, c + dy, c + dx, c - dy));
+        g.setColor(EditorColors.ICON_BACKGROUND);
+        g.fill(new Ellipse2D.Double(c - 1.5, c - 1.5, 3, 3));
         g.setStroke(new BasicStroke(2f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
     }
 

@@ -133,6 +133,7 @@ class DefaultBoardFromScratchGuiTest {
             case SPAWNER -> Tool.SPAWNER;
             case GATE -> Tool.GATE;
             case DROP_TARGET -> Tool.DROP_TARGET;
+            case SPINNER -> Tool.SPINNER;
         };
         w.clickTool(tool);
         w.dragCells(g.x(), g.y(), g.x() + g.width() - 1, g.y() + g.height() - 1);

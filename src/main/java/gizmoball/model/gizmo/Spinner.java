@@ -1,0 +1,222 @@
+package gizmoball.model.gizmo;
+
+import java.util.List;
+
+import physics.Circle;
+import physics.LineSegment;
+import physics.Vect;
+
+/**
+ * A 2x2 bar with round ends of radius 0.25 turning without end about the centre of its box, at the speed its author
+ * gives it (one turn a second unless set), either way. The bar is 2 L long, ends included: its ends' centres lie
+ * 0.75 L from the pivot, so at every angle the whole bar stays within the disc of radius 1 inscribed in its box.
+ * Its shape is two side segments and two end circles; neither end is at the pivot, so neither turns in place. The
+ * angle is kept reduced to [0, 2 pi) and the shape built from it with StrictMath, so play is the same everywhere.
+ */
+public final class Spinner extends GizmoBase implements SpinnerView, MovingShape {
+    static final double RADIUS = 0.25;
+    /** From the pivot to each end's centre: the end's outer edge touches the inscribed disc. */
+    static final double ARM = 1 - RADIUS;
+    /** Its {@link #reflectionCoefficient()}, as a flipper's. */
+    private static final double REFLECTION = 0.95;
+    /** The speed of a spinner its author has not given one, in turns per second (clockwise on the screen). */
+    public static final double DEFAULT_TURNS_PER_SECOND = 1;
+    /** The fastest either way, in turns per second: a flipper's 1080 deg/s. */
+    public static final double MAX_TURNS_PER_SECOND = 3;
+    private static final double TWO_PI = 2 * Math.PI;
+
+    /** Signed, turns per second: positive turns +x toward +y (clockwise on the screen, y down). */
+    private double turnsPerSecond = DEFAULT_TURNS_PER_SECOND;
+    /** The bar's direction from +x toward +y, in [0, 2 pi). */
+    private double angle;
+    /** Turning unless told to stop; stopped, it holds its angle. */
+    private boolean running = true;
+    /** Held where it is by a jammed ball until the ball has gone or it is sent the other way. */
+    private boolean stalled;
+    private Shape currentShape;
+
+    Spinner(String name, int x, int y) {
+        super(name, GizmoKind.SPINNER, x, y);
+        rebuildShape();
+    }
+
+    private Spinner(Spinner other) {
+        super(other);
+        this.turnsPerSecond = other.turnsPerSecond;
+        this.angle = other.angle;
+        this.running = other.running;
+        this.stalled = other.stalled;
+        this.currentShape = other.currentShape;
+    }
+
+    @Override
+    public double reflectionCoefficient() {
+        return REFLECTION;
+    }
+
+    @Override
+    public double turnsPerSecond() {
+        return turnsPerSecond;
+    }
+
+    /**
+     * Sets its speed and way, nonzero and at most {@link #MAX_TURNS_PER_SECOND} either way (the board has checked
+     * it). For the board and its loop, not for views.
+     */
+    public void setTurnsPerSecond(double turns) {
+        turnsPerSecond = turns;
+    }
+
+    /** Puts the bar at an angle (reduced to [0, 2 pi)). For the board and its loop, not for views. */
+    public void setAngle(double radians) {
+        angle = reduced(radians);
+        currentShape = shapeAt(angle);
+    }
+
+    /** Lets it turn or holds it still. For the board and its loop, not for views. */
+    public void setRunning(boolean turning) {
+        running = turning;
+    }
+
+    @Override
+    public double angle() {
+        return angle;
+    }
+
+    @Override
+    public boolean isRunning() {
+        return running;
+    }
+
+    @Override
+    public Vect pivot() {
+        return new Vect(x() + 1, y() + 1);
+    }
+
+    @Override
+    public double radius() {
+        return RADIUS;
+    }
+
+    @Override
+    public List<Vect> ends() {
+        return List.of(currentShape.circles().get(0).getCenter(), currentShape.circles().get(1).getCenter());
+    }
+
+    @Override
+    public boolean isMoving() {
+        return running && !stalled;
+    }
+
+    @Override
+    public boolean isStalled() {
+        return stalled;
+    }
+
+    /** For the board and its loop, not for views. */
+    @Override
+    public void stall() {
+        stalled = true;
+    }
+
+    /** For the board and its loop, not for views. */
+    @Override
+    public void release() {
+        stalled = false;
+    }
+
+    /** In the library's sense (+x toward +y), radians per second; 0 while stopped or stalled. */
+    @Override
+    public double angularVelocity() {
+        return isMoving() ? TWO_PI * turnsPerSecond : 0;
+    }
+
+    /** Never, while it turns; 0 while it is stopped or stalled, so that the loop takes its shape as still. */
+    @Override
+    public double timeToStop() {
+        return isMoving() ? Double.POSITIVE_INFINITY : 0;
+    }
+
+    /** The shape now: the loop asks it only while the spinner is still. */
+    @Override
+    public Shape shapeAtStop() {
+        return currentShape;
+    }
+
+    @Override
+    public boolean turnsInPlace(int index) {
+        return false;
+    }
+
+    /** Turns for dt seconds, unless stopped or stalled. For the board and its loop, not for views. */
+    @Override
+    public void advance(double dt) {
+        if (!isMoving() || dt <= 0) {
+            return;
+        }
+        angle = reduced(angle + angularVelocity() * dt);
+        currentShape = shapeAt(angle);
+    }
+
+    /** The angle in [0, 2 pi); a sum within rounding below 0 lands on 2 pi and is taken as 0. */
+    private static double reduced(double radians) {
+        double turned = radians - TWO_PI * Math.floor(radians / TWO_PI);
+        return turned >= TWO_PI ? 0 : turned;
+    }
+
+    /**
+     * Reverses (and goes on, whatever stalled it being behind it now), starts or stops it; told to start, it wakes
+     * what sleeps in its box. A flash only lights it.
+     */
+    @Override
+    public void perform(Action action, Surroundings around) {
+        boolean wasMoving = isMoving();
+        switch (action) {
+            case REVERSE -> {
+                turnsPerSecond = -turnsPerSecond;
+                stalled = false;
+            }
+            case START -> running = true;
+            case STOP -> running = false;
+            default -> {
+            }
+        }
+        around.spun(this, wasMoving);
+    }
+
+    @Override
+    public Shape shape() {
+        return currentShape;
+    }
+
+    @Override
+    Shape buildShape() {
+        currentShape = shapeAt(angle);
+        return currentShape;
+    }
+
+    /** The bar at an angle: its ends' centres ARM either side of the pivot, its sides RADIUS either side of them. */
+    private Shape shapeAt(double radians) {
+        Vect pivot = pivot();
+        Vect along = new Vect(StrictMath.cos(radians), StrictMath.sin(radians));
+        Vect arm = along.times(ARM);
+        Vect across = new Vect(-along.y(), along.x()).times(RADIUS);
+        Vect back = pivot.minus(arm);
+        Vect front = pivot.plus(arm);
+        return new Shape(
+                List.of(new LineSegment(back.plus(across), front.plus(across)),
+                        new LineSegment(back.minus(across), front.minus(across))),
+                List.of(new Circle(back, RADIUS), new Circle(front, RADIUS)));
+    }
+
+    @Override
+    public double signedDistance(Vect p) {
+        List<Vect> ends = ends();
+        return Solids.toCapsule(ends.get(0), ends.get(1), RADIUS, p);
+    }
+
+    @Override
+    public Spinner copy() {
+        return new Spinner(this);
+    }
+}
