@@ -15,6 +15,7 @@ import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.PortalView;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.gizmo.SpawnerView;
+import gizmoball.model.gizmo.SpinnerView;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.TriggerSource;
 import java.awt.event.KeyEvent;
@@ -385,6 +386,20 @@ public final class Editor {
         }
         return edit(accelerator + " speeds balls up " + Decimals.format(factor) + " times",
                 b -> b.setFactor(accelerator, factor));
+    }
+
+    /**
+     * The spinner's speed and way in turns per second, negative anticlockwise (one undo step; the same value again is
+     * no edit).
+     */
+    public boolean setSpinnerSpeed(String spinner, double turnsPerSecond) {
+        if (board.gizmo(spinner).filter(g -> g instanceof SpinnerView s && s.turnsPerSecond() == turnsPerSecond)
+                .isPresent()) {
+            return true;
+        }
+        return edit(spinner + " turns " + Decimals.format(Math.abs(turnsPerSecond)) + " times a second "
+                        + (turnsPerSecond > 0 ? "clockwise" : "anticlockwise"),
+                b -> b.setSpinnerSpeed(spinner, turnsPerSecond));
     }
 
     /** The velocity of the balls the spawner adds (one undo step; the same value again is no edit). */

@@ -70,7 +70,7 @@ public final class BoardPainter {
             case GATE -> new Color(0xc9a46b);
             case DROP_TARGET -> new Color(0xe8467c);
             case PORTAL -> new Color(0x6a5cff);
-            case SPINNER -> new Color(0xe85fb0);
+            case SPINNER -> new Color(0xb8d432);
         };
     }
 

@@ -15,8 +15,8 @@ package gizmoball.model.loop;
  *                                 something, that squeeze it
  * @param strikesOfAPush           strikes of one ball by one moving shape in a tick, nothing in between, that are a push
  * @param squeezesBeforePinched    squeezes of one ball in one tick before it is stopped with the shape (guard)
- * @param bouncesAmongContacts     bounces among a ball's contacts within one collision: enough to leave a wedge of a
- *                                 hundredth of a degree (guard beyond)
+ * @param bouncesAmongContacts     bounces among a ball's contacts within one collision: enough to turn an elastic ball
+ *                                 back out of a wedge of half a degree; beyond, it comes to rest against them
  * @param pressSteps               steps that settle two pressed balls' velocities to rounding
  * @param maxCollisionsBase        collisions of one tick, plus {@code maxCollisionsPerBall} per awake ball, after which
  *                                 the tick ends (guard of last resort)
@@ -35,7 +35,7 @@ public record LoopSettings(double zeroTime, double restTicksOfGravity, double sl
                            double rattleReach) {
 
     /** The settings of every board. */
-    public static final LoopSettings STANDARD = new LoopSettings(1e-12, 2, 1e-3, 0.5, 32, 2, 3, 16, 20_000, 64, 500,
+    public static final LoopSettings STANDARD = new LoopSettings(1e-12, 2, 1e-3, 0.5, 32, 2, 3, 16, 360, 64, 500,
             100, 400, 8, 1e-3, 1e-3);
 
     /**

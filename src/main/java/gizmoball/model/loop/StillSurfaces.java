@@ -131,9 +131,12 @@ final class StillSurfaces {
             }
             last = next.surface().ref();
         }
-        step.wedged++;   // guard (counted): bounces that do not end; at rest for the rest of this tick
-        ball.setVelocity(Vect.ZERO);
-        step.energy.lost(ball);
+        // Still bouncing: a wedge nearly flat (a flipper's face and a circle whose normals are 0.6 degrees from
+        // opposite turned a ball only after thousands of bounces). Its limit is rest against what it bounces between.
+        Contacts.Touch next = step.contacts.closing(ball, among, last);
+        if (next != null) {
+            step.comeToRest(ball, next.surface().ref());
+        }
     }
 
     /**

@@ -14,6 +14,7 @@ import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.gizmo.PortalView;
 import gizmoball.model.gizmo.SpawnerView;
+import gizmoball.model.gizmo.SpinnerView;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import gizmoball.model.loop.TriggerSource;
@@ -89,6 +90,9 @@ public final class PropertiesPanel extends JPanel {
     private final JCheckBox drain = new JCheckBox("Drain: its balls are lost");
     private final NumberField factor = new NumberField("gizmo.factor");
     private final JTextField pair = new JTextField(5);
+    private final JPanel factorPart = new JPanel(new BorderLayout(4, 0));
+    private final NumberField speed = new NumberField("gizmo.speed");
+    private final JPanel speedPart = new JPanel(new BorderLayout(4, 0));
     private final JLabel selection = new JLabel();
     private final JTextField name = new JTextField(7);
     private final NumberField cellX = new NumberField("gizmo.x");
@@ -212,6 +216,13 @@ public final class PropertiesPanel extends JPanel {
         pair.setEnabled(portal.isPresent());
         pair.setText(portal.flatMap(PortalView::pair).orElse(""));
         RefusedValue.unmark(pair);
+        Optional<SpinnerView> spinner = gizmo.filter(g -> g instanceof SpinnerView).map(g -> (SpinnerView) g);
+        speed.setEnabled(spinner.isPresent());
+        speed.setText("");
+        spinner.ifPresent(s -> speed.show(s.turnsPerSecond()));
+        RefusedValue.unmark(speed);
+        factorPart.setVisible(spinner.isEmpty());
+        speedPart.setVisible(spinner.isPresent());
         drain.setSelected(gizmo.filter(g -> board.gameRules().isDrain(g.name())).isPresent());
         gizmo.ifPresent(g -> {
             colour.setText(g.colour().map(Editor::hex).orElse(""));
@@ -297,13 +308,23 @@ public final class PropertiesPanel extends JPanel {
         factor.setColumns(3);
         factor.addActionListener(e -> applyFactor());
         restoreOnEscape(factor);
-        // One row for both, so that the panel is no taller for the accelerator's own value.
+        speed.setToolTipText("A spinner: turns a second, negative anticlockwise, up to 3 either way");
+        speed.setColumns(3);
+        speed.addActionListener(e -> applySpeed());
+        restoreOnEscape(speed);
+        // One row for all, so that the panel is no taller for the accelerator's or the spinner's own value (the
+        // spinner's speed takes the factor's place while a spinner is selected).
         JPanel pointsAndFactor = new JPanel(new BorderLayout(4, 0));
-        JPanel factorPart = new JPanel(new BorderLayout(4, 0));
         factorPart.add(new JLabel("x"), BorderLayout.WEST);
         factorPart.add(factor, BorderLayout.CENTER);
+        speedPart.add(speed, BorderLayout.CENTER);
+        speedPart.add(new JLabel("turns/s"), BorderLayout.EAST);
+        speedPart.setVisible(false);
+        JPanel ownValue = new JPanel(new BorderLayout(0, 0));
+        ownValue.add(factorPart, BorderLayout.WEST);
+        ownValue.add(speedPart, BorderLayout.EAST);
         pointsAndFactor.add(points, BorderLayout.CENTER);
-        pointsAndFactor.add(factorPart, BorderLayout.EAST);
+        pointsAndFactor.add(ownValue, BorderLayout.EAST);
         row(pointsRow, 0, "Points", pointsAndFactor);
         p.add(pointsRow, wide(constraints(0, 3)));
         drain.setName("gizmo.drain");
@@ -545,6 +566,20 @@ public final class PropertiesPanel extends JPanel {
             focusBoard.run();
         } else {
             keepRefused(Map.of(pair, typed));
+        }
+    }
+
+    private void applySpeed() {
+        Optional<Gizmo> gizmo = controller.selectedGizmo();
+        Optional<double[]> v = values(speed);
+        if (gizmo.isEmpty() || v.isEmpty()) {
+            return;
+        }
+        String typed = speed.getText();
+        if (controller.setSpinnerSpeed(gizmo.get().name(), v.get()[0])) {
+            focusBoard.run();
+        } else {
+            keepRefused(Map.of(speed, typed));
         }
     }
 
