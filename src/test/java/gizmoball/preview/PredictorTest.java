@@ -46,7 +46,26 @@ class PredictorTest {
         GameSession session = new GameSession();
         session.setMode(Mode.BUILD);
         session.load(BoardFiles.load(Path.of("boards", parts[0])), Path.of("boards", parts[0]));
-        String ball = parts[1];
+        assertPredictedAsPlayed(session, parts[1]);
+    }
+
+    /** A ball dropped onto a spinner, batted on among spinners turning either way, is predicted as it plays. */
+    @Test
+    void aBallBattedBySpinnersIsPredictedAsItPlays() {
+        Board board = new Board();
+        board.addGizmo(GizmoKind.SPINNER, "SN1", 8, 10);
+        board.addGizmo(GizmoKind.SPINNER, "SN2", 12, 12);
+        board.setSpinnerSpeed("SN2", -2.5);
+        board.addBall("B", 9.6, 6, 0, 0);
+        GameSession session = new GameSession();
+        session.setMode(Mode.BUILD);
+        session.loadSample(board, "spinners");
+        assertPredictedAsPlayed(session, "B");
+        assertThat(session.board().gizmo("SN1").orElseThrow().lastTriggeredAt()).as("the spinner bats it").isFinite();
+    }
+
+    /** The prediction of the ball on the session's board in build mode is, tick by tick, what play then does. */
+    private void assertPredictedAsPlayed(GameSession session, String ball) {
         Prediction p = unhurried.predict(session.board(), ball, Predictor.HORIZON_SECONDS, DT, Predictor.BUDGET_NANOS);
         assertThat(p.ticks()).isEqualTo(TICKS);
         assertThat(p.shortened()).isFalse();
