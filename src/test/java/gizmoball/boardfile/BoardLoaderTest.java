@@ -113,12 +113,12 @@ class BoardLoaderTest {
 
     @Test
     void skippingBadLinesLoadsTheRestAndSaysExactlyWhichLinesWereLeftOut() throws BoardFileException {
-        String text = String.join("\n", "Square S 1 1", "Portal K 3 3", "Circle C 1 1", "Ball B 5.5 5.5 0 0",
+        String text = String.join("\n", "Square S 1 1", "Rhombus K 3 3", "Circle C 1 1", "Ball B 5.5 5.5 0 0",
                 "Connect S C", "KeyConnect key 32 down S");
         LoadResult result = BoardFiles.loadSkippingBadLines("f", text);
 
         assertThat(result.skippedLines()).extracting(BoardFileError::line, BoardFileError::text).containsExactly(
-                tuple(2, "Portal K 3 3"),
+                tuple(2, "Rhombus K 3 3"),
                 tuple(3, "Circle C 1 1"),
                 tuple(5, "Connect S C"));
         String withoutSkipped = String.join("\n", "Square S 1 1", "Ball B 5.5 5.5 0 0", "KeyConnect key 32 down S");

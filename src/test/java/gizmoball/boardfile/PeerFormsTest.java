@@ -221,7 +221,10 @@ class PeerFormsTest {
 
         assertThat(result.skippedLines()).extracting(BoardFileError::line, BoardFileError::reason).containsExactly(
                 tuple(1, "Rhombus SP1: an extension of another implementation, not part of the format"),
-                tuple(2, "Teleporter TEL1: an extension of another implementation, not part of the format"),
+                tuple(2, "wrong number of arguments: 'Teleporter' of another implementation is read as #@Portal,"
+                        + " which takes 3 (#@Portal <name> <x> <y>), found 5: a portal and the cell of its exit on one"
+                        + " line, another implementation's form whose exit has no name; this game's portals are two"
+                        + " gizmos, each #@Portal <name> <x> <y>, joined by #@Pair"),
                 tuple(3, "MouseConnect: an extension of another implementation, not part of the format"),
                 tuple(4, "x coordinate 250 is far outside the 20x20 board: pixel coordinates, it seems, but the"
                         + " format counts in L (cells)"),
