@@ -8,6 +8,7 @@ import gizmoball.model.gizmo.Accelerator;
 import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.DropTargetView;
 import gizmoball.model.gizmo.FlipperView;
+import gizmoball.model.gizmo.GateView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.PortalView;
 import gizmoball.model.gizmo.SpawnerView;
@@ -74,8 +75,8 @@ final class BoardWriter {
             if (gizmo instanceof FlipperView flipper && (flipper.angleFromRest() != 0 || flipper.isActive())) {
                 commands.add(new Command.FlipperState(flipper.name(), flipper.angleFromRest(), flipper.isActive()));
             }
-            if (gizmo instanceof DropTargetView target && target.isDown()) {
-                commands.add(new Command.TargetDown(target.name()));
+            if (gizmo instanceof DropTargetView target && target.isDown() || gizmo instanceof GateView gate && gate.isOpen()) {
+                commands.add(new Command.CellOpen(gizmo.name()));
             }
             if (gizmo instanceof SpinnerView spinner && (spinner.angle() != 0 || !spinner.isRunning())) {
                 commands.add(new Command.SpinnerState(spinner.name(), spinner.angle(), spinner.isRunning()));

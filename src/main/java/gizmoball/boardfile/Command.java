@@ -375,14 +375,17 @@ public sealed interface Command {
         }
     }
 
-    /** {@code #@TargetDown <name>}: a drop target play has knocked down (a board saved during play). */
-    record TargetDown(String name) implements Command {
+    /**
+     * {@code #@Open <name>}: a gate play has opened or a drop target it has knocked down: the cell is nothing (a board
+     * saved during play).
+     */
+    record CellOpen(String name) implements Command {
         public void applyTo(Board board) {
-            board.setTargetDown(name);
+            board.setCellOpen(name);
         }
 
         public String toLine() {
-            return CommandWord.TARGET_DOWN.written() + " " + name;
+            return CommandWord.CELL_OPEN.written() + " " + name;
         }
 
         public List<String> references() {
@@ -390,7 +393,7 @@ public sealed interface Command {
         }
 
         public Subject subject() {
-            return new Subject("target down", name);
+            return new Subject("open cell", name);
         }
     }
 

@@ -207,7 +207,7 @@ final class CommandParser {
             case MOVE -> new Command.Move(args.get(0), number("x", args.get(1)), number("y", args.get(2)));
             case CONNECT -> new Command.Connect(TriggerSource.named(args.get(0)), args.get(1));
             case KEY_CONNECT -> keyConnect(args, notes);
-            case TARGET_DOWN -> new Command.TargetDown(args.get(0));
+            case CELL_OPEN -> new Command.CellOpen(args.get(0));
             case FLIPPER_STATE -> new Command.FlipperState(args.get(0), number("angle", args.get(1)),
                     direction(args.get(2)));
             case FACTOR -> new Command.Factor(args.get(0), number("factor", args.get(1)));

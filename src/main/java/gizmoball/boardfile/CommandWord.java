@@ -52,8 +52,8 @@ enum CommandWord {
     FACTOR("Factor", "<name> <factor>", true),
     /** Play state: a flipper's angle and direction, written by a save during play. */
     FLIPPER_STATE("FlipperAngle", "<name> <degrees> up|down", true),
-    /** Play state: a drop target that is down, written by a save during play. */
-    TARGET_DOWN("TargetDown", "<name>", true),
+    /** Play state: a gate play has opened or a drop target it has knocked down (its cell is nothing), written by a save during play. */
+    CELL_OPEN("Open", "<name>", true),
     /** Play state: a spinner's angle and whether it turns, written by a save during play. */
     SPINNER_STATE("SpinnerAngle", "<name> <radians> running|stopped", true),
     GRAVITY("Gravity", "<g>"),

@@ -286,9 +286,12 @@ public final class Board {
         edited();
     }
 
-    /** Puts a drop target down, as play left it (a board saved during play): nothing until it is raised. */
-    public void setTargetDown(String target) {
-        edits.setTargetDown(target);
+    /**
+     * Opens a gate or puts a drop target down, as play left it (a board saved during play): its cell is nothing until
+     * it is closed or raised.
+     */
+    public void setCellOpen(String cell) {
+        edits.setCellOpen(cell);
         edited();
     }
 

@@ -1,7 +1,6 @@
 package gizmoball.model;
 
 import gizmoball.model.gizmo.Absorber;
-import gizmoball.model.gizmo.DropTarget;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
@@ -10,6 +9,7 @@ import gizmoball.model.gizmo.Accelerator;
 import gizmoball.model.gizmo.Portal;
 import gizmoball.model.gizmo.Spawner;
 import gizmoball.model.gizmo.Spinner;
+import gizmoball.model.gizmo.SwitchedCell;
 import gizmoball.model.loop.Ball;
 
 import java.util.ArrayList;
@@ -350,12 +350,12 @@ final class Edits {
         b.setPair(Optional.of(first));
     }
 
-    void setTargetDown(String name) {
-        if (!(registry.requireGizmo(name) instanceof DropTarget target)) {
-            throw new BoardEditException("only a drop target is down: " + name + " is "
+    void setCellOpen(String name) {
+        if (!(registry.requireGizmo(name) instanceof SwitchedCell cell)) {
+            throw new BoardEditException("only a gate is open or a drop target down: " + name + " is "
                     + registry.requireGizmo(name).kind().withArticle());
         }
-        play.switchCell(target, false);
+        play.switchCell(cell, false);
     }
 
     /** The portal and its pair, if it has one, are left without. */

@@ -4,7 +4,9 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.model.Board;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.gizmo.DropTargetView;
 import gizmoball.model.gizmo.FlipperView;
+import gizmoball.model.gizmo.GateView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.loop.BallView;
@@ -102,5 +104,31 @@ class PlayStateRoundTripTest {
     void otherCommentLinesStayComments() throws BoardFileException {
         Board board = BoardFiles.load("comments", "#@ a note of another implementation\n#FlipperAngle X\nGravity 10\n");
         assertThat(board.gravity()).isEqualTo(10);
+    }
+
+    /**
+     * A gate play has opened with a ball in its cell, and a drop target a ball has knocked down, saved during play,
+     * load again open and down: read as built, the closed gate would be around the ball, and the board would not load.
+     */
+    @Test
+    void anOpenGateAndADownTargetLoadAgainOpenAndDown() throws BoardFileException {
+        Board board = new Board();
+        board.addGizmo(GizmoKind.GATE, "G", 5, 10);
+        board.addGizmo(GizmoKind.DROP_TARGET, "D", 12, 19);
+        board.trigger("G");   // a gate's default action: it opens
+        board.setGravity(0);
+        board.addBall("InGate", 5.5, 10.5, 0, 0);
+        board.addBall("Falling", 12.5, 17.5, 0, 5);
+        for (int t = 0; t < 60; t++) {
+            board.tick(DT);
+        }
+        String saved = BoardFiles.toText(board);
+        assertThat(saved).contains("#@Open G", "#@Open D");
+
+        Board reloaded = BoardFiles.load("played", saved);
+
+        assertThat(((GateView) reloaded.gizmo("G").orElseThrow()).isOpen()).isTrue();
+        assertThat(((DropTargetView) reloaded.gizmo("D").orElseThrow()).isDown()).isTrue();
+        assertThat(State.of(reloaded)).isEqualTo(State.of(board));
     }
 }
