@@ -662,8 +662,8 @@ public final class Board {
         }
 
         @Override
-        public List<Connection> connections() {
-            return Board.this.connections();
+        public List<Connection> connectionsFrom(TriggerSource source) {
+            return wiring.connectionsFrom(source);
         }
 
         @Override

@@ -112,6 +112,9 @@ final class Play implements Surroundings {
      * in the order they were given), each by the gizmo of its name if the board still has one.
      */
     void performDue(double now) {
+        if (delayed.isEmpty()) {
+            return;   // most ticks: a stream over nothing still cost a tick a twentieth of its time
+        }
         List<Delayed> due = delayed.stream().filter(d -> d.due() <= now + Delayed.ROUNDING)
                 .sorted(Comparator.comparingDouble(Delayed::due)).toList();
         delayed.removeAll(due);
@@ -259,8 +262,8 @@ final class Play implements Surroundings {
         if (!inTick) {
             Map<String, Boolean> cells = new LinkedHashMap<>(cellOrders);
             cellOrders.clear();
-            for (GizmoBase gizmo : registry.gizmos()) {
-                if (gizmo instanceof SwitchedCell cell && cell.isWaiting() && !cells.containsKey(cell.name())) {
+            for (SwitchedCell cell : registry.switchedCells()) {
+                if (cell.isWaiting() && !cells.containsKey(cell.name())) {
                     cells.put(cell.name(), true);   // still waiting to be solid: the cell may be clear now
                 }
             }

@@ -2,6 +2,7 @@ package gizmoball.model;
 
 import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.MovingShape;
+import gizmoball.model.gizmo.SwitchedCell;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.loop.Ball;
 import gizmoball.model.loop.Sleepers;
@@ -26,8 +27,12 @@ final class Registry {
     private final Map<String, Ball> balls = new LinkedHashMap<>();
     private final Set<Set<String>> passingPairs = new HashSet<>();
     private SpatialIndex index = new SpatialIndex();
-    /** The moving shapes among the gizmos, found again after every change of the gizmos (null until then). */
+    /**
+     * The moving shapes and the switched cells among the gizmos, found again after every change of the gizmos (null
+     * until then): the loop and the end of every tick ask for them.
+     */
     private List<MovingShape> movingShapes;
+    private List<SwitchedCell> switchedCells;
 
     /** Becomes a deep copy of source. */
     void copyFrom(Registry source) {
@@ -44,7 +49,7 @@ final class Registry {
         balls.clear();
         passingPairs.clear();
         index = new SpatialIndex();
-        movingShapes = null;
+        kindsChanged();
     }
 
     Collection<GizmoBase> gizmos() {
@@ -86,7 +91,7 @@ final class Registry {
     void insert(GizmoBase gizmo) {
         gizmos.put(gizmo.name(), gizmo);
         index.put(gizmo);
-        movingShapes = null;
+        kindsChanged();
     }
 
     /** Removes the gizmo, and the balls an absorber holds with it. */
@@ -96,7 +101,7 @@ final class Registry {
         if (gizmo instanceof Absorber absorber) {
             absorber.held().forEach(balls::remove);
         }
-        movingShapes = null;
+        kindsChanged();
     }
 
     /** Puts {@code replacement} (of the same name) where {@code gizmo} was: in its place in board order, in the grid. */
@@ -104,7 +109,7 @@ final class Registry {
         index.remove(gizmo);
         gizmos.put(replacement.name(), replacement);
         index.put(replacement);
-        movingShapes = null;
+        kindsChanged();
     }
 
     /** Moves the gizmo to a new top-left cell, its cells in the grid with it. */
@@ -130,17 +135,34 @@ final class Registry {
                 .forEach(g -> ((Absorber) g).letGo(ball.name()));
     }
 
+    private void kindsChanged() {
+        movingShapes = null;
+        switchedCells = null;
+    }
+
     List<MovingShape> movingShapes() {
         if (movingShapes == null) {
-            List<MovingShape> found = new ArrayList<>();
-            for (GizmoBase gizmo : gizmos.values()) {
-                if (gizmo instanceof MovingShape moving) {
-                    found.add(moving);
-                }
-            }
-            movingShapes = List.copyOf(found);
+            movingShapes = gizmosOf(MovingShape.class);
         }
         return movingShapes;
+    }
+
+    /** The gates and drop targets, in board order. */
+    List<SwitchedCell> switchedCells() {
+        if (switchedCells == null) {
+            switchedCells = gizmosOf(SwitchedCell.class);
+        }
+        return switchedCells;
+    }
+
+    private <T> List<T> gizmosOf(Class<T> type) {
+        List<T> found = new ArrayList<>();
+        for (GizmoBase gizmo : gizmos.values()) {
+            if (type.isInstance(gizmo)) {
+                found.add(type.cast(gizmo));
+            }
+        }
+        return List.copyOf(found);
     }
 
     void passThrough(String a, String b) {

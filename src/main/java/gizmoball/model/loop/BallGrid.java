@@ -1,5 +1,7 @@
 package gizmoball.model.loop;
 
+import physics.Vect;
+
 import java.util.ArrayList;
 import java.util.List;
 
@@ -10,6 +12,8 @@ import java.util.List;
  */
 public final class BallGrid {
     private final List<List<Ball>> cells = new ArrayList<>(Arena.SIZE * Arena.SIZE);
+    /** The cells holding a ball, so that clearing costs the balls filed, not the 400 cells. */
+    private final List<List<Ball>> filled = new ArrayList<>();
 
     /** Empty; the loop files the balls at each tick. The board keeps one for its loop, not for views. */
     public BallGrid() {
@@ -19,15 +23,25 @@ public final class BallGrid {
     }
 
     void clear() {
-        cells.forEach(List::clear);
+        filled.forEach(List::clear);
+        filled.clear();
     }
 
     void add(Ball ball) {
-        cells.get(index(cell(ball.position().x()), cell(ball.position().y()))).add(ball);
+        List<Ball> cell = cells.get(index(cell(ball.position().x()), cell(ball.position().y())));
+        if (cell.isEmpty()) {
+            filled.add(cell);
+        }
+        cell.add(ball);
     }
 
-    /** Every filed ball whose filed centre lies within the square of half-side {@code reach} around (x, y). */
-    void near(double x, double y, double reach, List<Ball> into) {
+    /**
+     * Every filed ball whose centre lies now within the square of half-side {@code near} around (x, y), looked for
+     * among the balls filed within {@code reach} of it ({@code reach} covers how far any ball moved since it was
+     * filed). The test on where a ball is now keeps out the balls that filed cells bring in but that lie too far for
+     * any pair test to accept: in a pile of 100 balls, three in four of those the cells give.
+     */
+    void near(double x, double y, double reach, double near, List<Ball> into) {
         int x0 = cell(x - reach);
         int x1 = cell(x + reach);
         int y0 = cell(y - reach);
@@ -35,8 +49,12 @@ public final class BallGrid {
         for (int cy = y0; cy <= y1; cy++) {
             for (int cx = x0; cx <= x1; cx++) {
                 List<Ball> cell = cells.get(index(cx, cy));
-                for (int i = 0, n = cell.size(); i < n; i++) {   // addAll would copy each cell into an array
-                    into.add(cell.get(i));
+                for (int i = 0, n = cell.size(); i < n; i++) {
+                    Ball ball = cell.get(i);
+                    Vect p = ball.position();
+                    if (Math.abs(p.x() - x) <= near && Math.abs(p.y() - y) <= near) {
+                        into.add(ball);
+                    }
                 }
             }
         }

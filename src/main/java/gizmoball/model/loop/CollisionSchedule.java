@@ -283,9 +283,11 @@ final class CollisionSchedule {
     private void askAgainstBalls(Ball ball, double elapsed, double window) {
         Earliest earliest = new Earliest(window);
         double speed = CollisionDetector.speedBound(detector.motion(ball));
-        double reach = 2 * Arena.BALL_RADIUS + (speed + fastest) * window + fastest * (elapsed - filedAt) + 1e-6;
+        // No ball farther now than this can meet this one within the window (the pair test's own bound, wider).
+        double near = 2 * Arena.BALL_RADIUS + (speed + fastest) * window + CollisionDetector.REACH_MARGIN;
+        double reach = near + fastest * (elapsed - filedAt);
         nearby.clear();
-        grid.near(ball.position().x(), ball.position().y(), reach, nearby);
+        grid.near(ball.position().x(), ball.position().y(), reach, near, nearby);
         for (Ball other : nearby) {
             if (other == ball || other.isCaptured()) {
                 continue;

@@ -7,9 +7,9 @@ import gizmoball.model.gizmo.Shape;
 import gizmoball.model.gizmo.Sink;
 
 import java.util.ArrayList;
-import java.util.LinkedHashSet;
+import java.util.IdentityHashMap;
 import java.util.List;
-import java.util.Set;
+import java.util.Map;
 import java.util.function.Function;
 import java.util.function.Predicate;
 
@@ -106,17 +106,24 @@ final class ContactCluster {
                                  Predicate<Ball> movable, double reach) {
         ContactCluster cluster = new ContactCluster();
         cluster.touching = Math.max(TOUCHING, reach);
-        Set<Ball> members = new LinkedHashSet<>(seeds);
-        cluster.balls.addAll(members);
+        Map<Ball, Integer> indexOf = new IdentityHashMap<>();
+        for (Ball seed : seeds) {
+            if (!indexOf.containsKey(seed)) {
+                indexOf.put(seed, cluster.balls.size());
+                cluster.balls.add(seed);
+            }
+        }
         for (int i = 0; i < cluster.balls.size(); i++) {
             Ball ball = cluster.balls.get(i);
             cluster.surfaces(view, i, ball, motion);
+            double within = 2 * Arena.BALL_RADIUS + cluster.touching;
             for (Ball other : view.balls()) {
-                if (other == ball || other.isCaptured() || view.passingThrough(ball, other)
+                if (farApart(ball.position(), other.position(), within)
+                        || other == ball || other.isCaptured() || view.passingThrough(ball, other)
                         || gap(ball.position(), other.position(), 2 * Arena.BALL_RADIUS) > cluster.touching) {
                     continue;
                 }
-                int j = cluster.balls.indexOf(other);
+                int j = indexOf.getOrDefault(other, -1);
                 if (j >= 0 && j < i) {
                     continue;   // its row was made from the other side
                 }
@@ -126,8 +133,9 @@ final class ContactCluster {
                     continue;
                 }
                 if (j < 0 && cluster.balls.size() < MAX_BALLS && movable.test(other)) {
+                    j = cluster.balls.size();
                     cluster.balls.add(other);
-                    j = cluster.balls.size() - 1;
+                    indexOf.put(other, j);
                 }
                 if (j >= 0) {
                     cluster.rows.add(new Row(i, new Other.InCluster(j), normal, 0, 1.0));
@@ -218,6 +226,11 @@ final class ContactCluster {
                         moving.reflectionCoefficient()));
             }
         }
+    }
+
+    /** Whether p and q lie farther apart than {@code distance} along x or y: a test cheaper than {@link #gap}. */
+    private static boolean farApart(Vect p, Vect q, double distance) {
+        return Math.abs(p.x() - q.x()) > distance || Math.abs(p.y() - q.y()) > distance;
     }
 
     private static double gap(Vect p, Vect q, double touch) {

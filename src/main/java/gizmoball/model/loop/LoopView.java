@@ -30,7 +30,8 @@ public interface LoopView {
     /** The gizmos whose shapes move in play (the flippers), in board order. */
     List<MovingShape> movingShapes();
 
-    List<Connection> connections();
+    /** The connections from {@code source}, in the order made. */
+    List<Connection> connectionsFrom(TriggerSource source);
 
     /** The gizmos by cell, for what a ball can reach. */
     SpatialIndex index();

@@ -16,6 +16,8 @@ public final class SpatialIndex {
     private final GizmoBase[][] cells = new GizmoBase[Arena.SIZE][Arena.SIZE];
     /** How many cells of each column are covered: a search skips the empty columns of its box. */
     private final int[] coveredInColumn = new int[Arena.SIZE];
+    /** How many cells are covered in all. */
+    private int covered;
 
     /** The gizmo covering cell (cx, cy), or null (also outside the board). For the board, not for views. */
     public GizmoBase at(int cx, int cy) {
@@ -40,7 +42,9 @@ public final class SpatialIndex {
     private void fill(GizmoBase gizmo, GizmoBase value) {
         for (int cx = gizmo.x(); cx < gizmo.x() + gizmo.width(); cx++) {
             for (int cy = gizmo.y(); cy < gizmo.y() + gizmo.height(); cy++) {
-                coveredInColumn[cx] += (value != null ? 1 : 0) - (cells[cx][cy] != null ? 1 : 0);
+                int change = (value != null ? 1 : 0) - (cells[cx][cy] != null ? 1 : 0);
+                coveredInColumn[cx] += change;
+                covered += change;
                 cells[cx][cy] = value;
             }
         }
@@ -52,6 +56,9 @@ public final class SpatialIndex {
      */
     public List<GizmoBase> within(double minX, double minY, double maxX, double maxY) {
         List<GizmoBase> found = new ArrayList<>(4);
+        if (covered == 0) {
+            return found;
+        }
         int x0 = clampCell(minX);
         int x1 = clampCell(maxX);
         int y0 = clampCell(minY);

@@ -214,19 +214,17 @@ public final class TickRun {
     /** Stage 5: the gizmo or the walls that were hit trigger every gizmo connected to them, as each connection says. */
     private void stage5Triggering(TriggerSource source) {
         double now = step.now();
-        for (Connection connection : step.view.connections()) {
-            if (connection.source().equals(source)) {
-                GizmoBase target = step.view.gizmo(connection.target());
-                if (target != null) {
-                    step.actions.trigger(target, connection.order(), now);
-                    if (connection.order().delay() > 0) {
-                        continue;   // nothing happens until the delay has run
-                    }
-                    if (target instanceof MovingShape moving) {
-                        step.movingShapeChanged(moving);   // it turned round, or started, or flashed
-                    } else {
-                        step.sceneChanged();   // an absorber fired, a gate switched, a ball was spawned
-                    }
+        for (Connection connection : step.view.connectionsFrom(source)) {
+            GizmoBase target = step.view.gizmo(connection.target());
+            if (target != null) {
+                step.actions.trigger(target, connection.order(), now);
+                if (connection.order().delay() > 0) {
+                    continue;   // nothing happens until the delay has run
+                }
+                if (target instanceof MovingShape moving) {
+                    step.movingShapeChanged(moving);   // it turned round, or started, or flashed
+                } else {
+                    step.sceneChanged();   // an absorber fired, a gate switched, a ball was spawned
                 }
             }
         }
