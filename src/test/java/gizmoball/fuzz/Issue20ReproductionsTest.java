@@ -33,11 +33,15 @@ class Issue20ReproductionsTest {
      * sliding past each other where they just fit (two in a slot 1 L wide, four in a 1x1 box), closing only as a
      * graze, made cluster rows no impulse within the speed limit could satisfy, or the detector met again what the
      * cluster let pass. Seed 1000101 (with gates and drop targets drawn): without gravity, a ball between a
-     * flipper's face and a circle 0.6 degrees from flat bounced between them 4,900 times at no time apart.
+     * flipper's face and a circle 0.6 degrees from flat bounced between them 4,900 times at no time apart. Seeds
+     * 1000864 and 1000286 (spinners and portals drawn too): a row of balls on the floor that just fits between the
+     * left wall and a square (a triangle), pushed along: the solve set the row moving, and each ball's rest on its
+     * neighbour then took away what pressed into the neighbour as if it stood still, which sent the end ball back
+     * into the square, 400 times a tick.
      */
     @ParameterizedTest(name = "{0}")
     @ValueSource(strings = {"sink-corner-in-a-chain.txt", "passing-in-a-slot.txt", "sliding-past-in-a-slot.txt",
-            "four-in-a-box.txt", "nearly-flat-wedge.txt"})
+            "four-in-a-box.txt", "nearly-flat-wedge.txt", "row-pushed-along.txt", "resting-on-a-moving-ball.txt"})
     void boardsTheFuzzFoundPlayCleanly(String file) throws Exception {
         assertPlaysCleanly("/fuzz-found/", file);
     }

@@ -178,10 +178,12 @@ final class ContactCluster {
             for (int i = 0; i < shape.circles().size(); i++) {
                 Circle circle = shape.circles().get(i);
                 double touch = circle.getRadius() + Arena.BALL_RADIUS;
-                if (gap(p, circle.getCenter(), touch) <= touching
-                        && !CollisionDetector.grazes(p.minus(circle.getCenter()), motion.apply(ball), touch)) {
-                    rows.add(new Row(index, new Other.Still(new ContactRef.Part(gizmo.name(), true, i), gizmo),
-                            p.minus(circle.getCenter()).unitSize(), 0, gizmo.reflectionCoefficient()));
+                ContactRef ref = new ContactRef.Part(gizmo.name(), true, i);
+                // A circle the ball lies on is a row however the ball slides along it: the solve may turn it in.
+                if (gap(p, circle.getCenter(), touch) <= touching && (ball.contacts().contains(ref)
+                        || !CollisionDetector.grazes(p.minus(circle.getCenter()), motion.apply(ball), touch))) {
+                    rows.add(new Row(index, new Other.Still(ref, gizmo), p.minus(circle.getCenter()).unitSize(), 0,
+                            gizmo.reflectionCoefficient()));
                 }
             }
         }

@@ -49,7 +49,7 @@ public final class TickRun {
         this.step = new StepContext(view, actions, LoopSettings.STANDARD, dt);
         this.still = new StillSurfaces(step);
         this.pairs = new BallPairs(step);
-        this.clusters = new ClusterSolve(step, pairs);
+        this.clusters = new ClusterSolve(step);
         this.strikes = new MovingStrikes(step);
     }
 
