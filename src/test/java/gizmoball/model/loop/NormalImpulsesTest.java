@@ -147,6 +147,24 @@ class NormalImpulsesTest {
     }
 
     /**
+     * Fuzz seed 1000690: a ball on a floor with a ball beside it against a wall, a flipper's tip swinging down and
+     * left into it. Pressed down and right, the pair has no velocity that leaves the tip: the rows nearly depend on
+     * each other (the pair's normal tilts by 1.4e-11), and the active set's impulses reached 1e17, whose rounding
+     * alone left velocities (-32, 2.4) closing on the tip and the floor, taken for an answer.
+     */
+    @Test
+    void aBallPressedByASwingingTipIntoAFloorAndABallAgainstAWallHasNoAnswer() {
+        NormalImpulses.Result result = new Rows()
+                .surface(0, -0.7999999925631857, 0.6000000099157523, 28.45198676519767, 0.95)   // the tip
+                .surface(0, 0, -1, 0, 1)                                                        // the floor
+                .between(0, 1, 1, -1.40900621760555E-11)                                        // the pair
+                .surface(1, 1, 0, 0, 1)                                                         // the wall
+                .surface(1, 0, -1, 0, 1)                                                        // the floor
+                .solve(2, new double[] {-44.1079604463723, 0}, new double[] {33.08097118900504, 0});
+        assertThat(result.feasible()).isFalse();
+    }
+
+    /**
      * Two balls side by side in a gap that fits them within 8e-9 L, so their contact normal is tilted by 1.9e-4 rad,
      * one moving down past the other: the tilt asks for impulses about 5,000 times the speed, which the exact
      * solve finds; the two then move down together, closing on nothing.
