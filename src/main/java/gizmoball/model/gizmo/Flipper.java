@@ -34,6 +34,10 @@ public final class Flipper extends GizmoBase implements FlipperView, MovingShape
     private boolean blocked;
     private Shape restShape;
     private Shape activeShape;
+    /**
+     * The shape at the angle now, made when first asked after a turn (null till then): the loop turns every moving
+     * flipper at each collision of a tick, and asks the shape only of those a ball can reach.
+     */
     private Shape currentShape;
 
     Flipper(GizmoKind kind, String name, int x, int y) {
@@ -68,7 +72,7 @@ public final class Flipper extends GizmoBase implements FlipperView, MovingShape
 
     /** Centre of the other round end, at the current angle. */
     public Vect tip() {
-        return currentShape.circles().get(TIP_CIRCLE).getCenter();
+        return shape().circles().get(TIP_CIRCLE).getCenter();
     }
 
     public double radius() {
@@ -201,7 +205,7 @@ public final class Flipper extends GizmoBase implements FlipperView, MovingShape
         double next = active ? Math.min(MAX_ANGLE, angle + step) : Math.max(0, angle - step);
         // Sums of sub-tick steps round; a swing that ends within rounding of its limit ends exactly at it.
         angle = Math.abs(limit - next) < LIMIT_SNAP_DEGREES ? limit : next;
-        currentShape = shapeAt(angle);
+        currentShape = null;
     }
 
     /** The shape at the limit it is swinging to (where it will stop). For the board and its loop, not for views. */
@@ -217,6 +221,9 @@ public final class Flipper extends GizmoBase implements FlipperView, MovingShape
 
     @Override
     public Shape shape() {
+        if (currentShape == null) {
+            currentShape = shapeAt(angle);
+        }
         return currentShape;
     }
 

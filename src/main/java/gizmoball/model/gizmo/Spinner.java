@@ -33,6 +33,7 @@ public final class Spinner extends GizmoBase implements SpinnerView, MovingShape
     private boolean running = true;
     /** Held where it is by a jammed ball until the ball has gone or it is sent the other way. */
     private boolean stalled;
+    /** The bar at the angle now, made when first asked after a turn (null till then), as a flipper's shape is. */
     private Shape currentShape;
 
     Spinner(String name, int x, int y) {
@@ -100,7 +101,8 @@ public final class Spinner extends GizmoBase implements SpinnerView, MovingShape
 
     @Override
     public List<Vect> ends() {
-        return List.of(currentShape.circles().get(0).getCenter(), currentShape.circles().get(1).getCenter());
+        Shape now = shape();
+        return List.of(now.circles().get(0).getCenter(), now.circles().get(1).getCenter());
     }
 
     @Override
@@ -140,7 +142,7 @@ public final class Spinner extends GizmoBase implements SpinnerView, MovingShape
     /** The shape now: the loop asks it only while the spinner is still. */
     @Override
     public Shape shapeAtStop() {
-        return currentShape;
+        return shape();
     }
 
     @Override
@@ -155,7 +157,7 @@ public final class Spinner extends GizmoBase implements SpinnerView, MovingShape
             return;
         }
         angle = reduced(angle + angularVelocity() * dt);
-        currentShape = shapeAt(angle);
+        currentShape = null;
     }
 
     /** The angle in [0, 2 pi); a sum within rounding below 0 lands on 2 pi and is taken as 0. */
@@ -186,6 +188,9 @@ public final class Spinner extends GizmoBase implements SpinnerView, MovingShape
 
     @Override
     public Shape shape() {
+        if (currentShape == null) {
+            currentShape = shapeAt(angle);
+        }
         return currentShape;
     }
 
