@@ -60,6 +60,25 @@ public final class TickRun {
         stage1FrictionAndGravity();
         long mark = lap(Stage.FRICTION_AND_GRAVITY, start);
         step.findAwake();
+        if (step.awake.isEmpty()) {
+            // Nothing that moves can collide (a moving shape wakes what lies in its way before it reaches it): the
+            // shapes turn, and the sleeping balls are not filed, so a pile asleep costs little more than the board.
+            stage2BallMotion(step.dt);
+            lap(Stage.BALL_MOTION, mark);
+        } else {
+            collide(mark);
+        }
+        if (step.view.loopMode() == LoopMode.CONTINUOUS) {
+            step.energy.restore();   // SEED stays the classic loop, lost time and all
+        }
+        step.actions.forgetSeparatedPairs();
+        step.actions.advanceTime(step.dt);
+        return report();
+    }
+
+    /** Stages 3, 2, 4 and 5 from collision to collision, to the end of the tick or the collision cap. */
+    private void collide(long since) {
+        long mark = since;
         step.schedule.file(step.freeBalls(), 0);
         double remaining = step.dt;
         LoopSettings settings = step.settings;
@@ -97,12 +116,6 @@ public final class TickRun {
                 capBall(other.other());
             }
         }
-        if (step.view.loopMode() == LoopMode.CONTINUOUS) {
-            step.energy.restore();   // SEED stays the classic loop, lost time and all
-        }
-        step.actions.forgetSeparatedPairs();
-        step.actions.advanceTime(step.dt);
-        return report();
     }
 
     /**
