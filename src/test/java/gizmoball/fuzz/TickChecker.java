@@ -8,6 +8,7 @@ import gizmoball.model.gizmo.Spinner;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.loop.BallView;
+import gizmoball.model.loop.PlayEvent;
 
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -40,6 +41,8 @@ public final class TickChecker {
     static final double DT = Board.DEFAULT_TICK;
 
     private static final double R = Board.BALL_RADIUS;
+    /** L/s: the speed an absorber fires a ball at (SPEC.md), stated here again on purpose. */
+    private static final double LAUNCH_SPEED = 50;
     private static final int SIZE = Board.SIZE;
 
     private record Body(String name, Solid solid) {
@@ -63,6 +66,8 @@ public final class TickChecker {
     private final double mu;
     private final double mu2;
     private final Map<String, BallAt> before = new HashMap<>();
+    /** The absorbers that fired in the tick being checked. */
+    private List<Gizmo> fired = List.of();
     private double kineticBefore;
 
     /** Reads the board as it is now (before the first tick, or at any tick the checking starts from). */
@@ -132,11 +137,28 @@ public final class TickChecker {
 
     /** The violations of the board as it is now, after tick {@code tick}; the board is then remembered for the next. */
     public List<Violation> check(Board board, int tick) {
-        return check(board.balls(), tick);
+        List<Gizmo> fired = new ArrayList<>();
+        if (board.lastTick() != null) {
+            for (PlayEvent event : board.lastTick().events()) {
+                if (event instanceof PlayEvent.Fired shot) {
+                    board.gizmos().stream().filter(g -> g.name().equals(shot.absorber())).forEach(fired::add);
+                }
+            }
+        }
+        return check(board.balls(), tick, fired);
     }
 
-    /** As {@link #check(Board, int)} for the board's balls as they are now. */
+    /** As {@link #check(Board, int)} for the board's balls as they are now, no absorber having fired. */
     List<Violation> check(List<BallView> balls, int tick) {
+        return check(balls, tick, List.of());
+    }
+
+    /**
+     * As {@link #check(Board, int)}; {@code fired}: the absorbers that fired a ball in the tick. A fired ball may be
+     * caught again in the same tick, held at both ends of it, and its way out and back is seen nowhere else.
+     */
+    List<Violation> check(List<BallView> balls, int tick, List<Gizmo> fired) {
+        this.fired = fired;
         List<Violation> found = new ArrayList<>();
         List<BallView> free = new ArrayList<>();
         for (BallView ball : balls) {
@@ -286,6 +308,12 @@ public final class TickChecker {
         }
         for (Gizmo cell : switching) {
             nearest = Math.min(nearest, Bodies.of(cell).signedDistance(x, y) - R);   // there or not, it was near
+        }
+        for (Gizmo absorber : fired) {
+            // SPEC.md: a fired ball leaves the top at 50 L/s; in a tick its centre goes at most that far above it
+            double above = Math.max(absorber.y() - R - LAUNCH_SPEED * DT - y, Math.max(0, y - absorber.y() - R));
+            double across = Math.max(0, Math.max(absorber.x() - x, x - absorber.x() - absorber.width()));
+            nearest = Math.min(nearest, Math.hypot(Math.max(0, above), across) - 2 * R);
         }
         for (BallView other : free) {
             BallAt was = before.get(other.name());

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
 import gizmoball.model.Board;
+import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.Bumper;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.Gizmo;
@@ -174,6 +175,22 @@ class TickCheckerTest {
         checker.check(List.of(still, passing), 0);
         passing.moveTo(new Vect(11, 10.55));
         assertThat(kinds(checker.check(List.of(still, passing), 1))).containsExactly(Violation.Kind.HOVERING);
+    }
+
+    /**
+     * Fuzz seed 1000872: an absorber fired a ball up into one coming down, which went back up where it came from as
+     * the fired one fell back in, held at both ends of the tick. The ball is where it was, but not frozen: the fired
+     * ball's way out and back passed it. Had the absorber not fired, nothing came within its reach.
+     */
+    @Test
+    void aBallMetByOneAnAbsorberFiredAndCaughtAgainInTheTickIsNotFrozen() {
+        Gizmo absorber = new Absorber("A0", 2, 5, 1, 1);
+        Ball still = ball("A", 2.5, 3.5, 0, 50);
+        TickChecker checker = new TickChecker(List.of(absorber), 25, 0, 0, List.of(still));
+        checker.check(List.of(still), 0);
+        assertThat(kinds(checker.check(List.of(still), 1, List.of(absorber))))
+                .containsExactly(Violation.Kind.HOVERING);
+        assertThat(kinds(checker.check(List.of(still), 2))).containsExactly(Violation.Kind.FROZEN);
     }
 
     @Test

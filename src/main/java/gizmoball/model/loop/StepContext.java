@@ -81,6 +81,28 @@ final class StepContext {
     }
 
     /**
+     * The ball left play (an absorber holds it, a sink took it): only what was going to meet it asks again; the
+     * scene and every other ball's collisions stand.
+     */
+    void ballLeft(Ball ball) {
+        findAwake();
+        schedule.forget(ball);
+    }
+
+    /** How many balls are free and how many awake: a trigger that changes neither changes nothing the loop knows. */
+    long freeAndAwake() {
+        long free = 0;
+        long awakeNow = 0;
+        for (Ball ball : view.balls()) {
+            if (!ball.isCaptured()) {
+                free++;
+                awakeNow += ball.isAsleep() ? 0 : 1;
+            }
+        }
+        return free << 32 | awakeNow;
+    }
+
+    /**
      * A moving shape changed how it moves (turned round, started, stopped): only the balls that can reach its box in
      * what is left of the tick can meet it otherwise than they were going to, so only their collisions with the scene
      * are asked again; where it woke balls (its sweep wakes what lies in its box), everything is filed afresh.

@@ -36,12 +36,12 @@ final class StillSurfaces {
             step.actions.recordEvent(new PlayEvent.Captured(absorber.name(), ball.name(), ball.position()));
             step.actions.capture(ball, absorber);
             step.energy.lost(ball);
-            step.sceneChanged();
+            step.ballLeft(ball);
         } else if (gizmo instanceof Sink sink) {
             step.actions.recordEvent(new PlayEvent.Sunk(sink.name(), ball.name(), ball.position()));
             step.actions.sink(ball, sink);
             step.energy.lost(ball);
-            step.sceneChanged();
+            step.ballLeft(ball);
         } else if (passage != null) {
             enter(ball, (Portal) gizmo, passage);
         } else if (bounceOff(ball, surface, surface.normal(ball.position()))) {
