@@ -45,6 +45,27 @@ public sealed interface Command {
     }
 
     /**
+     * A command that states one fact of one named gizmo (its colour, an accelerator's factor, where play left a
+     * flipper): it needs that gizmo, and the fact is its subject.
+     */
+    sealed interface AboutOne extends Command {
+        String name();
+
+        /** What the line states of the gizmo, as its {@link Subject} names it: "colour", "factor". */
+        String fact();
+
+        @Override
+        default List<String> references() {
+            return List.of(name());
+        }
+
+        @Override
+        default Subject subject() {
+            return new Subject(fact(), name());
+        }
+    }
+
+    /**
      * A standard command about something only this game has (an extension gizmo), written with {@code #@} before it
      * so that a loader of the standard format skips it with the gizmo's own line: {@code #@Connect SK LF}.
      */
@@ -133,7 +154,7 @@ public sealed interface Command {
         }
     }
 
-    record Rotate(String name) implements Command {
+    record Rotate(String name) implements AboutOne {
         public void applyTo(Board board) {
             board.rotate(name);
         }
@@ -142,12 +163,8 @@ public sealed interface Command {
             return CommandWord.ROTATE.written() + " " + name;
         }
 
-        public List<String> references() {
-            return List.of(name);
-        }
-
-        public Subject subject() {
-            return new Subject("rotation", name);
+        public String fact() {
+            return "rotation";
         }
     }
 
@@ -241,7 +258,7 @@ public sealed interface Command {
     }
 
     /** A gizmo's own colour, written {@code Colour <name> <red> <green> <blue>} (the spelling of two peers). */
-    record Colour(String name, Rgb colour) implements Command {
+    record Colour(String name, Rgb colour) implements AboutOne {
         public void applyTo(Board board) {
             board.setColour(name, Optional.of(colour));
         }
@@ -251,17 +268,13 @@ public sealed interface Command {
                     + colour.blue();
         }
 
-        public List<String> references() {
-            return List.of(name);
-        }
-
-        public Subject subject() {
-            return new Subject("colour", name);
+        public String fact() {
+            return "colour";
         }
     }
 
     /** {@code #@Factor <name> <factor>}: how many times faster the accelerator sends a ball away. */
-    record Factor(String name, double factor) implements Command {
+    record Factor(String name, double factor) implements AboutOne {
         public void applyTo(Board board) {
             board.setFactor(name, factor);
         }
@@ -270,12 +283,8 @@ public sealed interface Command {
             return CommandWord.FACTOR.written() + " " + name + " " + format(factor);
         }
 
-        public List<String> references() {
-            return List.of(name);
-        }
-
-        public Subject subject() {
-            return new Subject("factor", name);
+        public String fact() {
+            return "factor";
         }
     }
 
@@ -295,7 +304,7 @@ public sealed interface Command {
     }
 
     /** {@code #@SpinnerSpeed <name> <turns>}: how many turns a second the spinner makes, negative anticlockwise. */
-    record SpinnerSpeed(String name, double turnsPerSecond) implements Command {
+    record SpinnerSpeed(String name, double turnsPerSecond) implements AboutOne {
         public void applyTo(Board board) {
             board.setSpinnerSpeed(name, turnsPerSecond);
         }
@@ -304,17 +313,13 @@ public sealed interface Command {
             return CommandWord.SPINNER_SPEED.written() + " " + name + " " + format(turnsPerSecond);
         }
 
-        public List<String> references() {
-            return List.of(name);
-        }
-
-        public Subject subject() {
-            return new Subject("spinner speed", name);
+        public String fact() {
+            return "spinner speed";
         }
     }
 
     /** {@code #@SpinnerAngle <name> <radians> running|stopped}: where play left a spinner. */
-    record SpinnerState(String name, double radians, boolean running) implements Command {
+    record SpinnerState(String name, double radians, boolean running) implements AboutOne {
         public void applyTo(Board board) {
             board.setSpinnerState(name, radians, running);
         }
@@ -324,17 +329,13 @@ public sealed interface Command {
                     + (running ? "running" : "stopped");
         }
 
-        public List<String> references() {
-            return List.of(name);
-        }
-
-        public Subject subject() {
-            return new Subject("spinner state", name);
+        public String fact() {
+            return "spinner state";
         }
     }
 
     /** {@code #@SpawnVelocity <name> <vx> <vy>}: the velocity of the balls the spawner adds. */
-    record SpawnVelocity(String name, double vx, double vy) implements Command {
+    record SpawnVelocity(String name, double vx, double vy) implements AboutOne {
         public void applyTo(Board board) {
             board.setSpawnVelocity(name, vx, vy);
         }
@@ -343,12 +344,8 @@ public sealed interface Command {
             return CommandWord.SPAWN_VELOCITY.written() + " " + name + " " + format(vx) + " " + format(vy);
         }
 
-        public List<String> references() {
-            return List.of(name);
-        }
-
-        public Subject subject() {
-            return new Subject("spawn velocity", name);
+        public String fact() {
+            return "spawn velocity";
         }
     }
 
@@ -356,7 +353,7 @@ public sealed interface Command {
      * A flipper as play left it: {@code #@FlipperAngle <name> <degrees> up|down}, up when it swings (or stays) toward
      * its active stop. Written before the balls, which may lie where only the raised flipper leaves room.
      */
-    record FlipperState(String name, double degrees, boolean active) implements Command {
+    record FlipperState(String name, double degrees, boolean active) implements AboutOne {
         public void applyTo(Board board) {
             board.setFlipperState(name, degrees, active);
         }
@@ -366,12 +363,8 @@ public sealed interface Command {
                     + (active ? "up" : "down");
         }
 
-        public List<String> references() {
-            return List.of(name);
-        }
-
-        public Subject subject() {
-            return new Subject("flipper state", name);
+        public String fact() {
+            return "flipper state";
         }
     }
 
@@ -379,7 +372,7 @@ public sealed interface Command {
      * {@code #@Open <name>}: a gate play has opened or a drop target it has knocked down: the cell is nothing (a board
      * saved during play).
      */
-    record CellOpen(String name) implements Command {
+    record CellOpen(String name) implements AboutOne {
         public void applyTo(Board board) {
             board.setCellOpen(name);
         }
@@ -388,12 +381,8 @@ public sealed interface Command {
             return CommandWord.CELL_OPEN.written() + " " + name;
         }
 
-        public List<String> references() {
-            return List.of(name);
-        }
-
-        public Subject subject() {
-            return new Subject("open cell", name);
+        public String fact() {
+            return "open cell";
         }
     }
 
