@@ -89,17 +89,21 @@ final class StepContext {
         schedule.forget(ball);
     }
 
-    /** How many balls are free and how many awake: a trigger that changes neither changes nothing the loop knows. */
-    long freeAndAwake() {
-        long free = 0;
-        long awakeNow = 0;
+    /** How many balls are free and how many of them awake. */
+    record BallCounts(int free, int awake) {
+    }
+
+    /** The balls free and awake now: a trigger that changes neither count changes nothing the loop knows. */
+    BallCounts ballCounts() {
+        int free = 0;
+        int awakeNow = 0;
         for (Ball ball : view.balls()) {
             if (!ball.isCaptured()) {
                 free++;
                 awakeNow += ball.isAsleep() ? 0 : 1;
             }
         }
-        return free << 32 | awakeNow;
+        return new BallCounts(free, awakeNow);
     }
 
     /**

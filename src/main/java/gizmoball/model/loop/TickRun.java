@@ -230,14 +230,14 @@ public final class TickRun {
         for (Connection connection : step.view.connectionsFrom(source)) {
             GizmoBase target = step.view.gizmo(connection.target());
             if (target != null) {
-                long balls = step.freeAndAwake();
+                StepContext.BallCounts balls = step.ballCounts();
                 step.actions.trigger(target, connection.order(), now);
                 if (connection.order().delay() > 0) {
                     continue;   // nothing happens until the delay has run
                 }
                 if (target instanceof MovingShape moving) {
                     step.movingShapeChanged(moving);   // it turned round, or started, or flashed
-                } else if (step.freeAndAwake() != balls) {
+                } else if (!step.ballCounts().equals(balls)) {
                     step.sceneChanged();   // an absorber fired a ball, and woke what lay by its mouth
                 }
                 // else it flashed, or its order waits for the tick's end (a gate or a drop target, a spawner)
