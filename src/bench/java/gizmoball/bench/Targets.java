@@ -73,9 +73,13 @@ final class Targets {
         List<Verdict> verdicts = new ArrayList<>();
         verdicts.add(verdict("fuzz: a guard on at most 1 board in " + FUZZ_BOARDS_PER_GUARD,
                 t.guardBoards() + " of " + t.boards() + " boards", t.guardBoards() * FUZZ_BOARDS_PER_GUARD <= t.boards()));
-        verdicts.add(verdict("fuzz: no tick over " + ms(FUZZ_TICK_NANOS) + " ms of CPU",
-                String.format(Locale.ROOT, "slowest %.2f ms, %,d ticks over", t.slowestNanos() / 1e6, t.ticksOver()),
-                t.slowestNanos() <= FUZZ_TICK_NANOS));
+        // A tick over the limit only the first time its board is played paid for the JVM, not for its work: both said.
+        verdicts.add(new Verdict("fuzz: no tick over " + ms(FUZZ_TICK_NANOS) + " ms of CPU",
+                String.format(Locale.ROOT, "slowest %.2f ms, %,d ticks over; played again %,d over, slowest %.2f ms",
+                        t.slowestNanos() / 1e6, t.ticksOver(), t.ticksOverAgain(), t.slowestReplayedNanos() / 1e6),
+                t.slowestNanos() <= FUZZ_TICK_NANOS ? "met"
+                        : t.slowestReplayedNanos() <= FUZZ_TICK_NANOS ? "met played again, NOT the first time"
+                        : "NOT met"));
         for (Violation.Kind kind : Violation.Kind.values()) {
             if (kind.rule()) {
                 long balls = t.balls()[kind.ordinal()];
