@@ -235,6 +235,26 @@ final class Contacts {
         return bestChange < Double.POSITIVE_INFINITY ? best : Vect.ZERO;
     }
 
+    /**
+     * Whether a ball whose velocity after friction is {@code v} only slides on its contacts: they are all still
+     * (no ball among them) and v closes on none faster than rounding, so projecting stage 1's velocity removes only
+     * what gravity's kick pressed into them. Such a tick keeps the shadow energy (ShadowEnergy): along the surfaces
+     * the kick is gravity's part along them, and the straight move never leaves them.
+     */
+    static boolean slidesOnStill(Ball ball, Vect v, List<Vect> normals) {
+        for (ContactRef ref : ball.contacts()) {
+            if (ref instanceof ContactRef.OnBall) {
+                return false;
+            }
+        }
+        for (Vect n : normals) {
+            if (v.dot(n) < -Tolerances.ROUNDING_SPEED) {
+                return false;
+            }
+        }
+        return true;
+    }
+
     private static boolean closesOnNone(Vect v, List<Vect> normals) {
         double rounding = 1e-12 * v.length();
         for (Vect n : normals) {

@@ -8,6 +8,7 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.function.Function;
 
 import physics.Vect;
 
@@ -17,7 +18,9 @@ import physics.Vect;
  * half a gravity kick back; an elastic bounce part-way through a tick moves it by up to g dt |v| either way, and
  * many such bounces would random-walk the energy. So the balls whose collisions in a tick were all elastic (with
  * still shapes of coefficient 1 or with each other) get the normal component of their last bounce adjusted at the
- * end of the tick to keep it; their tangential velocity is never touched. One per tick.
+ * end of the tick to keep it; their tangential velocity is never touched. One per tick. A ball that slid on still
+ * contacts through the tick keeps the shadow energy as well ({@link Contacts#slidesOnStill}) and is corrected along
+ * them.
  */
 final class ShadowEnergy {
     private final Vect gravity;
@@ -27,6 +30,10 @@ final class ShadowEnergy {
     private final Map<Ball, Vect> elasticNormals;
     private final Set<Ball> lost;
     private final List<List<Ball>> pairs = new ArrayList<>();
+    /** A correction's direction along a ball's contacts may close on one by no more than rounding. */
+    private static final double TANGENT_ROUNDING = 1e-12;
+    /** The least part of a bounce's normal along a sliding ball's contacts that carries a correction. */
+    private static final double SLIDING_PART = 1e-3;
 
     /** For a tick of {@code balls} balls: the books are sized for all of them, so a tick never regrows them. */
     ShadowEnergy(Vect gravity, double dt, int balls) {
@@ -69,7 +76,7 @@ final class ShadowEnergy {
      * bounce (opposite normals for a pair, so momentum is kept), with w_i = v_i + g dt/2 (u at the end of a tick)
      * and sum |w_i + lambda n_i|^2 = sum 2 (S_i + g . p_i).
      */
-    void restore() {
+    void restore(Function<Ball, List<Vect>> contactNormals) {
         Map<Ball, List<Ball>> groups = new LinkedHashMap<>();
         for (Ball ball : elasticNormals.keySet()) {
             groups.put(ball, new ArrayList<>(List.of(ball)));
@@ -82,23 +89,63 @@ final class ShadowEnergy {
                 second.forEach(ball -> groups.put(ball, first));
             }
         }
-        new LinkedHashSet<>(groups.values()).forEach(this::restore);
+        for (List<Ball> group : new LinkedHashSet<>(groups.values())) {
+            restore(group, contactNormals);
+        }
     }
 
-    private void restore(List<Ball> group) {
+    /**
+     * The direction a ball's correction takes: the normal of its last bounce, or for a ball that slides on contacts
+     * (alone in its group) that normal's part along them, so that the correction never presses it into them nor
+     * lifts it off (a ball sliding down a slope into a wall goes back up the slope). Null where no such part is left
+     * (two contacts that hold it in the plane), or for a group of balls one of which slides: it is left alone.
+     */
+    private Vect direction(Ball ball, List<Ball> group, Function<Ball, List<Vect>> contactNormals) {
+        Vect normal = elasticNormals.get(ball);
+        List<Vect> contacts = contactNormals.apply(ball);
+        if (contacts.isEmpty()) {
+            return normal;
+        }
+        if (group.size() > 1) {
+            return null;
+        }
+        Vect along = normal;
+        for (Vect c : contacts) {
+            along = along.minus(c.times(along.dot(c)));
+        }
+        for (Vect c : contacts) {
+            if (Math.abs(along.dot(c)) > TANGENT_ROUNDING) {
+                return null;   // not along all of them at once
+            }
+        }
+        double length = along.length();
+        return length < SLIDING_PART ? null : along.times(1 / length);
+    }
+
+    private void restore(List<Ball> group, Function<Ball, List<Vect>> contactNormals) {
         Vect h = gravity.times(dt / 2);
         double squares = 0;
         double along = 0;
         double target = 0;
+        Map<Ball, Vect> directions = new HashMap<>();
         for (Ball ball : group) {
             if (lost.contains(ball) || ball.isCaptured() || !atStart.containsKey(ball)) {
                 return;
             }
+            Vect direction = direction(ball, group, contactNormals);
+            if (direction == null) {
+                return;
+            }
+            directions.put(ball, direction);
             Vect w = ball.velocity().plus(h);
             squares += w.dot(w);
-            along += w.dot(elasticNormals.get(ball));
+            along += w.dot(direction);
             target += 2 * (atStart.get(ball) + gravity.dot(ball.position()));
         }
+        // A bounce at a fraction s of the tick changing v by dv moves S by (s - 1/2) dt g . dv, at most dt |g| |v_n|
+        // for an elastic one: a correction of about |g| dt along the bounce's normal. Twice that allows for a few
+        // bounces in one tick and a sliding ball's correction along its surface.
+        double timingSpeed = 2 * gravity.length() * dt;
         int n = group.size();
         double discriminant = along * along - n * (squares - target);
         if (discriminant < 0) {
@@ -107,13 +154,13 @@ final class ShadowEnergy {
         double root = Math.sqrt(discriminant);
         double lambda = Math.abs(-along + root) <= Math.abs(-along - root) ? (-along + root) / n : (-along - root) / n;
         for (Ball ball : group) {
-            double normalSpeed = ball.velocity().dot(elasticNormals.get(ball));
-            if (normalSpeed + lambda < 0 || Math.abs(lambda) > normalSpeed / 2) {
+            double normalSpeed = ball.velocity().dot(directions.get(ball));
+            if (normalSpeed + lambda < 0 || Math.abs(lambda) > Math.max(normalSpeed / 2, timingSpeed)) {
                 return;   // not a rounding of the bounce timing: leave the group alone
             }
         }
         for (Ball ball : group) {
-            ball.setVelocity(ball.velocity().plus(elasticNormals.get(ball).times(lambda)));
+            ball.setVelocity(ball.velocity().plus(directions.get(ball).times(lambda)));
         }
     }
 }

@@ -69,7 +69,7 @@ public final class TickRun {
             collide(mark);
         }
         if (step.view.loopMode() == LoopMode.CONTINUOUS) {
-            step.energy.restore();   // SEED stays the classic loop, lost time and all
+            step.energy.restore(step.contacts::normals);   // SEED stays the classic loop, lost time and all
         }
         step.actions.forgetSeparatedPairs();
         step.actions.advanceTime(step.dt);
@@ -136,7 +136,8 @@ public final class TickRun {
             Vect free = v.times(factor).plus(kick);
             Vect next = Contacts.project(free, normals);
             ball.setVelocity(next);
-            if (next != free) {   // project gives back its argument when nothing presses
+            // project gives back its argument when nothing presses; a ball that only slides loses only the kick
+            if (next != free && !Contacts.slidesOnStill(ball, v.times(factor), normals)) {
                 step.energy.lost(ball);
             } else if (ball.velocity().equals(next)) {
                 step.energy.start(ball);
