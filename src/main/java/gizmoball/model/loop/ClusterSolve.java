@@ -19,6 +19,9 @@ import physics.Vect;
  * rests and stalls.
  */
 final class ClusterSolve {
+    /** Relative change of the cluster's summed |v|^2 that is rounding, not a loss or a gain. */
+    private static final double KEPT_ENERGY = 1e-12;
+
     private final StepContext step;
 
     ClusterSolve(StepContext step) {
@@ -90,6 +93,7 @@ final class ClusterSolve {
             }
             result = solve(cluster, stalled, carried);
         }
+        boolean elastic = stalled.isEmpty() && !carried && keepsEnergy(cluster, result);
         boolean woke = false;
         for (int k = 0; k < balls.size(); k++) {
             Ball ball = balls.get(k);
@@ -103,14 +107,80 @@ final class ClusterSolve {
             }
             ball.setVelocity(after);
             ball.setStillTime(0);
-            step.energy.lost(ball);
+            if (!elastic) {
+                step.energy.lost(ball);
+            }
             step.changed(ball);
+        }
+        if (elastic) {
+            noteElasticBounces(cluster, result);
         }
         Struck hit = noteImpacts(collision, cluster, result);
         if (woke || !stalled.isEmpty()) {
             step.sceneChanged();
         }
         return hit;
+    }
+
+    /**
+     * Whether the solve kept the cluster's kinetic energy as elastic bounces do: every contact it pressed was an
+     * impact with a still surface of coefficient 1 or another ball of the cluster, and the balls' |v|^2 summed is what
+     * it was, to rounding (simultaneous impacts with restitution 1 need not keep it). Then the bounces keep the
+     * shadow energy as single elastic bounces do, and their timing is corrected like theirs (ShadowEnergy).
+     */
+    private boolean keepsEnergy(ContactCluster cluster, NormalImpulses.Result result) {
+        List<ContactCluster.Row> rows = cluster.rows();
+        double[] impact = impactSpeeds(cluster);
+        for (int i = 0; i < rows.size(); i++) {
+            ContactCluster.Row row = rows.get(i);
+            if (result.compression()[i] > 0 && (result.compression()[i] <= impact[i] || row.restitution() != 1.0
+                    || row.other() instanceof ContactCluster.Other.Moving)) {
+                return false;
+            }
+        }
+        double before = 0;
+        double after = 0;
+        List<Ball> balls = cluster.balls();
+        for (int k = 0; k < balls.size(); k++) {
+            Vect v = step.detector.motion(balls.get(k));
+            before += v.dot(v);
+            after += result.vx()[k] * result.vx()[k] + result.vy()[k] * result.vy()[k];
+        }
+        return Math.abs(after - before) <= KEPT_ENERGY * before;
+    }
+
+    /**
+     * The elastic bounces of a solve that kept the energy, for the shadow energy: each ball's bounce is along the
+     * normal of the contact that pressed it most, and balls that pressed each other keep their energy together.
+     */
+    private void noteElasticBounces(ContactCluster cluster, NormalImpulses.Result result) {
+        List<ContactCluster.Row> rows = cluster.rows();
+        List<Ball> balls = cluster.balls();
+        double[] most = new double[balls.size()];
+        Vect[] normal = new Vect[balls.size()];
+        for (int i = 0; i < rows.size(); i++) {
+            ContactCluster.Row row = rows.get(i);
+            double change = result.compression()[i];
+            if (change <= 0) {
+                continue;
+            }
+            if (change > most[row.ball()]) {
+                most[row.ball()] = change;
+                normal[row.ball()] = row.normal();
+            }
+            if (row.other() instanceof ContactCluster.Other.InCluster in) {
+                if (change > most[in.index()]) {
+                    most[in.index()] = change;
+                    normal[in.index()] = row.normal().neg();
+                }
+                step.energy.met(balls.get(row.ball()), balls.get(in.index()));
+            }
+        }
+        for (int k = 0; k < balls.size(); k++) {
+            if (normal[k] != null) {
+                step.energy.bounced(balls.get(k), normal[k], true);
+            }
+        }
     }
 
     /**

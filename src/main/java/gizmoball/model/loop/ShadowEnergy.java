@@ -96,18 +96,15 @@ final class ShadowEnergy {
 
     /**
      * The direction a ball's correction takes: the normal of its last bounce, or for a ball that slides on contacts
-     * (alone in its group) that normal's part along them, so that the correction never presses it into them nor
-     * lifts it off (a ball sliding down a slope into a wall goes back up the slope). Null where no such part is left
-     * (two contacts that hold it in the plane), or for a group of balls one of which slides: it is left alone.
+     * that normal's part along them, so that the correction never presses it into them nor lifts it off (a ball
+     * sliding down a slope into a wall goes back up the slope). Null where no such part is left: two contacts that
+     * hold it in the plane (a ball lying in a notch, met by another), and it takes no correction.
      */
-    private Vect direction(Ball ball, List<Ball> group, Function<Ball, List<Vect>> contactNormals) {
+    private Vect direction(Ball ball, Function<Ball, List<Vect>> contactNormals) {
         Vect normal = elasticNormals.get(ball);
         List<Vect> contacts = contactNormals.apply(ball);
-        if (contacts.isEmpty()) {
+        if (normal == null || contacts.isEmpty()) {
             return normal;
-        }
-        if (group.size() > 1) {
-            return null;
         }
         Vect along = normal;
         for (Vect c : contacts) {
@@ -122,44 +119,51 @@ final class ShadowEnergy {
         return length < SLIDING_PART ? null : along.times(1 / length);
     }
 
+    /**
+     * Corrects the group's balls that can take a correction (a direction), all by the same amount, so that the
+     * group's total S is what it was at the start; a ball held by its contacts keeps its velocity but counts in the
+     * total.
+     */
     private void restore(List<Ball> group, Function<Ball, List<Vect>> contactNormals) {
         Vect h = gravity.times(dt / 2);
         double squares = 0;
         double along = 0;
         double target = 0;
-        Map<Ball, Vect> directions = new HashMap<>();
+        Map<Ball, Vect> directions = new LinkedHashMap<>();
         for (Ball ball : group) {
             if (lost.contains(ball) || ball.isCaptured() || !atStart.containsKey(ball)) {
                 return;
             }
-            Vect direction = direction(ball, group, contactNormals);
-            if (direction == null) {
-                return;
-            }
-            directions.put(ball, direction);
             Vect w = ball.velocity().plus(h);
             squares += w.dot(w);
-            along += w.dot(direction);
             target += 2 * (atStart.get(ball) + gravity.dot(ball.position()));
+            Vect direction = direction(ball, contactNormals);
+            if (direction != null) {
+                directions.put(ball, direction);
+                along += w.dot(direction);
+            }
+        }
+        if (directions.isEmpty()) {
+            return;
         }
         // A bounce at a fraction s of the tick changing v by dv moves S by (s - 1/2) dt g . dv, at most dt |g| |v_n|
         // for an elastic one: a correction of about |g| dt along the bounce's normal. Twice that allows for a few
         // bounces in one tick and a sliding ball's correction along its surface.
         double timingSpeed = 2 * gravity.length() * dt;
-        int n = group.size();
+        int n = directions.size();
         double discriminant = along * along - n * (squares - target);
         if (discriminant < 0) {
             return;
         }
         double root = Math.sqrt(discriminant);
         double lambda = Math.abs(-along + root) <= Math.abs(-along - root) ? (-along + root) / n : (-along - root) / n;
-        for (Ball ball : group) {
+        for (Ball ball : directions.keySet()) {
             double normalSpeed = ball.velocity().dot(directions.get(ball));
             if (normalSpeed + lambda < 0 || Math.abs(lambda) > Math.max(normalSpeed / 2, timingSpeed)) {
                 return;   // not a rounding of the bounce timing: leave the group alone
             }
         }
-        for (Ball ball : group) {
+        for (Ball ball : directions.keySet()) {
             ball.setVelocity(ball.velocity().plus(directions.get(ball).times(lambda)));
         }
     }
