@@ -120,6 +120,25 @@ final class ShadowEnergy {
     }
 
     /**
+     * Where no correction along the bounce's normal reaches S (a ball bouncing early in a tick off both sides of a
+     * wedge at once, whose timing moved S by more than that normal's part of |w|^2 can take back), a ball alone and
+     * in free flight has its whole w = v + g dt/2 scaled instead, direction kept, if that is a timing error's size.
+     */
+    private void scaleAlone(List<Ball> group, Function<Ball, List<Vect>> contactNormals, double squares,
+                            double target, double timingSpeed) {
+        if (group.size() != 1 || target <= 0 || squares <= 0 || !contactNormals.apply(group.get(0)).isEmpty()) {
+            return;
+        }
+        double scale = Math.sqrt(target / squares);
+        if (Math.abs(scale - 1) * Math.sqrt(squares) > timingSpeed) {
+            return;
+        }
+        Ball ball = group.get(0);
+        Vect h = gravity.times(dt / 2);
+        ball.setVelocity(ball.velocity().plus(h).times(scale).minus(h));
+    }
+
+    /**
      * Corrects the group's balls that can take a correction (a direction), all by the same amount, so that the
      * group's total S is what it was at the start; a ball held by its contacts keeps its velocity but counts in the
      * total.
@@ -153,6 +172,7 @@ final class ShadowEnergy {
         int n = directions.size();
         double discriminant = along * along - n * (squares - target);
         if (discriminant < 0) {
+            scaleAlone(group, contactNormals, squares, target, timingSpeed);
             return;
         }
         double root = Math.sqrt(discriminant);
