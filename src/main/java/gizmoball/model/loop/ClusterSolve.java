@@ -47,7 +47,7 @@ final class ClusterSolve {
             return null;
         }
         Ball ball = collision.ball();
-        Ball other = contact instanceof Contact.OtherBall on ? on.other() : null;
+        Ball other = collision.otherBall();
         double reach;
         if (again(ball) || other != null && again(other)) {
             reach = ContactCluster.TOUCHING;
@@ -57,7 +57,7 @@ final class ClusterSolve {
         } else {
             return null;
         }
-        return ContactCluster.around(step.view, other == null ? List.of(ball) : List.of(ball, other),
+        return ContactCluster.around(step.view, collision.balls(),
                 step.detector::motion, candidate -> !step.finished.contains(candidate), reach);
     }
 

@@ -183,10 +183,7 @@ final class StepContext {
      * chain: each is the first of its own.
      */
     boolean chained(Collision collision) {
-        if (recentlyCollided(collision.ball())) {
-            return true;
-        }
-        return collision.contact() instanceof Contact.OtherBall other && recentlyCollided(other.other());
+        return collision.balls().stream().anyMatch(this::recentlyCollided);
     }
 
     private boolean recentlyCollided(Ball ball) {

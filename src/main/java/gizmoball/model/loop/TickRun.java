@@ -111,10 +111,7 @@ public final class TickRun {
                 step.capped++;   // guard of last resort: per-ball caps end every run of collisions before it
                 break;
             }
-            capBall(collision.ball());
-            if (collision.contact() instanceof Contact.OtherBall other) {
-                capBall(other.other());
-            }
+            collision.balls().forEach(this::capBall);
         }
     }
 
@@ -294,9 +291,8 @@ public final class TickRun {
     }
 
     private void noteCollision(Collision collision) {
-        step.lastCollisionAt.put(collision.ball(), step.elapsed);
-        if (collision.contact() instanceof Contact.OtherBall other) {
-            step.lastCollisionAt.put(other.other(), step.elapsed);
+        for (Ball ball : collision.balls()) {
+            step.lastCollisionAt.put(ball, step.elapsed);
         }
     }
 
@@ -312,10 +308,7 @@ public final class TickRun {
 
     /** The balls of a resolved collision move differently now: stage 3 asks about them again. */
     private void forgetWhatChanged(Collision collision) {
-        step.changed(collision.ball());
-        if (collision.contact() instanceof Contact.OtherBall other) {
-            step.changed(other.other());
-        }
+        collision.balls().forEach(step::changed);
     }
 
     /**
@@ -331,9 +324,6 @@ public final class TickRun {
 
     /** SEED: the ball (and a ball it hit) stays put for the rest of the tick. */
     private void finish(Collision collision) {
-        step.finished.add(collision.ball());
-        if (collision.contact() instanceof Contact.OtherBall other) {
-            step.finished.add(other.other());
-        }
+        step.finished.addAll(collision.balls());
     }
 }
