@@ -81,7 +81,8 @@ final class ClusterSolve {
     Struck resolve(Collision collision, ContactCluster cluster) {
         List<Ball> balls = cluster.balls();
         boolean carried = carried(collision);
-        NormalImpulses.Result result = solve(cluster, Set.of(), carried);
+        double[] impact = impactSpeeds(cluster);
+        NormalImpulses.Result result = solve(cluster, impact, Set.of(), carried);
         Set<MovingShape> stalled = new LinkedHashSet<>();
         if (!result.feasible()) {
             for (ContactCluster.Row row : cluster.rows()) {
@@ -91,9 +92,9 @@ final class ClusterSolve {
                             balls.get(row.ball()).name()));
                 }
             }
-            result = solve(cluster, stalled, carried);
+            result = solve(cluster, impact, stalled, carried);
         }
-        boolean elastic = stalled.isEmpty() && !carried && keepsEnergy(cluster, result);
+        boolean elastic = stalled.isEmpty() && !carried && keepsEnergy(cluster, impact, result);
         boolean woke = false;
         for (int k = 0; k < balls.size(); k++) {
             Ball ball = balls.get(k);
@@ -115,7 +116,7 @@ final class ClusterSolve {
         if (elastic) {
             noteElasticBounces(cluster, result);
         }
-        Struck hit = noteImpacts(collision, cluster, result);
+        Struck hit = noteImpacts(collision, cluster, impact, result);
         if (woke || !stalled.isEmpty()) {
             step.sceneChanged();
         }
@@ -128,9 +129,8 @@ final class ClusterSolve {
      * it was, to rounding (simultaneous impacts with restitution 1 need not keep it). Then the bounces keep the
      * shadow energy as single elastic bounces do, and their timing is corrected like theirs (ShadowEnergy).
      */
-    private boolean keepsEnergy(ContactCluster cluster, NormalImpulses.Result result) {
+    private boolean keepsEnergy(ContactCluster cluster, double[] impact, NormalImpulses.Result result) {
         List<ContactCluster.Row> rows = cluster.rows();
-        double[] impact = impactSpeeds(cluster);
         for (int i = 0; i < rows.size(); i++) {
             ContactCluster.Row row = rows.get(i);
             if (result.compression()[i] > 0 && (result.compression()[i] <= impact[i] || row.restitution() != 1.0
@@ -194,7 +194,8 @@ final class ClusterSolve {
         return rattling(collision.ball());
     }
 
-    private NormalImpulses.Result solve(ContactCluster cluster, Set<MovingShape> stalled, boolean carried) {
+    private NormalImpulses.Result solve(ContactCluster cluster, double[] impact, Set<MovingShape> stalled,
+                                        boolean carried) {
         List<ContactCluster.Row> rows = cluster.rows();
         int n = rows.size();
         int[] a = new int[n];
@@ -203,7 +204,6 @@ final class ClusterSolve {
         double[] ny = new double[n];
         double[] speed = new double[n];
         double[] restitution = new double[n];
-        double[] impact = impactSpeeds(cluster);
         for (int i = 0; i < n; i++) {
             ContactCluster.Row row = rows.get(i);
             a[i] = row.ball();
@@ -257,11 +257,11 @@ final class ClusterSolve {
      * The hits of a solved cluster (each contact whose impulse was an impact, once per surface) for the sound, the
      * flashes and stage 5; its resting contacts become persistent contacts. Returns what the collision itself hit.
      */
-    private Struck noteImpacts(Collision collision, ContactCluster cluster, NormalImpulses.Result result) {
+    private Struck noteImpacts(Collision collision, ContactCluster cluster, double[] impact,
+                               NormalImpulses.Result result) {
         Struck own = collision.contact().struck();
         Set<Struck> heard = new LinkedHashSet<>();
         List<Ball> balls = cluster.balls();
-        double[] impact = impactSpeeds(cluster);
         for (int i = 0; i < cluster.rows().size(); i++) {
             ContactCluster.Row row = cluster.rows().get(i);
             Ball ball = balls.get(row.ball());
