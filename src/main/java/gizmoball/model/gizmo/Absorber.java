@@ -10,7 +10,7 @@ import physics.Vect;
  * A rectangle of whole cells that captures every ball touching it, holds captured balls at its bottom-right
  * corner and, when triggered, fires the longest-held one straight up.
  */
-public final class Absorber extends GizmoBase implements AbsorberView {
+public final class Absorber extends PolygonGizmo implements AbsorberView {
     private final int width;
     private final int height;
     /** Names of the balls held, in capture order (names keep deep copies of the board simple). */
@@ -59,6 +59,7 @@ public final class Absorber extends GizmoBase implements AbsorberView {
         return 0;
     }
 
+    @Override
     List<Vect> outline() {
         int x = x();
         int y = y();
@@ -100,16 +101,6 @@ public final class Absorber extends GizmoBase implements AbsorberView {
      */
     public void letGo(String ball) {
         held.remove(ball);
-    }
-
-    @Override
-    Shape buildShape() {
-        return Shape.polygon(outline());
-    }
-
-    @Override
-    public double signedDistance(Vect p) {
-        return Solids.toConvexPolygon(outline(), p);
     }
 
     /** Fires the longest-held ball, if the spot above is free. */

@@ -31,7 +31,7 @@ public final class Bumper extends GizmoBase implements BumperView {
         int x = x();
         int y = y();
         return switch (kind()) {
-            case SQUARE -> List.of(new Vect(x, y), new Vect(x + 1, y), new Vect(x + 1, y + 1), new Vect(x, y + 1));
+            case SQUARE -> cellOutline();
             case TRIANGLE -> List.of(rotated(x, y), rotated(x + 1, y), rotated(x, y + 1));
             default -> List.of();
         };

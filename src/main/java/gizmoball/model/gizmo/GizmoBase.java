@@ -1,5 +1,6 @@
 package gizmoball.model.gizmo;
 
+import java.util.List;
 import java.util.Optional;
 
 import physics.Vect;
@@ -10,8 +11,7 @@ import physics.Vect;
  * The members the board and its loop need beyond that are public only because the board lives in another
  * package; each says so: only the board changes gizmos, after it has checked the change on a copy.
  */
-public abstract sealed class GizmoBase permits Bumper, Flipper, Absorber, Sink, Accelerator, Spawner, SwitchedCell, Portal,
-        Spinner {
+public abstract sealed class GizmoBase permits Bumper, Flipper, PolygonGizmo, Accelerator, SwitchedCell, Spinner {
     private final String name;
     private final GizmoKind kind;
     private int x;
@@ -90,6 +90,11 @@ public abstract sealed class GizmoBase permits Bumper, Flipper, Absorber, Sink, 
 
     /** Builds the static shape for the current footprint and rotation; called after every placement change. */
     abstract Shape buildShape();
+
+    /** Its 1x1 footprint cell's corners, clockwise on the screen from the top-left. */
+    final List<Vect> cellOutline() {
+        return List.of(new Vect(x, y), new Vect(x + 1, y), new Vect(x + 1, y + 1), new Vect(x, y + 1));
+    }
 
     /**
      * Signed distance from p to the solid body of the gizmo as it is now (negative inside). For the board and its loop,

@@ -12,7 +12,7 @@ import physics.Vect;
  * of a portal without a pair, it bounces as off a wall. The pair is the board's to keep (both portals name each
  * other); docs/design.md, "Portals", gives the geometry.
  */
-public final class Portal extends GizmoBase implements PortalView {
+public final class Portal extends PolygonGizmo implements PortalView {
     /** The index of the mouth among the segments of its shape: the side it faces. */
     public static final int MOUTH = 0;
     private String pair;
@@ -86,18 +86,9 @@ public final class Portal extends GizmoBase implements PortalView {
     }
 
     /** Its cell's corners from the first corner of its mouth, clockwise, so that side 0 is the mouth. */
-    private List<Vect> outline() {
+    @Override
+    List<Vect> outline() {
         return List.of(rotated(x(), y()), rotated(x() + 1, y()), rotated(x() + 1, y() + 1), rotated(x(), y() + 1));
-    }
-
-    @Override
-    Shape buildShape() {
-        return Shape.polygon(outline());
-    }
-
-    @Override
-    public double signedDistance(Vect p) {
-        return Solids.toConvexPolygon(outline(), p);
     }
 
     @Override

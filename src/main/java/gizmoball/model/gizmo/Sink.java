@@ -8,7 +8,7 @@ import physics.Vect;
  * A 1x1 cell that takes every ball touching it out of play: the loop stops the ball at the sink's centre and the
  * board removes it once the tick is over. It reflects nothing and has no action but a flash.
  */
-public final class Sink extends GizmoBase implements SinkView {
+public final class Sink extends PolygonGizmo implements SinkView {
 
     Sink(String name, int x, int y) {
         super(name, GizmoKind.SINK, x, y);
@@ -29,18 +29,9 @@ public final class Sink extends GizmoBase implements SinkView {
         return new Vect(x() + 0.5, y() + 0.5);
     }
 
-    private List<Vect> outline() {
-        return List.of(new Vect(x(), y()), new Vect(x() + 1, y()), new Vect(x() + 1, y() + 1), new Vect(x(), y() + 1));
-    }
-
     @Override
-    Shape buildShape() {
-        return Shape.polygon(outline());
-    }
-
-    @Override
-    public double signedDistance(Vect p) {
-        return Solids.toConvexPolygon(outline(), p);
+    List<Vect> outline() {
+        return cellOutline();
     }
 
     @Override

@@ -9,7 +9,7 @@ import physics.Vect;
  * down, left with each quarter turn) with the velocity the author gave it, if the mouth is free and the board holds
  * fewer than {@link #MAX_BALLS} balls.
  */
-public final class Spawner extends GizmoBase implements SpawnerView {
+public final class Spawner extends PolygonGizmo implements SpawnerView {
     /** A spawner adds no ball to a board that holds this many. */
     public static final int MAX_BALLS = 200;
     private Vect velocity = Vect.ZERO;
@@ -44,18 +44,9 @@ public final class Spawner extends GizmoBase implements SpawnerView {
         return rotated(x() + 0.5, y() - ballRadius);
     }
 
-    private List<Vect> outline() {
-        return List.of(new Vect(x(), y()), new Vect(x() + 1, y()), new Vect(x() + 1, y() + 1), new Vect(x(), y() + 1));
-    }
-
     @Override
-    Shape buildShape() {
-        return Shape.polygon(outline());
-    }
-
-    @Override
-    public double signedDistance(Vect p) {
-        return Solids.toConvexPolygon(outline(), p);
+    List<Vect> outline() {
+        return cellOutline();
     }
 
     /** Spawns a ball: the board checks the mouth and the count. */

@@ -42,13 +42,9 @@ public abstract sealed class SwitchedCell extends GizmoBase permits Gate, DropTa
         return waiting;
     }
 
-    private List<Vect> outline() {
-        return List.of(new Vect(x(), y()), new Vect(x() + 1, y()), new Vect(x() + 1, y() + 1), new Vect(x(), y() + 1));
-    }
-
     @Override
     final Shape buildShape() {
-        return solid ? Shape.polygon(outline()) : NOTHING;
+        return solid ? Shape.polygon(cellOutline()) : NOTHING;
     }
 
     /** Signed distance to its solid body: its cell while solid, none (infinitely far) while nothing. */
@@ -62,7 +58,7 @@ public abstract sealed class SwitchedCell extends GizmoBase permits Gate, DropTa
      * cell solid. For the board and its loop, not for views.
      */
     public final double solidOver(Vect p) {
-        return Solids.toConvexPolygon(outline(), p);
+        return Solids.toConvexPolygon(cellOutline(), p);
     }
 
     /**
