@@ -265,10 +265,12 @@ final class NormalImpulses {
 
     /**
      * Lawson and Hanson's active-set method for least squares with nonnegative unknowns, on the impulses: the row
-     * closing fastest joins the set; the set's rows are solved as equalities exactly (each just not closing); where
-     * that would make an impulse pull, the impulses move only as far toward that answer as keeps every impulse
-     * pushing, and the row whose impulse reaches zero leaves. Each step lowers the same convex objective, so the
-     * set never repeats, and the method ends when no row outside the set closes.
+     * closing fastest joins the set; the set's rows are solved as equalities exactly (each just not closing), on a
+     * Cholesky factor of their coupling kept as rows join ({@link ActiveRowsFactor}); where that would make an impulse
+     * pull, the impulses move only as far toward that answer as keeps every impulse pushing, and the row whose
+     * impulse reaches zero leaves. Each step lowers the same convex objective, so the set never repeats, and the
+     * method ends when no row outside the set closes. A joining row that depends on the set's rows (no impulse of its
+     * own can change what it closes by) ends it: Gauss-Seidel takes that cluster.
      */
     private boolean projectByActiveSet() {
         double[] base = new double[rows];
@@ -278,6 +280,7 @@ final class NormalImpulses {
         double[] vx0 = vx.clone();
         double[] vy0 = vy.clone();
         boolean[] active = new boolean[rows];
+        ActiveRowsFactor factor = new ActiveRowsFactor(rows, this::coupling);
         Arrays.fill(impulse, 0);
         double[] trial = new double[rows];
         for (int round = 0; round < MAX_ROUNDS; round++) {
@@ -293,9 +296,12 @@ final class NormalImpulses {
             if (joining < 0) {
                 return activeRowsHold();
             }
+            if (!factor.add(joining)) {
+                return false;
+            }
             active[joining] = true;
             for (int inner = 0; inner <= rows; inner++) {
-                solveActive(active, base, trial);
+                factor.solve(base, trial);
                 double step = 1;
                 for (int i = 0; i < rows; i++) {
                     if (active[i] && trial[i] <= 0) {
@@ -313,6 +319,9 @@ final class NormalImpulses {
                         active[i] = false;
                         impulse[i] = 0;
                     }
+                }
+                if (!factor.keepOnly(active)) {
+                    return false;
                 }
             }
             System.arraycopy(vx0, 0, vx, 0, balls);
@@ -340,29 +349,6 @@ final class NormalImpulses {
             }
         }
         return true;
-    }
-
-    /** The impulses of the active rows that close each exactly (rows depending on others take none), in {@code out}. */
-    private void solveActive(boolean[] active, double[] base, double[] out) {
-        int[] index = new int[rows];
-        int m = 0;
-        for (int i = 0; i < rows; i++) {
-            out[i] = 0;
-            if (active[i]) {
-                index[m++] = i;
-            }
-        }
-        double[][] matrix = new double[m][m + 1];
-        for (int r = 0; r < m; r++) {
-            for (int c = 0; c < m; c++) {
-                matrix[r][c] = coupling(index[r], index[c]);
-            }
-            matrix[r][m] = base[index[r]];
-        }
-        double[] solution = Gauss.solve(matrix);
-        for (int r = 0; r < m; r++) {
-            out[index[r]] = solution[r];
-        }
     }
 
     /** J_i . J_j: how an impulse on row j changes what row i closes by. */
