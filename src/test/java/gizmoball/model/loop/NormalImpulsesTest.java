@@ -130,6 +130,24 @@ class NormalImpulsesTest {
         assertThat(result.vx()[0] + result.vx()[1]).isPositive();                    // the wall sent it all back
     }
 
+    /**
+     * Ball 0 between a wall on its left and ball 1, which lies against a wall on its right, struck into ball 1 at 5 L/s:
+     * each round sends it from one side into the other and back, for ever, while ball 2, sliding over ball 1 at 3 L/s,
+     * keeps the cluster from stopping dead. The cap's limit is the inelastic projection of where the rounds are at
+     * the cap, an even round: ball 0 at 5 L/s again, so balls 0 and 1 at rest. The solve sees the cycle of two and
+     * ends there in a few rounds instead of the cap's 256.
+     */
+    @Test
+    void aBallRingingBetweenTwoContactsEndsAtTheCapsLimitWithinAFewRounds() {
+        NormalImpulses.Result result = new Rows().surface(0, 1, 0, 0, 1).between(1, 0, 1, 0)
+                .surface(1, -1, 0, 0, 1).between(2, 1, 0, -1)
+                .solve(3, new double[] {5, 0, 3}, new double[] {0, 0, 0});
+        assertThat(result.vx()).containsExactly(new double[] {0, 0, 3}, within(EXACT));
+        assertThat(result.vy()).containsExactly(new double[] {0, 0, 0}, within(EXACT));
+        assertThat(result.feasible()).isTrue();
+        assertThat(result.rounds()).isLessThanOrEqualTo(4);
+    }
+
     @Test
     void aSwingingSurfaceBatsABallAtRestAtOnePlusItsCoefficientTimesItsSpeed() {
         NormalImpulses.Result result = new Rows().surface(0, 0, -1, 10, 0.95).solve(1, new double[] {0},
