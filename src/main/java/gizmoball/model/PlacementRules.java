@@ -5,6 +5,7 @@ import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.loop.Ball;
 import gizmoball.model.loop.SpatialIndex;
+import gizmoball.model.loop.Tolerances;
 import gizmoball.model.loop.TriggerSource;
 
 import java.util.List;
@@ -154,9 +155,15 @@ final class PlacementRules {
         return what + " would overlap " + kindOfThing + " " + name;
     }
 
+    /**
+     * Whether a ball centred there lies inside the outer walls, overlapping them by no more than
+     * {@link Tolerances#PLACEMENT}, as it may overlap a gizmo or a ball: a ball resting on the floor in play can lie
+     * 3e-14 L into it, and a board saved then must load again.
+     */
     static boolean insideBoard(Vect position) {
-        return position.x() >= Board.BALL_RADIUS && position.x() <= Board.SIZE - Board.BALL_RADIUS
-                && position.y() >= Board.BALL_RADIUS && position.y() <= Board.SIZE - Board.BALL_RADIUS;
+        double least = Board.BALL_RADIUS - Tolerances.PLACEMENT;
+        double most = Board.SIZE - least;
+        return position.x() >= least && position.x() <= most && position.y() >= least && position.y() <= most;
     }
 
     /** A name a new gizmo or ball may take: not empty, no whitespace, not the outer walls', not in use. */

@@ -71,6 +71,25 @@ class BoardEditingTest {
         assertThat(ballsCovering(board, 1.9, 1.9)).isEmpty();
     }
 
+    /**
+     * A ball resting on the floor in play can lie 4e-15 L into it (19.750000000000004); saved then, it must load
+     * again, as a ball touching a gizmo to rounding does. The walls refuse only what a gizmo refuses: more than
+     * {@code Tolerances.PLACEMENT} (1e-8 L) inside.
+     */
+    @Test
+    void aBallOnAWallToRoundingIsPlacedAndOneDeeperThanThePlacementToleranceIsRefused() {
+        Board board = new Board();
+        board.addBall("Floor", 10, 19.750000000000004, 0, 0);
+        board.addBall("Ceiling", 12, 0.2499999999999994, 0, 0);
+        board.addBall("Left", 0.25 - 5e-9, 10, 0, 0);
+        board.addBall("Right", 19.75 + 5e-9, 12, 0, 0);
+        assertThat(board.balls()).hasSize(4);
+        assertThatThrownBy(() -> board.addBall("Deeper", 5, 19.75 + 2e-8, 0, 0))
+                .isInstanceOf(BoardEditException.class).hasMessageContaining("outside the board");
+        assertThatThrownBy(() -> board.addBall("Beyond", 0.25 - 2e-8, 5, 0, 0))
+                .isInstanceOf(BoardEditException.class).hasMessageContaining("outside the board");
+    }
+
     @Test
     void aBallFasterThanTheLimitIsClampedToIt() {
         Board board = new Board();
