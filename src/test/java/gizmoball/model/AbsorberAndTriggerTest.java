@@ -52,6 +52,29 @@ class AbsorberAndTriggerTest {
         assertThat(ball.position().y()).isCloseTo(17.75 + v * DT, within(1e-12));
     }
 
+    /**
+     * Without gravity, ball Front sinks into the absorber's top at 1 L/s and is captured after 0.05 s; Back follows it
+     * at 2 L/s, 0.06 L behind, so it would have met Front after 0.06 s, where Front no longer is. It goes on at 2 L/s
+     * until the absorber takes it too.
+     */
+    @Test
+    void aBallNeverMeetsABallTheAbsorberHasTakenWhereThatBallWas() {
+        Board board = boardWithAbsorber();
+        board.setGravity(0);
+        board.setFriction(0, 0);
+        board.addBall("Front", 10, 17.7, 0, 1);
+        board.addBall("Back", 10, 17.14, 0, 2);
+        for (int i = 0; i < 12; i++) {
+            board.tick(DT);
+            BallView back = board.ball("Back").orElseThrow();
+            if (!back.isCaptured()) {
+                assertThat(back.velocity()).as("tick %d", i + 1).isEqualTo(new Vect(0, 2));
+            }
+        }
+        assertThat(board.ball("Front").orElseThrow().isCaptured()).isTrue();
+        assertThat(board.ball("Front").orElseThrow().velocity()).isEqualTo(Vect.ZERO);
+    }
+
     @Test
     void anAbsorberFiresOneBallPerTrigger() {
         Board board = boardWithAbsorber();

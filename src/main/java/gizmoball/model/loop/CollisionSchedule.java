@@ -208,10 +208,13 @@ final class CollisionSchedule {
 
     /** The ball's velocity or position changed other than by moving on: ask again about it. */
     void forget(Ball ball) {
-        if (ball.isCaptured()) {
-            return;   // filed no more: the capture filed the free balls afresh
-        }
         int slot = ball.slot();
+        if (slot >= filed || bySlot[slot] != ball) {
+            return;   // not filed now (held since before the last filing): nothing is known of it
+        }
+        // A ball just captured or sunk is forgotten too: what was to meet it where it was must not meet it in the
+        // absorber (a ball fired from an absorber, knocked back into it by the next ball, bounced that one off where
+        // it had been).
         withScene[slot] = null;
         withBalls[slot] = null;
         markUnknown(slot);
