@@ -81,10 +81,9 @@ final class ClusterSolve {
     Struck resolve(Collision collision, ContactCluster cluster) {
         List<Ball> balls = cluster.balls();
         boolean carried = carried(collision);
-        double[] impact = impactSpeeds(cluster);
-        NormalImpulses.Result result = solve(cluster, impact, Set.of(), carried);
+        Solved solved = solveTakingGrazes(cluster, Set.of(), carried);
         Set<MovingShape> stalled = new LinkedHashSet<>();
-        if (!result.feasible()) {
+        if (!solved.result().feasible()) {
             for (ContactCluster.Row row : cluster.rows()) {
                 if (row.other() instanceof ContactCluster.Other.Moving moving && stalled.add(moving.shape())) {
                     moving.shape().stall();
@@ -92,8 +91,10 @@ final class ClusterSolve {
                             balls.get(row.ball()).name()));
                 }
             }
-            result = solve(cluster, impact, stalled, carried);
+            solved = solveTakingGrazes(cluster, stalled, carried);
         }
+        NormalImpulses.Result result = solved.result();
+        double[] impact = solved.impact();
         boolean elastic = stalled.isEmpty() && !carried && keepsEnergy(cluster, impact, result);
         boolean woke = false;
         for (int k = 0; k < balls.size(); k++) {
@@ -192,6 +193,25 @@ final class ClusterSolve {
      */
     private boolean carried(Collision collision) {
         return rattling(collision.ball());
+    }
+
+    /** A solve's answer with the impact speeds of the rows it was solved with. */
+    private record Solved(NormalImpulses.Result result, double[] impact) {
+    }
+
+    /**
+     * Solves the cluster; where the answer turns a ball into a contact it grazed, that contact becomes a row and the
+     * cluster is solved again from the start ({@link ContactCluster#takeClosingGrazes}). Each round takes at least one
+     * graze, so it ends.
+     */
+    private Solved solveTakingGrazes(ContactCluster cluster, Set<MovingShape> stalled, boolean carried) {
+        while (true) {
+            double[] impact = impactSpeeds(cluster);
+            NormalImpulses.Result result = solve(cluster, impact, stalled, carried);
+            if (!cluster.takeClosingGrazes(result.vx(), result.vy())) {
+                return new Solved(result, impact);
+            }
+        }
     }
 
     private NormalImpulses.Result solve(ContactCluster cluster, double[] impact, Set<MovingShape> stalled,

@@ -245,13 +245,16 @@ final class NormalImpulses {
      * The impulses that make every row just not close, never pulling, from the current velocities: exactly by the
      * active-set method (iterative projections crawl where a ball is wedged between another and a wall at a tilt of
      * 1e-4, which needs impulses thousands of times its speed), else by projected Gauss-Seidel. Returns false if
-     * neither finds velocities within the speed limit that close on nothing (surfaces closing a pocket).
+     * neither finds velocities within the speed limit that close on nothing (surfaces closing a pocket). The
+     * projection is unique in the velocities, so where the active set has found it beyond the limit, Gauss-Seidel,
+     * converging to the same velocities, is not asked: in a pocket of 32 balls a flipper closed, its 500 sweeps over
+     * 74 rows cost milliseconds to say so again.
      */
     private boolean project(double speedLimit) {
         double[] vx0 = vx.clone();
         double[] vy0 = vy.clone();
-        if (projectByActiveSet() && withinLimit(speedLimit)) {
-            return true;
+        if (projectByActiveSet()) {
+            return withinLimit(speedLimit);
         }
         System.arraycopy(vx0, 0, vx, 0, balls);
         System.arraycopy(vy0, 0, vy, 0, balls);
