@@ -49,6 +49,11 @@ final class BallPlacer {
         return placed;
     }
 
+    /** Places one ball at {@code at}, at rest, slow or fast; false where the board refuses it there. */
+    boolean placeAt(Point at) {
+        return tryAt(names.apply("B"), at);
+    }
+
     private boolean tryAt(String name, Point at) {
         double[] v = velocity();
         try {

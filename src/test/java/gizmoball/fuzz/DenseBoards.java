@@ -4,6 +4,7 @@ import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.gizmo.Action;
+import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Order;
 import gizmoball.model.loop.TriggerSource;
@@ -20,8 +21,8 @@ import java.util.SplittableRandom;
  * spinners turning either way (added last, keys reverse, start and stop them, bumpers trigger them), corridors one or two cells wide, checkerboards and scattered; flippers in pockets of
  * bumpers, in facing pairs (tongs) and in clumps, some starting part-way through a swing; absorbers along the floor
  * and elsewhere, many firing themselves; 5-40 balls placed free, touching gizmos, flippers (their pivot ends too) and
- * each other, at up to 100 L/s; keys bound to the flippers and absorbers and a script pressing them. Gravity and
- * friction vary, zero included; about one board in seven has neither, nor flippers nor absorbers, so that its
+ * each other, at up to 100 L/s, and on one board in three a walled pocket packed with touching balls; keys bound to
+ * the flippers and absorbers and a script pressing them. Gravity and friction vary, zero included; about one board in seven has neither, nor flippers nor absorbers, so that its
  * kinetic energy must be kept.
  *
  * <p>Every board is built through {@link Board}'s editing operations, so it is a board a player could build: a
@@ -47,6 +48,11 @@ public final class DenseBoards {
      */
     private final SplittableRandom spinnerRandom;
     private static final long SPINNER_STREAM = 0x5b1_22L;
+    /** The packed pocket's chance: a stream of its own too, so that a board with a pocket is its old board plus the pocket. */
+    private final SplittableRandom pocketRandom;
+    private static final long POCKET_STREAM = 0x90c_20L;
+    /** The most balls a board has: a packed pocket fills up to it. */
+    private static final int MOST_BALLS = 40;
     private final Board board = new Board();
     private final List<String> recipe = new ArrayList<>();
     private final List<String> bumpers = new ArrayList<>();
@@ -61,6 +67,7 @@ public final class DenseBoards {
     private DenseBoards(long seed) {
         random = new SplittableRandom(seed);
         spinnerRandom = new SplittableRandom(seed ^ SPINNER_STREAM);
+        pocketRandom = new SplittableRandom(seed ^ POCKET_STREAM);
     }
 
     /** The board of {@code seed} with a key script for {@code ticks} ticks of play. */
@@ -87,10 +94,13 @@ public final class DenseBoards {
         if (!energyKept) {
             wire();
         }
-        int balls = new BallPlacer(random, board, this::nextName).place(5 + random.nextInt(36));
+        int balls = new BallPlacer(random, board, this::nextName).place(5 + random.nextInt(MOST_BALLS - 4));
         recipe.add(balls + " balls");
         if (!energyKept) {
             spinners();
+        }
+        if (pocketRandom.nextInt(3) == 0) {
+            packedPocket(MOST_BALLS - balls);
         }
         return board;
     }
@@ -288,6 +298,90 @@ public final class DenseBoards {
         recipe.add(spinners.size() + " spinners");
     }
 
+    /**
+     * A pocket packed with touching balls (issue 20's clusters of touching balls): a rectangle of 2 to 6 by 2 to 6 free
+     * cells, walled with bumpers where its border is free, its balls on a square or a hexagonal lattice of touching
+     * balls (2R apart; the hexagonal rows touch only to rounding) filling 60 to 100 % of its places, as many as keep
+     * the board to {@link #MOST_BALLS}, each at rest, slow or fast as the other balls are.
+     */
+    private void packedPocket(int room) {
+        SplittableRandom r = pocketRandom;
+        boolean[][] taken = takenCells();
+        for (int attempt = 0; attempt < 400 && room > 0; attempt++) {
+            int w = 2 + r.nextInt(5);
+            int h = 2 + r.nextInt(5);
+            int x = r.nextInt(SIZE - w + 1);
+            int y = r.nextInt(SIZE - h + 1);
+            if (!free(taken, x, y, w, h)) {
+                continue;
+            }
+            for (int cx = x - 1; cx <= x + w; cx++) {
+                for (int cy = y - 1; cy <= y + h; cy++) {
+                    boolean border = cx < x || cx >= x + w || cy < y || cy >= y + h;
+                    if (border && cx >= 0 && cy >= 0 && cx < SIZE && cy < SIZE && !taken[cx][cy]) {
+                        bumper(r.nextInt(4) == 0 ? BUMPERS[r.nextInt(BUMPERS.length)] : GizmoKind.SQUARE, cx, cy,
+                                r.nextInt(4));
+                    }
+                }
+            }
+            boolean hexagonal = r.nextBoolean();
+            List<Point> places = lattice(x, y, w, h, hexagonal);
+            int wanted = Math.min(room, (int) Math.ceil(r.nextDouble(0.6, 1) * places.size()));
+            BallPlacer placer = new BallPlacer(r, board, this::nextName);
+            int placed = 0;
+            for (int i = 0; i < places.size() && placed < wanted; i++) {
+                int j = i + r.nextInt(places.size() - i);
+                Point place = places.set(j, places.get(i));
+                places.set(i, place);
+                placed += placer.placeAt(place) ? 1 : 0;
+            }
+            recipe.add(String.format(Locale.ROOT, "a pocket of %dx%d cells packed with %d balls (%s)", w, h, placed,
+                    hexagonal ? "hexagonal" : "square"));
+            return;
+        }
+    }
+
+    /** The cells some gizmo covers. */
+    private boolean[][] takenCells() {
+        boolean[][] taken = new boolean[SIZE][SIZE];
+        for (Gizmo g : board.gizmos()) {
+            for (int cx = g.x(); cx < g.x() + g.width(); cx++) {
+                for (int cy = g.y(); cy < g.y() + g.height(); cy++) {
+                    taken[cx][cy] = true;
+                }
+            }
+        }
+        return taken;
+    }
+
+    private static boolean free(boolean[][] taken, int x, int y, int w, int h) {
+        for (int cx = x; cx < x + w; cx++) {
+            for (int cy = y; cy < y + h; cy++) {
+                if (taken[cx][cy]) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+
+    /**
+     * The centres of touching balls filling the rectangle of cells: a square lattice 2R apart, or hexagonal rows
+     * sqrt(3) R apart, every other one shifted by R.
+     */
+    private static List<Point> lattice(int x, int y, int w, int h, boolean hexagonal) {
+        double r = Board.BALL_RADIUS;
+        double rowStep = hexagonal ? Math.sqrt(3) * r : 2 * r;
+        List<Point> places = new ArrayList<>();
+        for (int row = 0; y + r + row * rowStep <= y + h - r; row++) {
+            double shift = hexagonal && row % 2 == 1 ? r : 0;
+            for (int col = 0; x + r + shift + col * 2 * r <= x + w - r; col++) {
+                places.add(new Point(x + r + shift + col * 2 * r, y + r + row * rowStep));
+            }
+        }
+        return places;
+    }
+
     // ------------------------------------------------------------------------------------------------ bumpers
 
     private GizmoKind randomBumper() {
@@ -387,7 +481,10 @@ public final class DenseBoards {
         }
     }
 
-    /** Adds the gizmo and turns it, or returns null where the board refuses it (off the board, or taken). */
+    /**
+     * Adds the gizmo and turns it as far as the balls let it, or returns null where the board refuses it (off the
+     * board, or taken).
+     */
     private String gizmo(GizmoKind kind, String prefix, int x, int y, int turns) {
         if (x < 0 || y < 0 || x + kind.width() > SIZE || y + kind.height() > SIZE) {
             return null;
@@ -398,8 +495,12 @@ public final class DenseBoards {
         } catch (BoardEditException refused) {
             return null;
         }
-        for (int t = 0; t < turns; t++) {
-            board.rotate(name);
+        try {
+            for (int t = 0; t < turns; t++) {
+                board.rotate(name);
+            }
+        } catch (BoardEditException onABall) {
+            // turned, it would lie on a ball (a packed pocket's wall): it stays as it has turned so far
         }
         return name;
     }

@@ -130,6 +130,7 @@ class DenseBoardsTest {
         int touchingBall = 0;
         int touchingWall = 0;
         int stacked = 0;
+        int packed = 0;
         int fast = 0;
         int still = 0;
         Set<Integer> counts = new HashSet<>();
@@ -144,12 +145,15 @@ class DenseBoardsTest {
                     touchingGizmo += touches ? 1 : 0;
                     touchingFlipper += touches && g instanceof Flipper ? 1 : 0;
                 }
+                int neighbours = 0;
                 for (BallView other : balls) {
                     double d = Math.hypot(x - other.position().x(), y - other.position().y());
                     boolean touches = other != ball && Math.abs(d - 2 * Board.BALL_RADIUS) < 1e-9;
                     touchingBall += touches ? 1 : 0;
+                    neighbours += touches ? 1 : 0;
                     stacked += touches && Math.abs(x - other.position().x()) < 1e-9 ? 1 : 0;
                 }
+                packed += neighbours >= 4 ? 1 : 0;
                 double wallGap = Math.min(Math.min(x, Board.SIZE - x), Math.min(y, Board.SIZE - y));
                 touchingWall += Math.abs(wallGap - Board.BALL_RADIUS) < 1e-9 ? 1 : 0;
                 double speed = ball.velocity().length();
@@ -161,6 +165,7 @@ class DenseBoardsTest {
         assertThat(touchingFlipper).isGreaterThan(50);
         assertThat(touchingBall).isGreaterThan(100);
         assertThat(stacked).as("balls on top of balls").isGreaterThan(20);
+        assertThat(packed).as("balls touching four others or more (packed pockets)").isGreaterThan(60);
         assertThat(touchingWall).isGreaterThan(50);
         assertThat(fast).isGreaterThan(100);
         assertThat(still).isGreaterThan(100);
