@@ -39,6 +39,11 @@ final class NormalImpulses {
      */
     private static final int MAX_IMPACT_ROUNDS = 256;
     /**
+     * Relative to the fastest ball's speed, how near a round's start must be to the start two rounds before for the
+     * rounds to count as a cycle of two: rounding's scale, far below any change a round of impacts makes.
+     */
+    private static final double CYCLE_MATCH = 1e-9;
+    /**
      * Sweeps of projected Gauss-Seidel before it counts as not converging: it is the fallback for rows the active set
      * cannot settle, and at 10,000 sweeps a cluster of 30 balls cost half a second of one tick.
      */
@@ -102,8 +107,10 @@ final class NormalImpulses {
      * <p>Rounds that ring for ever end at the limit the cap gives them, the inelastic projection of where they are.
      * Some ring in a cycle of two: a ball between two contacts that touch it on both sides is sent from one into the
      * other and back (in a box packed with 31 elastic balls, rounds 5 to 256 alternated between two states to 2e-13
-     * L/s). A round that starts where the round two before it started, to within the rows' own slop, would ring so to
-     * the cap; on a round of the cap's parity it ends there, in the state the cap would have met.
+     * L/s; in a pocket of 32 balls a flipper pressed on, to 7e-10 L/s, drifting by that much every two rounds). A round
+     * that starts where the round two before it started, to within {@link #CYCLE_MATCH} of the fastest ball's speed,
+     * would ring so to the cap; on a round of the cap's parity it ends there, in the state the cap would have met (to
+     * that drift, some 1e-7 of the speeds).
      */
     Result solve(double[] vx0, double[] vy0, double[] impact, double speedLimit) {
         vx = vx0.clone();
@@ -118,9 +125,11 @@ final class NormalImpulses {
             if (!anyClosing()) {
                 return new Result(vx, vy, largest, withinLimit(speedLimit), round);
             }
-            if ((MAX_IMPACT_ROUNDS - round) % 2 == 0 && twoBackX != null && within(twoBackX, vx, SLOP)
-                    && within(twoBackY, vy, SLOP)) {
-                break;
+            if ((MAX_IMPACT_ROUNDS - round) % 2 == 0 && twoBackX != null) {
+                double tolerance = CYCLE_MATCH * Math.max(1, fastest(vx, vy));
+                if (within(twoBackX, vx, tolerance) && within(twoBackY, vy, tolerance)) {
+                    break;
+                }
             }
             double[] before = vx.clone();
             double[] beforeY = vy.clone();
@@ -167,6 +176,15 @@ final class NormalImpulses {
         }
         boolean feasible = project(speedLimit) && withinLimit(speedLimit);
         return new Result(vx, vy, largest, feasible, round + 1);
+    }
+
+    /** The largest speed among the balls, as |vx| + |vy|. */
+    private static double fastest(double[] x, double[] y) {
+        double most = 0;
+        for (int k = 0; k < x.length; k++) {
+            most = Math.max(most, Math.abs(x[k]) + Math.abs(y[k]));
+        }
+        return most;
     }
 
     /** Whether every component of {@code x} lies within {@code tolerance} of the same one of {@code y}. */
@@ -256,9 +274,29 @@ final class NormalImpulses {
         if (projectByActiveSet()) {
             return withinLimit(speedLimit);
         }
+        // Gauss-Seidel converges from any impulses that push: it starts where the active set got to (in a packed
+        // pocket, a row depending on 48 others ends the active set with the rest of the answer found), unless those
+        // impulses are past any a velocity within the limit needs (rows nearly dependent: 1e17).
         System.arraycopy(vx0, 0, vx, 0, balls);
         System.arraycopy(vy0, 0, vy, 0, balls);
+        double bound = impulseBound(speedLimit);
+        boolean warm = true;
+        for (int i = 0; i < rows && warm; i++) {
+            warm = impulse[i] >= 0 && impulse[i] <= bound;
+        }
+        for (int i = 0; i < rows; i++) {
+            if (warm) {
+                addImpulse(vx, vy, i, impulse[i]);
+            } else {
+                impulse[i] = 0;
+            }
+        }
         return projectBySweeps(speedLimit);
+    }
+
+    /** An impulse past which no velocity within the speed limit can need more: there is no answer. */
+    private double impulseBound(double speedLimit) {
+        return 4 * speedLimit * (rows + 1);
     }
 
     /**
@@ -269,13 +307,12 @@ final class NormalImpulses {
      * there is none.
      */
     private boolean projectBySweeps(double speedLimit) {
-        double bound = 4 * speedLimit * (rows + 1);
+        double bound = impulseBound(speedLimit);
         double scale = 1;
         for (int k = 0; k < balls; k++) {
             scale = Math.max(scale, Math.abs(vx[k]) + Math.abs(vy[k]));
         }
         double tolerance = 1e-14 * scale;
-        Arrays.fill(impulse, 0);
         for (int sweep = 0; sweep < MAX_SWEEPS; sweep++) {
             double largest = 0;
             for (int i = 0; i < rows; i++) {
