@@ -265,14 +265,15 @@ final class NormalImpulses {
      * 1e-4, which needs impulses thousands of times its speed), else by projected Gauss-Seidel. Returns false if
      * neither finds velocities within the speed limit that close on nothing (surfaces closing a pocket). The
      * projection is unique in the velocities, so where the active set has found it beyond the limit, Gauss-Seidel,
-     * converging to the same velocities, is not asked: in a pocket of 32 balls a flipper closed, its 500 sweeps over
-     * 74 rows cost milliseconds to say so again.
+     * converging to the same velocities, is not asked, nor where the active set has shown there is none: in a pocket
+     * of 32 balls a flipper closed, its 500 sweeps over 74 rows cost a millisecond a tick to say so again.
      */
     private boolean project(double speedLimit) {
         double[] vx0 = vx.clone();
         double[] vy0 = vy.clone();
-        if (projectByActiveSet()) {
-            return withinLimit(speedLimit);
+        SetOutcome outcome = projectByActiveSet();
+        if (outcome != SetOutcome.UNSETTLED) {
+            return outcome == SetOutcome.SOLVED && withinLimit(speedLimit);
         }
         // Gauss-Seidel converges from any impulses that push: it starts where the active set got to (in a packed
         // pocket, a row depending on 48 others ends the active set with the rest of the answer found), unless those
@@ -342,7 +343,7 @@ final class NormalImpulses {
      * method ends when no row outside the set closes. A joining row that depends on the set's rows (no impulse of its
      * own can change what it closes by) ends it: Gauss-Seidel takes that cluster.
      */
-    private boolean projectByActiveSet() {
+    private SetOutcome projectByActiveSet() {
         double[] base = new double[rows];
         for (int i = 0; i < rows; i++) {
             base[i] = speed[i] - relative(i);   // what each row closes by, before any impulse
@@ -364,10 +365,13 @@ final class NormalImpulses {
                 }
             }
             if (joining < 0) {
-                return activeRowsHold();
+                return activeRowsHold() ? SetOutcome.SOLVED : SetOutcome.UNSETTLED;
             }
             if (!factor.add(joining)) {
-                return false;
+                Swap swap = swapIn(joining, active, factor);
+                if (swap != Swap.SWAPPED) {
+                    return swap == Swap.NO_ROW_MAKES_WAY ? SetOutcome.INFEASIBLE : SetOutcome.UNSETTLED;
+                }
             }
             active[joining] = true;
             for (int inner = 0; inner <= rows; inner++) {
@@ -391,7 +395,7 @@ final class NormalImpulses {
                     }
                 }
                 if (!factor.keepOnly(active)) {
-                    return false;
+                    return SetOutcome.UNSETTLED;
                 }
             }
             System.arraycopy(vx0, 0, vx, 0, balls);
@@ -400,10 +404,70 @@ final class NormalImpulses {
                 addImpulse(vx, vy, i, impulse[i]);
             }
             if (!active[joining] || speed[joining] - relative(joining) > SLOP) {
-                return false;   // a row depending on others that they cannot satisfy
+                return SetOutcome.UNSETTLED;   // a row depending on others that they cannot satisfy
             }
         }
-        return false;
+        return SetOutcome.UNSETTLED;
+    }
+
+    /** How the active-set method ended. */
+    private enum SetOutcome {
+        /** Every row closes by no more than rounding: the projection. */
+        SOLVED,
+        /** No velocity closes on none of the rows ({@link #swapIn}'s proof): surfaces close a pocket. */
+        INFEASIBLE,
+        /** Rows depend on each other in ways it does not settle: Gauss-Seidel takes them. */
+        UNSETTLED
+    }
+
+    /** How a row depending on the set's rows joined it. */
+    private enum Swap {
+        SWAPPED,
+        /** No row of the set can make way: no velocity satisfies them all. */
+        NO_ROW_MAKES_WAY,
+        /** Rounding: the set, with the row in, does not count as independent. */
+        NOT_TAKEN
+    }
+
+    /**
+     * A joining row that depends on the set's rows, J_j = sum of c_k J_k: impulse moved from the rows k with c_k &gt; 0
+     * to it, in those proportions, changes no velocity, so it may move until the first of them reaches zero; that row
+     * leaves and the joining row takes its place (the degenerate step of the simplex method). In a pocket packed with
+     * balls there are more contacts than the balls can move in ways (3 per ball, in 2 dimensions), and a row joining
+     * late depends on the others. Where no row of the set has c_k &gt; 0, there is no answer: the set's rows hold
+     * exactly (J_k v = s_k), so any velocity v' satisfying them all has J_j v' = sum c_k J_k v' &lt;= sum c_k s_k =
+     * J_j v, and v closes on row j. The impulses are left as they were unless the row is swapped in.
+     */
+    private Swap swapIn(int joining, boolean[] active, ActiveRowsFactor factor) {
+        double[] coupled = new double[rows];
+        for (int i = 0; i < rows; i++) {
+            coupled[i] = active[i] ? coupling(i, joining) : 0;
+        }
+        double[] c = new double[rows];
+        factor.solve(coupled, c);
+        int leaving = -1;
+        double step = Double.POSITIVE_INFINITY;
+        for (int i = 0; i < rows; i++) {
+            if (active[i] && c[i] > 0 && impulse[i] / c[i] < step) {
+                step = impulse[i] / c[i];
+                leaving = i;
+            }
+        }
+        if (leaving < 0) {
+            return Swap.NO_ROW_MAKES_WAY;
+        }
+        active[leaving] = false;
+        if (!factor.keepOnly(active) || !factor.add(joining)) {
+            return Swap.NOT_TAKEN;   // the caller gives up the set
+        }
+        for (int i = 0; i < rows; i++) {
+            if (active[i]) {
+                impulse[i] = Math.max(0, impulse[i] - step * c[i]);
+            }
+        }
+        impulse[leaving] = 0;
+        impulse[joining] = step;
+        return Swap.SWAPPED;
     }
 
     /**

@@ -204,6 +204,112 @@ class NormalImpulsesTest {
      * Random clusters of up to six balls among still surfaces with coefficients in [0, 1]: the answer closes on no
      * contact by more than rounding, gains no kinetic energy, and a cluster with no surface keeps momentum.
      */
+    /**
+     * A box packed with touching balls on a hexagonal lattice has more contacts than its balls have ways to move (up
+     * to 3 per ball in 2 dimensions), so rows joining the active set late depend on the others. Without restitution
+     * the answer is the projection of the velocities onto those that close on no contact, unique in the velocities;
+     * the oracle is Hildreth's method written here, run to convergence. Squeezed toward its centre, nearly every
+     * contact presses; walls drawing back at speeds of their own make rows that depend on the others close.
+     */
+    @RepeatedTest(40)
+    void aPackedBoxIsSolvedToTheProjectionOfItsVelocities(RepetitionInfo repetition) {
+        SplittableRandom random = new SplittableRandom(104729L * repetition.getCurrentRepetition());
+        int columns = 3 + random.nextInt(5);
+        int lines = 3 + random.nextInt(4);
+        double r = 0.25;
+        double rowStep = Math.sqrt(3) * r;
+        List<double[]> centres = new ArrayList<>();
+        for (int line = 0; line < lines; line++) {
+            for (int column = 0; column < columns; column++) {
+                centres.add(new double[] {r + 2 * r * column + (line % 2 == 1 ? r : 0), r + rowStep * line});
+            }
+        }
+        double right = 2 * r * columns + r;
+        double bottom = r + rowStep * (lines - 1) + r;
+        Rows rows = new Rows();
+        int count = centres.size();
+        for (int k = 0; k < count; k++) {
+            double x = centres.get(k)[0];
+            double y = centres.get(k)[1];
+            for (int j = 0; j < k; j++) {
+                double dx = x - centres.get(j)[0];
+                double dy = y - centres.get(j)[1];
+                double d = Math.hypot(dx, dy);
+                if (d < 2 * r + 1e-9) {
+                    rows.between(k, j, dx / d, dy / d);
+                }
+            }
+            if (x - r < 1e-9) {
+                rows.surface(k, 1, 0, 0, 0);
+            }
+            if (right - x - r < 1e-9) {
+                rows.surface(k, -1, 0, 0, 0);
+            }
+            if (y - r < 1e-9) {
+                rows.surface(k, 0, 1, 0, 0);
+            }
+            if (bottom - y - r < 1e-9) {
+                rows.surface(k, 0, -1, 0, 0);
+            }
+        }
+        for (int i = 0; i < rows.values.size(); i++) {
+            rows.values.get(i)[3] = 0;   // no restitution: one compression, the projection
+            if (rows.balls.get(i)[1] < 0 && random.nextBoolean()) {
+                rows.values.get(i)[2] = -random.nextDouble(0, 3);   // a wall drawing back: the rows' speeds differ
+            }
+        }
+        // Every other box is squeezed: each ball heads for the box's centre, so nearly every contact presses.
+        boolean squeezed = repetition.getCurrentRepetition() % 2 == 0;
+        double[] vx = new double[count];
+        double[] vy = new double[count];
+        for (int k = 0; k < count; k++) {
+            double pull = random.nextDouble(5, 30);
+            vx[k] = squeezed ? pull * (right / 2 - centres.get(k)[0]) + random.nextDouble(-1, 1)
+                    : random.nextDouble(-30, 30);
+            vy[k] = squeezed ? pull * (bottom / 2 - centres.get(k)[1]) + random.nextDouble(-1, 1)
+                    : random.nextDouble(-30, 30);
+        }
+        NormalImpulses.Result result = rows.solve(count, vx.clone(), vy.clone());
+        double[][] oracle = hildreth(rows, vx, vy);
+        assertThat(result.feasible()).isTrue();
+        for (int k = 0; k < count; k++) {
+            assertThat(result.vx()[k]).as("ball %d", k).isCloseTo(oracle[0][k], within(1e-6));
+            assertThat(result.vy()[k]).as("ball %d", k).isCloseTo(oracle[1][k], within(1e-6));
+        }
+    }
+
+    /** Projected Gauss-Seidel on the impulses, from none, until no impulse changes by more than 1e-13. */
+    private static double[][] hildreth(Rows rows, double[] vx0, double[] vy0) {
+        double[] vx = vx0.clone();
+        double[] vy = vy0.clone();
+        int n = rows.balls.size();
+        double[] impulse = new double[n];
+        for (int sweep = 0; sweep < 1_000_000; sweep++) {
+            double largest = 0;
+            for (int i = 0; i < n; i++) {
+                int a = rows.balls.get(i)[0];
+                int b = rows.balls.get(i)[1];
+                double nx = rows.values.get(i)[0];
+                double ny = rows.values.get(i)[1];
+                double ux = vx[a] - (b < 0 ? 0 : vx[b]);
+                double uy = vy[a] - (b < 0 ? 0 : vy[b]);
+                double step = Math.max(-impulse[i], (rows.values.get(i)[2] - (ux * nx + uy * ny)) / (b < 0 ? 1 : 2));
+                impulse[i] += step;
+                vx[a] += step * nx;
+                vy[a] += step * ny;
+                if (b >= 0) {
+                    vx[b] -= step * nx;
+                    vy[b] -= step * ny;
+                }
+                largest = Math.max(largest, Math.abs(step));
+            }
+            if (largest <= 1e-13) {
+                break;
+            }
+        }
+        return new double[][] {vx, vy};
+    }
+
     @RepeatedTest(400)
     void aStillClusterNeverGainsEnergyAndIsLeftClosingOnNothing(RepetitionInfo repetition) {
         SplittableRandom random = new SplittableRandom(7919L * repetition.getCurrentRepetition());
