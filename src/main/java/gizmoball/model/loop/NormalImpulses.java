@@ -271,7 +271,7 @@ final class NormalImpulses {
     private boolean project(double speedLimit) {
         double[] vx0 = vx.clone();
         double[] vy0 = vy.clone();
-        SetOutcome outcome = projectByActiveSet();
+        SetOutcome outcome = projectByActiveSet(speedLimit);
         if (outcome != SetOutcome.UNSETTLED) {
             return outcome == SetOutcome.SOLVED && withinLimit(speedLimit);
         }
@@ -343,7 +343,7 @@ final class NormalImpulses {
      * method ends when no row outside the set closes. A joining row that depends on the set's rows (no impulse of its
      * own can change what it closes by) ends it: Gauss-Seidel takes that cluster.
      */
-    private SetOutcome projectByActiveSet() {
+    private SetOutcome projectByActiveSet(double speedLimit) {
         double[] base = new double[rows];
         for (int i = 0; i < rows; i++) {
             base[i] = speed[i] - relative(i);   // what each row closes by, before any impulse
@@ -368,7 +368,7 @@ final class NormalImpulses {
                 return activeRowsHold() ? SetOutcome.SOLVED : SetOutcome.UNSETTLED;
             }
             if (!factor.add(joining)) {
-                Swap swap = swapIn(joining, active, factor);
+                Swap swap = swapIn(joining, active, factor, speedLimit);
                 if (swap != Swap.SWAPPED) {
                     return swap == Swap.NO_ROW_MAKES_WAY ? SetOutcome.INFEASIBLE : SetOutcome.UNSETTLED;
                 }
@@ -410,11 +410,40 @@ final class NormalImpulses {
         return SetOutcome.UNSETTLED;
     }
 
+    /**
+     * Whether no velocity within the speed limit satisfies both the set's rows and row j, where J_j = sum c_k J_k + r
+     * with every c_k &lt;= 0: any v' whose rows close by no more than the slop has c_k J_k v' &lt;= c_k s_k + |c_k| slop,
+     * so J_j v' &lt;= sum c_k s_k + slop sum |c_k| + |r| |v'|, and |v'| is at most the limit times the square root of
+     * the number of balls. A row that only nearly depends on the set (r more than rounding: two balls side by side in
+     * a slot that fits them to 1e-8 L) has an answer that needs large impulses, and this bound does not rule it out:
+     * taken as none, a pocket of balls rang at no time apart to the collision cap (fuzz seed 13000553).
+     */
+    private boolean noAnswer(int joining, double[] c, boolean[] active, double speedLimit) {
+        double[] rx = new double[balls];
+        double[] ry = new double[balls];
+        addImpulse(rx, ry, joining, 1);
+        double combined = 0;
+        double weight = 0;
+        for (int k = 0; k < rows; k++) {
+            if (active[k] && c[k] != 0) {
+                addImpulse(rx, ry, k, -c[k]);
+                combined += c[k] * speed[k];
+                weight += Math.abs(c[k]);
+            }
+        }
+        double residual = 0;
+        for (int k = 0; k < balls; k++) {
+            residual += rx[k] * rx[k] + ry[k] * ry[k];
+        }
+        double margin = speed[joining] - combined;
+        return margin > SLOP * (1 + weight) + Math.sqrt(residual) * speedLimit * Math.sqrt(balls);
+    }
+
     /** How the active-set method ended. */
     private enum SetOutcome {
         /** Every row closes by no more than rounding: the projection. */
         SOLVED,
-        /** No velocity closes on none of the rows ({@link #swapIn}'s proof): surfaces close a pocket. */
+        /** No velocity within the limit closes on none of the rows ({@link #noAnswer}): surfaces close a pocket. */
         INFEASIBLE,
         /** Rows depend on each other in ways it does not settle: Gauss-Seidel takes them. */
         UNSETTLED
@@ -434,11 +463,10 @@ final class NormalImpulses {
      * to it, in those proportions, changes no velocity, so it may move until the first of them reaches zero; that row
      * leaves and the joining row takes its place (the degenerate step of the simplex method). In a pocket packed with
      * balls there are more contacts than the balls can move in ways (3 per ball, in 2 dimensions), and a row joining
-     * late depends on the others. Where no row of the set has c_k &gt; 0, there is no answer: the set's rows hold
-     * exactly (J_k v = s_k), so any velocity v' satisfying them all has J_j v' = sum c_k J_k v' &lt;= sum c_k s_k =
-     * J_j v, and v closes on row j. The impulses are left as they were unless the row is swapped in.
+     * late depends on the others. Where no row of the set has c_k &gt; 0, there may be no answer ({@link #noAnswer});
+     * else the set is given up to Gauss-Seidel. The impulses are left as they were unless the row is swapped in.
      */
-    private Swap swapIn(int joining, boolean[] active, ActiveRowsFactor factor) {
+    private Swap swapIn(int joining, boolean[] active, ActiveRowsFactor factor, double speedLimit) {
         double[] coupled = new double[rows];
         for (int i = 0; i < rows; i++) {
             coupled[i] = active[i] ? coupling(i, joining) : 0;
@@ -454,7 +482,7 @@ final class NormalImpulses {
             }
         }
         if (leaving < 0) {
-            return Swap.NO_ROW_MAKES_WAY;
+            return noAnswer(joining, c, active, speedLimit) ? Swap.NO_ROW_MAKES_WAY : Swap.NOT_TAKEN;
         }
         active[leaving] = false;
         if (!factor.keepOnly(active) || !factor.add(joining)) {
