@@ -17,13 +17,14 @@ import java.util.SplittableRandom;
 /**
  * Random dense boards from a seed, as players build them (issue 20, "Your own fuzz"): bumpers of every kind in every
  * rotation (accelerators, sinks, gates, drop targets and portals among them, issue 22, except where energy must be
- * kept; the gates and drop targets switched by keys and hits, most portals paired) packed in blocks,
- * spinners turning either way (added last, keys reverse, start and stop them, bumpers trigger them), corridors one or two cells wide, checkerboards and scattered; flippers in pockets of
- * bumpers, in facing pairs (tongs) and in clumps, some starting part-way through a swing; absorbers along the floor
- * and elsewhere, many firing themselves; 5-40 balls placed free, touching gizmos, flippers (their pivot ends too) and
- * each other, at up to 100 L/s, and on one board in three a walled pocket packed with touching balls; keys bound to
- * the flippers and absorbers and a script pressing them. Gravity and friction vary, zero included; about one board in seven has neither, nor flippers nor absorbers, so that its
- * kinetic energy must be kept.
+ * kept; the gates and drop targets switched by keys and hits, most portals paired) packed in blocks, spinners turning
+ * either way (added last, keys reverse, start and stop them, bumpers trigger them), corridors one or two cells wide,
+ * checkerboards and scattered; flippers in pockets of bumpers, in facing pairs (tongs) and in clumps, some starting
+ * part-way through a swing; absorbers along the floor and elsewhere, many firing themselves; 5-40 balls placed free,
+ * touching gizmos, flippers (their pivot ends too) and each other, at up to 100 L/s, and on one board in three a walled
+ * pocket packed with touching balls; keys bound to the flippers and absorbers and a script pressing them. Gravity and
+ * friction vary, zero included; about one board in seven has neither, nor flippers nor absorbers, so that its kinetic
+ * energy must be kept.
  *
  * <p>Every board is built through {@link Board}'s editing operations, so it is a board a player could build: a
  * placement the board refuses just means another spot is tried. The same seed always gives the same board and
@@ -48,7 +49,10 @@ public final class DenseBoards {
      */
     private final SplittableRandom spinnerRandom;
     private static final long SPINNER_STREAM = 0x5b1_22L;
-    /** The packed pocket's chance: a stream of its own too, so that a board with a pocket is its old board plus the pocket. */
+    /**
+     * The packed pocket's chance: a stream of its own too, so that a board with a pocket is its old board plus the
+     * pocket.
+     */
     private final SplittableRandom pocketRandom;
     private static final long POCKET_STREAM = 0x90c_20L;
     /** The most balls a board has: a packed pocket fills up to it. */

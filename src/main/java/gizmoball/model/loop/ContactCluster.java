@@ -170,9 +170,10 @@ final class ContactCluster {
 
     /**
      * Makes rows of the grazes that the velocities {@code vx, vy} (by ball of the cluster) turn into collisions, as
-     * the detector sees them (closing faster than rounding, and no longer a graze); returns whether there were any. A graze is left out of the rows because a row for it can ask for
-     * impulses no other contact allows (two balls passing each other in a slot that fits them exactly), but the
-     * solve's impulses on the other contacts can turn a ball into it: the bottom ball of a pile in a corner, a ball
+     * the detector sees them (closing faster than rounding, and no longer a graze); returns whether there were any.
+     * A graze is left out of the rows because a row for it can ask for impulses no other contact allows (two balls
+     * passing each other in a slot that fits them exactly), but the solve's impulses on the other contacts can turn
+     * a ball into it: the bottom ball of a pile in a corner, a ball
      * falling past it, pushed into it by the pile above, was met again at no time apart 144 times in one tick.
      */
     boolean takeClosingGrazes(double[] vx, double[] vy) {

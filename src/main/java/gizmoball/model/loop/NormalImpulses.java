@@ -341,7 +341,7 @@ final class NormalImpulses {
      * pull, the impulses move only as far toward that answer as keeps every impulse pushing, and the row whose
      * impulse reaches zero leaves. Each step lowers the same convex objective, so the set never repeats, and the
      * method ends when no row outside the set closes. A joining row that depends on the set's rows (no impulse of its
-     * own can change what it closes by) ends it: Gauss-Seidel takes that cluster.
+     * own can change what it closes by) is swapped in for one that makes way ({@link #swapIn}).
      */
     private SetOutcome projectByActiveSet(double speedLimit) {
         double[] base = new double[rows];
@@ -452,9 +452,12 @@ final class NormalImpulses {
     /** How a row depending on the set's rows joined it. */
     private enum Swap {
         SWAPPED,
-        /** No row of the set can make way: no velocity satisfies them all. */
+        /** No row of the set can make way, and {@link #noAnswer} shows no velocity satisfies them all. */
         NO_ROW_MAKES_WAY,
-        /** Rounding: the set, with the row in, does not count as independent. */
+        /**
+         * No row can make way but the row only nearly depends on the set, or with a row out the set, the row in, does
+         * not count as independent (rounding): Gauss-Seidel decides.
+         */
         NOT_TAKEN
     }
 

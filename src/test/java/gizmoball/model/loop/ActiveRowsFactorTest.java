@@ -46,7 +46,7 @@ class ActiveRowsFactorTest {
         }
     }
 
-    /** Checks that the impulses of the rows in {@code set} close each by {@code base}, and that the others have none. */
+    /** Checks that the impulses of the rows in {@code set} close each by {@code base}, and the others have none. */
     private static void assertSolves(Rows rows, boolean[] set, double[] base, double[] impulses) {
         for (int i = 0; i < set.length; i++) {
             if (!set[i]) {
@@ -103,7 +103,7 @@ class ActiveRowsFactorTest {
 
     @Test
     void aRowThatCombinesRowsOfTheSetIsRefused() {
-        // Ball 0 on a floor and against a wall; a third surface row on its diagonal is their sum, over the square root of 2.
+        // Ball 0 on a floor and against a wall; a third surface row on its diagonal is their sum over the root of 2.
         double d = Math.sqrt(0.5);
         Rows rows = new Rows(new int[] {0, 0, 0}, new int[] {-1, -1, -1}, new double[] {0, 1, d},
                 new double[] {1, 0, d});

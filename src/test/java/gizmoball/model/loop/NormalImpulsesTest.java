@@ -131,11 +131,11 @@ class NormalImpulsesTest {
     }
 
     /**
-     * Ball 0 between a wall on its left and ball 1, which lies against a wall on its right, struck into ball 1 at 5 L/s:
-     * each round sends it from one side into the other and back, for ever, while ball 2, sliding over ball 1 at 3 L/s,
-     * keeps the cluster from stopping dead. The cap's limit is the inelastic projection of where the rounds are at
-     * the cap, an even round: ball 0 at 5 L/s again, so balls 0 and 1 at rest. The solve sees the cycle of two and
-     * ends there in a few rounds instead of the cap's 256.
+     * Ball 0 between a wall on its left and ball 1, which lies against a wall on its right, is struck into ball 1
+     * at 5 L/s: each round sends it from one side into the other and back, for ever, while ball 2, sliding over
+     * ball 1 at 3 L/s, keeps the cluster from stopping dead. The cap's limit is the inelastic projection of where the
+     * rounds are at the cap, an even round: ball 0 at 5 L/s again, so balls 0 and 1 at rest. The solve sees the
+     * cycle of two and ends there in a few rounds instead of the cap's 256.
      */
     @Test
     void aBallRingingBetweenTwoContactsEndsAtTheCapsLimitWithinAFewRounds() {
