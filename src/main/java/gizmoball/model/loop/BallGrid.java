@@ -1,7 +1,5 @@
 package gizmoball.model.loop;
 
-import physics.Vect;
-
 import java.util.ArrayList;
 import java.util.List;
 
@@ -28,7 +26,7 @@ public final class BallGrid {
     }
 
     void add(Ball ball) {
-        List<Ball> cell = cells.get(index(cell(ball.position().x()), cell(ball.position().y())));
+        List<Ball> cell = cells.get(index(cell(ball.x()), cell(ball.y())));
         if (cell.isEmpty()) {
             filled.add(cell);
         }
@@ -51,8 +49,7 @@ public final class BallGrid {
                 List<Ball> cell = cells.get(index(cx, cy));
                 for (int i = 0, n = cell.size(); i < n; i++) {
                     Ball ball = cell.get(i);
-                    Vect p = ball.position();
-                    if (Math.abs(p.x() - x) <= near && Math.abs(p.y() - y) <= near) {
+                    if (Math.abs(ball.x() - x) <= near && Math.abs(ball.y() - y) <= near) {
                         into.add(ball);
                     }
                 }

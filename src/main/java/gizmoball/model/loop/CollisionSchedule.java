@@ -5,8 +5,6 @@ import java.util.Arrays;
 import java.util.Collection;
 import java.util.List;
 
-import physics.Vect;
-
 /**
  * Stage 3 over the whole board: the earliest collision of any awake ball within the time left in the tick. It keeps
  * each ball's earliest collision with the scene (walls and gizmos) and with the other balls, in seconds since the
@@ -238,8 +236,7 @@ final class CollisionSchedule {
             Ball ball = bySlot[slot];
             double reach = Arena.BALL_RADIUS + CollisionDetector.speedBound(detector.motion(ball)) * window
                     + CollisionDetector.REACH_MARGIN;
-            Vect p = ball.position();
-            if (p.x() + reach >= x0 && p.x() - reach <= x1 && p.y() + reach >= y0 && p.y() - reach <= y1) {
+            if (ball.x() + reach >= x0 && ball.x() - reach <= x1 && ball.y() + reach >= y0 && ball.y() - reach <= y1) {
                 withScene[slot] = null;
                 markUnknown(slot);
             }
@@ -290,7 +287,7 @@ final class CollisionSchedule {
         double near = 2 * Arena.BALL_RADIUS + (speed + fastest) * window + CollisionDetector.REACH_MARGIN;
         double reach = near + fastest * (elapsed - filedAt);
         nearby.clear();
-        grid.near(ball.position().x(), ball.position().y(), reach, near, nearby);
+        grid.near(ball.x(), ball.y(), reach, near, nearby);
         for (Ball other : nearby) {
             if (other == ball || other.isCaptured()) {
                 continue;
