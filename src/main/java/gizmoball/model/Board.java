@@ -91,6 +91,8 @@ public final class Board {
     private long lastRedrawNanos;
     private double nextCollisionLookAhead;
     private final LoopAccess loop = new LoopAccess();
+    /** The loop, kept with its books from tick to tick. */
+    private final TickRun tickRun = new TickRun(loop, loop);
 
     /** An empty board with default gravity and friction at time 0. */
     public Board() {
@@ -474,7 +476,7 @@ public final class Board {
         }
         play.performDue(time);
         play.ticking(true);
-        lastTick = new TickRun(loop, loop, dt).run();
+        lastTick = tickRun.run(dt);
         play.dropHitTargets(lastTick.events());
         play.ticking(false);
         play.removeSunk();

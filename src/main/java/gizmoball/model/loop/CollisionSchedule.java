@@ -72,16 +72,39 @@ final class CollisionSchedule {
         this.grid = grid;
     }
 
+    /** A tick starts: no ball is filed (a ball forgotten before the first filing is not filed). */
+    void begin() {
+        filed = 0;
+        awakeStale = true;
+    }
+
     /**
      * Files every free ball (awake or asleep) where it is now, {@code elapsed} seconds into the tick; every known
-     * collision is forgotten.
+     * collision is forgotten. The books are kept from filing to filing, and from tick to tick, grown when the balls
+     * outgrow them.
      */
     void file(Collection<Ball> free, double elapsed) {
-        grid.clear(free.size());
+        int n = free.size();
+        grid.clear(n);
         filedAt = elapsed;
         fastest = 0;
         filed = 0;
-        int n = free.size();
+        if (bySlot.length < n) {
+            grow(Math.max(n, 2 * bySlot.length));
+        }
+        for (Ball ball : free) {
+            bySlot[filed] = ball;
+            ball.setSlot(filed++);
+            double speed = CollisionDetector.speedBound(detector.motion(ball));
+            fastest = Math.max(fastest, speed);
+            grid.add(ball, speed);
+        }
+        forgetAll();
+        awakeStale = true;
+    }
+
+    /** Books for {@code n} balls. */
+    private void grow(int n) {
         withScene = new Known[n];
         withBalls = new Known[n];
         sceneAt = new double[n];
@@ -96,17 +119,8 @@ final class CollisionSchedule {
         awakeIndex = new int[n];
         blockEarliest = new double[n / BLOCK + 1];
         blockStale = new boolean[n / BLOCK + 1];
-        pointedAtBy = new int[n][];
+        pointedAtBy = Arrays.copyOf(pointedAtBy, n);
         pointedAtCount = new int[n];
-        for (Ball ball : free) {
-            bySlot[filed] = ball;
-            ball.setSlot(filed++);
-            double speed = CollisionDetector.speedBound(detector.motion(ball));
-            fastest = Math.max(fastest, speed);
-            grid.add(ball, speed);
-        }
-        forgetAll();
-        awakeStale = true;
     }
 
     /** Which balls are awake changed (a wake-up, a capture, a new filing): found again before the next search. */
