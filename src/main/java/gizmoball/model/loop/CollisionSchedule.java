@@ -63,6 +63,8 @@ final class CollisionSchedule {
     private int filed;
     private final BallGrid grid;
     private final List<Ball> nearby = new ArrayList<>();
+    /** One pair's search, asked again for every ball near the one asking (its collision is made only when found). */
+    private final Earliest pair = new Earliest(0);
     /** When the grid was filled, and the highest speed of any ball since: how stale its positions can be. */
     private double filedAt;
     private double fastest;
@@ -382,7 +384,7 @@ final class CollisionSchedule {
             if (other == ball || other.isCaptured()) {
                 continue;
             }
-            Earliest pair = new Earliest(window);
+            pair.reset(window);
             detector.againstBall(other, ball, window, pair);
             Collision found = pair.collision();
             if (found == null) {
