@@ -6,7 +6,7 @@ import gizmoball.model.game.GameRules;
 import gizmoball.model.game.KeyPress;
 import gizmoball.model.game.Playfield;
 import gizmoball.model.gizmo.Absorber;
-import gizmoball.model.gizmo.Accelerator;
+
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
@@ -14,7 +14,7 @@ import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.gizmo.Sink;
-import gizmoball.model.gizmo.Spinner;
+import gizmoball.model.gizmo.Setting;
 import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Ball;
 import gizmoball.model.loop.BallGrid;
@@ -265,24 +265,12 @@ public final class Board {
         edited();
     }
 
-    /** How many times faster an accelerator sends a ball away (1 to {@link Accelerator#MAX_FACTOR}; 1.5 unless set). */
-    public void setFactor(String accelerator, double factor) {
-        edits.setFactor(accelerator, factor);
-        edited();
-    }
-
-    /** The velocity of the balls the spawner adds (finite, at most {@link #MAX_SPEED}; at rest unless set). */
-    public void setSpawnVelocity(String spawner, double vx, double vy) {
-        edits.setSpawnVelocity(spawner, vx, vy);
-        edited();
-    }
-
     /**
-     * Pairs two portals: a ball entering either's mouth leaves by the other's. Each leaves the pair it had, whose
-     * other portal is left without one (a wall).
+     * Gives a gizmo the value its kind holds beyond its place (an accelerator's factor, a spawner's velocity, a
+     * spinner's speed, a portal's pair: {@link Setting}), checked by the setting itself.
      */
-    public void pair(String portal, String other) {
-        edits.pair(portal, other);
+    public void set(String gizmo, Setting setting) {
+        edits.set(gizmo, setting);
         edited();
     }
 
@@ -292,21 +280,6 @@ public final class Board {
      */
     public void setCellOpen(String cell) {
         edits.setCellOpen(cell);
-        edited();
-    }
-
-    /** The portal and its pair are left without one: walls both. */
-    public void unpair(String portal) {
-        edits.unpair(portal);
-        edited();
-    }
-
-    /**
-     * A spinner's speed and way in turns per second: positive clockwise on the screen, negative anticlockwise, nonzero
-     * and at most {@link Spinner#MAX_TURNS_PER_SECOND} either way (one turn a second clockwise unless set).
-     */
-    public void setSpinnerSpeed(String spinner, double turnsPerSecond) {
-        edits.setSpinnerSpeed(spinner, turnsPerSecond);
         edited();
     }
 
