@@ -19,7 +19,7 @@ import java.util.stream.Collectors;
 
 /**
  * The canonical form of a board: one command per line, gizmos (in the board's order), then rotations, the
- * colours of gizmos that have their own, their own values (factors, spawn velocities, portals' pairs), the play state of flippers play has moved, balls, connections, key bindings,
+ * colours of gizmos that have their own, their own values (factors, plungers, spawn velocities, portals' pairs), the play state of flippers play has moved, balls, connections, key bindings,
  * gravity and friction, then the game: balls per game, the extra-ball score, the drains and the gizmos' own points
  * (each only where the board has it, so a board without them is written as the standard format has it). Reading it
  * back gives an equal board.
@@ -37,6 +37,9 @@ final class BoardWriter {
     private static Command settingLine(String name, Setting setting) {
         if (setting instanceof Setting.Factor f) {
             return new Command.Factor(name, f.factor());
+        }
+        if (setting instanceof Setting.Pull p && p.plunger().isPresent()) {
+            return new Command.MakePlunger(name, p.plunger().get());
         }
         if (setting instanceof Setting.Speed s) {
             return new Command.SpinnerSpeed(name, s.turnsPerSecond());

@@ -451,6 +451,7 @@ public final class Board {
         play.dropHitTargets(lastTick.events());
         play.ticking(false);
         play.removeSunk();
+        play.holdPulls(dt);
         ticks++;
         game.afterTick(ticks, lastTick.events());
         guardsFired = guardsFired.plus(lastTick.guards());

@@ -6,7 +6,7 @@ import java.util.function.UnaryOperator;
 
 /**
  * What a gizmo of a kind holds beyond its place, size, turn and colour: the one value its author sets on it (an
- * accelerator's factor, a spawner's velocity, a spinner's speed, a portal's pair), or {@link None}. It is read from
+ * accelerator's factor, a spawner's velocity, an absorber's plunger, a spinner's speed, a portal's pair), or {@link None}. It is read from
  * the gizmo ({@link Gizmo#setting}) and written through the board's one operation ({@code Board.set}), which takes
  * it only for a gizmo that holds a setting of the same record and only if {@link #problem} finds none. So a file's
  * lines, copy and paste, the properties panel and undo carry any kind's setting alike; docs/design.md, "A kind's
@@ -102,6 +102,39 @@ public sealed interface Setting {
 
         public String said(String name) {
             return name + " spawns balls at (" + vx + ", " + vy + ") L/s";
+        }
+    }
+
+    /** An absorber's: the {@link Plunger} it is, or empty for one that fires at once. */
+    record Pull(Optional<Plunger> plunger) implements Setting {
+        public String onlyFor() {
+            return "only an absorber can be a plunger";
+        }
+
+        public Optional<String> problem(String name, Board board) {
+            if (plunger.isEmpty()) {
+                return Optional.empty();
+            }
+            double speed = plunger.get().fullSpeed();
+            double seconds = plunger.get().pullSeconds();
+            if (!(speed > Plunger.MIN_SPEED && speed <= board.maxSpeed())) {
+                return Optional.of("a plunger's full pull launches faster than " + (int) Plunger.MIN_SPEED
+                        + " L/s and at most " + (int) board.maxSpeed() + " L/s, not " + speed);
+            }
+            if (!(seconds >= Plunger.MIN_PULL_SECONDS && seconds <= Plunger.MAX_PULL_SECONDS)) {
+                return Optional.of("a plunger's full pull takes " + Plunger.MIN_PULL_SECONDS + " to "
+                        + (int) Plunger.MAX_PULL_SECONDS + " seconds, not " + seconds);
+            }
+            return Optional.empty();
+        }
+
+        public boolean isDefault() {
+            return plunger.isEmpty();
+        }
+
+        public String said(String name) {
+            return plunger.map(p -> name + " is a plunger: a full pull launches at " + p.fullSpeed() + " L/s after "
+                    + p.pullSeconds() + " s").orElse(name + " fires at once");
         }
     }
 
