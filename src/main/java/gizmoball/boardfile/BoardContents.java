@@ -3,9 +3,11 @@ package gizmoball.boardfile;
 import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.game.GameRules;
+import gizmoball.model.gizmo.AbsorberView;
 import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Plunger;
 import gizmoball.model.gizmo.PortalView;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.gizmo.SpawnerView;
@@ -35,7 +37,7 @@ public record BoardContents(List<GizmoState> gizmos, List<BallState> balls, List
     }
 
     /**
-     * A kind's own numbers, compared exactly: a board whose accelerator, spawner or spinner alone was changed is
+     * A kind's own numbers, compared exactly: a board whose accelerator, plunger, spawner or spinner alone was changed is
      * another design (unsaved, and one step of the edit history).
      */
     public sealed interface Setting {
@@ -49,6 +51,10 @@ public record BoardContents(List<GizmoState> gizmos, List<BallState> balls, List
 
         /** A spawner's: the velocity, in L/s, of the balls it makes. */
         record Launch(double vx, double vy) implements Setting {
+        }
+
+        /** An absorber's that is a plunger: its full-pull speed and pull time. */
+        record Pull(Plunger plunger) implements Setting {
         }
 
         /** A spinner's: how fast and which way it turns, in turns a second. */
@@ -116,6 +122,9 @@ public record BoardContents(List<GizmoState> gizmos, List<BallState> balls, List
         }
         if (g instanceof SpawnerView spawner) {
             return new Setting.Launch(spawner.velocity().x(), spawner.velocity().y());
+        }
+        if (g instanceof AbsorberView absorber && absorber.plunger().isPresent()) {
+            return new Setting.Pull(absorber.plunger().get());
         }
         if (g instanceof SpinnerView spinner) {
             return new Setting.Speed(spinner.turnsPerSecond());

@@ -24,7 +24,7 @@ import physics.Vect;
 
 /**
  * The canonical form of a board: one command per line, gizmos (in the board's order), then rotations, the
- * colours of gizmos that have their own, their own values (factors, spawn velocities, portals' pairs), the play state of flippers play has moved, balls, connections, key bindings,
+ * colours of gizmos that have their own, their own values (factors, plungers, spawn velocities, portals' pairs), the play state of flippers play has moved, balls, connections, key bindings,
  * gravity and friction, then the game: balls per game, the extra-ball score, the drains and the gizmos' own points
  * (each only where the board has it, so a board without them is written as the standard format has it). Reading it
  * back gives an equal board.
@@ -55,6 +55,9 @@ final class BoardWriter {
         for (Gizmo gizmo : board.gizmos()) {
             if (gizmo instanceof AcceleratorView accelerator && accelerator.factor() != Accelerator.DEFAULT_FACTOR) {
                 commands.add(new Command.Factor(gizmo.name(), accelerator.factor()));
+            }
+            if (gizmo instanceof AbsorberView absorber && absorber.plunger().isPresent()) {
+                commands.add(new Command.MakePlunger(gizmo.name(), absorber.plunger().get()));
             }
             if (gizmo instanceof SpinnerView spinner && spinner.turnsPerSecond() != Spinner.DEFAULT_TURNS_PER_SECOND) {
                 commands.add(new Command.SpinnerSpeed(gizmo.name(), spinner.turnsPerSecond()));

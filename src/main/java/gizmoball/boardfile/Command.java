@@ -7,6 +7,7 @@ import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Order;
+import gizmoball.model.gizmo.Plunger;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.TriggerSource;
 import java.util.List;
@@ -285,6 +286,22 @@ public sealed interface Command {
 
         public String fact() {
             return "factor";
+        }
+    }
+
+    /** {@code #@Plunger <absorber> <full-speed> <pull-seconds>}: the absorber is a plunger. */
+    record MakePlunger(String name, Plunger plunger) implements AboutOne {
+        public void applyTo(Board board) {
+            board.setPlunger(name, Optional.of(plunger));
+        }
+
+        public String toLine() {
+            return CommandWord.PLUNGER.written() + " " + name + " " + format(plunger.fullSpeed()) + " "
+                    + format(plunger.pullSeconds());
+        }
+
+        public String fact() {
+            return "plunger";
         }
     }
 

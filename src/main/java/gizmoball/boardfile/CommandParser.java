@@ -4,6 +4,7 @@ import gizmoball.model.Board;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.gizmo.Accelerator;
 import gizmoball.model.gizmo.Order;
+import gizmoball.model.gizmo.Plunger;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.gizmo.Spinner;
 import gizmoball.model.loop.TriggerSource;
@@ -186,6 +187,13 @@ final class CommandParser {
             notes.add("no velocity given: the ball starts at rest");
             args = List.of(args.get(0), args.get(1), args.get(2), "0", "0");
         }
+        if (word == CommandWord.PLUNGER && (args.size() == 1 || args.size() == 2)) {
+            List<String> defaults = List.of(Decimals.format(Plunger.DEFAULT_FULL_SPEED),
+                    Decimals.format(Plunger.DEFAULT_PULL_SECONDS));
+            List<String> padded = new ArrayList<>(args);
+            padded.addAll(defaults.subList(args.size() - 1, 2));
+            args = padded;
+        }
         if (word == CommandWord.KEY_CONNECT && args.size() == 5 && args.get(3).equals(args.get(4))) {
             notes.add("target " + args.get(4) + " written twice: read once");
             args = args.subList(0, 4);
@@ -211,6 +219,8 @@ final class CommandParser {
             case FLIPPER_STATE -> new Command.FlipperState(args.get(0), number("angle", args.get(1)),
                     direction(args.get(2)));
             case FACTOR -> new Command.Factor(args.get(0), number("factor", args.get(1)));
+            case PLUNGER -> new Command.MakePlunger(args.get(0), new Plunger(number("full-pull speed", args.get(1)),
+                    number("pull seconds", args.get(2))));
             case PAIR -> new Command.Pair(args.get(0), args.get(1));
             case SPINNER_SPEED -> new Command.SpinnerSpeed(args.get(0), number("turns per second", args.get(1)));
             case SPINNER_STATE -> new Command.SpinnerState(args.get(0), number("angle", args.get(1)),

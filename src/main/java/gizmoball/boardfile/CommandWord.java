@@ -50,6 +50,8 @@ enum CommandWord {
     COLOUR("Colour", "<name> <red> <green> <blue>"),
     /** An accelerator's factor, where it is not the default. */
     FACTOR("Factor", "<name> <factor>", true),
+    /** An absorber that is a plunger: its full-pull speed and pull time (both optional when read). */
+    PLUNGER("Plunger", "<absorber> <full-speed> <pull-seconds>", true),
     /** Play state: a flipper's angle and direction, written by a save during play. */
     FLIPPER_STATE("FlipperAngle", "<name> <degrees> up|down", true),
     /** Play state: a gate play has opened or a drop target it has knocked down (its cell is nothing), written by a save during play. */

@@ -8,10 +8,12 @@ import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.game.GameRules;
+import gizmoball.model.gizmo.AbsorberView;
 import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Order;
+import gizmoball.model.gizmo.Plunger;
 import gizmoball.model.gizmo.PortalView;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.gizmo.SpawnerView;
@@ -386,6 +388,16 @@ public final class Editor {
         }
         return edit(accelerator + " speeds balls up " + Decimals.format(factor) + " times",
                 b -> b.setFactor(accelerator, factor));
+    }
+
+    /** Makes the absorber a plunger, or with empty one that fires at once (one undo step; the same again is no edit). */
+    public boolean setPlunger(String absorber, Optional<Plunger> plunger) {
+        if (board.gizmo(absorber).filter(g -> g instanceof AbsorberView a && a.plunger().equals(plunger)).isPresent()) {
+            return true;
+        }
+        return edit(plunger.map(p -> absorber + " is a plunger: a full pull launches at " + Decimals.format(p.fullSpeed())
+                        + " L/s after " + Decimals.format(p.pullSeconds()) + " s").orElse(absorber + " fires at once"),
+                b -> b.setPlunger(absorber, plunger));
     }
 
     /**

@@ -12,6 +12,7 @@ import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Order;
+import gizmoball.model.gizmo.Plunger;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.gizmo.Sink;
 import gizmoball.model.gizmo.Spinner;
@@ -278,6 +279,15 @@ public final class Board {
     }
 
     /**
+     * Makes an absorber a plunger (the key that fires it pulls it while held; its release fires at a speed that grows
+     * with the hold, {@link Plunger}) or, with empty, an absorber that fires at once.
+     */
+    public void setPlunger(String absorber, Optional<Plunger> plunger) {
+        edits.setPlunger(absorber, plunger);
+        edited();
+    }
+
+    /**
      * Pairs two portals: a ball entering either's mouth leaves by the other's. Each leaves the pair it had, whose
      * other portal is left without one (a wall).
      */
@@ -478,6 +488,7 @@ public final class Board {
         play.dropHitTargets(lastTick.events());
         play.ticking(false);
         play.removeSunk();
+        play.holdPulls(dt);
         ticks++;
         game.afterTick(ticks, lastTick.events());
         guardsFired = guardsFired.plus(lastTick.guards());

@@ -6,6 +6,7 @@ import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.gizmo.Accelerator;
+import gizmoball.model.gizmo.Plunger;
 import gizmoball.model.gizmo.Portal;
 import gizmoball.model.gizmo.Spawner;
 import gizmoball.model.gizmo.Spinner;
@@ -289,6 +290,26 @@ final class Edits {
                     + ", not " + factor);
         }
         accelerator.setFactor(factor);
+    }
+
+    void setPlunger(String gizmo, Optional<Plunger> plunger) {
+        if (!(registry.requireGizmo(gizmo) instanceof Absorber absorber)) {
+            throw new BoardEditException("only an absorber can be a plunger: " + gizmo + " is "
+                    + registry.requireGizmo(gizmo).kind().withArticle());
+        }
+        if (plunger.isPresent()) {
+            double speed = plunger.get().fullSpeed();
+            double seconds = plunger.get().pullSeconds();
+            if (!(speed > Plunger.MIN_SPEED && speed <= Board.MAX_SPEED)) {
+                throw new BoardEditException("a plunger's full pull launches faster than " + (int) Plunger.MIN_SPEED
+                        + " L/s and at most " + (int) Board.MAX_SPEED + " L/s, not " + speed);
+            }
+            if (!(seconds >= Plunger.MIN_PULL_SECONDS && seconds <= Plunger.MAX_PULL_SECONDS)) {
+                throw new BoardEditException("a plunger's full pull takes " + Plunger.MIN_PULL_SECONDS + " to "
+                        + (int) Plunger.MAX_PULL_SECONDS + " seconds, not " + seconds);
+            }
+        }
+        absorber.setPlunger(plunger);
     }
 
     void setSpinnerSpeed(String gizmo, double turnsPerSecond) {

@@ -4,6 +4,7 @@ import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.Action;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.MovingShape;
+import gizmoball.model.gizmo.Plunger;
 import gizmoball.model.gizmo.DropTarget;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.Sink;
@@ -23,6 +24,7 @@ import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.OptionalInt;
 import java.util.Set;
 
 import physics.Vect;
@@ -72,15 +74,57 @@ final class Play implements Surroundings {
     /**
      * The key went down or up: the gizmos bound to that edge do what their binding orders (by default as keys drive
      * them: a flipper stays up while the key is held), and on DOWN those bound to CHANGE too (by default what a trigger
-     * makes them do: a flipper toggles).
+     * makes them do: a flipper toggles). A plunger that the press would fire at once is pulled instead, and fires when
+     * that key goes up.
      */
     void keyAction(List<KeyBinding> bindings, int keyCode, KeyEdge edge, double now) {
+        if (edge == KeyEdge.UP) {
+            releasePlungers(keyCode, now);
+        }
         for (KeyBinding binding : bindings) {
             if (binding.keyCode() == keyCode
                     && (binding.edge() == edge || binding.edge() == KeyEdge.CHANGE && edge == KeyEdge.DOWN)) {
                 GizmoBase gizmo = registry.gizmo(binding.gizmo());
-                carryOut(gizmo, binding.order().action().orElse(binding.edge().actionOf(gizmo.kind())),
-                        binding.order().delay(), now);
+                Action action = binding.order().action().orElse(binding.edge().actionOf(gizmo.kind()));
+                if (edge == KeyEdge.DOWN && action == Action.FIRE && binding.order().delay() == 0
+                        && gizmo instanceof Absorber absorber && absorber.plunger().isPresent()) {
+                    if (absorber.pullingKey().isEmpty()) {
+                        absorber.markTriggered(now);
+                        absorber.startPull(keyCode);
+                    }
+                } else {
+                    carryOut(gizmo, action, binding.order().delay(), now);
+                }
+            }
+        }
+    }
+
+    /** The key went up: every plunger it pulls fires, at the speed its pull has reached. */
+    private void releasePlungers(int keyCode, double now) {
+        for (GizmoBase gizmo : registry.gizmos()) {
+            if (gizmo instanceof Absorber absorber && absorber.pullingKey().equals(OptionalInt.of(keyCode))) {
+                double speed = absorber.releaseSpeed();
+                absorber.letGoOfPull();
+                absorber.markTriggered(now);
+                launch(absorber, speed);
+            }
+        }
+    }
+
+    /** A tick of {@code dt} seconds ran: every plunger being pulled was held that much longer. */
+    void holdPulls(double dt) {
+        for (GizmoBase gizmo : registry.gizmos()) {
+            if (gizmo instanceof Absorber absorber && absorber.pullingKey().isPresent()) {
+                absorber.heldFor(dt);
+            }
+        }
+    }
+
+    /** Every plunger being pulled lets go without firing (a tilt). */
+    void dropPulls() {
+        for (GizmoBase gizmo : registry.gizmos()) {
+            if (gizmo instanceof Absorber absorber) {
+                absorber.letGoOfPull();
             }
         }
     }
@@ -168,7 +212,8 @@ final class Play implements Surroundings {
     }
 
     /**
-     * Shoots the longest-held ball straight up from just above the top edge, if the spot there is free (inside
+     * Shoots the longest-held ball straight up from just above the top edge (at the standard speed, or a plunger's
+     * full-pull speed: a trigger fires a plunger at once), if the spot there is free (inside
      * the board, no gizmo or free ball in the way); otherwise the ball stays held. An absorber fires at most once a
      * tick: a ball it fires into a ball wedged against the wall above, or a flipper a hair above its mouth, comes
      * straight back, and an absorber that its own capture triggers would fire it again and again, at no time or a
@@ -176,6 +221,11 @@ final class Play implements Surroundings {
      */
     @Override
     public void fire(Absorber absorber) {
+        launch(absorber, absorber.plunger().map(Plunger::fullSpeed).orElse(Board.ABSORBER_LAUNCH_SPEED));
+    }
+
+    /** Fires the longest-held ball straight up at {@code speed}, as {@link #fire} says. */
+    private void launch(Absorber absorber, double speed) {
         List<String> held = absorber.held();
         if (held.isEmpty()) {
             return;
@@ -188,7 +238,7 @@ final class Play implements Surroundings {
         if (rules.freeForBall(launch)) {
             fired.add(absorber.name());
             absorber.letGo(name);
-            registry.ball(name).release(launch, new Vect(0, -Board.ABSORBER_LAUNCH_SPEED));
+            registry.ball(name).release(launch, new Vect(0, -speed));
             recordEvent(new PlayEvent.Fired(absorber.name()));
             double margin = 4 * Board.BALL_RADIUS;
             sleepers.wakeWithin(launch.x() - margin, launch.y() - margin, launch.x() + margin, launch.y() + margin);

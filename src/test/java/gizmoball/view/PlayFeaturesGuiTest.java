@@ -73,6 +73,18 @@ class PlayFeaturesGuiTest {
         assertThat(onEdt(() -> next.statusLine().text())).contains("at 1/4x");
     }
 
+    /** Issue 40 item 2: the trails go when the game stops (a stopped board shows no motion). */
+    @Test
+    void theTrailsGoWhenTheGameStops() {
+        GameWindow window = open();
+        onEdt(() -> app.session().board().addBall("B", 10.5, 5.5, 3, 0));
+        clickMenu(window.menus(), "Ball trails");
+        clickMenu(window.menus(), "Start");
+        await("a trail", () -> features.trails().trail("B").size() > 2);
+        clickMenu(window.menus(), "Stop");
+        assertThat(onEdt(() -> features.trails().trail("B"))).isEmpty();
+    }
+
     @Test
     void trailsAndWindowPlaceAreRemembered() {
         GameWindow window = open();

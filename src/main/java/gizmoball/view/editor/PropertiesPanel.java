@@ -9,8 +9,10 @@ import gizmoball.model.BoardChange;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.game.GameRules;
 import gizmoball.model.game.Points;
+import gizmoball.model.gizmo.AbsorberView;
 import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.Plunger;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.gizmo.PortalView;
 import gizmoball.model.gizmo.SpawnerView;
@@ -88,6 +90,9 @@ public final class PropertiesPanel extends JPanel {
     private final JTextField extraBall = new JTextField(7);
     private final NumberField points = new NumberField("gizmo.points");
     private final JCheckBox drain = new JCheckBox("Drain: its balls are lost");
+    private final JCheckBox plunger = new JCheckBox("Plunger");
+    private final NumberField plungerSpeed = new NumberField("gizmo.plunger.speed");
+    private final NumberField plungerSeconds = new NumberField("gizmo.plunger.seconds");
     private final NumberField factor = new NumberField("gizmo.factor");
     private final JTextField pair = new JTextField(5);
     private final JPanel factorPart = new JPanel(new BorderLayout(4, 0));
@@ -224,6 +229,19 @@ public final class PropertiesPanel extends JPanel {
         factorPart.setVisible(spinner.isEmpty());
         speedPart.setVisible(spinner.isPresent());
         drain.setSelected(gizmo.filter(g -> board.gameRules().isDrain(g.name())).isPresent());
+        Optional<AbsorberView> absorber = gizmo.filter(g -> g instanceof AbsorberView).map(g -> (AbsorberView) g);
+        Optional<Plunger> pull = absorber.flatMap(AbsorberView::plunger);
+        plunger.setEnabled(absorber.isPresent());
+        plunger.setSelected(pull.isPresent());
+        for (NumberField f : new NumberField[] {plungerSpeed, plungerSeconds}) {
+            f.setEnabled(pull.isPresent());
+            f.setText("");
+            RefusedValue.unmark(f);
+        }
+        pull.ifPresent(p -> {
+            plungerSpeed.show(p.fullSpeed());
+            plungerSeconds.show(p.pullSeconds());
+        });
         gizmo.ifPresent(g -> {
             colour.setText(g.colour().map(Editor::hex).orElse(""));
             swatch.setBackground(BoardPainter.colourOf(g));
@@ -337,7 +355,7 @@ public final class PropertiesPanel extends JPanel {
         pair.setToolTipText("A portal: the portal a ball entering its mouth leaves by (empty: none, a wall)");
         pair.addActionListener(e -> applyPair());
         restoreOnEscape(pair);
-        p.add(drain, wide(constraints(0, 4)));
+        p.add(absorberRows(), wide(constraints(0, 4)));
         p.add(nameRows(), wide(constraints(0, 5)));
 
         GridBagConstraints l = constraints(0, 6);
@@ -364,6 +382,60 @@ public final class PropertiesPanel extends JPanel {
         });
         p.add(removeLink, constraints(1, 8));
         return p;
+    }
+
+    /**
+     * An absorber's game: whether it is a drain, and whether it is a plunger with its full-pull speed and the seconds
+     * of holding a full pull takes.
+     */
+    private JComponent absorberRows() {
+        JPanel rows = new JPanel(new BorderLayout(0, 2));
+        rows.add(drain, BorderLayout.NORTH);
+        plunger.setName("gizmo.plunger");
+        plunger.setToolTipText("Its key pulls it while held; the release launches faster the longer the hold");
+        plunger.addActionListener(e -> applyPlunger());
+        plungerSpeed.setToolTipText("A plunger: L/s of a full pull, above " + Decimals.format(Plunger.MIN_SPEED)
+                + " and at most " + Decimals.format(Board.MAX_SPEED));
+        plungerSeconds.setToolTipText("A plunger: seconds of holding for a full pull, "
+                + Decimals.format(Plunger.MIN_PULL_SECONDS) + " to " + Decimals.format(Plunger.MAX_PULL_SECONDS));
+        JPanel pull = new JPanel(new FlowLayout(FlowLayout.LEFT, 3, 0));
+        pull.add(plunger);
+        for (NumberField f : new NumberField[] {plungerSpeed, plungerSeconds}) {
+            f.setColumns(3);
+            f.addActionListener(e -> applyPlunger());
+            restoreOnEscape(f);
+            pull.add(f);
+            pull.add(new JLabel(f == plungerSpeed ? "L/s" : "s"));
+        }
+        rows.add(pull, BorderLayout.SOUTH);
+        return rows;
+    }
+
+    private void applyPlunger() {
+        Optional<Gizmo> gizmo = controller.selectedGizmo();
+        if (gizmo.isEmpty()) {
+            return;
+        }
+        if (!plunger.isSelected()) {
+            controller.setPlunger(gizmo.get().name(), Optional.empty());
+            focusBoard.run();
+            return;
+        }
+        NumberField[] fields = {plungerSpeed, plungerSeconds};
+        Optional<double[]> v = plungerSpeed.getText().isBlank() ? Optional.of(new double[] {
+                Plunger.DEFAULT_FULL_SPEED, Plunger.DEFAULT_PULL_SECONDS}) : values(fields);
+        if (v.isEmpty()) {
+            return;
+        }
+        Map<JTextField, String> typed = new LinkedHashMap<>();
+        for (NumberField f : fields) {
+            typed.put(f, f.getText());
+        }
+        if (controller.setPlunger(gizmo.get().name(), Optional.of(new Plunger(v.get()[0], v.get()[1])))) {
+            focusBoard.run();
+        } else {
+            keepRefused(typed);
+        }
     }
 
     /** The selected gizmo's own colour as #rrggbb (empty: its kind's), a swatch, a chooser and a reset. */
