@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.model.Board;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Setting;
 import gizmoball.model.loop.TriggerSource;
 import java.awt.Color;
 import java.awt.Graphics2D;
@@ -77,7 +78,7 @@ class BallTrailsTest {
         board.setFriction(0, 0);
         board.addGizmo(GizmoKind.PORTAL, "P1", 4, 10);
         board.addGizmo(GizmoKind.PORTAL, "P2", 14, 10);
-        board.pair("P1", "P2");
+        board.set("P1", Setting.Pair.with("P2"));
         board.addBall("B", 4.5 + 0.125, 10 - 0.25 - 1.05, 1.5, 6);
         trails.setEnabled(true);
         for (int i = 0; i < 25; i++) {

@@ -13,7 +13,6 @@ import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.preview.AimPreview;
 import gizmoball.preview.Prediction;
 import java.awt.Rectangle;
-import java.awt.Window;
 import java.awt.event.WindowEvent;
 import java.nio.file.Path;
 import java.util.UUID;
@@ -34,9 +33,7 @@ class PlayFeaturesGuiTest {
 
     @AfterEach
     void close() throws Exception {
-        for (Window w : Window.getWindows()) {
-            onEdt(w::dispose);
-        }
+        Gui.closeAllWindows();
         node.removeNode();
     }
 

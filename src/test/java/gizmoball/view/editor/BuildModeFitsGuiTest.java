@@ -12,7 +12,6 @@ import gizmoball.view.Gui;
 import java.awt.Dimension;
 import java.awt.Rectangle;
 import java.awt.Robot;
-import java.awt.Window;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.UUID;
@@ -45,9 +44,7 @@ class BuildModeFitsGuiTest {
 
     @AfterEach
     void close() throws Exception {
-        for (Window w : Window.getWindows()) {
-            onEdt(w::dispose);
-        }
+        Gui.closeAllWindows();   // and waits for their closing, which writes to the node
         node.removeNode();
     }
 
