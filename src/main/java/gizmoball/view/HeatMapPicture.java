@@ -20,7 +20,7 @@ import javax.imageio.ImageIO;
 /**
  * The lab's heat map: where the balls went, as a glow over a drawing of the board. The board is drawn by the board
  * painter and veiled, so the glow stands out; the time balls spent in each cell of the {@link HeatGrid} is shown on a
- * log scale (a path taken once in a hundred games still shows next to the launch lane every ball takes), from
+ * log scale of two decades (a path taken in a few games still shows beside the places every ball goes), from
  * transparent through purple, red and orange to pale yellow; the gizmos' outlines are drawn over it, and a key along
  * the bottom says what the colours mean.
  */
@@ -30,8 +30,8 @@ public final class HeatMapPicture {
     private static final int MARGIN = 6;
     /** Cells each way that a cell's time is spread over: a ball's radius. */
     private static final int SPREAD = 1;
-    /** The log scale spans this many times: a cell with a thousandth of the most-visited cell's time barely shows. */
-    private static final double RANGE = 1000;
+    /** The log scale spans this many times: a cell with a hundredth of the most-visited cell's time barely shows. */
+    private static final double RANGE = 100;
     private static final Color VEIL = new Color(0, 0, 0, 130);
     private static final Color OUTLINE = new Color(255, 255, 255, 150);
     private static final Color KEY_BACKGROUND = new Color(0x15171c);
