@@ -37,7 +37,8 @@ final class HelpPages {
     private HelpPages() {
     }
 
-    static String howToPlay(JMenuBar menus, Board board) {
+    /** @param settingsPlace where the settings and high scores are kept, as the page says it */
+    static String howToPlay(JMenuBar menus, Board board, String settingsPlace) {
         List<String> keys = KeyHelp.describe(board);
         StringBuilder html = new StringBuilder("<html><body><h2>How to play</h2>")
                 .append("<p>Press <b>Start</b> (Ctrl+G) and play with the board's keys. Holding a key keeps a")
@@ -59,7 +60,11 @@ final class HelpPages {
                     .append(escape(String.join(", ", items(menu)))).append("</td></tr>");
         }
         html.append("</table><p>The title shows * while there are unsaved changes; New, Open, Reload and Quit")
-                .append(" ask first.</p></body></html>");
+                .append(" ask first.</p>");
+        if (!settingsPlace.isEmpty()) {
+            html.append("<h3>Settings and high scores</h3><p>").append(escape(settingsPlace)).append("</p>");
+        }
+        html.append("</body></html>");
         return html.toString();
     }
 
