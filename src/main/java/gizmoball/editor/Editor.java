@@ -8,6 +8,8 @@ import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.game.GameRules;
+import gizmoball.model.game.Nudge;
+import gizmoball.model.game.Tilt;
 import gizmoball.model.gizmo.AbsorberView;
 import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.Gizmo;
@@ -28,6 +30,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
+import java.util.OptionalDouble;
 import java.util.OptionalLong;
 import java.util.function.Consumer;
 import java.util.regex.Pattern;
@@ -365,6 +368,37 @@ public final class Editor {
                 + extraBallAt.getAsLong() : ", no extra ball"), b -> {
                     b.setBallsPerGame(ballsPerGame);
                     b.setExtraBallAt(extraBallAt);
+                });
+    }
+
+    /**
+     * The nudge's speed (empty: the board cannot be nudged; its keys kept, the arrows for a new one), the tilt's nudges
+     * and seconds and the ball save's seconds, as one undo step (the same values again are no edit).
+     */
+    public boolean setTable(OptionalDouble nudgeSpeed, double tiltNudges, double tiltSeconds, double ballSaveSeconds) {
+        GameRules rules = board.gameRules();
+        Nudge keys = rules.nudge().orElse(Nudge.DEFAULT);
+        Optional<Nudge> nudge;
+        Tilt tilt;
+        try {
+            nudge = nudgeSpeed.isEmpty() ? Optional.empty() : Optional.of(new Nudge(nudgeSpeed.getAsDouble(),
+                    keys.leftKey(), keys.rightKey(), keys.upKey()));
+            if (tiltNudges != Math.rint(tiltNudges)) {
+                throw new IllegalArgumentException("a tilt comes with a whole number of nudges, not " + tiltNudges);
+            }
+            tilt = new Tilt((int) tiltNudges, tiltSeconds);
+        } catch (IllegalArgumentException refused) {
+            return refuse(refused.getMessage());
+        }
+        if (rules.nudge().equals(nudge) && rules.tilt().equals(tilt) && rules.ballSaveSeconds() == ballSaveSeconds) {
+            return true;
+        }
+        return edit("Nudge " + nudge.map(n -> Decimals.format(n.speed()) + " L/s").orElse("off") + ", tilt at "
+                + tilt.nudges() + " nudges in " + Decimals.format(tilt.seconds()) + " s, ball save "
+                + Decimals.format(ballSaveSeconds) + " s", b -> {
+                    b.setNudge(nudge);
+                    b.setTilt(tilt);
+                    b.setBallSave(ballSaveSeconds);
                 });
     }
 

@@ -4,7 +4,9 @@ import gizmoball.model.game.Game;
 import gizmoball.model.game.GameProgress;
 import gizmoball.model.game.GameRules;
 import gizmoball.model.game.KeyPress;
+import gizmoball.model.game.Nudge;
 import gizmoball.model.game.Playfield;
+import gizmoball.model.game.Tilt;
 import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.Accelerator;
 import gizmoball.model.gizmo.Gizmo;
@@ -39,6 +41,7 @@ import java.util.List;
 import java.util.Optional;
 import java.util.OptionalLong;
 import java.util.function.Supplier;
+import java.util.stream.Stream;
 
 import physics.Vect;
 
@@ -251,6 +254,9 @@ public final class Board {
 
     /** The key's edge drives the gizmo as {@code order} says: one of its kind's actions, after a delay. */
     public void bindKey(int keyCode, KeyEdge edge, String gizmo, Order order) {
+        if (gameRules.nudge().flatMap(n -> n.wayOf(keyCode)).isPresent()) {
+            throw new BoardEditException("key " + keyCode + " nudges the board: it drives nothing else");
+        }
         wiring.bindKey(keyCode, edge, gizmo, order);
         edited();
     }
@@ -388,6 +394,43 @@ public final class Board {
     /** The score at which a game gives one extra ball, once; empty for none. */
     public void setExtraBallAt(OptionalLong score) {
         changeRules(() -> gameRules.withExtraBallAt(score));
+    }
+
+    /**
+     * Lets the board be nudged with the nudge's keys, or with empty not at all. The keys must drive nothing on the
+     * board: a key is a nudge key or a key of the board's bindings, never both.
+     */
+    public void setNudge(Optional<Nudge> nudge) {
+        nudge.ifPresent(n -> {
+            for (KeyBinding binding : wiring.keyBindings()) {
+                if (n.wayOf(binding.keyCode()).isPresent()) {
+                    throw new BoardEditException("key " + binding.keyCode() + " drives " + binding.gizmo()
+                            + ": a nudge key drives nothing else");
+                }
+            }
+        });
+        changeRules(() -> gameRules.withNudge(nudge));
+    }
+
+    /** When nudging tilts the game (with a nudge: the board's {@link Tilt}, 4 nudges within 5 s unless set). */
+    public void setTilt(Tilt tilt) {
+        changeRules(() -> gameRules.withTilt(tilt));
+    }
+
+    /** For how many seconds after a launch a drained ball is given back, once (0: never, the default). */
+    public void setBallSave(double seconds) {
+        changeRules(() -> gameRules.withBallSave(seconds));
+    }
+
+    /**
+     * A new game on this board is for that many players, 1 to {@link Game#MAX_PLAYERS}, taking turns ball by ball;
+     * chosen before its first tick (a board made or reset has a game for as many as it had).
+     */
+    public void setPlayers(int players) {
+        if (ticks > 0) {
+            throw new IllegalStateException("the number of players is chosen before the first tick");
+        }
+        game.setPlayers(players);
     }
 
     private void changeRules(Supplier<GameRules> changed) {
@@ -534,7 +577,32 @@ public final class Board {
 
     private void keyAction(int keyCode, KeyEdge edge) {
         game.keyPressed(ticks, edge == KeyEdge.DOWN ? KeyPress.Motion.DOWN : KeyPress.Motion.UP, keyCode);
-        play.keyAction(wiring.keyBindings(), keyCode, edge, time);
+        Optional<Nudge.Way> nudge = gameRules.nudge().flatMap(n -> n.wayOf(keyCode));
+        if (nudge.isPresent()) {
+            if (edge == KeyEdge.DOWN) {
+                nudge(nudge.get());
+            }
+            return;
+        }
+        play.keyAction(wiring.keyBindings(), keyCode, edge, time, game.isTilted());
+    }
+
+    /**
+     * Every free ball gets the nudge's speed that way, woken if asleep; held balls feel nothing. The nudge counts
+     * toward the tilt: one that tilts lowers every flipper and lets go of every plunger's pull.
+     */
+    private void nudge(Nudge.Way way) {
+        double speed = gameRules.nudge().orElseThrow().speed();
+        Vect push = new Vect(way.dx() * speed, way.dy() * speed);
+        sleepers.wakeWithin(-SIZE, -SIZE, 2 * SIZE, 2 * SIZE);
+        for (Ball ball : registry.balls()) {
+            if (!ball.isCaptured()) {
+                ball.setVelocity(ball.velocity().plus(push));
+            }
+        }
+        if (game.nudged(ticks)) {
+            play.tilt();
+        }
     }
 
     /** The gizmo performs its action: a flipper toggles, an absorber fires, a bumper only records the time. */
@@ -619,8 +687,24 @@ public final class Board {
         }
 
         @Override
+        public double time() {
+            return time;
+        }
+
+        @Override
         public int ballCount() {
             return registry.balls().size();
+        }
+
+        @Override
+        public int freeBallCount() {
+            return (int) registry.balls().stream().filter(b -> !b.isCaptured()).count();
+        }
+
+        @Override
+        public boolean isLauncher(String absorber) {
+            return gameRules.isDrain(absorber)
+                    || registry.gizmo(absorber) instanceof Absorber a && a.plunger().isPresent();
         }
 
         @Override
@@ -629,18 +713,31 @@ public final class Board {
         }
 
         @Override
-        public boolean serveNextBall() {
-            for (GizmoBase gizmo : registry.gizmos()) {
-                if (gizmo instanceof Absorber absorber && gameRules.isDrain(absorber.name())) {
-                    String name = play.freshBallName();
-                    Vect at = absorber.holdingPosition(BALL_RADIUS);
-                    Ball ball = new Ball(name, at, Vect.ZERO);
-                    registry.add(ball);
-                    play.capture(ball, absorber);
-                    return true;
-                }
+        public boolean serve(Optional<String> drained) {
+            Optional<Absorber> holder = drained.flatMap(ball -> absorbers().filter(a -> a.held().contains(ball))
+                    .findFirst());
+            Optional<Absorber> launcher = absorbers().filter(a -> a.plunger().isPresent()).findFirst()
+                    .or(() -> holder)
+                    .or(() -> absorbers().filter(a -> gameRules.isDrain(a.name())).findFirst());
+            if (launcher.isEmpty()) {
+                return false;
             }
-            return false;
+            Ball ball = drained.map(registry::ball).orElseGet(() -> {
+                Ball fresh = new Ball(play.freshBallName(), launcher.get().holdingPosition(BALL_RADIUS), Vect.ZERO);
+                registry.add(fresh);
+                return fresh;
+            });
+            if (holder.isPresent() && holder.get() != launcher.get()) {
+                holder.get().letGo(ball.name());
+            }
+            if (holder.isEmpty() || holder.get() != launcher.get()) {
+                play.capture(ball, launcher.get());
+            }
+            return true;
+        }
+
+        private Stream<Absorber> absorbers() {
+            return registry.gizmos().stream().filter(g -> g instanceof Absorber).map(g -> (Absorber) g);
         }
 
     }
