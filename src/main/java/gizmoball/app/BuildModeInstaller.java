@@ -68,13 +68,17 @@ public final class BuildModeInstaller {
         openWideEnoughForBuildMode(window, west.getPreferredSize().width + east.getPreferredSize().width);
         // Below this width the labelled palette would leave the board less than MIN_BOARD pixels: icons only.
         int compactBelow = palette.getPreferredSize().width + properties.getPreferredSize().width + MIN_BOARD;
-        Runnable fitPalette = () -> palette.setCompact(window.getWidth() < compactBelow);
-        window.addComponentListener(new ComponentAdapter() {
+        // ... or the west side is too short for the labelled column: every tool stays in sight, none below a fold.
+        Runnable fitPalette = () -> palette.setCompact(window.getWidth() < compactBelow
+                || (west.getHeight() > 0 && west.getHeight() < palette.labelledHeight()));
+        ComponentAdapter refit = new ComponentAdapter() {
             @Override
             public void componentResized(ComponentEvent e) {
                 fitPalette.run();
             }
-        });
+        };
+        window.addComponentListener(refit);
+        west.addComponentListener(refit);
         fitPalette.run();
         // Measured once the window is whole and laid out: other features add rows above or below the board.
         window.addWindowListener(new WindowAdapter() {
@@ -118,8 +122,9 @@ public final class BuildModeInstaller {
 
     /**
      * The smallest window in which build mode is whole: the compact palette, the properties and the smallest board
-     * side by side (each side with room for its scroll bar), and the whole tool bar; as tall as that board with
-     * everything the window has above and below the board view (menus, tool bar, status line and whatever else).
+     * side by side (each side with room for its scroll bar), and the whole tool bar; as tall as that board, or the
+     * compact palette if taller (every tool in sight), with everything the window has above and below the board view
+     * (menus, tool bar, status line and whatever else).
      */
     private static Dimension minimumSize(GameWindow window, PalettePanel palette, JScrollPane west, JScrollPane east) {
         palette.setCompact(true);
@@ -129,7 +134,7 @@ public final class BuildModeInstaller {
         int width = Math.max(window.toolBar().getPreferredSize().width, sides + SMALLEST_BOARD)
                 + frame.left + frame.right;
         int aroundBoard = window.getHeight() - window.boardPanel().getHeight();
-        return new Dimension(width, aroundBoard + SMALLEST_BOARD);
+        return new Dimension(width, aroundBoard + Math.max(SMALLEST_BOARD, west.getPreferredSize().height));
     }
 
     /** Crosshair where a click places something, a hand where it acts on what is under it. */

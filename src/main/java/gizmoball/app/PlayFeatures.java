@@ -171,6 +171,12 @@ public final class PlayFeatures {
         }));
         trails.setEnabled(settings.ballTrails());
         window.boardPanel().addUnderlay(trails);
+        loop.addRunningListener(() -> {
+            if (!loop.isRunning()) {
+                trails.clear();
+                window.boardPanel().repaint();
+            }
+        });
         view.add(toggle("Physics overlay", KeyEvent.VK_O, InputEvent.SHIFT_DOWN_MASK, settings.physicsOverlay(), on -> {
             settings.setPhysicsOverlay(on);
             overlayShown();

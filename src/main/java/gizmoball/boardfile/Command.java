@@ -11,6 +11,7 @@ import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Plunger;
 import gizmoball.model.gizmo.Rgb;
+import gizmoball.model.gizmo.Setting;
 import gizmoball.model.loop.TriggerSource;
 import java.util.List;
 import java.util.Locale;
@@ -279,7 +280,7 @@ public sealed interface Command {
     /** {@code #@Factor <name> <factor>}: how many times faster the accelerator sends a ball away. */
     record Factor(String name, double factor) implements AboutOne {
         public void applyTo(Board board) {
-            board.setFactor(name, factor);
+            board.set(name, new Setting.Factor(factor));
         }
 
         public String toLine() {
@@ -294,7 +295,7 @@ public sealed interface Command {
     /** {@code #@Plunger <absorber> <full-speed> <pull-seconds>}: the absorber is a plunger. */
     record MakePlunger(String name, Plunger plunger) implements AboutOne {
         public void applyTo(Board board) {
-            board.setPlunger(name, Optional.of(plunger));
+            board.set(name, new Setting.Pull(Optional.of(plunger)));
         }
 
         public String toLine() {
@@ -310,7 +311,7 @@ public sealed interface Command {
     /** {@code #@Pair <portal> <portal>}: a ball entering either portal's mouth leaves by the other's. */
     record Pair(String first, String second) implements Command {
         public void applyTo(Board board) {
-            board.pair(first, second);
+            board.set(first, new Setting.Pair(Optional.of(second)));
         }
 
         public String toLine() {
@@ -325,7 +326,7 @@ public sealed interface Command {
     /** {@code #@SpinnerSpeed <name> <turns>}: how many turns a second the spinner makes, negative anticlockwise. */
     record SpinnerSpeed(String name, double turnsPerSecond) implements AboutOne {
         public void applyTo(Board board) {
-            board.setSpinnerSpeed(name, turnsPerSecond);
+            board.set(name, new Setting.Speed(turnsPerSecond));
         }
 
         public String toLine() {
@@ -356,7 +357,7 @@ public sealed interface Command {
     /** {@code #@SpawnVelocity <name> <vx> <vy>}: the velocity of the balls the spawner adds. */
     record SpawnVelocity(String name, double vx, double vy) implements AboutOne {
         public void applyTo(Board board) {
-            board.setSpawnVelocity(name, vx, vy);
+            board.set(name, new Setting.Launch(vx, vy));
         }
 
         public String toLine() {

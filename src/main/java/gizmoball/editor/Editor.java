@@ -10,16 +10,11 @@ import gizmoball.model.KeyEdge;
 import gizmoball.model.game.GameRules;
 import gizmoball.model.game.Nudge;
 import gizmoball.model.game.Tilt;
-import gizmoball.model.gizmo.AbsorberView;
-import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Order;
-import gizmoball.model.gizmo.Plunger;
-import gizmoball.model.gizmo.PortalView;
 import gizmoball.model.gizmo.Rgb;
-import gizmoball.model.gizmo.SpawnerView;
-import gizmoball.model.gizmo.SpinnerView;
+import gizmoball.model.gizmo.Setting;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.TriggerSource;
 import java.awt.event.KeyEvent;
@@ -415,60 +410,15 @@ public final class Editor {
         return edit(gizmo + " scores " + points, b -> b.setPoints(gizmo, points));
     }
 
-    /** How many times faster the accelerator sends a ball away (one undo step; the same value again is no edit). */
-    public boolean setFactor(String accelerator, double factor) {
-        if (board.gizmo(accelerator).filter(g -> g instanceof AcceleratorView a && a.factor() == factor).isPresent()) {
-            return true;
-        }
-        return edit(accelerator + " speeds balls up " + Decimals.format(factor) + " times",
-                b -> b.setFactor(accelerator, factor));
-    }
-
-    /** Makes the absorber a plunger, or with empty one that fires at once (one undo step; the same again is no edit). */
-    public boolean setPlunger(String absorber, Optional<Plunger> plunger) {
-        if (board.gizmo(absorber).filter(g -> g instanceof AbsorberView a && a.plunger().equals(plunger)).isPresent()) {
-            return true;
-        }
-        return edit(plunger.map(p -> absorber + " is a plunger: a full pull launches at " + Decimals.format(p.fullSpeed())
-                        + " L/s after " + Decimals.format(p.pullSeconds()) + " s").orElse(absorber + " fires at once"),
-                b -> b.setPlunger(absorber, plunger));
-    }
-
     /**
-     * The spinner's speed and way in turns per second, negative anticlockwise (one undo step; the same value again is
-     * no edit).
+     * Gives the gizmo the value its kind holds beyond its place ({@link Setting}: a factor, a speed, a velocity, a
+     * pair), one undo step; the same value again is no edit.
      */
-    public boolean setSpinnerSpeed(String spinner, double turnsPerSecond) {
-        if (board.gizmo(spinner).filter(g -> g instanceof SpinnerView s && s.turnsPerSecond() == turnsPerSecond)
-                .isPresent()) {
+    public boolean set(String gizmo, Setting setting) {
+        if (board.gizmo(gizmo).map(Gizmo::setting).filter(setting::equals).isPresent()) {
             return true;
         }
-        return edit(spinner + " turns " + Decimals.format(Math.abs(turnsPerSecond)) + " times a second "
-                        + (turnsPerSecond > 0 ? "clockwise" : "anticlockwise"),
-                b -> b.setSpinnerSpeed(spinner, turnsPerSecond));
-    }
-
-    /** The velocity of the balls the spawner adds (one undo step; the same value again is no edit). */
-    public boolean setSpawnVelocity(String spawner, double vx, double vy) {
-        if (board.gizmo(spawner).filter(g -> g instanceof SpawnerView s && s.velocity().equals(new Vect(vx, vy)))
-                .isPresent()) {
-            return true;
-        }
-        return edit(spawner + " spawns balls at (" + Decimals.format(vx) + ", " + Decimals.format(vy) + ") L/s",
-                b -> b.setSpawnVelocity(spawner, vx, vy));
-    }
-
-    /**
-     * Pairs the portal with the portal named {@code other}, or with an empty name leaves it without a pair (one undo
-     * step; the same pair again is no edit).
-     */
-    public boolean setPair(String portal, String other) {
-        Optional<String> now = board.gizmo(portal).filter(g -> g instanceof PortalView).flatMap(g -> ((PortalView) g).pair());
-        if (now.orElse("").equals(other)) {
-            return true;
-        }
-        return other.isEmpty() ? edit(portal + " has no pair: a wall", b -> b.unpair(portal))
-                : edit(portal + " and " + other + " are a pair of portals", b -> b.pair(portal, other));
+        return edit(setting.said(gizmo), b -> b.set(gizmo, setting));
     }
 
     /** Makes an absorber a drain of the game or an ordinary absorber (one undo step). */

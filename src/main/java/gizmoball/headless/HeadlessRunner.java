@@ -6,6 +6,9 @@ import gizmoball.boardfile.BoardFileException;
 import gizmoball.boardfile.BoardFiles;
 import gizmoball.boardfile.FileErrors;
 import gizmoball.boardfile.LoadResult;
+import gizmoball.lab.Lab;
+import gizmoball.lab.LabReport;
+import gizmoball.lab.LabSettings;
 import gizmoball.model.Board;
 import gizmoball.replay.GameReport;
 import gizmoball.replay.KeyScript;
@@ -61,7 +64,10 @@ public final class HeadlessRunner {
             return BAD_INPUT;
         }
         try {
-            return options instanceof HeadlessOptions.Play play ? play(play, out, err)
+            if (options instanceof HeadlessOptions.Play play) {
+                return play(play, out, err);
+            }
+            return options instanceof HeadlessOptions.Lab lab ? lab(lab, out, err)
                     : check((HeadlessOptions.Check) options, out, err);
         } catch (Stop stop) {
             return stop.status;
@@ -112,20 +118,38 @@ public final class HeadlessRunner {
         return OK;
     }
 
+    private static int lab(HeadlessOptions.Lab options, PrintStream out, PrintStream err) throws Stop {
+        Board board = load(options.board(), options.skipBadLines(), err);
+        LabSettings settings = LabSettings.of(options.games()).withThreads(options.threads())
+                .withGameCap(options.gameCapSeconds());
+        LabReport report = Lab.run(board, options.board().toString(), settings, new ProgressLine(err)).report();
+        if (options.report().isPresent()) {
+            Path file = options.report().get();
+            String json = report.toJson();
+            writeFile(file, () -> AtomicFileWriter.write(file, w -> w.write(json)), err);
+        }
+        out.println(report.summaryLine());
+        return OK;
+    }
+
     private static Board load(HeadlessOptions.Play options, PrintStream err) throws Stop {
+        return load(options.board(), options.skipBadLines(), err);
+    }
+
+    private static Board load(Path file, boolean skipBadLines, PrintStream err) throws Stop {
         try {
-            if (!options.skipBadLines()) {
-                return BoardFiles.load(options.board());
+            if (!skipBadLines) {
+                return BoardFiles.load(file);
             }
-            LoadResult result = BoardFiles.loadSkippingBadLines(options.board());
+            LoadResult result = BoardFiles.loadSkippingBadLines(file);
             for (BoardFileError skipped : result.skippedLines()) {
                 err.println("skipped " + skipped);
             }
             return result.board();
         } catch (IOException e) {
-            err.println("gizmoball: " + FileErrors.cannotRead(options.board(), e));
+            err.println("gizmoball: " + FileErrors.cannotRead(file, e));
         } catch (BoardFileException e) {
-            err.println("gizmoball: " + options.board() + " not loaded, " + e.getMessage());
+            err.println("gizmoball: " + file + " not loaded, " + e.getMessage());
         }
         throw new Stop(BAD_INPUT);
     }

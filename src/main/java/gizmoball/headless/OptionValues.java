@@ -29,15 +29,33 @@ final class OptionValues {
     }
 
     static double dt(String value) throws HeadlessOptions.BadArguments {
+        return seconds(value, "--dt");
+    }
+
+    /** A whole number of at least 1: of games, of threads. */
+    static int count(String value, String option) throws HeadlessOptions.BadArguments {
         try {
-            double dt = Double.parseDouble(value);
-            if (Double.isFinite(dt) && dt > 0) {
-                return dt;
+            int count = Integer.parseInt(value);
+            if (count >= 1) {
+                return count;
             }
         } catch (NumberFormatException e) {
             // falls through to the message below, which says what is expected
         }
-        throw new HeadlessOptions.BadArguments("--dt needs a number of seconds > 0, not '" + value + "'");
+        throw new HeadlessOptions.BadArguments(option + " needs a whole number >= 1, not '" + value + "'");
+    }
+
+    /** A number of seconds > 0. */
+    static double seconds(String value, String option) throws HeadlessOptions.BadArguments {
+        try {
+            double seconds = Double.parseDouble(value);
+            if (Double.isFinite(seconds) && seconds > 0) {
+                return seconds;
+            }
+        } catch (NumberFormatException e) {
+            // falls through to the message below, which says what is expected
+        }
+        throw new HeadlessOptions.BadArguments(option + " needs a number of seconds > 0, not '" + value + "'");
     }
 
     static Path path(String value) throws HeadlessOptions.BadArguments {

@@ -8,16 +8,15 @@ import gizmoball.model.game.Nudge;
 import gizmoball.model.game.Playfield;
 import gizmoball.model.game.Tilt;
 import gizmoball.model.gizmo.Absorber;
-import gizmoball.model.gizmo.Accelerator;
+
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Order;
-import gizmoball.model.gizmo.Plunger;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.gizmo.Sink;
-import gizmoball.model.gizmo.Spinner;
+import gizmoball.model.gizmo.Setting;
 import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Ball;
 import gizmoball.model.loop.BallGrid;
@@ -272,33 +271,12 @@ public final class Board {
         edited();
     }
 
-    /** How many times faster an accelerator sends a ball away (1 to {@link Accelerator#MAX_FACTOR}; 1.5 unless set). */
-    public void setFactor(String accelerator, double factor) {
-        edits.setFactor(accelerator, factor);
-        edited();
-    }
-
-    /** The velocity of the balls the spawner adds (finite, at most {@link #MAX_SPEED}; at rest unless set). */
-    public void setSpawnVelocity(String spawner, double vx, double vy) {
-        edits.setSpawnVelocity(spawner, vx, vy);
-        edited();
-    }
-
     /**
-     * Makes an absorber a plunger (the key that fires it pulls it while held; its release fires at a speed that grows
-     * with the hold, {@link Plunger}) or, with empty, an absorber that fires at once.
+     * Gives a gizmo the value its kind holds beyond its place (an accelerator's factor, a spawner's velocity, a
+     * spinner's speed, a portal's pair: {@link Setting}), checked by the setting itself.
      */
-    public void setPlunger(String absorber, Optional<Plunger> plunger) {
-        edits.setPlunger(absorber, plunger);
-        edited();
-    }
-
-    /**
-     * Pairs two portals: a ball entering either's mouth leaves by the other's. Each leaves the pair it had, whose
-     * other portal is left without one (a wall).
-     */
-    public void pair(String portal, String other) {
-        edits.pair(portal, other);
+    public void set(String gizmo, Setting setting) {
+        edits.set(gizmo, setting);
         edited();
     }
 
@@ -308,21 +286,6 @@ public final class Board {
      */
     public void setCellOpen(String cell) {
         edits.setCellOpen(cell);
-        edited();
-    }
-
-    /** The portal and its pair are left without one: walls both. */
-    public void unpair(String portal) {
-        edits.unpair(portal);
-        edited();
-    }
-
-    /**
-     * A spinner's speed and way in turns per second: positive clockwise on the screen, negative anticlockwise, nonzero
-     * and at most {@link Spinner#MAX_TURNS_PER_SECOND} either way (one turn a second clockwise unless set).
-     */
-    public void setSpinnerSpeed(String spinner, double turnsPerSecond) {
-        edits.setSpinnerSpeed(spinner, turnsPerSecond);
         edited();
     }
 

@@ -1,5 +1,6 @@
 package gizmoball.editor;
 
+import gizmoball.model.gizmo.Setting;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.boardfile.BoardContents;
@@ -97,9 +98,9 @@ class TransferTest {
     void aPairTypedInThePropertiesIsOneUndoStepAndFollowsARenameAndACopyOfBoth() {
         board.addGizmo(GizmoKind.PORTAL, "P1", 1, 1);
         board.addGizmo(GizmoKind.PORTAL, "P2", 15, 1);
-        assertThat(editor.setPair("P1", "P2")).isTrue();
+        assertThat(editor.set("P1", Setting.Pair.with("P2"))).isTrue();
         assertThat(pair("P2")).contains("P1");
-        assertThat(editor.setPair("P1", "C1")).as("a circle is no portal").isFalse();
+        assertThat(editor.set("P1", Setting.Pair.with("C1"))).as("a circle is no portal").isFalse();
         assertThat(messages).last().asString().contains("only portals are paired: C1 is a circle");
 
         assertThat(editor.rename("P2", "Exit")).isTrue();
@@ -110,7 +111,7 @@ class TransferTest {
         assertThat(pair("P2")).as("the copies (fresh names P2, P3) are each other's pair").contains("P3");
         assertThat(pair("P1")).contains("Exit");
 
-        assertThat(editor.setPair("P1", "")).isTrue();
+        assertThat(editor.set("P1", Setting.Pair.with(""))).isTrue();
         assertThat(pair("Exit")).isEmpty();
         editor.undo();
         assertThat(pair("Exit")).contains("P1");

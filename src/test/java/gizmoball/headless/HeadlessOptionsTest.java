@@ -37,6 +37,16 @@ class HeadlessOptionsTest {
                 .isEqualTo(new HeadlessOptions.Check(Path.of("r.json"), Optional.of(Path.of("s.json"))));
     }
 
+    @Test
+    void readsTheLabsOptions() throws HeadlessOptions.BadArguments {
+        assertThat(HeadlessOptions.parse(List.of("--headless", "--lab", "200", "--threads", "2", "--game-cap", "90",
+                "--report", "lab.json", "b.txt"))).isEqualTo(new HeadlessOptions.Lab(Path.of("b.txt"), 200, 2, 90.0,
+                false, Optional.of(Path.of("lab.json"))));
+        HeadlessOptions.Lab lab = (HeadlessOptions.Lab) HeadlessOptions.parse(List.of("--lab", "5", "b.txt"));
+        assertThat(lab.threads()).isEqualTo(Runtime.getRuntime().availableProcessors());
+        assertThat(lab.gameCapSeconds()).isEqualTo(600.0);
+    }
+
     @ParameterizedTest(name = "{0}")
     @CsvSource(delimiter = '|', value = {
             "--headless b.txt | --ticks N is required",
@@ -52,7 +62,17 @@ class HeadlessOptionsTest {
             "--headless --ticks 5 b.txt --out | --out needs a value",
             "--headless --ticks 5 --keys | --keys needs a value",
             "--headless --replay r.json b.txt | --replay takes only --report: the replay file holds the board, its ticks and keys",
-            "--headless --replay r.json --ticks 5 | --replay takes only --report: the replay file holds the board, its ticks and keys"})
+            "--headless --replay r.json --ticks 5 | --replay takes only --report: the replay file holds the board, its ticks and keys",
+            "--headless --lab 0 b.txt | --lab needs a whole number >= 1, not '0'",
+            "--headless --lab many b.txt | --lab needs a whole number >= 1, not 'many'",
+            "--headless --lab 5 --threads 0 b.txt | --threads needs a whole number >= 1, not '0'",
+            "--headless --lab 5 --game-cap -3 b.txt | --game-cap needs a number of seconds > 0, not '-3'",
+            "--headless --lab 5 | no board file given",
+            "--headless --lab | --lab needs a value",
+            "--headless --ticks 5 --threads 2 b.txt | --threads goes with --lab N",
+            "--headless --ticks 5 --game-cap 60 b.txt | --game-cap goes with --lab N",
+            "--headless --lab 5 --ticks 9 b.txt | --lab takes only --threads, --game-cap, --skip-bad-lines and --report: its players press the keys and each game runs to game over or the cap",
+            "--headless --lab 5 --replay r.json | --lab takes only --threads, --game-cap, --skip-bad-lines and --report: its players press the keys and each game runs to game over or the cap"})
     void refusesBadCommandLinesSayingWhy(String commandLine, String message) {
         assertThatThrownBy(() -> HeadlessOptions.parse(List.of(commandLine.split(" "))))
                 .isInstanceOf(HeadlessOptions.BadArguments.class).hasMessage(message);

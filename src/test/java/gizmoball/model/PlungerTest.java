@@ -1,5 +1,6 @@
 package gizmoball.model;
 
+import gizmoball.model.gizmo.Setting;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
@@ -22,7 +23,7 @@ class PlungerTest {
     private static Board plungerBoard(Plunger plunger) {
         Board board = new Board();
         board.addAbsorber("P", 19, 19, 20, 20);
-        board.setPlunger("P", Optional.of(plunger));
+        board.set("P", new Setting.Pull(Optional.of(plunger)));
         board.bindKey(SPACE, KeyEdge.DOWN, "P");
         board.addBall("B", 19.5, 19.5, 0, 0);
         return board;
@@ -69,7 +70,7 @@ class PlungerTest {
     @Test
     void aStandardAbsorberStillFiresAtOnceAt50() {
         Board board = plungerBoard(Plunger.DEFAULT);
-        board.setPlunger("P", Optional.empty());
+        board.set("P", new Setting.Pull(Optional.empty()));
         board.keyDown(SPACE);
         assertThat(board.ball("B").orElseThrow().velocity()).isEqualTo(new Vect(0, -Board.ABSORBER_LAUNCH_SPEED));
     }
@@ -99,14 +100,14 @@ class PlungerTest {
     @Test
     void outOfRangeSettingsAreRefusedAndOnlyAbsorbersArePlungers() {
         Board board = plungerBoard(Plunger.DEFAULT);
-        assertThatThrownBy(() -> board.setPlunger("P", Optional.of(new Plunger(10, 1))))
+        assertThatThrownBy(() -> board.set("P", new Setting.Pull(Optional.of(new Plunger(10, 1)))))
                 .isInstanceOf(BoardEditException.class).hasMessageContaining("faster than 10");
-        assertThatThrownBy(() -> board.setPlunger("P", Optional.of(new Plunger(201, 1))))
+        assertThatThrownBy(() -> board.set("P", new Setting.Pull(Optional.of(new Plunger(201, 1)))))
                 .isInstanceOf(BoardEditException.class).hasMessageContaining("at most 200");
-        assertThatThrownBy(() -> board.setPlunger("P", Optional.of(new Plunger(50, 6))))
+        assertThatThrownBy(() -> board.set("P", new Setting.Pull(Optional.of(new Plunger(50, 6)))))
                 .isInstanceOf(BoardEditException.class).hasMessageContaining("0.1 to 5 seconds");
         board.addGizmo(gizmoball.model.gizmo.GizmoKind.CIRCLE, "C", 5, 5);
-        assertThatThrownBy(() -> board.setPlunger("C", Optional.of(Plunger.DEFAULT)))
+        assertThatThrownBy(() -> board.set("C", new Setting.Pull(Optional.of(Plunger.DEFAULT))))
                 .isInstanceOf(BoardEditException.class).hasMessageContaining("only an absorber");
         assertThat(((AbsorberView) board.gizmo("P").orElseThrow()).plunger()).contains(Plunger.DEFAULT);
     }

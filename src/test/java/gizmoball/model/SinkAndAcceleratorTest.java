@@ -1,5 +1,6 @@
 package gizmoball.model;
 
+import gizmoball.model.gizmo.Setting;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.within;
@@ -114,16 +115,16 @@ class SinkAndAcceleratorTest {
         Board board = still();
         board.addGizmo(GizmoKind.ACCELERATOR, "AC", 5, 8);
         board.addGizmo(GizmoKind.SQUARE, "S", 1, 1);
-        board.setFactor("AC", 2);
+        board.set("AC", new Setting.Factor(2));
         assertThat(((AcceleratorView) board.gizmo("AC").orElseThrow()).factor()).isEqualTo(2);
         board.addBall("B", 5.5, 3, 0, 10);
         ticks(board, 40);
         assertThat(board.ball("B").orElseThrow().velocity().y()).isCloseTo(-20, within(1e-12));
         for (double bad : new double[] {0.99, 5.01, Double.NaN}) {
-            assertThatThrownBy(() -> board.setFactor("AC", bad)).isInstanceOf(BoardEditException.class)
+            assertThatThrownBy(() -> board.set("AC", new Setting.Factor(bad))).isInstanceOf(BoardEditException.class)
                     .hasMessageStartingWith("an accelerator's factor is 1 to 5");
         }
-        assertThatThrownBy(() -> board.setFactor("S", 2)).hasMessage("only an accelerator has a factor: S is a square");
+        assertThatThrownBy(() -> board.set("S", new Setting.Factor(2))).hasMessage("only an accelerator has a factor: S is a square");
         assertThat(board.copy().gizmo("AC").map(g -> ((AcceleratorView) g).factor())).contains(2.0);
     }
 }

@@ -25,6 +25,7 @@ class AuthorFilesGuiTest extends WindowOnFiles {
 
     @AfterEach
     void forget() throws Exception {
+        Gui.closeAllWindows();   // before the settings go: a closing window writes its place there
         node.removeNode();
     }
 

@@ -4,6 +4,7 @@ import java.util.ArrayDeque;
 import java.util.Deque;
 import java.util.List;
 import java.util.Optional;
+import java.util.function.Function;
 import java.util.OptionalInt;
 
 import physics.Vect;
@@ -119,9 +120,15 @@ public final class Absorber extends PolygonGizmo implements AbsorberView {
         return plunger;
     }
 
-    /** Makes it a plunger, or with empty an absorber that fires at once. For the board, not for views. */
-    public void setPlunger(Optional<Plunger> newPlunger) {
-        plunger = newPlunger;
+    @Override
+    public Setting setting() {
+        return new Setting.Pull(plunger);
+    }
+
+    /** Makes it a plunger, or with an empty pull an absorber that fires at once. */
+    @Override
+    public void hold(Setting setting, Function<String, GizmoBase> gizmos) {
+        plunger = ((Setting.Pull) setting).plunger();
         letGoOfPull();
     }
 

@@ -9,14 +9,10 @@ import gizmoball.model.BoardChange;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.game.GameRules;
 import gizmoball.model.game.Points;
-import gizmoball.model.gizmo.AbsorberView;
-import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.Plunger;
 import gizmoball.model.gizmo.Rgb;
-import gizmoball.model.gizmo.PortalView;
-import gizmoball.model.gizmo.SpawnerView;
-import gizmoball.model.gizmo.SpinnerView;
+import gizmoball.model.gizmo.Setting;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import gizmoball.model.loop.TriggerSource;
@@ -198,13 +194,14 @@ public final class PropertiesPanel extends JPanel {
                 f.setText("");
             }
         }
-        Optional<SpawnerView> spawner = gizmo.filter(g -> g instanceof SpawnerView).map(g -> (SpawnerView) g);
-        applyBall.setEnabled(ball.isPresent() || spawner.isPresent());
-        spawner.ifPresent(sp -> {
+        Setting setting = gizmo.map(Gizmo::setting).orElse(new Setting.None());
+        Optional<Setting.Launch> launch = as(setting, Setting.Launch.class);
+        applyBall.setEnabled(ball.isPresent() || launch.isPresent());
+        launch.ifPresent(l -> {
             ballVx.setEnabled(true);
             ballVy.setEnabled(true);
-            ballVx.show(sp.velocity().x());
-            ballVy.show(sp.velocity().y());
+            ballVx.show(l.vx());
+            ballVy.show(l.vy());
         });
         enableAll(nameRows, gizmo.isPresent() || ball.isPresent());
         name.setText(gizmo.map(Gizmo::name).or(() -> ball.map(BallView::name)).orElse(""));
@@ -223,17 +220,16 @@ public final class PropertiesPanel extends JPanel {
         points.setText(gizmo.map(g -> Integer.toString(board.gameRules().pointsOf(g.name(), g.kind()))).orElse(""));
         RefusedValue.unmark(points);
         drain.setEnabled(gizmo.filter(g -> g.kind().canDrain()).isPresent());
-        Optional<AcceleratorView> accelerator = gizmo.filter(g -> g instanceof AcceleratorView)
-                .map(g -> (AcceleratorView) g);
+        Optional<Setting.Factor> accelerator = as(setting, Setting.Factor.class);
         factor.setEnabled(accelerator.isPresent());
         factor.setText("");
         accelerator.ifPresent(a -> factor.show(a.factor()));
         RefusedValue.unmark(factor);
-        Optional<PortalView> portal = gizmo.filter(g -> g instanceof PortalView).map(g -> (PortalView) g);
+        Optional<Setting.Pair> portal = as(setting, Setting.Pair.class);
         pair.setEnabled(portal.isPresent());
-        pair.setText(portal.flatMap(PortalView::pair).orElse(""));
+        pair.setText(portal.flatMap(Setting.Pair::portal).orElse(""));
         RefusedValue.unmark(pair);
-        Optional<SpinnerView> spinner = gizmo.filter(g -> g instanceof SpinnerView).map(g -> (SpinnerView) g);
+        Optional<Setting.Speed> spinner = as(setting, Setting.Speed.class);
         speed.setEnabled(spinner.isPresent());
         speed.setText("");
         spinner.ifPresent(s -> speed.show(s.turnsPerSecond()));
@@ -241,8 +237,8 @@ public final class PropertiesPanel extends JPanel {
         factorPart.setVisible(spinner.isEmpty());
         speedPart.setVisible(spinner.isPresent());
         drain.setSelected(gizmo.filter(g -> board.gameRules().isDrain(g.name())).isPresent());
-        Optional<AbsorberView> absorber = gizmo.filter(g -> g instanceof AbsorberView).map(g -> (AbsorberView) g);
-        Optional<Plunger> pull = absorber.flatMap(AbsorberView::plunger);
+        Optional<Setting.Pull> absorber = as(setting, Setting.Pull.class);
+        Optional<Plunger> pull = absorber.flatMap(Setting.Pull::plunger);
         plunger.setEnabled(absorber.isPresent());
         plunger.setSelected(pull.isPresent());
         for (NumberField f : new NumberField[] {plungerSpeed, plungerSeconds}) {
@@ -281,6 +277,11 @@ public final class PropertiesPanel extends JPanel {
             }
         }
         removeLink.setEnabled(!links.isEmpty());
+    }
+
+    /** The setting as its record, if it is one: each field of the panel shows the setting of one record. */
+    private static <S extends Setting> Optional<S> as(Setting setting, Class<S> record) {
+        return Optional.of(setting).filter(record::isInstance).map(record::cast);
     }
 
     private JComponent boardSection() {
@@ -444,7 +445,7 @@ public final class PropertiesPanel extends JPanel {
             return;
         }
         if (!plunger.isSelected()) {
-            controller.setPlunger(gizmo.get().name(), Optional.empty());
+            controller.set(gizmo.get().name(), new Setting.Pull(Optional.empty()));
             focusBoard.run();
             return;
         }
@@ -458,7 +459,7 @@ public final class PropertiesPanel extends JPanel {
         for (NumberField f : fields) {
             typed.put(f, f.getText());
         }
-        if (controller.setPlunger(gizmo.get().name(), Optional.of(new Plunger(v.get()[0], v.get()[1])))) {
+        if (controller.set(gizmo.get().name(), new Setting.Pull(Optional.of(new Plunger(v.get()[0], v.get()[1]))))) {
             focusBoard.run();
         } else {
             keepRefused(typed);
@@ -670,7 +671,7 @@ public final class PropertiesPanel extends JPanel {
             return;
         }
         String typed = factor.getText();
-        if (controller.setFactor(gizmo.get().name(), v.get()[0])) {
+        if (controller.set(gizmo.get().name(), new Setting.Factor(v.get()[0]))) {
             focusBoard.run();
         } else {
             keepRefused(Map.of(factor, typed));
@@ -683,7 +684,7 @@ public final class PropertiesPanel extends JPanel {
             return;
         }
         String typed = pair.getText();
-        if (controller.setPair(gizmo.get().name(), typed.strip())) {
+        if (controller.set(gizmo.get().name(), Setting.Pair.with(typed.strip()))) {
             focusBoard.run();
         } else {
             keepRefused(Map.of(pair, typed));
@@ -697,7 +698,7 @@ public final class PropertiesPanel extends JPanel {
             return;
         }
         String typed = speed.getText();
-        if (controller.setSpinnerSpeed(gizmo.get().name(), v.get()[0])) {
+        if (controller.set(gizmo.get().name(), new Setting.Speed(v.get()[0]))) {
             focusBoard.run();
         } else {
             keepRefused(Map.of(speed, typed));
@@ -731,10 +732,9 @@ public final class PropertiesPanel extends JPanel {
     }
 
     private void applyBall() {
-        Optional<SpawnerView> spawner = controller.selectedGizmo().filter(g -> g instanceof SpawnerView)
-                .map(g -> (SpawnerView) g);
+        Optional<Gizmo> spawner = controller.selectedGizmo().filter(g -> g.setting() instanceof Setting.Launch);
         if (spawner.isPresent()) {
-            applySpawnVelocity(spawner.get());
+            applySpawnVelocity(spawner.get().name(), (Setting.Launch) spawner.get().setting());
             return;
         }
         Optional<BallView> ball = controller.selectedBall();
@@ -754,14 +754,14 @@ public final class PropertiesPanel extends JPanel {
     }
 
     /** A spawner's balls' velocity, in the ball's vx and vy fields (its balls are what they describe). */
-    private void applySpawnVelocity(SpawnerView spawner) {
+    private void applySpawnVelocity(String spawner, Setting.Launch now) {
         NumberField[] fields = {ballVx, ballVy};
         Optional<double[]> v = values(fields);
         if (v.isEmpty()) {
             return;
         }
-        Map<JTextField, String> typed = changed(fields, new double[] {spawner.velocity().x(), spawner.velocity().y()});
-        if (controller.setSpawnVelocity(spawner.name(), v.get()[0], v.get()[1])) {
+        Map<JTextField, String> typed = changed(fields, new double[] {now.vx(), now.vy()});
+        if (controller.set(spawner, new Setting.Launch(v.get()[0], v.get()[1]))) {
             focusBoard.run();
         } else {
             keepRefused(typed);

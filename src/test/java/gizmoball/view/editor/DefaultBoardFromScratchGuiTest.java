@@ -173,7 +173,7 @@ class DefaultBoardFromScratchGuiTest {
     private static BoardContents renamed(BoardContents d, Map<String, String> name) {
         return new BoardContents(
                 d.gizmos().stream().map(g -> new BoardContents.GizmoState(name.get(g.name()), g.kind(), g.x(), g.y(),
-                        g.width(), g.height(), g.rotation(), g.colour(), g.pair().map(name::get), g.setting())).toList(),
+                        g.width(), g.height(), g.rotation(), g.colour(), g.setting().renamed(name::get))).toList(),
                 d.balls().stream().map(b -> new BoardContents.BallState(name.get(b.name()), b.x(), b.y(), b.vx(),
                         b.vy(), b.captured())).toList(),
                 d.connections().stream().map(c -> new Connection(TriggerSource.named(name.get(c.source().name())),
