@@ -46,12 +46,12 @@ class AuthorFilesGuiTest extends WindowOnFiles {
         assertThat(onEdt(() -> window.statusLine().message())).contains("nothing to write");
 
         onEdt(() -> window.session().setMode(Mode.BUILD));
-        onEdt(() -> app.build().controller().select("C1"));
+        onEdt(() -> app.build().controller().select("Skill"));
         Gui.clickMenu(window.menus(), "Delete selection");
         Gui.clickMenu(window.menus(), "Save");
 
-        assertThat(Files.readString(file)).isEqualTo(original.replace("Circle C1 3 4\n", "")
-                .replace("Connect C1 LF\n", ""));
+        assertThat(Files.readString(file)).isEqualTo(original.replace("Circle Skill 12 3\n", "")
+                .replace("Colour Skill 255 215 0\n", "").replace("#@Points Skill 500\n", ""));
         assertThat(onEdt(window::getTitle)).isEqualTo("Gizmoball - default.txt");
     }
 

@@ -96,8 +96,13 @@ class GameGuiTest {
                 .hasValue("Press Space to launch");
         screenshot("game-default-start");
 
+        // Space serves the ball up into the plunger and pulls it while held; the release launches it.
         onEdt(() -> {
             app.session().board().keyDown(KeyEvent.VK_SPACE);
+            for (int tick = 0; tick < 30; tick++) {
+                app.loop().step();
+            }
+            app.session().board().keyUp(KeyEvent.VK_SPACE);
             app.loop().step();
         });
         assertThat(onEdt(() -> app.gameFeatures().launchHint().current())).as("the ball is on its way").isEmpty();

@@ -69,7 +69,7 @@ class HelpPagesTest {
         assertThat(HelpPages.howToPlay(new JMenuBar(), new Board())).contains("it is a sandbox, which never ends");
         Board game = BoardFiles.load(Path.of("boards", "default.txt"));
         assertThat(HelpPages.howToPlay(new JMenuBar(), game)).contains("A game of 3 balls: a ball captured by the"
-                + " drain (A) is lost", "An extra ball at 1500 points.", "circle 50, triangle 25, square 10");
+                + " drain (Drain) is lost", "An extra ball at 3000 points.", "circle 50, triangle 25, square 10");
     }
 
     @Test
