@@ -124,7 +124,7 @@ public final class BoardPainter {
             float pixel = (float) (1 / t.scale());
             for (Gizmo gizmo : board.gizmos()) {
                 GizmoArt art = GizmoArt.of(gizmo.kind());
-                double glow = flash(board.time() - gizmo.lastTriggeredAt());
+                double glow = glow(board, gizmo);
                 if (glow > 0) {
                     paintHalo(g, art.outline(gizmo, between), glow);
                 }
@@ -204,6 +204,14 @@ public final class BoardPainter {
         g.setColor(fill.darker());
         g.setStroke(new BasicStroke(pixel));
         g.draw(shape);
+    }
+
+    /**
+     * How brightly {@code gizmo} flashes now. Nothing lights once the game is over: the board's clock stops with
+     * the game, and a flash that started in the last tick would otherwise stay lit until a new game.
+     */
+    static double glow(Board board, Gizmo gizmo) {
+        return board.game().isOver() ? 0 : flash(board.time() - gizmo.lastTriggeredAt());
     }
 
     /** How brightly a gizmo triggered that long ago flashes: 1 at the trigger, fading linearly to 0 at FLASH_SECONDS. */

@@ -74,6 +74,8 @@ public final class GameWindow extends JFrame {
     private final BoardPanel boardPanel;
     private final BoardZoom zoom;
     private final StatusLine statusLine = new StatusLine();
+    /** The first-run hint while the status line shows it: starting the game takes it away. */
+    private String firstRunHint;
     private final Timer statusRefresh = new Timer(STATUS_REFRESH_MILLIS, e -> refreshStatus());
     private final JPanel centre = new JPanel(new BorderLayout());
     private final JMenuBar menus = new JMenuBar();
@@ -172,9 +174,13 @@ public final class GameWindow extends JFrame {
         refreshControls();
     }
 
-    /** The hint for a player new to the game, in the status line: how to start, which keys play this board. */
+    /**
+     * The hint for a player new to the game, in the status line: how to start, which keys play this board (as many
+     * as the line has room for). It goes once the game starts: the board then says what it needs.
+     */
     public void showFirstRunHint() {
-        statusLine.showMessage(KeyHelp.firstRunHint(session.board()));
+        firstRunHint = KeyHelp.firstRunHint(session.board(), statusLine::fitsWhole);
+        statusLine.showMessage(firstRunHint);
     }
 
     public BoardPanel boardPanel() {
@@ -333,6 +339,9 @@ public final class GameWindow extends JFrame {
     private void refreshControls() {
         boolean playing = session.mode() == Mode.PLAY;
         boolean running = commands.running();
+        if (running && statusLine.message().equals(firstRunHint)) {
+            statusLine.showMessage("");
+        }
         start.setEnabled(playing && !running);
         stop.setEnabled(running);
         tick.setEnabled(playing && !running);

@@ -14,6 +14,7 @@ import java.util.EnumMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Predicate;
 import java.util.stream.Collectors;
 
 /**
@@ -27,11 +28,20 @@ final class KeyHelp {
     private record KeyAndGizmo(int keyCode, String gizmo) {
     }
 
-    /** What a player new to the game is told once: how to start, and the keys that play the board. */
-    static String firstRunHint(Board board) {
+    /**
+     * What a player new to the game is told once: how to start, and the keys that play the board, as many of them
+     * as {@code fits} (whole entries, never a word cut), the rest left to Help > Keys of this board.
+     */
+    static String firstRunHint(Board board, Predicate<String> fits) {
         List<String> keys = describe(board);
-        return "Press Start (Ctrl+G) to play" + (keys.isEmpty() ? "" : "; keys: " + String.join(", ", keys))
+        String hint = "Press Start (Ctrl+G) to play" + (keys.isEmpty() ? "" : "; keys: " + String.join(", ", keys))
                 + ". Help > Keys of this board (Ctrl+K) lists them again.";
+        for (int shown = keys.size() - 1; shown >= 0 && !fits.test(hint); shown--) {
+            hint = "Press Start (Ctrl+G) to play; " + (shown == 0 ? "the keys"
+                    : "keys: " + String.join(", ", keys.subList(0, shown)) + " and more")
+                    + ": Help > Keys of this board (Ctrl+K).";
+        }
+        return hint;
     }
 
     static List<String> describe(Board board) {

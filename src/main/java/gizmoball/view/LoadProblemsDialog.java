@@ -62,6 +62,7 @@ public final class LoadProblemsDialog extends JDialog {
         add(buttons, BorderLayout.SOUTH);
         getRootPane().setDefaultButton(close);
         setDefaultCloseOperation(DISPOSE_ON_CLOSE);
+        EscapeCloses.install(this);
         pack();
         setSize(Math.min(getWidth(), 900), getHeight());
         setLocationRelativeTo(parent);

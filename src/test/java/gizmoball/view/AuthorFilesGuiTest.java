@@ -176,4 +176,23 @@ class AuthorFilesGuiTest extends WindowOnFiles {
         onEdt(() -> { });
         assertThat(onEdt(() -> window.statusLine().message())).isEqualTo("Loaded default.txt");
     }
+
+    /**
+     * Issue 40 item 4: at the window's first size the hint shows whole (keys that do not fit are left to Help, never
+     * cut mid-word), and starting the game takes it away.
+     */
+    @Test
+    void theFirstRunHintFitsTheLineWholeAndGoesWhenTheGameStarts() throws Exception {
+        launch(defaultBoardCopy(), settings);
+        await("the hint", () -> window.statusLine().message().startsWith("Press Start (Ctrl+G) to play"));
+        String hint = onEdt(() -> window.statusLine().message());
+        javax.swing.JLabel shown = onEdt(() -> Gui.find(window.statusLine(), javax.swing.JLabel.class,
+                l -> "status.message".equals(l.getName())).orElseThrow());
+        onEdt(() -> window.statusLine().doLayout());
+        assertThat(onEdt(shown::getText)).as("the message as the line shows it").isEqualTo(hint);
+        assertThat(hint).contains("Z: left flipper LF (hold)", "Ctrl+K");
+
+        Gui.clickMenu(window.menus(), "Start");
+        await("the hint gone", () -> !window.statusLine().message().startsWith("Press Start"));
+    }
 }

@@ -114,6 +114,28 @@ class GameGuiTest {
         assertThat(cells()).containsExactly("Score 0", "Balls 3", "Best -");
     }
 
+    /**
+     * Issue 40 item 5: at game over nothing stays lit. The drain takes the last ball in the game's last tick, so
+     * its flash had just begun when the clock stopped with the game.
+     */
+    @Test
+    void atGameOverNoFlashStaysLit(@TempDir Path dir) throws Exception {
+        Path file = Files.writeString(dir.resolve("one-shot.txt"), ONE_SHOT);
+        app = Gizmoball.launch(file, settings);
+        await("the window", () -> app.window().isShowing());
+        onEdt(() -> app.session().board().keyDown(KeyEvent.VK_SPACE));
+        onEdt(() -> app.session().board().keyUp(KeyEvent.VK_SPACE));
+        clickMenu(app.window().menus(), "Start");
+        await("the game-over dialog", () -> Gui.showingWindow("gameover.dialog").isPresent());
+
+        gizmoball.model.Board board = app.session().board();
+        gizmoball.model.gizmo.Gizmo drain = onEdt(() -> board.gizmo("A").orElseThrow());
+        assertThat(onEdt(() -> BoardPainter.flash(board.time() - drain.lastTriggeredAt())))
+                .as("the drain's flash when the clock stopped").isPositive();
+        assertThat(onEdt(() -> board.gizmos().stream().mapToDouble(g -> BoardPainter.glow(board, g)).max()))
+                .hasValue(0);
+    }
+
     @Test
     void aGameEndsWithANameForTheTableAndWatchPlaysItAgain(@TempDir Path dir) throws Exception {
         Path file = Files.writeString(dir.resolve("one-shot.txt"), ONE_SHOT);
