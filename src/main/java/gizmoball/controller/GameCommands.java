@@ -22,6 +22,7 @@ import java.nio.file.Path;
 import java.text.NumberFormat;
 import java.time.Clock;
 import java.time.LocalDate;
+import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 import javax.swing.JFileChooser;
@@ -46,6 +47,8 @@ public final class GameCommands {
     private final Clock clock;
     /** The game over was answered: the dialog shows once a game. */
     private boolean gameOverSeen;
+    /** The game's notices already told in the status line. */
+    private int noticesTold;
     /** How many players a new game on the board is for (Game > Players). */
     private int players = 1;
 
@@ -80,13 +83,17 @@ public final class GameCommands {
         if (change != BoardChange.TICK) {
             // A reset or a load: a new game on the board, for the players chosen.
             gameOverSeen = board.game().isOver();
+            noticesTold = board.game().notices().size();
             if (board.ticks() == 0 && board.game().players() != players) {
                 board.setPlayers(players);
             }
             return;
         }
-        board.game().notices().stream().filter(n -> n.tick() == board.ticks())
+        List<Notice> notices = board.game().notices();
+        // A nudge's notice comes between ticks, so each is told at the first tick that shows it.
+        notices.subList(Math.min(noticesTold, notices.size()), notices.size())
                 .forEach(n -> window.statusLine().showMessage(say(n, board.game().players())));
+        noticesTold = notices.size();
         if (!gameOverSeen && !loop.isWatching() && board.game().isGame() && board.game().isOver()) {
             gameOverSeen = true;
             // After the tick's own listeners (the views) have seen it, and outside the tick.
