@@ -15,7 +15,7 @@ public sealed interface HeadlessOptions {
             + " [--report FILE] [--record FILE] BOARD";
     String CHECK_USAGE = "gizmoball --headless --replay FILE [--report FILE]";
     String LAB_USAGE = "gizmoball --headless --lab N [--threads N] [--game-cap SECONDS] [--skip-bad-lines]"
-            + " [--report FILE] BOARD";
+            + " [--report FILE] [--heatmap FILE.png] BOARD";
     String USAGE = "usage: " + PLAY_USAGE + System.lineSeparator() + "       " + CHECK_USAGE
             + System.lineSeparator() + "       " + LAB_USAGE;
 
@@ -38,10 +38,11 @@ public sealed interface HeadlessOptions {
 
     /**
      * Plays BOARD {@code games} times with each of the lab's players on {@code threads} threads (every core unless
-     * told), each game to game over or {@code gameCapSeconds} of game time, and summarises the games.
+     * told), each game to game over or {@code gameCapSeconds} of game time, and summarises the games; {@code heatmap}:
+     * where to draw where the autoplayer's balls went.
      */
     record Lab(Path board, int games, int threads, double gameCapSeconds, boolean skipBadLines,
-               Optional<Path> report) implements HeadlessOptions {
+               Optional<Path> report, Optional<Path> heatmap) implements HeadlessOptions {
     }
 
     /** The command line is not one the runner understands; the message says why. */
@@ -62,6 +63,7 @@ public sealed interface HeadlessOptions {
         Optional<Path> report = Optional.empty();
         Optional<Path> record = Optional.empty();
         Optional<Path> replay = Optional.empty();
+        Optional<Path> heatmap = Optional.empty();
         Integer labGames = null;
         Integer threads = null;
         Double gameCap = null;
@@ -80,6 +82,7 @@ public sealed interface HeadlessOptions {
                 case "--replay" -> replay = Optional.of(OptionValues.path(OptionValues.of(args, ++i, arg)));
                 case "--lab" -> labGames = OptionValues.count(OptionValues.of(args, ++i, arg), arg);
                 case "--threads" -> threads = OptionValues.count(OptionValues.of(args, ++i, arg), arg);
+                case "--heatmap" -> heatmap = Optional.of(OptionValues.path(OptionValues.of(args, ++i, arg)));
                 case "--game-cap" -> gameCap = OptionValues.seconds(OptionValues.of(args, ++i, arg), arg);
                 default -> {
                     // "-" alone would be a file name; anything else with a dash is an option, never a board.
@@ -93,14 +96,15 @@ public sealed interface HeadlessOptions {
                 }
             }
         }
-        if (labGames == null && (threads != null || gameCap != null)) {
-            throw new BadArguments((threads != null ? "--threads" : "--game-cap") + " goes with --lab N");
+        if (labGames == null && (threads != null || gameCap != null || heatmap.isPresent())) {
+            throw new BadArguments((threads != null ? "--threads" : gameCap != null ? "--game-cap" : "--heatmap")
+                    + " goes with --lab N");
         }
         if (labGames != null) {
             // The lab plays its own games: no script, no tick count, no single game's outputs.
             if (replay.isPresent() || ticks != null || dt.isPresent() || keys.isPresent() || record.isPresent()
                     || out.isPresent()) {
-                throw new BadArguments("--lab takes only --threads, --game-cap, --skip-bad-lines and --report:"
+                throw new BadArguments("--lab takes only --threads, --game-cap, --skip-bad-lines, --report and --heatmap:"
                         + " its players press the keys and each game runs to game over or the cap");
             }
             if (board == null) {
@@ -108,7 +112,7 @@ public sealed interface HeadlessOptions {
             }
             return new Lab(board, labGames, threads != null ? threads : Runtime.getRuntime().availableProcessors(),
                     gameCap != null ? gameCap : LabSettings.DEFAULT_GAME_CAP_SECONDS, skipBadLines,
-                    report);
+                    report, heatmap);
         }
         if (replay.isPresent()) {
             // The replay holds the board, the ticks, the tick length and the keys: nothing may say otherwise.

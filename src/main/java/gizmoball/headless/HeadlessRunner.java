@@ -8,6 +8,7 @@ import gizmoball.boardfile.FileErrors;
 import gizmoball.boardfile.LoadResult;
 import gizmoball.lab.Lab;
 import gizmoball.lab.LabReport;
+import gizmoball.lab.LabResult;
 import gizmoball.lab.LabSettings;
 import gizmoball.model.Board;
 import gizmoball.replay.GameReport;
@@ -15,6 +16,7 @@ import gizmoball.replay.KeyScript;
 import gizmoball.replay.Replay;
 import gizmoball.replay.ReplayFiles;
 import gizmoball.replay.ScriptedPlay;
+import gizmoball.view.HeatMapPicture;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
@@ -35,6 +37,8 @@ public final class HeadlessRunner {
     public static final int WRITE_FAILED = 3;
     /** A replay reached another score than the one it recorded. */
     public static final int REPLAY_DIFFERS = 4;
+    /** Pixels across the board of a heat map the lab draws. */
+    private static final int HEAT_MAP_SIDE = 640;
 
     private HeadlessRunner() {
     }
@@ -122,11 +126,18 @@ public final class HeadlessRunner {
         Board board = load(options.board(), options.skipBadLines(), err);
         LabSettings settings = LabSettings.of(options.games()).withThreads(options.threads())
                 .withGameCap(options.gameCapSeconds());
-        LabReport report = Lab.run(board, options.board().toString(), settings, new ProgressLine(err)).report();
+        LabResult result = Lab.run(board, options.board().toString(), settings, new ProgressLine(err));
+        LabReport report = result.report();
         if (options.report().isPresent()) {
             Path file = options.report().get();
             String json = report.toJson();
             writeFile(file, () -> AtomicFileWriter.write(file, w -> w.write(json)), err);
+        }
+        if (options.heatmap().isPresent()) {
+            Path file = options.heatmap().get();
+            byte[] png = HeatMapPicture.png(HeatMapPicture.image(board, result.autoplayerHeat(), HEAT_MAP_SIDE,
+                    report.heatMapCaption()));
+            writeFile(file, () -> Files.write(file, png), err);
         }
         out.println(report.summaryLine());
         return OK;

@@ -25,6 +25,9 @@ final class GameTally {
     private static final class BallWatch {
         /** The tick it left its absorber, or -1 while it is not in play. */
         long inPlaySince = -1;
+        /** Its centre after the last tick it was free in, NaN if it was not. */
+        double lastX = Double.NaN;
+        double lastY = Double.NaN;
         double stillX = Double.NaN;
         double stillY = Double.NaN;
         long stillSince;
@@ -34,6 +37,8 @@ final class GameTally {
     private final Board board;
     private final double dt;
     private final long jamTicks;
+    /** L: the farthest a ball can fly in a tick; a ball that went farther jumped (a portal). */
+    private final double longestStep;
     private final HeatGrid heat;
     private final Map<String, BallWatch> watches = new LinkedHashMap<>();
     private final Map<String, Integer> hits = new LinkedHashMap<>();
@@ -46,6 +51,7 @@ final class GameTally {
         this.dt = dt;
         this.heat = heat;
         this.jamTicks = Math.round(JAM_SECONDS / dt);
+        this.longestStep = Board.MAX_SPEED * dt;
         for (Gizmo gizmo : board.gizmos()) {
             hits.put(gizmo.name(), 0);
         }
@@ -74,6 +80,11 @@ final class GameTally {
         for (BallView ball : board.balls()) {
             if (!ball.isCaptured()) {
                 watch(ball, now);
+            } else {
+                BallWatch held = watches.get(ball.name());
+                if (held != null) {
+                    held.lastX = Double.NaN;
+                }
             }
         }
     }
@@ -84,7 +95,9 @@ final class GameTally {
             watch.inPlaySince = now;
         }
         Vect at = ball.position();
-        heat.add(at.x(), at.y());
+        heat.addPath(watch.lastX, watch.lastY, at.x(), at.y(), longestStep);
+        watch.lastX = at.x();
+        watch.lastY = at.y();
         double dx = at.x() - watch.stillX;
         double dy = at.y() - watch.stillY;
         if (!(dx * dx + dy * dy <= STILL_DISTANCE * STILL_DISTANCE)) {

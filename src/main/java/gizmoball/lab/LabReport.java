@@ -39,6 +39,12 @@ public record LabReport(String board, int gamesPerPlayer, double gameCapSeconds,
                 autoplayer, idle);
     }
 
+    /** What a heat map of the autoplayer's games says it shows. */
+    public String heatMapCaption() {
+        return String.format(Locale.ROOT, "%s: autoplayer, %d games, mean score %.0f", board, gamesPerPlayer,
+                autoplayer.score().mean());
+    }
+
     public String toJson() {
         return GSON.toJson(this) + "\n";
     }

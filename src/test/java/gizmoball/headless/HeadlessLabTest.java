@@ -2,16 +2,21 @@ package gizmoball.headless;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.awt.image.BufferedImage;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** {@code --headless --lab}: the same JSON file on one thread and on two, a summary line, a progress line. */
+/**
+ * {@code --headless --lab}: the same JSON file on one thread and on two, a summary line, a progress line, a heat map
+ * PNG.
+ */
 class HeadlessLabTest {
     private static final String TABLE = """
             Absorber A 0 19 20 20
@@ -45,8 +50,10 @@ class HeadlessLabTest {
 
         assertThat(HeadlessRunner.run(List.of("--headless", "--lab", "4", "--threads", "1", "--game-cap", "60",
                 "--report", one.toString(), board.toString()), outStream, errStream)).isZero();
+        Path heatmap = directory.resolve("heat.png");
         assertThat(HeadlessRunner.run(List.of("--headless", "--lab", "4", "--threads", "2", "--game-cap", "60",
-                "--report", two.toString(), board.toString()), outStream, errStream)).isZero();
+                "--report", two.toString(), "--heatmap", heatmap.toString(), board.toString()), outStream, errStream))
+                .isZero();
 
         assertThat(Files.readAllBytes(two)).isEqualTo(Files.readAllBytes(one));
         String json = Files.readString(one);
@@ -54,5 +61,8 @@ class HeadlessLabTest {
         String[] summaries = out.toString(StandardCharsets.UTF_8).split("\\R");
         assertThat(summaries).hasSize(2).allMatch(line -> line.startsWith(board + ": ") && line.contains("autoplayer mean"));
         assertThat(err.toString(StandardCharsets.UTF_8)).endsWith("lab: 8/8 games" + System.lineSeparator());
+        BufferedImage picture = ImageIO.read(heatmap.toFile());
+        assertThat(picture).as("a PNG at %s", heatmap).isNotNull();
+        assertThat(picture.getWidth()).isEqualTo(640);
     }
 }

@@ -40,8 +40,8 @@ class HeadlessOptionsTest {
     @Test
     void readsTheLabsOptions() throws HeadlessOptions.BadArguments {
         assertThat(HeadlessOptions.parse(List.of("--headless", "--lab", "200", "--threads", "2", "--game-cap", "90",
-                "--report", "lab.json", "b.txt"))).isEqualTo(new HeadlessOptions.Lab(Path.of("b.txt"), 200, 2, 90.0,
-                false, Optional.of(Path.of("lab.json"))));
+                "--report", "lab.json", "--heatmap", "lab.png", "b.txt"))).isEqualTo(new HeadlessOptions.Lab(
+                Path.of("b.txt"), 200, 2, 90.0, false, Optional.of(Path.of("lab.json")), Optional.of(Path.of("lab.png"))));
         HeadlessOptions.Lab lab = (HeadlessOptions.Lab) HeadlessOptions.parse(List.of("--lab", "5", "b.txt"));
         assertThat(lab.threads()).isEqualTo(Runtime.getRuntime().availableProcessors());
         assertThat(lab.gameCapSeconds()).isEqualTo(600.0);
@@ -71,8 +71,10 @@ class HeadlessOptionsTest {
             "--headless --lab | --lab needs a value",
             "--headless --ticks 5 --threads 2 b.txt | --threads goes with --lab N",
             "--headless --ticks 5 --game-cap 60 b.txt | --game-cap goes with --lab N",
-            "--headless --lab 5 --ticks 9 b.txt | --lab takes only --threads, --game-cap, --skip-bad-lines and --report: its players press the keys and each game runs to game over or the cap",
-            "--headless --lab 5 --replay r.json | --lab takes only --threads, --game-cap, --skip-bad-lines and --report: its players press the keys and each game runs to game over or the cap"})
+            "--headless --ticks 5 --heatmap h.png b.txt | --heatmap goes with --lab N",
+            "--headless --lab 5 --heatmap | --heatmap needs a value",
+            "--headless --lab 5 --ticks 9 b.txt | --lab takes only --threads, --game-cap, --skip-bad-lines, --report and --heatmap: its players press the keys and each game runs to game over or the cap",
+            "--headless --lab 5 --replay r.json | --lab takes only --threads, --game-cap, --skip-bad-lines, --report and --heatmap: its players press the keys and each game runs to game over or the cap"})
     void refusesBadCommandLinesSayingWhy(String commandLine, String message) {
         assertThatThrownBy(() -> HeadlessOptions.parse(List.of(commandLine.split(" "))))
                 .isInstanceOf(HeadlessOptions.BadArguments.class).hasMessage(message);
