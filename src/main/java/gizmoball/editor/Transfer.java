@@ -149,7 +149,10 @@ final class Transfer {
         }
     }
 
-    /** The connections, key bindings and settings naming others (portals' pairs) of {@code from} among the names {@code renamed} knows, renamed. */
+    /**
+     * The connections, key bindings and settings naming others (portals' pairs) of {@code from} among the names
+     * {@code renamed} knows, renamed.
+     */
     private static void link(Board to, Board from, Map<String, String> renamed) {
         for (Gizmo g : from.gizmos()) {
             List<String> named = g.setting().names();

@@ -5,30 +5,23 @@ import gizmoball.model.game.GameProgress;
 import gizmoball.model.game.GameRules;
 import gizmoball.model.game.KeyPress;
 import gizmoball.model.game.Nudge;
-import gizmoball.model.game.Playfield;
 import gizmoball.model.game.Tilt;
-import gizmoball.model.gizmo.Absorber;
 
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
-import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Rgb;
-import gizmoball.model.gizmo.Sink;
 import gizmoball.model.gizmo.Setting;
 import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Ball;
-import gizmoball.model.loop.BallGrid;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import gizmoball.model.loop.GuardCounts;
 import gizmoball.model.loop.LoopActions;
 import gizmoball.model.loop.LoopMode;
 import gizmoball.model.loop.LoopView;
-import gizmoball.model.loop.PlayEvent;
 import gizmoball.model.loop.Sleepers;
-import gizmoball.model.loop.SpatialIndex;
 import gizmoball.model.loop.TickReport;
 import gizmoball.model.loop.TickRun;
 import gizmoball.model.loop.TriggerSource;
@@ -40,7 +33,6 @@ import java.util.List;
 import java.util.Optional;
 import java.util.OptionalLong;
 import java.util.function.Supplier;
-import java.util.stream.Stream;
 
 import physics.Vect;
 
@@ -51,14 +43,15 @@ import physics.Vect;
  * gizmos and balls, the {@link PlacementRules}, the {@link Edits} of gizmos and balls, the {@link Wiring} of
  * connections and keys, the actions of {@link Play} and the {@link Observers}; the physics loop itself is
  * {@link TickRun}, in a package of its own that may not use this one: it sees the board only through
- * {@link LoopView} and acts on it only through {@link LoopActions}, both implemented here by one private adapter.
+ * {@link LoopView} and acts on it only through {@link LoopActions}, both implemented by {@link BoardLoop}.
  *
- * <p>It is over 400 lines only because it is the model's whole public API plus that adapter (some 130 lines of
- * one-line delegations, which need the board's private state); every method is an argument check, a delegation,
- * or a constant of play (gravity, friction, time).
+ * <p>It is over 400 lines only because it is the model's whole public API: every method is an argument check, a
+ * delegation, or a constant of play (gravity, friction, time); the loop's adapter ({@link BoardLoop}) and the game's
+ * ({@link GameField}) are classes of their own.
  */
 public final class Board {
-    /** The side of the board in L and cells: the loop's {@link Arena#SIZE}, named here for the board's users. */
+    /** The side of the board in L and cells: the loop's {@link Arena#SIZE}, named here for the board's users (its
+     *  own parts read {@link Arena}'s). */
     public static final int SIZE = Arena.SIZE;
     /** L: {@link Arena#BALL_RADIUS}. */
     public static final double BALL_RADIUS = Arena.BALL_RADIUS;
@@ -77,8 +70,6 @@ public final class Board {
     private final Play play = new Play(registry, rules, sleepers);
     private final Edits edits = new Edits(registry, rules, wiring, play);
     private final Observers observers = new Observers();
-    /** Reused by every tick: the broad phase for ball pairs. */
-    private final BallGrid ballGrid = new BallGrid();
     private double gravity = DEFAULT_GRAVITY;
     private double mu = DEFAULT_MU;
     private double mu2 = DEFAULT_MU2;
@@ -86,14 +77,14 @@ public final class Board {
     /** Ticks run since construction or {@link #clear()}: the clock games, key scripts and replays count in. */
     private long ticks;
     private GameRules gameRules = GameRules.DEFAULT;
-    private final Game game = new Game(new GameField());
+    private final Game game = new Game(new GameField(this, registry, play));
     private boolean spatialIndexEnabled = true;
     private LoopMode loopMode = LoopMode.CONTINUOUS;
     private TickReport lastTick = TickReport.NONE;
     private GuardCounts guardsFired = GuardCounts.NONE;
     private long lastRedrawNanos;
     private double nextCollisionLookAhead;
-    private final LoopAccess loop = new LoopAccess();
+    private final BoardLoop loop = new BoardLoop(this, registry, wiring, play, sleepers);
 
     /** An empty board with default gravity and friction at time 0. */
     public Board() {
@@ -615,6 +606,25 @@ public final class Board {
         spatialIndexEnabled = enabled;
     }
 
+    boolean spatialIndexEnabled() {
+        return spatialIndexEnabled;
+    }
+
+    double nextCollisionLookAhead() {
+        return nextCollisionLookAhead;
+    }
+
+    /** How long the observers took to take in the last tick (what the loop's report says the redraw cost). */
+    long lastRedrawNanos() {
+        return lastRedrawNanos;
+    }
+
+    /** The loop moved the clock on by {@code dt}: so does every delayed action's. */
+    void advanceTime(double dt) {
+        time += dt;
+        play.clockMoved();
+    }
+
     /** Sum over free balls of |v|^2/2 + gravity * (SIZE - y), unit mass. */
     public double energy() {
         double total = 0;
@@ -640,202 +650,5 @@ public final class Board {
     /** The loop's view of this board, for the loop's tests (through their fixture {@code LoopViews}). */
     LoopView loopView() {
         return loop;
-    }
-
-    /** The board as its game sees it: the rules, and the balls, which a game may take off when they drain. */
-    private final class GameField implements Playfield {
-        @Override
-        public GameRules rules() {
-            return gameRules;
-        }
-
-        @Override
-        public double time() {
-            return time;
-        }
-
-        @Override
-        public int ballCount() {
-            return registry.balls().size();
-        }
-
-        @Override
-        public int freeBallCount() {
-            return (int) registry.balls().stream().filter(b -> !b.isCaptured()).count();
-        }
-
-        @Override
-        public boolean isLauncher(String absorber) {
-            return gameRules.isDrain(absorber)
-                    || registry.gizmo(absorber) instanceof Absorber a && a.plunger().isPresent();
-        }
-
-        @Override
-        public void removeBall(String ball) {
-            registry.remove(registry.ball(ball));
-        }
-
-        @Override
-        public boolean serve(Optional<String> drained) {
-            Optional<Absorber> holder = drained.flatMap(ball -> absorbers().filter(a -> a.held().contains(ball))
-                    .findFirst());
-            Optional<Absorber> launcher = absorbers().filter(a -> a.plunger().isPresent()).findFirst()
-                    .or(() -> holder)
-                    .or(() -> absorbers().filter(a -> gameRules.isDrain(a.name())).findFirst());
-            if (launcher.isEmpty()) {
-                return false;
-            }
-            Ball ball = drained.map(registry::ball).orElseGet(() -> {
-                Ball fresh = new Ball(play.freshBallName(), launcher.get().holdingPosition(BALL_RADIUS), Vect.ZERO);
-                registry.add(fresh);
-                return fresh;
-            });
-            if (holder.isPresent() && holder.get() != launcher.get()) {
-                holder.get().letGo(ball.name());
-            }
-            if (holder.isEmpty() || holder.get() != launcher.get()) {
-                play.capture(ball, launcher.get());
-            }
-            return true;
-        }
-
-        private Stream<Absorber> absorbers() {
-            return registry.gizmos().stream().filter(g -> g instanceof Absorber).map(g -> (Absorber) g);
-        }
-
-    }
-
-    /** The board as the loop sees it and acts on it: the one way in for a {@link TickRun}. */
-    private final class LoopAccess implements LoopView, LoopActions {
-        @Override
-        public Collection<Ball> balls() {
-            return registry.balls();
-        }
-
-        @Override
-        public Collection<GizmoBase> gizmos() {
-            return registry.gizmos();
-        }
-
-        @Override
-        public GizmoBase gizmo(String name) {
-            return registry.gizmo(name);
-        }
-
-        @Override
-        public Ball ball(String name) {
-            return registry.ball(name);
-        }
-
-        @Override
-        public List<MovingShape> movingShapes() {
-            return registry.movingShapes();
-        }
-
-        @Override
-        public List<Connection> connectionsFrom(TriggerSource source) {
-            return wiring.connectionsFrom(source);
-        }
-
-        @Override
-        public SpatialIndex index() {
-            return registry.index();
-        }
-
-        @Override
-        public boolean spatialIndexEnabled() {
-            return spatialIndexEnabled;
-        }
-
-        @Override
-        public Vect gravity() {
-            return new Vect(0, gravity);   // the board's gravity pulls down the board, along +y
-        }
-
-        @Override
-        public double mu() {
-            return mu;
-        }
-
-        @Override
-        public double mu2() {
-            return mu2;
-        }
-
-        @Override
-        public double time() {
-            return time;
-        }
-
-        @Override
-        public LoopMode loopMode() {
-            return loopMode;
-        }
-
-        @Override
-        public boolean passingThrough(Ball a, Ball b) {
-            return registry.passingThrough(a, b);
-        }
-
-        @Override
-        public double nextCollisionLookAhead() {
-            return nextCollisionLookAhead;
-        }
-
-        @Override
-        public long lastRedrawNanos() {
-            return lastRedrawNanos;
-        }
-
-        @Override
-        public Sleepers sleepers() {
-            return sleepers;
-        }
-
-        @Override
-        public BallGrid ballGrid() {
-            return ballGrid;
-        }
-
-        @Override
-        public void recordEvent(PlayEvent event) {
-            play.recordEvent(event);
-        }
-
-        @Override
-        public List<PlayEvent> drainEvents() {
-            return play.drainEvents();
-        }
-
-        @Override
-        public void trigger(GizmoBase gizmo, Order order, double now) {
-            play.carryOut(gizmo, order.action().orElse(gizmo.kind().defaultAction()), order.delay(), now);
-        }
-
-        @Override
-        public void capture(Ball ball, Absorber absorber) {
-            play.capture(ball, absorber);
-        }
-
-        @Override
-        public void sink(Ball ball, Sink sink) {
-            play.sink(ball, sink);
-        }
-
-        @Override
-        public void wakeSweep(MovingShape moving) {
-            play.wakeSweep(moving);
-        }
-
-        @Override
-        public void forgetSeparatedPairs() {
-            registry.forgetSeparatedPairs();
-        }
-
-        @Override
-        public void advanceTime(double dt) {
-            time += dt;
-            play.clockMoved();
-        }
     }
 }

@@ -10,6 +10,7 @@ import gizmoball.model.gizmo.Setting;
 import gizmoball.model.gizmo.Portal;
 import gizmoball.model.gizmo.Spinner;
 import gizmoball.model.gizmo.SwitchedCell;
+import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Ball;
 
 import java.util.ArrayList;
@@ -145,7 +146,8 @@ final class Edits {
         refuseIfPresent(rules.problemFor(candidate, gizmo));
         registry.move(target, x, y);
         if (target instanceof Absorber absorber) {
-            absorber.held().forEach(held -> registry.ball(held).capture(absorber.holdingPosition(Board.BALL_RADIUS)));
+            absorber.held().forEach(held -> registry.ball(held)
+                    .capture(absorber.holdingPosition(Arena.BALL_RADIUS)));
             play.captureFreeBallsIn(absorber);
         }
     }
@@ -213,7 +215,8 @@ final class Edits {
         }
         for (GizmoBase gizmo : gizmos) {
             if (gizmo instanceof Absorber absorber) {
-                absorber.held().forEach(held -> registry.ball(held).capture(absorber.holdingPosition(Board.BALL_RADIUS)));
+                absorber.held().forEach(held -> registry.ball(held)
+                        .capture(absorber.holdingPosition(Arena.BALL_RADIUS)));
             }
         }
         captors.forEach(play::capture);
@@ -231,7 +234,7 @@ final class Edits {
         Absorber candidate = target.resized(x1, y1, x2 - x1, y2 - y1);
         refuseIfPresent(rules.problemFor(candidate, name));
         registry.replace(target, candidate);
-        candidate.held().forEach(held -> registry.ball(held).capture(candidate.holdingPosition(Board.BALL_RADIUS)));
+        candidate.held().forEach(held -> registry.ball(held).capture(candidate.holdingPosition(Arena.BALL_RADIUS)));
         play.captureFreeBallsIn(candidate);
     }
 
@@ -295,7 +298,7 @@ final class Edits {
             }
 
             public double maxSpeed() {
-                return Board.MAX_SPEED;
+                return Arena.MAX_SPEED;
             }
         }));
         target.hold(setting, registry::gizmo);

@@ -12,6 +12,7 @@ import gizmoball.model.gizmo.Spawner;
 import gizmoball.model.gizmo.Spinner;
 import gizmoball.model.gizmo.Surroundings;
 import gizmoball.model.gizmo.SwitchedCell;
+import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Ball;
 import gizmoball.model.loop.PlayEvent;
 import gizmoball.model.loop.Sleepers;
@@ -216,7 +217,7 @@ final class Play implements Surroundings {
 
     /** Wakes every ball in the moving shape's box, where all of its sweep lies, and what rests on them. */
     void wakeSweep(MovingShape moving) {
-        double margin = 2 * Board.BALL_RADIUS;
+        double margin = 2 * Arena.BALL_RADIUS;
         sleepers.wakeWithin(moving.x() - margin, moving.y() - margin, moving.x() + moving.width() + margin,
                 moving.y() + moving.height() + margin);
     }
@@ -241,7 +242,7 @@ final class Play implements Surroundings {
             return;
         }
         String name = held.get(0);
-        Vect launch = absorber.launchPosition(Board.BALL_RADIUS);
+        Vect launch = absorber.launchPosition(Arena.BALL_RADIUS);
         if (fired.contains(absorber.name())) {
             return;   // fired already in this tick: what came straight back stays held until the next
         }
@@ -250,14 +251,14 @@ final class Play implements Surroundings {
             absorber.letGo(name);
             registry.ball(name).release(launch, new Vect(0, -speed));
             recordEvent(new PlayEvent.Fired(absorber.name()));
-            double margin = 4 * Board.BALL_RADIUS;
+            double margin = 4 * Arena.BALL_RADIUS;
             sleepers.wakeWithin(launch.x() - margin, launch.y() - margin, launch.x() + margin, launch.y() + margin);
         }
     }
 
     /** Holds the ball at the absorber's bottom-right corner, at rest, behind any it already holds. */
     void capture(Ball ball, Absorber absorber) {
-        ball.capture(absorber.holdingPosition(Board.BALL_RADIUS));
+        ball.capture(absorber.holdingPosition(Arena.BALL_RADIUS));
         absorber.hold(ball.name());
     }
 
@@ -293,7 +294,7 @@ final class Play implements Surroundings {
         boolean wasSolid = cell.isSolid();
         if (solid) {
             boolean blocked = registry.balls().stream()
-                    .anyMatch(b -> cell.solidOver(b.position()) < Board.BALL_RADIUS - Tolerances.PLACEMENT);
+                    .anyMatch(b -> cell.solidOver(b.position()) < Arena.BALL_RADIUS - Tolerances.PLACEMENT);
             cell.set(!blocked, blocked);
         } else {
             cell.set(false, false);
@@ -343,7 +344,7 @@ final class Play implements Surroundings {
     }
 
     private void spawnNow(Spawner spawner) {
-        Vect mouth = spawner.mouth(Board.BALL_RADIUS);
+        Vect mouth = spawner.mouth(Arena.BALL_RADIUS);
         if (registry.balls().size() >= Spawner.MAX_BALLS || !rules.freeForBall(mouth)) {
             return;
         }
@@ -351,7 +352,7 @@ final class Play implements Surroundings {
         ball.setVelocity(spawner.velocity());
         registry.add(ball);
         recordEvent(new PlayEvent.Spawned(spawner.name(), ball.name()));
-        double margin = 4 * Board.BALL_RADIUS;
+        double margin = 4 * Arena.BALL_RADIUS;
         sleepers.wakeWithin(mouth.x() - margin, mouth.y() - margin, mouth.x() + margin, mouth.y() + margin);
     }
 

@@ -84,8 +84,8 @@ public final class PhysicsOverlay implements BoardOverlay {
 
     /**
      * The panel's lines for {@code r}: the tick, the six stage times in the order the loop runs them (detection
-     * before motion: SPEC.md numbers them otherwise, and the panel says so), collisions, balls awake. Short lines,
-     * so that the panel fits beside the board in most windows.
+     * before motion: the product description numbers them otherwise, docs/rules.md, "The tick", and the panel says
+     * so), collisions, balls awake. Short lines, so that the panel fits beside the board in most windows.
      */
     static List<String> panelLines(TickReport r) {
         List<String> lines = new ArrayList<>();

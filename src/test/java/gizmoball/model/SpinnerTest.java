@@ -26,7 +26,7 @@ import physics.Vect;
 class SpinnerTest {
     private static final double DT = Board.DEFAULT_TICK;
     private static final double R = Board.BALL_RADIUS;
-    /** The spinner's coefficient of reflection: a flipper's, from the product description's table. */
+    /** The spinner's coefficient of reflection: a flipper's, from the product description's table (docs/rules.md). */
     private static final double REFLECTION = 0.95;
     /** From the pivot to the centre of each round end: the bar is 2 L long and its ends have radius 0.25. */
     private static final double ARM = 0.75;

@@ -4,6 +4,7 @@ import gizmoball.boardfile.Decimals;
 import gizmoball.boardfile.KeyCodes;
 import gizmoball.boardfile.OrderWords;
 import gizmoball.editor.Editor;
+import gizmoball.editor.PropertyEdits;
 import gizmoball.model.Board;
 import gizmoball.model.BoardChange;
 import gizmoball.model.KeyBinding;
@@ -251,7 +252,7 @@ public final class PropertiesPanel extends JPanel {
             plungerSeconds.show(p.pullSeconds());
         });
         gizmo.ifPresent(g -> {
-            colour.setText(g.colour().map(Editor::hex).orElse(""));
+            colour.setText(g.colour().map(PropertyEdits::hex).orElse(""));
             swatch.setBackground(BoardPainter.colourOf(g));
         });
         ball.ifPresent(b -> {
@@ -267,12 +268,12 @@ public final class PropertiesPanel extends JPanel {
             for (Connection c : board.connections()) {
                 if (c.source().equals(TriggerSource.named(name)) || c.target().equals(name)) {
                     links.addElement(new Link(c.source() + " \u2192 " + c.target() + OrderWords.of(c.order()),
-                            () -> controller.disconnect(c.source(), c.target())));
+                            () -> controller.properties().disconnect(c.source(), c.target())));
                 }
             }
             for (KeyBinding k : board.keyBindings()) {
                 if (k.gizmo().equals(name)) {
-                    links.addElement(new Link(KeyCodes.describe(k), () -> controller.unbind(k)));
+                    links.addElement(new Link(KeyCodes.describe(k), () -> controller.properties().unbind(k)));
                 }
             }
         }
@@ -376,7 +377,7 @@ public final class PropertiesPanel extends JPanel {
         drain.setName("gizmo.drain");
         drain.setToolTipText("A ball this absorber captures is lost to the game; the next one waits in it");
         drain.addActionListener(e -> controller.selectedGizmo().ifPresent(g -> {
-            controller.setDrain(g.name(), drain.isSelected());
+            controller.properties().setDrain(g.name(), drain.isSelected());
             focusBoard.run();
         }));
         pair.setName("gizmo.pair");
@@ -445,7 +446,7 @@ public final class PropertiesPanel extends JPanel {
             return;
         }
         if (!plunger.isSelected()) {
-            controller.set(gizmo.get().name(), new Setting.Pull(Optional.empty()));
+            controller.properties().set(gizmo.get().name(), new Setting.Pull(Optional.empty()));
             focusBoard.run();
             return;
         }
@@ -459,7 +460,7 @@ public final class PropertiesPanel extends JPanel {
         for (NumberField f : fields) {
             typed.put(f, f.getText());
         }
-        if (controller.set(gizmo.get().name(), new Setting.Pull(Optional.of(new Plunger(v.get()[0], v.get()[1]))))) {
+        if (controller.properties().set(gizmo.get().name(), new Setting.Pull(Optional.of(new Plunger(v.get()[0], v.get()[1]))))) {
             focusBoard.run();
         } else {
             keepRefused(typed);
@@ -486,7 +487,7 @@ public final class PropertiesPanel extends JPanel {
             Color chosen = JColorChooser.showDialog(SwingUtilities.getWindowAncestor(this),
                     "Colour of " + shownSelection, swatch.getBackground());
             if (chosen != null) {
-                applyColour(Editor.hex(Rgb.of(chosen.getRGB())));
+                applyColour(PropertyEdits.hex(Rgb.of(chosen.getRGB())));
             }
         });
         JButton reset = new JButton("Kind's");
@@ -535,7 +536,7 @@ public final class PropertiesPanel extends JPanel {
         Optional<String> selected = controller.selected().filter(n -> !controller.wallsSelected());
         String typed = name.getText();
         if (selected.isPresent()) {
-            if (controller.rename(selected.get(), typed)) {
+            if (controller.properties().rename(selected.get(), typed)) {
                 focusBoard.run();
             } else {
                 keepRefused(Map.of(name, typed));
@@ -559,7 +560,7 @@ public final class PropertiesPanel extends JPanel {
         Map<JTextField, String> typed = new LinkedHashMap<>();
         typed.put(cellX, cellX.getText());
         typed.put(cellY, cellY.getText());
-        if (controller.moveGizmoTo(gizmo.get().name(), (int) x, (int) y)) {
+        if (controller.properties().moveGizmoTo(gizmo.get().name(), (int) x, (int) y)) {
             focusBoard.run();
         } else {
             keepRefused(typed);
@@ -568,7 +569,7 @@ public final class PropertiesPanel extends JPanel {
 
     private void applyColour(String text) {
         controller.selectedGizmo().ifPresent(g -> {
-            if (controller.setColour(g.name(), text)) {
+            if (controller.properties().setColour(g.name(), text)) {
                 focusBoard.run();
             } else {
                 keepRefused(Map.of(colour, text));
@@ -628,14 +629,14 @@ public final class PropertiesPanel extends JPanel {
         }
         Board board = controller.board();
         Map<JTextField, String> typed = changed(constants, new double[] {board.gravity(), board.mu(), board.mu2()});
-        if (!controller.setConstants(v.get()[0], v.get()[1], v.get()[2])) {
+        if (!controller.properties().setConstants(v.get()[0], v.get()[1], v.get()[2])) {
             keepRefused(typed);
             return;
         }
         Map<JTextField, String> game = new LinkedHashMap<>();
         game.put(balls, balls.getText());
         game.put(extraBall, extraBall.getText());
-        if (!controller.setGame((int) v.get()[3], extra)) {
+        if (!controller.properties().setGame((int) v.get()[3], extra)) {
             keepRefused(game);
             return;
         }
@@ -657,7 +658,7 @@ public final class PropertiesPanel extends JPanel {
         for (JTextField f : new JTextField[] {nudgeSpeed, tiltNudges, tiltSeconds, ballSave}) {
             typed.put(f, f.getText());
         }
-        if (controller.setTable(speed, v.get()[0], v.get()[1], v.get()[2])) {
+        if (controller.properties().setTable(speed, v.get()[0], v.get()[1], v.get()[2])) {
             focusBoard.run();
         } else {
             keepRefused(typed);
@@ -671,7 +672,7 @@ public final class PropertiesPanel extends JPanel {
             return;
         }
         String typed = factor.getText();
-        if (controller.set(gizmo.get().name(), new Setting.Factor(v.get()[0]))) {
+        if (controller.properties().set(gizmo.get().name(), new Setting.Factor(v.get()[0]))) {
             focusBoard.run();
         } else {
             keepRefused(Map.of(factor, typed));
@@ -684,7 +685,7 @@ public final class PropertiesPanel extends JPanel {
             return;
         }
         String typed = pair.getText();
-        if (controller.set(gizmo.get().name(), Setting.Pair.with(typed.strip()))) {
+        if (controller.properties().set(gizmo.get().name(), Setting.Pair.with(typed.strip()))) {
             focusBoard.run();
         } else {
             keepRefused(Map.of(pair, typed));
@@ -698,7 +699,7 @@ public final class PropertiesPanel extends JPanel {
             return;
         }
         String typed = speed.getText();
-        if (controller.set(gizmo.get().name(), new Setting.Speed(v.get()[0]))) {
+        if (controller.properties().set(gizmo.get().name(), new Setting.Speed(v.get()[0]))) {
             focusBoard.run();
         } else {
             keepRefused(Map.of(speed, typed));
@@ -717,7 +718,7 @@ public final class PropertiesPanel extends JPanel {
             return;
         }
         String typed = points.getText();
-        if (controller.setPoints(gizmo.get().name(), (int) value)) {
+        if (controller.properties().setPoints(gizmo.get().name(), (int) value)) {
             focusBoard.run();
         } else {
             keepRefused(Map.of(points, typed));
@@ -746,7 +747,7 @@ public final class PropertiesPanel extends JPanel {
         BallView b = ball.get();
         Map<JTextField, String> typed = changed(fields,
                 new double[] {b.position().x(), b.position().y(), b.velocity().x(), b.velocity().y()});
-        if (controller.setBall(b.name(), v.get()[0], v.get()[1], v.get()[2], v.get()[3])) {
+        if (controller.properties().setBall(b.name(), v.get()[0], v.get()[1], v.get()[2], v.get()[3])) {
             focusBoard.run();
         } else {
             keepRefused(typed);
@@ -761,7 +762,7 @@ public final class PropertiesPanel extends JPanel {
             return;
         }
         Map<JTextField, String> typed = changed(fields, new double[] {now.vx(), now.vy()});
-        if (controller.set(spawner, new Setting.Launch(v.get()[0], v.get()[1]))) {
+        if (controller.properties().set(spawner, new Setting.Launch(v.get()[0], v.get()[1]))) {
             focusBoard.run();
         } else {
             keepRefused(typed);
