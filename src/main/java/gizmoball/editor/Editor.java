@@ -1,5 +1,6 @@
 package gizmoball.editor;
 
+import gizmoball.boardfile.Decimals;
 import gizmoball.boardfile.KeyCodes;
 import gizmoball.boardfile.OrderWords;
 import gizmoball.model.Board;

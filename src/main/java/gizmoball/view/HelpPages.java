@@ -121,6 +121,9 @@ final class HelpPages {
                 .append(" tooltip.</p><p><b>Right-click</b> on the board selects what is there and opens a")
                 .append(" context menu: Rotate, Delete, Cut, Copy, Paste, Duplicate, Connect from here, Properties.")
                 .append("</p><p><b>File &gt; Open recent</b> lists the last ten boards opened or saved.</p>")
+                .append("<p><b>Test &gt; Play-test</b> (<b>Ctrl+L</b>) plays the board 100 times with an autoplayer")
+                .append(" and 100 times launching only, in the background, then shows where the balls went, the")
+                .append(" mean scores, how long a ball lasts and the gizmos never hit.</p>")
                 .append("</body></html>");
         return html.toString();
     }

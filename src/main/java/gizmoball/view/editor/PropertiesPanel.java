@@ -83,6 +83,10 @@ public final class PropertiesPanel extends JPanel {
     private final NumberField mu2 = new NumberField("mu2");
     private final NumberField balls = new NumberField("game.balls");
     private final JTextField extraBall = new JTextField(7);
+    private final JTextField nudgeSpeed = new JTextField(7);
+    private final NumberField tiltNudges = new NumberField("game.tilt.nudges");
+    private final NumberField tiltSeconds = new NumberField("game.tilt.seconds");
+    private final NumberField ballSave = new NumberField("game.ballsave");
     private final NumberField points = new NumberField("gizmo.points");
     private final JCheckBox drain = new JCheckBox("Drain: its balls are lost");
     private final JCheckBox plunger = new JCheckBox("Plunger");
@@ -166,6 +170,14 @@ public final class PropertiesPanel extends JPanel {
         extraBall.setText(board.gameRules().extraBallAt().isPresent()
                 ? Long.toString(board.gameRules().extraBallAt().getAsLong()) : "");
         RefusedValue.unmark(extraBall);
+        GameRules rules = board.gameRules();
+        nudgeSpeed.setText(rules.nudge().map(n -> Decimals.format(n.speed())).orElse(""));
+        tiltNudges.show(rules.tilt().nudges());
+        tiltSeconds.show(rules.tilt().seconds());
+        ballSave.show(rules.ballSaveSeconds());
+        for (JTextField f : new JTextField[] {nudgeSpeed, tiltNudges, tiltSeconds, ballSave}) {
+            RefusedValue.unmark(f);
+        }
 
         shownSelection = controller.selected().orElse(null);
         shownGroup = controller.selection();
@@ -280,14 +292,29 @@ public final class PropertiesPanel extends JPanel {
         extraBall.setName("game.extra");
         extraBall.setToolTipText("The score that gives one extra ball; empty for none");
         row(p, 4, "Extra ball at", extraBall);
+        nudgeSpeed.setName("game.nudge");
+        nudgeSpeed.setToolTipText("L/s a nudge (arrow keys unless the file says) adds to every free ball; empty: none");
+        row(p, 5, "Nudge (L/s)", nudgeSpeed);
+        tiltNudges.setToolTipText("The nudge that tilts: that many within the seconds beside it");
+        tiltSeconds.setToolTipText("The seconds within which that many nudges tilt");
+        JPanel tilt = new JPanel(new BorderLayout(4, 0));
+        tiltNudges.setColumns(2);
+        tilt.add(tiltNudges, BorderLayout.WEST);
+        tilt.add(new JLabel("in"), BorderLayout.CENTER);
+        tiltSeconds.setColumns(3);
+        tilt.add(tiltSeconds, BorderLayout.EAST);
+        row(p, 6, "Tilt: nudges", tilt);
+        ballSave.setToolTipText("Seconds after a launch in which a drained ball is given back, once; 0: none");
+        row(p, 7, "Ball save (s)", ballSave);
         JButton apply = new JButton("Apply");
         apply.setName("board.apply");
         apply.addActionListener(e -> applyBoard());
-        for (JTextField f : new JTextField[]{gravity, mu, mu2, balls, extraBall}) {
+        for (JTextField f : new JTextField[]{gravity, mu, mu2, balls, extraBall, nudgeSpeed, tiltNudges, tiltSeconds,
+                ballSave}) {
             f.addActionListener(e -> applyBoard());
             restoreOnEscape(f);
         }
-        p.add(apply, constraints(1, 5));
+        p.add(apply, constraints(1, 8));
         return p;
     }
 
@@ -607,10 +634,32 @@ public final class PropertiesPanel extends JPanel {
         Map<JTextField, String> game = new LinkedHashMap<>();
         game.put(balls, balls.getText());
         game.put(extraBall, extraBall.getText());
-        if (controller.properties().setGame((int) v.get()[3], extra)) {
+        if (!controller.properties().setGame((int) v.get()[3], extra)) {
+            keepRefused(game);
+            return;
+        }
+        applyTable();
+    }
+
+    /** The nudge (empty: none), the tilt and the ball save, as one edit. */
+    private void applyTable() {
+        Optional<double[]> v = values(tiltNudges, tiltSeconds, ballSave);
+        String speedText = nudgeSpeed.getText().strip();
+        OptionalDouble speed = speedText.isEmpty() ? OptionalDouble.empty() : Decimals.parse(speedText);
+        if (v.isEmpty() || !speedText.isEmpty() && speed.isEmpty()) {
+            if (v.isPresent()) {
+                refuse(nudgeSpeed, "Nudge '" + speedText + "' is not a number of L/s");
+            }
+            return;
+        }
+        Map<JTextField, String> typed = new LinkedHashMap<>();
+        for (JTextField f : new JTextField[] {nudgeSpeed, tiltNudges, tiltSeconds, ballSave}) {
+            typed.put(f, f.getText());
+        }
+        if (controller.properties().setTable(speed, v.get()[0], v.get()[1], v.get()[2])) {
             focusBoard.run();
         } else {
-            keepRefused(game);
+            keepRefused(typed);
         }
     }
 
