@@ -16,7 +16,11 @@ import gizmoball.view.editor.PalettePanel;
 import gizmoball.view.editor.PropertiesPanel;
 import gizmoball.view.editor.SidePane;
 
+import gizmoball.controller.PlayTest;
+import javax.swing.JMenu;
 import javax.swing.JMenuBar;
+import javax.swing.JMenuItem;
+import javax.swing.KeyStroke;
 import javax.swing.JScrollPane;
 import java.awt.Cursor;
 import java.awt.Dimension;
@@ -25,12 +29,14 @@ import java.awt.Rectangle;
 import java.awt.Toolkit;
 import java.awt.event.ComponentAdapter;
 import java.awt.event.ComponentEvent;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
 import java.util.function.BooleanSupplier;
 
 /**
- * Adds build mode to a game window: palette (west), properties (east), the Edit menu, the overlay and the
+ * Adds build mode to a game window: palette (west), properties (east), the Edit and Test menus, the overlay and the
  * mouse and key handling on the board view. Everything acts only while the session is in BUILD mode.
  */
 public final class BuildModeInstaller {
@@ -39,7 +45,7 @@ public final class BuildModeInstaller {
 
     /** The installed parts, for tests and for anyone who wants to drive the editor directly. */
     public record BuildMode(Editor controller, PalettePanel palette, PropertiesPanel properties,
-                            EditMenu editMenu) { }
+                            EditMenu editMenu, JMenu testMenu) { }
 
     /** Pixels of board wanted beside the labelled palette and the properties before the palette turns compact. */
     private static final int MIN_BOARD = 480;
@@ -68,13 +74,17 @@ public final class BuildModeInstaller {
         openWideEnoughForBuildMode(window, west.getPreferredSize().width + east.getPreferredSize().width);
         // Below this width the labelled palette would leave the board less than MIN_BOARD pixels: icons only.
         int compactBelow = palette.getPreferredSize().width + properties.getPreferredSize().width + MIN_BOARD;
-        Runnable fitPalette = () -> palette.setCompact(window.getWidth() < compactBelow);
-        window.addComponentListener(new ComponentAdapter() {
+        // ... or the west side is too short for the labelled column: every tool stays in sight, none below a fold.
+        Runnable fitPalette = () -> palette.setCompact(window.getWidth() < compactBelow
+                || (west.getHeight() > 0 && west.getHeight() < palette.labelledHeight()));
+        ComponentAdapter refit = new ComponentAdapter() {
             @Override
             public void componentResized(ComponentEvent e) {
                 fitPalette.run();
             }
-        });
+        };
+        window.addComponentListener(refit);
+        west.addComponentListener(refit);
         fitPalette.run();
         // Measured once the window is whole and laid out: other features add rows above or below the board.
         window.addWindowListener(new WindowAdapter() {
@@ -88,6 +98,8 @@ public final class BuildModeInstaller {
         EditMenu editMenu = EditMenu.of(controller, window, building);
         JMenuBar menus = window.menus();
         menus.add(editMenu, Math.min(1, menus.getMenuCount()));
+        JMenu testMenu = testMenu(window, session);
+        menus.add(testMenu, Math.min(2, menus.getMenuCount()));
         menus.revalidate();
 
         panel.addOverlay(new BuildOverlay(controller, building));
@@ -98,10 +110,30 @@ public final class BuildModeInstaller {
         session.addModeListener(mode -> {
             controller.cancel();
             editMenu.update();
+            testMenu.setEnabled(building.getAsBoolean());
             cursor.run();
             panel.repaint();
         });
-        return new BuildMode(controller, palette, properties, editMenu);
+        return new BuildMode(controller, palette, properties, editMenu, testMenu);
+    }
+
+    /**
+     * Build mode's Test menu: Play-test (Ctrl+L) plays the design {@link PlayTest#GAMES} times with the lab's
+     * autoplayer and idle player in the background and shows what came of it. Enabled in build mode only.
+     */
+    private static JMenu testMenu(GameWindow window, GameSession session) {
+        JMenu menu = new JMenu("Test");
+        menu.setMnemonic(KeyEvent.VK_T);
+        JMenuItem playTest = new JMenuItem("Play-test\u2026");
+        playTest.setName("test.playtest");
+        playTest.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_L, InputEvent.CTRL_DOWN_MASK));
+        playTest.setToolTipText("Play the board " + PlayTest.GAMES + " times with an autoplayer and " + PlayTest.GAMES
+                + " with a player who only launches: scores, seconds per ball, gizmos never hit, a heat map");
+        playTest.addActionListener(e -> PlayTest.start(window, session.boardToSave(), session.boardName(),
+                PlayTest.settings()));
+        menu.add(playTest);
+        menu.setEnabled(session.mode() == Mode.BUILD);
+        return menu;
     }
 
     /**
@@ -118,8 +150,9 @@ public final class BuildModeInstaller {
 
     /**
      * The smallest window in which build mode is whole: the compact palette, the properties and the smallest board
-     * side by side (each side with room for its scroll bar), and the whole tool bar; as tall as that board with
-     * everything the window has above and below the board view (menus, tool bar, status line and whatever else).
+     * side by side (each side with room for its scroll bar), and the whole tool bar; as tall as that board, or the
+     * compact palette if taller (every tool in sight), with everything the window has above and below the board view
+     * (menus, tool bar, status line and whatever else).
      */
     private static Dimension minimumSize(GameWindow window, PalettePanel palette, JScrollPane west, JScrollPane east) {
         palette.setCompact(true);
@@ -129,7 +162,7 @@ public final class BuildModeInstaller {
         int width = Math.max(window.toolBar().getPreferredSize().width, sides + SMALLEST_BOARD)
                 + frame.left + frame.right;
         int aroundBoard = window.getHeight() - window.boardPanel().getHeight();
-        return new Dimension(width, aroundBoard + SMALLEST_BOARD);
+        return new Dimension(width, aroundBoard + Math.max(SMALLEST_BOARD, west.getPreferredSize().height));
     }
 
     /** Crosshair where a click places something, a hand where it acts on what is under it. */

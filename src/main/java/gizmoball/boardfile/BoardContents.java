@@ -3,13 +3,10 @@ package gizmoball.boardfile;
 import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.game.GameRules;
-import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
-import gizmoball.model.gizmo.PortalView;
 import gizmoball.model.gizmo.Rgb;
-import gizmoball.model.gizmo.SpawnerView;
-import gizmoball.model.gizmo.SpinnerView;
+import gizmoball.model.gizmo.Setting;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import java.util.ArrayList;
@@ -26,34 +23,9 @@ import java.util.Optional;
 public record BoardContents(List<GizmoState> gizmos, List<BallState> balls, List<Connection> connections,
                      List<KeyBinding> keyBindings, double gravity, double mu, double mu2, GameRules game) {
 
-    /**
-     * @param pair    the portal a portal is paired with; empty for every other gizmo
-     * @param setting what the gizmo's properties set beyond its place, size, turn and colour
-     */
+    /** @param setting what the gizmo's properties set beyond its place, size, turn and colour (exactly compared) */
     public record GizmoState(String name, GizmoKind kind, int x, int y, int width, int height, int rotation,
-                      Optional<Rgb> colour, Optional<String> pair, Setting setting) {
-    }
-
-    /**
-     * A kind's own numbers, compared exactly: a board whose accelerator, spawner or spinner alone was changed is
-     * another design (unsaved, and one step of the edit history).
-     */
-    public sealed interface Setting {
-        /** A kind with no numbers of its own. */
-        record None() implements Setting {
-        }
-
-        /** An accelerator's: how much it speeds a ball up. */
-        record Factor(double factor) implements Setting {
-        }
-
-        /** A spawner's: the velocity, in L/s, of the balls it makes. */
-        record Launch(double vx, double vy) implements Setting {
-        }
-
-        /** A spinner's: how fast and which way it turns, in turns a second. */
-        record Speed(double turnsPerSecond) implements Setting {
-        }
+                      Optional<Rgb> colour, Setting setting) {
     }
 
     /** Doubles compared exactly (records use Double.compare semantics), so a lost bit shows. */
@@ -107,20 +79,7 @@ public record BoardContents(List<GizmoState> gizmos, List<BallState> balls, List
 
     private static GizmoState state(Gizmo g) {
         return new GizmoState(g.name(), g.kind(), g.x(), g.y(), g.width(), g.height(), g.rotation(), g.colour(),
-                g instanceof PortalView portal ? portal.pair() : Optional.empty(), setting(g));
-    }
-
-    private static Setting setting(Gizmo g) {
-        if (g instanceof AcceleratorView accelerator) {
-            return new Setting.Factor(accelerator.factor());
-        }
-        if (g instanceof SpawnerView spawner) {
-            return new Setting.Launch(spawner.velocity().x(), spawner.velocity().y());
-        }
-        if (g instanceof SpinnerView spinner) {
-            return new Setting.Speed(spinner.turnsPerSecond());
-        }
-        return new Setting.None();
+                g.setting());
     }
 
     private static BallState state(BallView b) {

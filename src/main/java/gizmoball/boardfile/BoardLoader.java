@@ -29,7 +29,8 @@ final class BoardLoader {
     /** The commands that name gizmos or balls instead of adding them. */
     private static final Set<CommandWord> REFERENCING = Set.of(CommandWord.ROTATE, CommandWord.DELETE,
             CommandWord.MOVE, CommandWord.CONNECT, CommandWord.KEY_CONNECT, CommandWord.COLOUR,
-            CommandWord.FLIPPER_STATE, CommandWord.DRAIN, CommandWord.POINTS, CommandWord.CELL_OPEN, CommandWord.PAIR);
+            CommandWord.FLIPPER_STATE, CommandWord.DRAIN, CommandWord.POINTS, CommandWord.CELL_OPEN, CommandWord.PAIR,
+            CommandWord.PLUNGER);
 
     private BoardLoader() {
     }

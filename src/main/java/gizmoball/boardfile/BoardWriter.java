@@ -3,16 +3,13 @@ package gizmoball.boardfile;
 import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.game.GameRules;
+import gizmoball.model.game.Tilt;
 import gizmoball.model.gizmo.AbsorberView;
-import gizmoball.model.gizmo.Accelerator;
-import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.DropTargetView;
 import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.GateView;
 import gizmoball.model.gizmo.Gizmo;
-import gizmoball.model.gizmo.PortalView;
-import gizmoball.model.gizmo.SpawnerView;
-import gizmoball.model.gizmo.Spinner;
+import gizmoball.model.gizmo.Setting;
 import gizmoball.model.gizmo.SpinnerView;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
@@ -20,12 +17,11 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.stream.Collectors;
-import physics.Vect;
 
 /**
  * The canonical form of a board: one command per line, gizmos (in the board's order), then rotations, the
- * colours of gizmos that have their own, their own values (factors, spawn velocities, portals' pairs), the play state of flippers play has moved, balls, connections, key bindings,
- * gravity and friction, then the game: balls per game, the extra-ball score, the drains and the gizmos' own points
+ * colours of gizmos that have their own, their own values (factors, plungers, spawn velocities, portals' pairs), the play state of flippers play has moved, balls, connections, key bindings,
+ * gravity and friction, then the game: balls per game, the extra-ball score, the nudge, tilt and ball save, the drains and the gizmos' own points
  * (each only where the board has it, so a board without them is written as the standard format has it). Reading it
  * back gives an equal board.
  */
@@ -36,6 +32,26 @@ final class BoardWriter {
 
     static String toText(Board board) {
         return commands(board).stream().map(Command::toLine).collect(Collectors.joining("\n", "", "\n"));
+    }
+
+    /** The line of a gizmo's setting: the one place where each kind's setting meets its command word. */
+    private static Command settingLine(String name, Setting setting) {
+        if (setting instanceof Setting.Factor f) {
+            return new Command.Factor(name, f.factor());
+        }
+        if (setting instanceof Setting.Pull p && p.plunger().isPresent()) {
+            return new Command.MakePlunger(name, p.plunger().get());
+        }
+        if (setting instanceof Setting.Speed s) {
+            return new Command.SpinnerSpeed(name, s.turnsPerSecond());
+        }
+        if (setting instanceof Setting.Launch l) {
+            return new Command.SpawnVelocity(name, l.vx(), l.vy());
+        }
+        if (setting instanceof Setting.Pair p && p.portal().isPresent()) {
+            return new Command.Pair(name, p.portal().get());
+        }
+        throw new IllegalArgumentException("no board-file line says " + setting);
     }
 
     static List<Command> commands(Board board) {
@@ -53,21 +69,18 @@ final class BoardWriter {
             gizmo.colour().ifPresent(colour -> commands.add(new Command.Colour(gizmo.name(), colour)));
         }
         for (Gizmo gizmo : board.gizmos()) {
-            if (gizmo instanceof AcceleratorView accelerator && accelerator.factor() != Accelerator.DEFAULT_FACTOR) {
-                commands.add(new Command.Factor(gizmo.name(), accelerator.factor()));
-            }
-            if (gizmo instanceof SpinnerView spinner && spinner.turnsPerSecond() != Spinner.DEFAULT_TURNS_PER_SECOND) {
-                commands.add(new Command.SpinnerSpeed(gizmo.name(), spinner.turnsPerSecond()));
-            }
-            if (gizmo instanceof SpawnerView spawner && !spawner.velocity().equals(Vect.ZERO)) {
-                commands.add(new Command.SpawnVelocity(gizmo.name(), spawner.velocity().x(), spawner.velocity().y()));
+            Setting setting = gizmo.setting();
+            if (!setting.isDefault() && setting.names().isEmpty()) {
+                commands.add(settingLine(gizmo.name(), setting));
             }
         }
-        List<String> paired = new ArrayList<>();
+        // A setting that names other gizmos (a portal's pair) after every gizmo's own, once for the gizmos it joins.
+        List<String> written = new ArrayList<>();
         for (Gizmo gizmo : board.gizmos()) {
-            if (gizmo instanceof PortalView portal && portal.pair().isPresent() && !paired.contains(gizmo.name())) {
-                commands.add(new Command.Pair(gizmo.name(), portal.pair().get()));   // once, from the first of the two
-                paired.add(portal.pair().get());
+            Setting setting = gizmo.setting();
+            if (!setting.isDefault() && !setting.names().isEmpty() && !written.contains(gizmo.name())) {
+                commands.add(settingLine(gizmo.name(), setting));
+                written.addAll(setting.names());
             }
         }
         for (Gizmo gizmo : board.gizmos()) {
@@ -112,6 +125,13 @@ final class BoardWriter {
             commands.add(new Command.BallsPerGame(rules.ballsPerGame()));
         }
         rules.extraBallAt().ifPresent(score -> commands.add(new Command.ExtraBall(score)));
+        rules.nudge().ifPresent(nudge -> commands.add(new Command.NudgeLine(nudge)));
+        if (!rules.tilt().equals(Tilt.DEFAULT)) {
+            commands.add(new Command.TiltLine(rules.tilt()));
+        }
+        if (rules.ballSaveSeconds() > 0) {
+            commands.add(new Command.BallSave(rules.ballSaveSeconds()));
+        }
         board.gizmos().stream().filter(g -> rules.isDrain(g.name()))
                 .forEach(g -> commands.add(new Command.Drain(g.name())));
         board.gizmos().stream().filter(g -> rules.ownPoints().containsKey(g.name()))

@@ -5,9 +5,13 @@ import static gizmoball.boardfile.Decimals.format;
 import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.game.Nudge;
+import gizmoball.model.game.Tilt;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Order;
+import gizmoball.model.gizmo.Plunger;
 import gizmoball.model.gizmo.Rgb;
+import gizmoball.model.gizmo.Setting;
 import gizmoball.model.loop.TriggerSource;
 import java.util.List;
 import java.util.Locale;
@@ -276,7 +280,7 @@ public sealed interface Command {
     /** {@code #@Factor <name> <factor>}: how many times faster the accelerator sends a ball away. */
     record Factor(String name, double factor) implements AboutOne {
         public void applyTo(Board board) {
-            board.setFactor(name, factor);
+            board.set(name, new Setting.Factor(factor));
         }
 
         public String toLine() {
@@ -288,10 +292,26 @@ public sealed interface Command {
         }
     }
 
+    /** {@code #@Plunger <absorber> <full-speed> <pull-seconds>}: the absorber is a plunger. */
+    record MakePlunger(String name, Plunger plunger) implements AboutOne {
+        public void applyTo(Board board) {
+            board.set(name, new Setting.Pull(Optional.of(plunger)));
+        }
+
+        public String toLine() {
+            return CommandWord.PLUNGER.written() + " " + name + " " + format(plunger.fullSpeed()) + " "
+                    + format(plunger.pullSeconds());
+        }
+
+        public String fact() {
+            return "plunger";
+        }
+    }
+
     /** {@code #@Pair <portal> <portal>}: a ball entering either portal's mouth leaves by the other's. */
     record Pair(String first, String second) implements Command {
         public void applyTo(Board board) {
-            board.pair(first, second);
+            board.set(first, new Setting.Pair(Optional.of(second)));
         }
 
         public String toLine() {
@@ -306,7 +326,7 @@ public sealed interface Command {
     /** {@code #@SpinnerSpeed <name> <turns>}: how many turns a second the spinner makes, negative anticlockwise. */
     record SpinnerSpeed(String name, double turnsPerSecond) implements AboutOne {
         public void applyTo(Board board) {
-            board.setSpinnerSpeed(name, turnsPerSecond);
+            board.set(name, new Setting.Speed(turnsPerSecond));
         }
 
         public String toLine() {
@@ -337,7 +357,7 @@ public sealed interface Command {
     /** {@code #@SpawnVelocity <name> <vx> <vy>}: the velocity of the balls the spawner adds. */
     record SpawnVelocity(String name, double vx, double vy) implements AboutOne {
         public void applyTo(Board board) {
-            board.setSpawnVelocity(name, vx, vy);
+            board.set(name, new Setting.Launch(vx, vy));
         }
 
         public String toLine() {
@@ -456,6 +476,52 @@ public sealed interface Command {
 
         public List<String> references() {
             return List.of(absorber);
+        }
+    }
+
+    /** {@code #@Nudge <speed> <left-key> <right-key> <up-key>}: the board can be nudged with those keys. */
+    record NudgeLine(Nudge nudge) implements Command {
+        public void applyTo(Board board) {
+            board.setNudge(Optional.of(nudge));
+        }
+
+        public String toLine() {
+            return CommandWord.NUDGE.written() + " " + format(nudge.speed()) + " " + nudge.leftKey() + " "
+                    + nudge.rightKey() + " " + nudge.upKey();
+        }
+
+        public Subject subject() {
+            return new Subject("nudge", "");
+        }
+    }
+
+    /** {@code #@Tilt <nudges> <seconds>}: that many nudges within that time tilt the game. */
+    record TiltLine(Tilt tilt) implements Command {
+        public void applyTo(Board board) {
+            board.setTilt(tilt);
+        }
+
+        public String toLine() {
+            return CommandWord.TILT.written() + " " + tilt.nudges() + " " + format(tilt.seconds());
+        }
+
+        public Subject subject() {
+            return new Subject("tilt", "");
+        }
+    }
+
+    /** {@code #@BallSave <seconds>}: a ball drained that soon after its launch is given back, once. */
+    record BallSave(double seconds) implements Command {
+        public void applyTo(Board board) {
+            board.setBallSave(seconds);
+        }
+
+        public String toLine() {
+            return CommandWord.BALL_SAVE.written() + " " + format(seconds);
+        }
+
+        public Subject subject() {
+            return new Subject("ball save", "");
         }
     }
 

@@ -2,8 +2,11 @@ package gizmoball.boardfile;
 
 import gizmoball.model.Board;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.game.Nudge;
+import gizmoball.model.game.Tilt;
 import gizmoball.model.gizmo.Accelerator;
 import gizmoball.model.gizmo.Order;
+import gizmoball.model.gizmo.Plunger;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.gizmo.Spinner;
 import gizmoball.model.loop.TriggerSource;
@@ -186,6 +189,20 @@ final class CommandParser {
             notes.add("no velocity given: the ball starts at rest");
             args = List.of(args.get(0), args.get(1), args.get(2), "0", "0");
         }
+        if (word == CommandWord.PLUNGER && (args.size() == 1 || args.size() == 2)) {
+            List<String> defaults = List.of(Decimals.format(Plunger.DEFAULT_FULL_SPEED),
+                    Decimals.format(Plunger.DEFAULT_PULL_SECONDS));
+            List<String> padded = new ArrayList<>(args);
+            padded.addAll(defaults.subList(args.size() - 1, 2));
+            args = padded;
+        }
+        if (word == CommandWord.NUDGE && (args.size() == 0 || args.size() == 1)) {
+            List<String> padded = new ArrayList<>(args.isEmpty()
+                    ? List.of(Decimals.format(Nudge.DEFAULT.speed())) : args);
+            padded.addAll(List.of(Integer.toString(Nudge.DEFAULT.leftKey()), Integer.toString(Nudge.DEFAULT.rightKey()),
+                    Integer.toString(Nudge.DEFAULT.upKey())));
+            args = padded;
+        }
         if (word == CommandWord.KEY_CONNECT && args.size() == 5 && args.get(3).equals(args.get(4))) {
             notes.add("target " + args.get(4) + " written twice: read once");
             args = args.subList(0, 4);
@@ -211,6 +228,8 @@ final class CommandParser {
             case FLIPPER_STATE -> new Command.FlipperState(args.get(0), number("angle", args.get(1)),
                     direction(args.get(2)));
             case FACTOR -> new Command.Factor(args.get(0), number("factor", args.get(1)));
+            case PLUNGER -> new Command.MakePlunger(args.get(0), new Plunger(number("full-pull speed", args.get(1)),
+                    number("pull seconds", args.get(2))));
             case PAIR -> new Command.Pair(args.get(0), args.get(1));
             case SPINNER_SPEED -> new Command.SpinnerSpeed(args.get(0), number("turns per second", args.get(1)));
             case SPINNER_STATE -> new Command.SpinnerState(args.get(0), number("angle", args.get(1)),
@@ -223,6 +242,9 @@ final class CommandParser {
             case EXTRA_BALL -> new Command.ExtraBall(score(args.get(0)));
             case DRAIN -> new Command.Drain(args.get(0));
             case POINTS -> new Command.Points(args.get(0), wholeNumber("points", args.get(1)));
+            case NUDGE -> new Command.NudgeLine(nudge(args, notes));
+            case TILT -> new Command.TiltLine(tilt(args));
+            case BALL_SAVE -> new Command.BallSave(number("ball save seconds", args.get(0)));
             case COLOUR -> throw new IllegalStateException("colours are read by colour(), in any spelling");
         };
     }
@@ -434,6 +456,23 @@ final class CommandParser {
     }
 
     /** A score: a whole number, up to far more than any game reaches. */
+    private static Nudge nudge(List<String> args, List<String> notes) throws Refusal {
+        try {
+            return new Nudge(number("nudge speed", args.get(0)), keyCode(args.get(1), notes),
+                    keyCode(args.get(2), notes), keyCode(args.get(3), notes));
+        } catch (IllegalArgumentException refused) {
+            throw new Refusal(refused.getMessage());
+        }
+    }
+
+    private static Tilt tilt(List<String> args) throws Refusal {
+        try {
+            return new Tilt(wholeNumber("nudges", args.get(0)), number("seconds", args.get(1)));
+        } catch (IllegalArgumentException refused) {
+            throw new Refusal(refused.getMessage());
+        }
+    }
+
     private static long score(String word) throws Refusal {
         double value = number("score", word);
         if (value != Math.rint(value) || Math.abs(value) > 1e15) {

@@ -50,6 +50,8 @@ enum CommandWord {
     COLOUR("Colour", "<name> <red> <green> <blue>"),
     /** An accelerator's factor, where it is not the default. */
     FACTOR("Factor", "<name> <factor>", true),
+    /** An absorber that is a plunger: its full-pull speed and pull time (both optional when read). */
+    PLUNGER("Plunger", "<absorber> <full-speed> <pull-seconds>", true),
     /** Play state: a flipper's angle and direction, written by a save during play. */
     FLIPPER_STATE("FlipperAngle", "<name> <degrees> up|down", true),
     /** Play state: a gate play has opened or a drop target it has knocked down (its cell is nothing), written by a save during play. */
@@ -65,7 +67,13 @@ enum CommandWord {
     /** The game: an absorber whose captured balls are lost. */
     DRAIN("Drain", "<name>", true),
     /** The game: what a hit on the gizmo scores. */
-    POINTS("Points", "<name> <points>", true);
+    POINTS("Points", "<name> <points>", true),
+    /** The game: the board can be nudged (its speed and keys optional when read). */
+    NUDGE("Nudge", "<speed> <left-key> <right-key> <up-key>", true),
+    /** The game: how many nudges within how many seconds tilt it. */
+    TILT("Tilt", "<nudges> <seconds>", true),
+    /** The game: the seconds after a launch in which a drained ball is given back. */
+    BALL_SAVE("BallSave", "<seconds>", true);
 
     /** What comes before the word of each of our commands: no space, so that {@code #@ text} stays a comment. */
     static final String OURS = "#@";

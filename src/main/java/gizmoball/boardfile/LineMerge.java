@@ -20,7 +20,8 @@ import java.util.Set;
  *   <li>A subject that changed is written canonically where its first line was, and its other lines go; so do
  *       the history lines of a thing that changed (its new line says where it is now).</li>
  *   <li>What the text had no line for is added after the last line of its own sort (a new gizmo after the last
- *       gizmo line), or, when there is none, where the canonical order puts it among the lines of other sorts.</li>
+ *       gizmo line, a {@code #@KeyConnect} after the last key binding), or, when there is none, where the canonical
+ *       order puts it among the lines of other sorts; never before the line defining a thing it names.</li>
  *   <li>The lines the load left out go.</li>
  * </ul>
  * The result is loaded again before it is offered. Its connections and key bindings may come in another order (a
@@ -120,9 +121,20 @@ final class LineMerge {
 
     /**
      * After the last line of the same sort; else after the last line of a sort written before it, else before the
-     * first of a sort written after it; else at the end.
+     * first of a sort written after it; else at the end. Never before the line defining a thing it names, which a
+     * load would take as a line written too early (a binding of a gizmo defined further down).
      */
     private int placeFor(Command command) {
+        int afterDefinitions = 0;
+        for (int i = 0; i < entries.size(); i++) {
+            if (entries.get(i).command().flatMap(Command::defines).filter(command.references()::contains).isPresent()) {
+                afterDefinitions = i + 1;
+            }
+        }
+        return Math.max(afterDefinitions, placeBySort(command));
+    }
+
+    private int placeBySort(Command command) {
         int rank = sortOrder.get(sort(command));
         int lastSame = -1;
         int lastEarlier = -1;
@@ -159,8 +171,14 @@ final class LineMerge {
         return !Objects.equals(before.get(subject), now);
     }
 
-    /** Gizmos and absorbers are one sort: an absorber added goes after the last gizmo line, whatever its kind. */
+    /**
+     * Gizmos and absorbers are one sort: an absorber added goes after the last gizmo line, whatever its kind. A line
+     * marked {@code #@} is of its command's sort (a {@code #@KeyConnect} is a key binding), as the loader reads it.
+     */
     private static Class<?> sort(Command command) {
+        if (command instanceof Command.Marked marked) {
+            return sort(marked.command());
+        }
         return command instanceof Command.AddAbsorber ? Command.AddGizmo.class : command.getClass();
     }
 

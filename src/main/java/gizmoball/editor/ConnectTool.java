@@ -53,7 +53,7 @@ final class ConnectTool implements ToolHandler {
             editor.say("Connect " + from.source() + " \u2192 " + name + ": choose what " + name + " does when "
                     + from.source() + " is hit, and after how long");
         } else {
-            editor.disconnect(from.source(), name);
+            editor.properties().disconnect(from.source(), name);
         }
     }
 }

@@ -7,15 +7,9 @@ import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
-import gizmoball.model.game.GameRules;
-import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Order;
-import gizmoball.model.gizmo.PortalView;
-import gizmoball.model.gizmo.Rgb;
-import gizmoball.model.gizmo.SpawnerView;
-import gizmoball.model.gizmo.SpinnerView;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.TriggerSource;
 import java.awt.event.KeyEvent;
@@ -23,12 +17,9 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.EnumMap;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
-import java.util.OptionalLong;
 import java.util.function.Consumer;
-import java.util.regex.Pattern;
 import physics.Vect;
 
 /**
@@ -39,8 +30,9 @@ import physics.Vect;
  * and every edit can be undone. A refusal never escapes as an exception: its message goes to the status line.
  * <p>
  * Longer than 400 lines because it is the one facade of build mode: the state the views read, the commands of
- * the menus and the properties panel, and the services the handlers share (editing inside the history,
- * previews, picking). What each tool does is in its handler, not here.
+ * the menus, and the services the handlers share (editing inside the history, previews, picking). What each tool
+ * does is in its handler, what the properties panel changes in {@link PropertyEdits}, copy and paste in
+ * {@link ClipboardEdits}.
  */
 public final class Editor {
     /** Ball centres snap to quarter cells: positions stay readable in saved files and easy to hit again. */
@@ -51,7 +43,6 @@ public final class Editor {
     static final double WALL_BAND = 0.25;
     /** Dragging 1 L while placing a ball gives it 10 L/s: a board-wide drag is about the launch speed. */
     public static final double VELOCITY_PER_DRAG = 10;
-    private static final Pattern HEX_COLOUR = Pattern.compile("[0-9a-fA-F]{6}");
     /** Names listed in a message before the rest are counted ("S1, S2, S3 and 5 more"). */
     private static final int LISTED = 4;
     /** A press that moves less than this is a click, not a drag. */
@@ -60,6 +51,8 @@ public final class Editor {
     private final Board board;
     private final EditHistory history;
     private final NameGenerator names;
+    private final PropertyEdits properties = new PropertyEdits(this);
+    private final ClipboardEdits clipboard = new ClipboardEdits(this);
     private final Map<Tool, ToolHandler> handlers = new EnumMap<>(Tool.class);
     private final List<Runnable> stateListeners = new ArrayList<>();
     private final List<Runnable> editListeners = new ArrayList<>();
@@ -94,6 +87,16 @@ public final class Editor {
         return board;
     }
 
+    /** What the properties panel changes: constants, game, a gizmo's or a ball's values, names, links. */
+    public PropertyEdits properties() {
+        return properties;
+    }
+
+    /** Copy, cut, paste and duplicate. */
+    public ClipboardEdits clipboard() {
+        return clipboard;
+    }
+
     public EditHistory history() {
         return history;
     }
@@ -112,7 +115,7 @@ public final class Editor {
     }
 
     /** Says why, and remembers it as the last refusal; false, for the caller to return. */
-    private boolean refuse(String reason) {
+    boolean refuse(String reason) {
         lastRefusal = reason;
         say(reason);
         return false;
@@ -262,9 +265,11 @@ public final class Editor {
     /** Shift+click: adds the gizmo or ball to the selection, or takes it out if it is in it. */
     public void toggleSelected(String name) {
         selection.removeIf(Editor::isWalls);
-        if (!selection.remove(name)) {
+        boolean added = !selection.remove(name);
+        if (added) {
             selection.add(name);
         }
+        say((added ? "Added " + name : "Took out " + name) + ": " + selection.size() + " selected");
         stateChanged();
     }
 
@@ -337,168 +342,6 @@ public final class Editor {
             return refuse("Circles and absorbers look the same turned: none of the selection can be rotated");
         }
         return edit("Rotated " + listed(turning), b -> turning.forEach(b::rotate));
-    }
-
-    /** Sets gravity and friction together (one undo step); unchanged values are no edit. */
-    public boolean setConstants(double gravity, double mu, double mu2) {
-        if (gravity == board.gravity() && mu == board.mu() && mu2 == board.mu2()) {
-            return true;
-        }
-        return edit("Gravity " + gravity + " L/s\u00b2, friction mu " + mu + "/s, mu2 " + mu2 + "/L", b -> {
-            b.setGravity(gravity);
-            b.setFriction(mu, mu2);
-        });
-    }
-
-    /**
-     * The board's game: balls per game and the extra-ball score (empty for none), one undo step; unchanged values are
-     * no edit.
-     */
-    public boolean setGame(int ballsPerGame, OptionalLong extraBallAt) {
-        GameRules rules = board.gameRules();
-        if (rules.ballsPerGame() == ballsPerGame && rules.extraBallAt().equals(extraBallAt)) {
-            return true;
-        }
-        return edit(ballsPerGame + " balls a game" + (extraBallAt.isPresent() ? ", an extra ball at "
-                + extraBallAt.getAsLong() : ", no extra ball"), b -> {
-                    b.setBallsPerGame(ballsPerGame);
-                    b.setExtraBallAt(extraBallAt);
-                });
-    }
-
-    /** What a real hit on the gizmo scores (one undo step; the same value again is no edit). */
-    public boolean setPoints(String gizmo, int points) {
-        Optional<Gizmo> target = board.gizmo(gizmo);
-        if (target.isEmpty()) {
-            say("No gizmo named " + gizmo);
-            return false;
-        }
-        if (board.gameRules().pointsOf(gizmo, target.get().kind()) == points) {
-            return true;
-        }
-        return edit(gizmo + " scores " + points, b -> b.setPoints(gizmo, points));
-    }
-
-    /** How many times faster the accelerator sends a ball away (one undo step; the same value again is no edit). */
-    public boolean setFactor(String accelerator, double factor) {
-        if (board.gizmo(accelerator).filter(g -> g instanceof AcceleratorView a && a.factor() == factor).isPresent()) {
-            return true;
-        }
-        return edit(accelerator + " speeds balls up " + Decimals.format(factor) + " times",
-                b -> b.setFactor(accelerator, factor));
-    }
-
-    /**
-     * The spinner's speed and way in turns per second, negative anticlockwise (one undo step; the same value again is
-     * no edit).
-     */
-    public boolean setSpinnerSpeed(String spinner, double turnsPerSecond) {
-        if (board.gizmo(spinner).filter(g -> g instanceof SpinnerView s && s.turnsPerSecond() == turnsPerSecond)
-                .isPresent()) {
-            return true;
-        }
-        return edit(spinner + " turns " + Decimals.format(Math.abs(turnsPerSecond)) + " times a second "
-                        + (turnsPerSecond > 0 ? "clockwise" : "anticlockwise"),
-                b -> b.setSpinnerSpeed(spinner, turnsPerSecond));
-    }
-
-    /** The velocity of the balls the spawner adds (one undo step; the same value again is no edit). */
-    public boolean setSpawnVelocity(String spawner, double vx, double vy) {
-        if (board.gizmo(spawner).filter(g -> g instanceof SpawnerView s && s.velocity().equals(new Vect(vx, vy)))
-                .isPresent()) {
-            return true;
-        }
-        return edit(spawner + " spawns balls at (" + Decimals.format(vx) + ", " + Decimals.format(vy) + ") L/s",
-                b -> b.setSpawnVelocity(spawner, vx, vy));
-    }
-
-    /**
-     * Pairs the portal with the portal named {@code other}, or with an empty name leaves it without a pair (one undo
-     * step; the same pair again is no edit).
-     */
-    public boolean setPair(String portal, String other) {
-        Optional<String> now = board.gizmo(portal).filter(g -> g instanceof PortalView).flatMap(g -> ((PortalView) g).pair());
-        if (now.orElse("").equals(other)) {
-            return true;
-        }
-        return other.isEmpty() ? edit(portal + " has no pair: a wall", b -> b.unpair(portal))
-                : edit(portal + " and " + other + " are a pair of portals", b -> b.pair(portal, other));
-    }
-
-    /** Makes an absorber a drain of the game or an ordinary absorber (one undo step). */
-    public boolean setDrain(String absorber, boolean drain) {
-        if (board.gameRules().isDrain(absorber) == drain) {
-            return true;
-        }
-        return edit(absorber + (drain ? " is a drain: a ball it captures is lost" : " is no drain"),
-                b -> b.setDrain(absorber, drain));
-    }
-
-    /** Sets a ball's centre and velocity (one undo step); the ball keeps its place in the board's order. */
-    public boolean setBall(String name, double x, double y, double vx, double vy) {
-        Optional<BallView> ball = board.ball(name);
-        if (ball.isEmpty()) {
-            say("No ball named " + name);
-            return false;
-        }
-        BallView b0 = ball.get();
-        boolean samePlace = b0.position().x() == x && b0.position().y() == y;
-        boolean sameVelocity = b0.velocity().x() == vx && b0.velocity().y() == vy;
-        if (samePlace && sameVelocity) {
-            return true;
-        }
-        return edit("Ball " + name + " updated", b -> {
-            if (!samePlace) {
-                b.moveBall(name, x, y);
-            }
-            if (!sameVelocity) {
-                b.setBallVelocity(name, vx, vy);
-            }
-        });
-    }
-
-    /**
-     * Gives a gizmo its own colour from text: {@code #rrggbb} (the # optional), or empty for its kind's colour.
-     * One undo step; the same colour again is no edit.
-     */
-    public boolean setColour(String gizmo, String text) {
-        Optional<Gizmo> target = board.gizmo(gizmo);
-        if (target.isEmpty()) {
-            say("No gizmo named " + gizmo);
-            return false;
-        }
-        String hex = text.strip();
-        hex = hex.startsWith("#") ? hex.substring(1) : hex;
-        Optional<Rgb> colour;
-        if (hex.isEmpty()) {
-            colour = Optional.empty();
-        } else if (HEX_COLOUR.matcher(hex).matches()) {
-            colour = Optional.of(Rgb.of(Integer.parseInt(hex, 16)));
-        } else {
-            return refuse("Colour '" + text.strip() + "' is not #rrggbb (such as #99b3ff); leave it empty for the "
-                    + "colour of the kind");
-        }
-        if (colour.equals(target.get().colour())) {
-            return true;
-        }
-        return edit(colour.map(c -> gizmo + " coloured " + hex(c)).orElse(gizmo + " back to the colour of its kind"),
-                b -> b.setColour(gizmo, colour));
-    }
-
-    /** {@code #rrggbb}, as the properties panel shows a colour. */
-    public static String hex(Rgb colour) {
-        return String.format(Locale.ROOT, "#%06x", colour.packed());
-    }
-
-    /** Removes one connection (from the properties panel's list). */
-    public boolean disconnect(TriggerSource source, String target) {
-        return edit("Disconnected " + source + " \u2192 " + target, b -> b.disconnect(source, target));
-    }
-
-    /** Removes one key binding (from the properties panel's list). */
-    public boolean unbind(KeyBinding binding) {
-        return edit("Removed " + KeyCodes.describe(binding),
-                b -> b.unbindKey(binding.keyCode(), binding.edge(), binding.gizmo()));
     }
 
     /**
@@ -709,96 +552,11 @@ public final class Editor {
         stateChanged();
     }
 
-    /** Moves a gizmo to the cell typed for it (one undo step); the same cell is no edit. */
-    public boolean moveGizmoTo(String gizmo, int x, int y) {
-        Optional<Gizmo> g = board.gizmo(gizmo);
-        if (g.isEmpty()) {
-            return refuse("No gizmo named " + gizmo);
-        }
-        if (g.get().x() == x && g.get().y() == y) {
-            return true;
-        }
-        return edit("Moved " + gizmo + " to (" + x + "," + y + ")", b -> b.moveGizmo(gizmo, x, y));
-    }
-
-    /** Renames a gizmo or ball; its connections, key bindings, colour and points follow (one undo step). */
-    public boolean rename(String name, String newName) {
-        String typed = newName.strip();
-        if (typed.equals(name)) {
-            return true;
-        }
-        boolean done = edit("Renamed " + name + " to " + typed, b -> Transfer.rename(b, name, typed));
-        if (done) {
-            select(typed);
-        }
-        return done;
-    }
-
-    /**
-     * The board-file text of the selection (its lines, the connections among them, their key bindings), for the
-     * clipboard; empty if nothing is selected.
-     */
-    public Optional<String> copySelected() {
-        List<String> names = selection();
-        if (names.isEmpty()) {
-            say("Select a gizmo or ball to copy it");
-            return Optional.empty();
-        }
-        say("Copied " + listed(names));
-        return Optional.of(Transfer.copy(board, names));
-    }
-
-    /** Copies the selection and deletes it (one undo step); the text for the clipboard, empty if nothing. */
-    public Optional<String> cutSelected() {
-        Optional<String> text = copySelected();
-        if (text.isPresent() && !deleteAll("Cut ", selection())) {
-            return Optional.empty();
-        }
-        return text;
-    }
-
-    /**
-     * Pastes copied board-file text: its gizmos and balls under fresh names, with the connections and key bindings
-     * among them, where they were if that is free, else at the nearest place where all fit (one undo step). The
-     * first of them is selected.
-     */
-    public boolean paste(String text) {
-        return pasteOn(text, false, "Pasted ");
-    }
-
-    /** A copy of the selection beside it, under fresh names (one undo step), selected. */
-    public boolean duplicateSelected() {
-        List<String> names = selection();
-        if (names.isEmpty()) {
-            return refuse("Select a gizmo or ball to duplicate it");
-        }
-        return pasteOn(Transfer.copy(board, names), true, "Duplicated " + listed(names) + " as ");
-    }
-
-    private boolean pasteOn(String text, boolean elsewhere, String what) {
-        Optional<Board> part = Transfer.read(text);
-        if (part.isEmpty()) {
-            return refuse("Nothing to paste: the clipboard holds no board lines (such as Square S1 3 4)");
-        }
-        Optional<int[]> offset = Transfer.room(board, part.get(), elsewhere);
-        if (offset.isEmpty()) {
-            return refuse("No room on the board for what is pasted");
-        }
-        int dx = offset.get()[0];
-        int dy = offset.get()[1];
-        List<String> names = Transfer.place(board.copy(), part.get(), dx, dy);
-        boolean done = edit(what + listed(names), b -> Transfer.place(b, part.get(), dx, dy));
-        if (done) {
-            selectAll(names, false);
-        }
-        return done;
-    }
-
     /**
      * Deletes the named gizmos and balls as one undo step: the balls first, since an absorber takes the balls it
      * holds with it.
      */
-    private boolean deleteAll(String verb, List<String> names) {
+    boolean deleteAll(String verb, List<String> names) {
         List<String> ordered = new ArrayList<>(names);
         ordered.sort(Comparator.comparing((String n) -> board.ball(n).isEmpty()));
         boolean done = edit(verb + listed(names), b -> ordered.forEach(b::delete));

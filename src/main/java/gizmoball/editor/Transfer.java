@@ -5,11 +5,7 @@ import gizmoball.boardfile.LoadResult;
 import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyBinding;
-import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.Gizmo;
-import gizmoball.model.gizmo.PortalView;
-import gizmoball.model.gizmo.SpawnerView;
-import gizmoball.model.gizmo.SpinnerView;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
@@ -131,7 +127,7 @@ final class Transfer {
         relink(board, before, name, renamed);
     }
 
-    /** A gizmo like {@code g} of {@code from}, named {@code name}, moved by (dx, dy): kind, turns, colour, factor, speed, rules. */
+    /** A gizmo like {@code g} of {@code from}, named {@code name}, moved by (dx, dy): kind, turns, colour, setting, rules. */
     private static void addGizmo(Board to, Board from, Gizmo g, String name, int dx, int dy) {
         if (g.kind() == GizmoKind.ABSORBER) {
             to.addAbsorber(name, g.x() + dx, g.y() + dy, g.x() + dx + g.width(), g.y() + dy + g.height());
@@ -142,14 +138,8 @@ final class Transfer {
             to.rotate(name);
         }
         to.setColour(name, g.colour());
-        if (g instanceof AcceleratorView accelerator) {
-            to.setFactor(name, accelerator.factor());
-        }
-        if (g instanceof SpawnerView spawner) {
-            to.setSpawnVelocity(name, spawner.velocity().x(), spawner.velocity().y());
-        }
-        if (g instanceof SpinnerView spinner) {
-            to.setSpinnerSpeed(name, spinner.turnsPerSecond());
+        if (!g.setting().isDefault() && g.setting().names().isEmpty()) {
+            to.set(name, g.setting());
         }
         if (from.gameRules().ownPoints().containsKey(g.name())) {
             to.setPoints(name, from.gameRules().pointsOf(g.name(), g.kind()));
@@ -159,12 +149,15 @@ final class Transfer {
         }
     }
 
-    /** The connections, key bindings and pairs of portals of {@code from} among the names {@code renamed} knows, renamed. */
+    /**
+     * The connections, key bindings and settings naming others (portals' pairs) of {@code from} among the names
+     * {@code renamed} knows, renamed.
+     */
     private static void link(Board to, Board from, Map<String, String> renamed) {
         for (Gizmo g : from.gizmos()) {
-            if (g instanceof PortalView portal && renamed.containsKey(g.name())
-                    && portal.pair().filter(renamed::containsKey).isPresent()) {
-                to.pair(renamed.get(g.name()), renamed.get(portal.pair().get()));
+            List<String> named = g.setting().names();
+            if (!named.isEmpty() && renamed.containsKey(g.name()) && renamed.keySet().containsAll(named)) {
+                to.set(renamed.get(g.name()), g.setting().renamed(renamed::get));
             }
         }
         for (Connection c : from.connections()) {
@@ -182,8 +175,8 @@ final class Transfer {
 
     /** After a rename: every connection, binding and pair that named the gizmo, walls' connections included. */
     private static void relink(Board to, Board from, String name, Map<String, String> renamed) {
-        from.gizmo(name).filter(PortalView.class::isInstance).flatMap(g -> ((PortalView) g).pair())
-                .ifPresent(other -> to.pair(renamed.get(name), other));
+        from.gizmo(name).map(Gizmo::setting).filter(setting -> !setting.names().isEmpty())
+                .ifPresent(setting -> to.set(renamed.get(name), setting.renamed(renamed::get)));
         for (Connection c : from.connections()) {
             boolean fromIt = c.source() instanceof TriggerSource.OfGizmo s && s.gizmo().equals(name);
             if (fromIt || c.target().equals(name)) {

@@ -1,19 +1,23 @@
 package gizmoball.headless;
 
+import gizmoball.lab.LabSettings;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
 
 /**
  * The command line of the headless runner, options in any order: a {@link Play} of a board for N ticks (to a key
- * script, with a report and a replay file if asked), or a {@link Check} of a replay file.
+ * script, with a report and a replay file if asked), a {@link Check} of a replay file, or a {@link Lab} of a board.
  */
 public sealed interface HeadlessOptions {
 
     String PLAY_USAGE = "gizmoball --headless --ticks N [--dt SECONDS] [--skip-bad-lines] [--out FILE] [--keys SCRIPT]"
-            + " [--report FILE] [--record FILE] BOARD";
+            + " [--players N] [--report FILE] [--record FILE] BOARD";
     String CHECK_USAGE = "gizmoball --headless --replay FILE [--report FILE]";
-    String USAGE = "usage: " + PLAY_USAGE + System.lineSeparator() + "       " + CHECK_USAGE;
+    String LAB_USAGE = "gizmoball --headless --lab N [--threads N] [--game-cap SECONDS] [--skip-bad-lines]"
+            + " [--report FILE] [--heatmap FILE.png] BOARD";
+    String USAGE = "usage: " + PLAY_USAGE + System.lineSeparator() + "       " + CHECK_USAGE
+            + System.lineSeparator() + "       " + LAB_USAGE;
 
     /** Where to write the game's JSON summary, if anywhere. */
     Optional<Path> report();
@@ -23,13 +27,24 @@ public sealed interface HeadlessOptions {
      *
      * @param dt empty: the model's default tick
      * @param record where to write the replay of the game
+     * @param players how many take turns in the game, 1 to 4
      */
     record Play(Path board, long ticks, Optional<Double> dt, boolean skipBadLines, Optional<Path> out,
-                Optional<Path> keys, Optional<Path> report, Optional<Path> record) implements HeadlessOptions {
+                Optional<Path> keys, Optional<Path> report, Optional<Path> record, int players)
+            implements HeadlessOptions {
     }
 
     /** Plays a replay file again and compares the score it reaches with the one it recorded. */
     record Check(Path replay, Optional<Path> report) implements HeadlessOptions {
+    }
+
+    /**
+     * Plays BOARD {@code games} times with each of the lab's players on {@code threads} threads (every core unless
+     * told), each game to game over or {@code gameCapSeconds} of game time, and summarises the games; {@code heatmap}:
+     * where to draw where the autoplayer's balls went.
+     */
+    record Lab(Path board, int games, int threads, double gameCapSeconds, boolean skipBadLines,
+               Optional<Path> report, Optional<Path> heatmap) implements HeadlessOptions {
     }
 
     /** The command line is not one the runner understands; the message says why. */
@@ -50,6 +65,11 @@ public sealed interface HeadlessOptions {
         Optional<Path> report = Optional.empty();
         Optional<Path> record = Optional.empty();
         Optional<Path> replay = Optional.empty();
+        Optional<Path> heatmap = Optional.empty();
+        Integer labGames = null;
+        Integer players = null;
+        Integer threads = null;
+        Double gameCap = null;
         Path board = null;
         for (int i = 0; i < args.size(); i++) {
             String arg = args.get(i);
@@ -63,6 +83,11 @@ public sealed interface HeadlessOptions {
                 case "--report" -> report = Optional.of(OptionValues.path(OptionValues.of(args, ++i, arg)));
                 case "--record" -> record = Optional.of(OptionValues.path(OptionValues.of(args, ++i, arg)));
                 case "--replay" -> replay = Optional.of(OptionValues.path(OptionValues.of(args, ++i, arg)));
+                case "--players" -> players = OptionValues.players(OptionValues.of(args, ++i, arg));
+                case "--lab" -> labGames = OptionValues.count(OptionValues.of(args, ++i, arg), arg);
+                case "--threads" -> threads = OptionValues.count(OptionValues.of(args, ++i, arg), arg);
+                case "--heatmap" -> heatmap = Optional.of(OptionValues.path(OptionValues.of(args, ++i, arg)));
+                case "--game-cap" -> gameCap = OptionValues.seconds(OptionValues.of(args, ++i, arg), arg);
                 default -> {
                     // "-" alone would be a file name; anything else with a dash is an option, never a board.
                     if (arg.startsWith("-") && arg.length() > 1) {
@@ -75,12 +100,30 @@ public sealed interface HeadlessOptions {
                 }
             }
         }
+        if (labGames == null && (threads != null || gameCap != null || heatmap.isPresent())) {
+            throw new BadArguments((threads != null ? "--threads" : gameCap != null ? "--game-cap" : "--heatmap")
+                    + " goes with --lab N");
+        }
+        if (labGames != null) {
+            // The lab plays its own games: no script, no tick count, no single game's outputs.
+            if (replay.isPresent() || ticks != null || dt.isPresent() || keys.isPresent() || record.isPresent()
+                    || out.isPresent() || players != null) {
+                throw new BadArguments("--lab takes only --threads, --game-cap, --skip-bad-lines, --report and --heatmap:"
+                        + " its players press the keys and each game runs to game over or the cap");
+            }
+            if (board == null) {
+                throw new BadArguments("no board file given");
+            }
+            return new Lab(board, labGames, threads != null ? threads : Runtime.getRuntime().availableProcessors(),
+                    gameCap != null ? gameCap : LabSettings.DEFAULT_GAME_CAP_SECONDS, skipBadLines,
+                    report, heatmap);
+        }
         if (replay.isPresent()) {
             // The replay holds the board, the ticks, the tick length and the keys: nothing may say otherwise.
             if (board != null || ticks != null || dt.isPresent() || keys.isPresent() || record.isPresent()
-                    || out.isPresent() || skipBadLines) {
-                throw new BadArguments("--replay takes only --report: the replay file holds the board, its ticks and"
-                        + " keys");
+                    || out.isPresent() || skipBadLines || players != null) {
+                throw new BadArguments("--replay takes only --report: the replay file holds the board, its ticks,"
+                        + " keys and players");
             }
             return new Check(replay.get(), report);
         }
@@ -90,6 +133,6 @@ public sealed interface HeadlessOptions {
         if (board == null) {
             throw new BadArguments("no board file given");
         }
-        return new Play(board, ticks, dt, skipBadLines, out, keys, report, record);
+        return new Play(board, ticks, dt, skipBadLines, out, keys, report, record, players != null ? players : 1);
     }
 }

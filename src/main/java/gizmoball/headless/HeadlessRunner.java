@@ -6,12 +6,17 @@ import gizmoball.boardfile.BoardFileException;
 import gizmoball.boardfile.BoardFiles;
 import gizmoball.boardfile.FileErrors;
 import gizmoball.boardfile.LoadResult;
+import gizmoball.lab.Lab;
+import gizmoball.lab.LabReport;
+import gizmoball.lab.LabResult;
+import gizmoball.lab.LabSettings;
 import gizmoball.model.Board;
 import gizmoball.replay.GameReport;
 import gizmoball.replay.KeyScript;
 import gizmoball.replay.Replay;
 import gizmoball.replay.ReplayFiles;
 import gizmoball.replay.ScriptedPlay;
+import gizmoball.view.HeatMapPicture;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
@@ -32,6 +37,8 @@ public final class HeadlessRunner {
     public static final int WRITE_FAILED = 3;
     /** A replay reached another score than the one it recorded. */
     public static final int REPLAY_DIFFERS = 4;
+    /** Pixels across the board of a heat map the lab draws. */
+    private static final int HEAT_MAP_SIDE = 640;
 
     private HeadlessRunner() {
     }
@@ -61,7 +68,10 @@ public final class HeadlessRunner {
             return BAD_INPUT;
         }
         try {
-            return options instanceof HeadlessOptions.Play play ? play(play, out, err)
+            if (options instanceof HeadlessOptions.Play play) {
+                return play(play, out, err);
+            }
+            return options instanceof HeadlessOptions.Lab lab ? lab(lab, out, err)
                     : check((HeadlessOptions.Check) options, out, err);
         } catch (Stop stop) {
             return stop.status;
@@ -72,6 +82,7 @@ public final class HeadlessRunner {
         Board board = load(options, err);
         KeyScript keys = options.keys().isPresent() ? keys(options.keys().get(), err) : KeyScript.NONE;
         String asBuilt = BoardFiles.toText(board);
+        board.setPlayers(options.players());
         double dt = options.dt().orElse(Board.DEFAULT_TICK);
         ScriptedPlay.play(board, keys, options.ticks(), dt);
         report(board, options.report(), err);
@@ -112,20 +123,45 @@ public final class HeadlessRunner {
         return OK;
     }
 
+    private static int lab(HeadlessOptions.Lab options, PrintStream out, PrintStream err) throws Stop {
+        Board board = load(options.board(), options.skipBadLines(), err);
+        LabSettings settings = LabSettings.of(options.games()).withThreads(options.threads())
+                .withGameCap(options.gameCapSeconds());
+        LabResult result = Lab.run(board, options.board().toString(), settings, new ProgressLine(err));
+        LabReport report = result.report();
+        if (options.report().isPresent()) {
+            Path file = options.report().get();
+            String json = report.toJson();
+            writeFile(file, () -> AtomicFileWriter.write(file, w -> w.write(json)), err);
+        }
+        if (options.heatmap().isPresent()) {
+            Path file = options.heatmap().get();
+            byte[] png = HeatMapPicture.png(HeatMapPicture.image(board, result.autoplayerHeat(), HEAT_MAP_SIDE,
+                    report.heatMapCaption()));
+            writeFile(file, () -> Files.write(file, png), err);
+        }
+        out.println(report.summaryLine());
+        return OK;
+    }
+
     private static Board load(HeadlessOptions.Play options, PrintStream err) throws Stop {
+        return load(options.board(), options.skipBadLines(), err);
+    }
+
+    private static Board load(Path file, boolean skipBadLines, PrintStream err) throws Stop {
         try {
-            if (!options.skipBadLines()) {
-                return BoardFiles.load(options.board());
+            if (!skipBadLines) {
+                return BoardFiles.load(file);
             }
-            LoadResult result = BoardFiles.loadSkippingBadLines(options.board());
+            LoadResult result = BoardFiles.loadSkippingBadLines(file);
             for (BoardFileError skipped : result.skippedLines()) {
                 err.println("skipped " + skipped);
             }
             return result.board();
         } catch (IOException e) {
-            err.println("gizmoball: " + FileErrors.cannotRead(options.board(), e));
+            err.println("gizmoball: " + FileErrors.cannotRead(file, e));
         } catch (BoardFileException e) {
-            err.println("gizmoball: " + options.board() + " not loaded, " + e.getMessage());
+            err.println("gizmoball: " + file + " not loaded, " + e.getMessage());
         }
         throw new Stop(BAD_INPUT);
     }

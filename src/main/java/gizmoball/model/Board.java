@@ -4,29 +4,24 @@ import gizmoball.model.game.Game;
 import gizmoball.model.game.GameProgress;
 import gizmoball.model.game.GameRules;
 import gizmoball.model.game.KeyPress;
-import gizmoball.model.game.Playfield;
-import gizmoball.model.gizmo.Absorber;
-import gizmoball.model.gizmo.Accelerator;
+import gizmoball.model.game.Nudge;
+import gizmoball.model.game.Tilt;
+
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
-import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Rgb;
-import gizmoball.model.gizmo.Sink;
-import gizmoball.model.gizmo.Spinner;
+import gizmoball.model.gizmo.Setting;
 import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Ball;
-import gizmoball.model.loop.BallGrid;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import gizmoball.model.loop.GuardCounts;
 import gizmoball.model.loop.LoopActions;
 import gizmoball.model.loop.LoopMode;
 import gizmoball.model.loop.LoopView;
-import gizmoball.model.loop.PlayEvent;
 import gizmoball.model.loop.Sleepers;
-import gizmoball.model.loop.SpatialIndex;
 import gizmoball.model.loop.TickReport;
 import gizmoball.model.loop.TickRun;
 import gizmoball.model.loop.TriggerSource;
@@ -48,14 +43,15 @@ import physics.Vect;
  * gizmos and balls, the {@link PlacementRules}, the {@link Edits} of gizmos and balls, the {@link Wiring} of
  * connections and keys, the actions of {@link Play} and the {@link Observers}; the physics loop itself is
  * {@link TickRun}, in a package of its own that may not use this one: it sees the board only through
- * {@link LoopView} and acts on it only through {@link LoopActions}, both implemented here by one private adapter.
+ * {@link LoopView} and acts on it only through {@link LoopActions}, both implemented by {@link BoardLoop}.
  *
- * <p>It is over 400 lines only because it is the model's whole public API plus that adapter (some 130 lines of
- * one-line delegations, which need the board's private state); every method is an argument check, a delegation,
- * or a constant of play (gravity, friction, time).
+ * <p>It is over 400 lines only because it is the model's whole public API: every method is an argument check, a
+ * delegation, or a constant of play (gravity, friction, time); the loop's adapter ({@link BoardLoop}) and the game's
+ * ({@link GameField}) are classes of their own.
  */
 public final class Board {
-    /** The side of the board in L and cells: the loop's {@link Arena#SIZE}, named here for the board's users. */
+    /** The side of the board in L and cells: the loop's {@link Arena#SIZE}, named here for the board's users (its
+     *  own parts read {@link Arena}'s). */
     public static final int SIZE = Arena.SIZE;
     /** L: {@link Arena#BALL_RADIUS}. */
     public static final double BALL_RADIUS = Arena.BALL_RADIUS;
@@ -74,8 +70,6 @@ public final class Board {
     private final Play play = new Play(registry, rules, sleepers);
     private final Edits edits = new Edits(registry, rules, wiring, play);
     private final Observers observers = new Observers();
-    /** Reused by every tick: the broad phase for ball pairs. */
-    private final BallGrid ballGrid = new BallGrid();
     private double gravity = DEFAULT_GRAVITY;
     private double mu = DEFAULT_MU;
     private double mu2 = DEFAULT_MU2;
@@ -83,14 +77,14 @@ public final class Board {
     /** Ticks run since construction or {@link #clear()}: the clock games, key scripts and replays count in. */
     private long ticks;
     private GameRules gameRules = GameRules.DEFAULT;
-    private final Game game = new Game(new GameField());
+    private final Game game = new Game(new GameField(this, registry, play));
     private boolean spatialIndexEnabled = true;
     private LoopMode loopMode = LoopMode.CONTINUOUS;
     private TickReport lastTick = TickReport.NONE;
     private GuardCounts guardsFired = GuardCounts.NONE;
     private long lastRedrawNanos;
     private double nextCollisionLookAhead;
-    private final LoopAccess loop = new LoopAccess();
+    private final BoardLoop loop = new BoardLoop(this, registry, wiring, play, sleepers);
     /** The loop, kept with its books from tick to tick. */
     private final TickRun tickRun = new TickRun(loop, loop);
 
@@ -252,6 +246,9 @@ public final class Board {
 
     /** The key's edge drives the gizmo as {@code order} says: one of its kind's actions, after a delay. */
     public void bindKey(int keyCode, KeyEdge edge, String gizmo, Order order) {
+        if (gameRules.nudge().flatMap(n -> n.wayOf(keyCode)).isPresent()) {
+            throw new BoardEditException("key " + keyCode + " nudges the board: it drives nothing else");
+        }
         wiring.bindKey(keyCode, edge, gizmo, order);
         edited();
     }
@@ -267,24 +264,12 @@ public final class Board {
         edited();
     }
 
-    /** How many times faster an accelerator sends a ball away (1 to {@link Accelerator#MAX_FACTOR}; 1.5 unless set). */
-    public void setFactor(String accelerator, double factor) {
-        edits.setFactor(accelerator, factor);
-        edited();
-    }
-
-    /** The velocity of the balls the spawner adds (finite, at most {@link #MAX_SPEED}; at rest unless set). */
-    public void setSpawnVelocity(String spawner, double vx, double vy) {
-        edits.setSpawnVelocity(spawner, vx, vy);
-        edited();
-    }
-
     /**
-     * Pairs two portals: a ball entering either's mouth leaves by the other's. Each leaves the pair it had, whose
-     * other portal is left without one (a wall).
+     * Gives a gizmo the value its kind holds beyond its place (an accelerator's factor, a spawner's velocity, a
+     * spinner's speed, a portal's pair: {@link Setting}), checked by the setting itself.
      */
-    public void pair(String portal, String other) {
-        edits.pair(portal, other);
+    public void set(String gizmo, Setting setting) {
+        edits.set(gizmo, setting);
         edited();
     }
 
@@ -294,21 +279,6 @@ public final class Board {
      */
     public void setCellOpen(String cell) {
         edits.setCellOpen(cell);
-        edited();
-    }
-
-    /** The portal and its pair are left without one: walls both. */
-    public void unpair(String portal) {
-        edits.unpair(portal);
-        edited();
-    }
-
-    /**
-     * A spinner's speed and way in turns per second: positive clockwise on the screen, negative anticlockwise, nonzero
-     * and at most {@link Spinner#MAX_TURNS_PER_SECOND} either way (one turn a second clockwise unless set).
-     */
-    public void setSpinnerSpeed(String spinner, double turnsPerSecond) {
-        edits.setSpinnerSpeed(spinner, turnsPerSecond);
         edited();
     }
 
@@ -380,6 +350,43 @@ public final class Board {
     /** The score at which a game gives one extra ball, once; empty for none. */
     public void setExtraBallAt(OptionalLong score) {
         changeRules(() -> gameRules.withExtraBallAt(score));
+    }
+
+    /**
+     * Lets the board be nudged with the nudge's keys, or with empty not at all. The keys must drive nothing on the
+     * board: a key is a nudge key or a key of the board's bindings, never both.
+     */
+    public void setNudge(Optional<Nudge> nudge) {
+        nudge.ifPresent(n -> {
+            for (KeyBinding binding : wiring.keyBindings()) {
+                if (n.wayOf(binding.keyCode()).isPresent()) {
+                    throw new BoardEditException("key " + binding.keyCode() + " drives " + binding.gizmo()
+                            + ": a nudge key drives nothing else");
+                }
+            }
+        });
+        changeRules(() -> gameRules.withNudge(nudge));
+    }
+
+    /** When nudging tilts the game (with a nudge: the board's {@link Tilt}, 4 nudges within 5 s unless set). */
+    public void setTilt(Tilt tilt) {
+        changeRules(() -> gameRules.withTilt(tilt));
+    }
+
+    /** For how many seconds after a launch a drained ball is given back, once (0: never, the default). */
+    public void setBallSave(double seconds) {
+        changeRules(() -> gameRules.withBallSave(seconds));
+    }
+
+    /**
+     * A new game on this board is for that many players, 1 to {@link Game#MAX_PLAYERS}, taking turns ball by ball;
+     * chosen before its first tick (a board made or reset has a game for as many as it had).
+     */
+    public void setPlayers(int players) {
+        if (ticks > 0) {
+            throw new IllegalStateException("the number of players is chosen before the first tick");
+        }
+        game.setPlayers(players);
     }
 
     private void changeRules(Supplier<GameRules> changed) {
@@ -480,6 +487,7 @@ public final class Board {
         play.dropHitTargets(lastTick.events());
         play.ticking(false);
         play.removeSunk();
+        play.holdPulls(dt);
         ticks++;
         game.afterTick(ticks, lastTick.events());
         guardsFired = guardsFired.plus(lastTick.guards());
@@ -525,7 +533,32 @@ public final class Board {
 
     private void keyAction(int keyCode, KeyEdge edge) {
         game.keyPressed(ticks, edge == KeyEdge.DOWN ? KeyPress.Motion.DOWN : KeyPress.Motion.UP, keyCode);
-        play.keyAction(wiring.keyBindings(), keyCode, edge, time);
+        Optional<Nudge.Way> nudge = gameRules.nudge().flatMap(n -> n.wayOf(keyCode));
+        if (nudge.isPresent()) {
+            if (edge == KeyEdge.DOWN) {
+                nudge(nudge.get());
+            }
+            return;
+        }
+        play.keyAction(wiring.keyBindings(), keyCode, edge, time, game.isTilted());
+    }
+
+    /**
+     * Every free ball gets the nudge's speed that way, woken if asleep; held balls feel nothing. The nudge counts
+     * toward the tilt: one that tilts lowers every flipper and lets go of every plunger's pull.
+     */
+    private void nudge(Nudge.Way way) {
+        double speed = gameRules.nudge().orElseThrow().speed();
+        Vect push = new Vect(way.dx() * speed, way.dy() * speed);
+        sleepers.wakeWithin(-SIZE, -SIZE, 2 * SIZE, 2 * SIZE);
+        for (Ball ball : registry.balls()) {
+            if (!ball.isCaptured()) {
+                ball.setVelocity(ball.velocity().plus(push));
+            }
+        }
+        if (game.nudged(ticks)) {
+            play.tilt();
+        }
     }
 
     /** The gizmo performs its action: a flipper toggles, an absorber fires, a bumper only records the time. */
@@ -575,6 +608,25 @@ public final class Board {
         spatialIndexEnabled = enabled;
     }
 
+    boolean spatialIndexEnabled() {
+        return spatialIndexEnabled;
+    }
+
+    double nextCollisionLookAhead() {
+        return nextCollisionLookAhead;
+    }
+
+    /** How long the observers took to take in the last tick (what the loop's report says the redraw cost). */
+    long lastRedrawNanos() {
+        return lastRedrawNanos;
+    }
+
+    /** The loop moved the clock on by {@code dt}: so does every delayed action's. */
+    void advanceTime(double dt) {
+        time += dt;
+        play.clockMoved();
+    }
+
     /** Sum over free balls of |v|^2/2 + gravity * (SIZE - y), unit mass. */
     public double energy() {
         double total = 0;
@@ -600,173 +652,5 @@ public final class Board {
     /** The loop's view of this board, for the loop's tests (through their fixture {@code LoopViews}). */
     LoopView loopView() {
         return loop;
-    }
-
-    /** The board as its game sees it: the rules, and the balls, which a game may take off when they drain. */
-    private final class GameField implements Playfield {
-        @Override
-        public GameRules rules() {
-            return gameRules;
-        }
-
-        @Override
-        public int ballCount() {
-            return registry.balls().size();
-        }
-
-        @Override
-        public void removeBall(String ball) {
-            registry.remove(registry.ball(ball));
-        }
-
-        @Override
-        public boolean serveNextBall() {
-            for (GizmoBase gizmo : registry.gizmos()) {
-                if (gizmo instanceof Absorber absorber && gameRules.isDrain(absorber.name())) {
-                    String name = play.freshBallName();
-                    Vect at = absorber.holdingPosition(BALL_RADIUS);
-                    Ball ball = new Ball(name, at, Vect.ZERO);
-                    registry.add(ball);
-                    play.capture(ball, absorber);
-                    return true;
-                }
-            }
-            return false;
-        }
-
-    }
-
-    /** The board as the loop sees it and acts on it: the one way in for a {@link TickRun}. */
-    private final class LoopAccess implements LoopView, LoopActions {
-        @Override
-        public Collection<Ball> balls() {
-            return registry.balls();
-        }
-
-        @Override
-        public Collection<GizmoBase> gizmos() {
-            return registry.gizmos();
-        }
-
-        @Override
-        public GizmoBase gizmo(String name) {
-            return registry.gizmo(name);
-        }
-
-        @Override
-        public Ball ball(String name) {
-            return registry.ball(name);
-        }
-
-        @Override
-        public List<MovingShape> movingShapes() {
-            return registry.movingShapes();
-        }
-
-        @Override
-        public List<Connection> connectionsFrom(TriggerSource source) {
-            return wiring.connectionsFrom(source);
-        }
-
-        @Override
-        public SpatialIndex index() {
-            return registry.index();
-        }
-
-        @Override
-        public boolean spatialIndexEnabled() {
-            return spatialIndexEnabled;
-        }
-
-        @Override
-        public Vect gravity() {
-            return new Vect(0, gravity);   // the board's gravity pulls down the board, along +y
-        }
-
-        @Override
-        public double mu() {
-            return mu;
-        }
-
-        @Override
-        public double mu2() {
-            return mu2;
-        }
-
-        @Override
-        public double time() {
-            return time;
-        }
-
-        @Override
-        public LoopMode loopMode() {
-            return loopMode;
-        }
-
-        @Override
-        public boolean passingThrough(Ball a, Ball b) {
-            return registry.passingThrough(a, b);
-        }
-
-        @Override
-        public double nextCollisionLookAhead() {
-            return nextCollisionLookAhead;
-        }
-
-        @Override
-        public long lastRedrawNanos() {
-            return lastRedrawNanos;
-        }
-
-        @Override
-        public Sleepers sleepers() {
-            return sleepers;
-        }
-
-        @Override
-        public BallGrid ballGrid() {
-            return ballGrid;
-        }
-
-        @Override
-        public void recordEvent(PlayEvent event) {
-            play.recordEvent(event);
-        }
-
-        @Override
-        public List<PlayEvent> drainEvents() {
-            return play.drainEvents();
-        }
-
-        @Override
-        public void trigger(GizmoBase gizmo, Order order, double now) {
-            play.carryOut(gizmo, order.action().orElse(gizmo.kind().defaultAction()), order.delay(), now);
-        }
-
-        @Override
-        public void capture(Ball ball, Absorber absorber) {
-            play.capture(ball, absorber);
-        }
-
-        @Override
-        public void sink(Ball ball, Sink sink) {
-            play.sink(ball, sink);
-        }
-
-        @Override
-        public void wakeSweep(MovingShape moving) {
-            play.wakeSweep(moving);
-        }
-
-        @Override
-        public void forgetSeparatedPairs() {
-            registry.forgetSeparatedPairs();
-        }
-
-        @Override
-        public void advanceTime(double dt) {
-            time += dt;
-            play.clockMoved();
-        }
     }
 }

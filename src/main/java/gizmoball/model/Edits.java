@@ -2,14 +2,15 @@ package gizmoball.model;
 
 import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.Flipper;
+import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
-import gizmoball.model.gizmo.Accelerator;
+import gizmoball.model.gizmo.Setting;
 import gizmoball.model.gizmo.Portal;
-import gizmoball.model.gizmo.Spawner;
 import gizmoball.model.gizmo.Spinner;
 import gizmoball.model.gizmo.SwitchedCell;
+import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Ball;
 
 import java.util.ArrayList;
@@ -126,8 +127,8 @@ final class Edits {
         GizmoBase gizmo = registry.gizmo(name);
         Ball ball = registry.ball(name);
         if (gizmo != null) {
-            if (gizmo instanceof Portal portal) {
-                unpair(portal);
+            if (gizmo instanceof Portal) {   // its pair is left without one
+                gizmo.hold(new Setting.Pair(Optional.empty()), registry::gizmo);
             }
             registry.remove(gizmo);
             wiring.forget(name);
@@ -145,7 +146,8 @@ final class Edits {
         refuseIfPresent(rules.problemFor(candidate, gizmo));
         registry.move(target, x, y);
         if (target instanceof Absorber absorber) {
-            absorber.held().forEach(held -> registry.ball(held).capture(absorber.holdingPosition(Board.BALL_RADIUS)));
+            absorber.held().forEach(held -> registry.ball(held)
+                    .capture(absorber.holdingPosition(Arena.BALL_RADIUS)));
             play.captureFreeBallsIn(absorber);
         }
     }
@@ -213,7 +215,8 @@ final class Edits {
         }
         for (GizmoBase gizmo : gizmos) {
             if (gizmo instanceof Absorber absorber) {
-                absorber.held().forEach(held -> registry.ball(held).capture(absorber.holdingPosition(Board.BALL_RADIUS)));
+                absorber.held().forEach(held -> registry.ball(held)
+                        .capture(absorber.holdingPosition(Arena.BALL_RADIUS)));
             }
         }
         captors.forEach(play::capture);
@@ -231,7 +234,7 @@ final class Edits {
         Absorber candidate = target.resized(x1, y1, x2 - x1, y2 - y1);
         refuseIfPresent(rules.problemFor(candidate, name));
         registry.replace(target, candidate);
-        candidate.held().forEach(held -> registry.ball(held).capture(candidate.holdingPosition(Board.BALL_RADIUS)));
+        candidate.held().forEach(held -> registry.ball(held).capture(candidate.holdingPosition(Arena.BALL_RADIUS)));
         play.captureFreeBallsIn(candidate);
     }
 
@@ -279,25 +282,26 @@ final class Edits {
         registry.requireGizmo(gizmo).setColour(colour);
     }
 
-    void setFactor(String gizmo, double factor) {
-        if (!(registry.requireGizmo(gizmo) instanceof Accelerator accelerator)) {
-            throw new BoardEditException("only an accelerator has a factor: " + gizmo + " is "
-                    + registry.requireGizmo(gizmo).kind().withArticle());
+    /**
+     * Gives a gizmo a setting of the record it holds, if the setting's own check finds no problem (the one check of
+     * every kind's value, {@link Setting#problem}).
+     */
+    void set(String gizmo, Setting setting) {
+        GizmoBase target = registry.requireGizmo(gizmo);
+        if (setting == null || target.setting().getClass() != setting.getClass()) {
+            throw new BoardEditException((setting == null ? "a setting must not be null" : setting.onlyFor()) + ": "
+                    + gizmo + " is " + target.kind().withArticle());
         }
-        if (!(factor >= 1 && factor <= Accelerator.MAX_FACTOR)) {
-            throw new BoardEditException("an accelerator's factor is 1 to " + (int) Accelerator.MAX_FACTOR
-                    + ", not " + factor);
-        }
-        accelerator.setFactor(factor);
-    }
+        refuseIfPresent(setting.problem(gizmo, new Setting.Board() {
+            public Gizmo gizmo(String name) {
+                return (Gizmo) registry.requireGizmo(name);
+            }
 
-    void setSpinnerSpeed(String gizmo, double turnsPerSecond) {
-        Spinner spinner = spinner(gizmo, "a speed of its own");
-        if (!(turnsPerSecond != 0 && Math.abs(turnsPerSecond) <= Spinner.MAX_TURNS_PER_SECOND)) {
-            throw new BoardEditException("a spinner turns up to " + (int) Spinner.MAX_TURNS_PER_SECOND
-                    + " times a second either way (not 0: stop it instead), not " + turnsPerSecond);
-        }
-        spinner.setTurnsPerSecond(turnsPerSecond);
+            public double maxSpeed() {
+                return Arena.MAX_SPEED;
+            }
+        }));
+        target.hold(setting, registry::gizmo);
     }
 
     void setSpinnerState(String gizmo, double radians, boolean running) {
@@ -321,59 +325,12 @@ final class Edits {
         return spinner;
     }
 
-    void setSpawnVelocity(String gizmo, double vx, double vy) {
-        if (!(registry.requireGizmo(gizmo) instanceof Spawner spawner)) {
-            throw new BoardEditException("only a spawner has a velocity for its balls: " + gizmo + " is "
-                    + registry.requireGizmo(gizmo).kind().withArticle());
-        }
-        Vect velocity = new Vect(vx, vy);
-        if (!Double.isFinite(vx) || !Double.isFinite(vy) || velocity.length() > Board.MAX_SPEED) {
-            throw new BoardEditException("a spawner's velocity is finite and at most " + (int) Board.MAX_SPEED
-                    + " L/s fast, not (" + vx + ", " + vy + ")");
-        }
-        spawner.setVelocity(velocity);
-    }
-
-    /**
-     * Pairs two portals with each other, each leaving the pair it had (a portal has one pair; its old partner is left
-     * without).
-     */
-    void pair(String first, String second) {
-        Portal a = requirePortal(first);
-        Portal b = requirePortal(second);
-        if (a == b) {
-            throw new BoardEditException("a portal cannot be paired with itself: " + first);
-        }
-        unpair(a);
-        unpair(b);
-        a.setPair(Optional.of(second));
-        b.setPair(Optional.of(first));
-    }
-
     void setCellOpen(String name) {
         if (!(registry.requireGizmo(name) instanceof SwitchedCell cell)) {
             throw new BoardEditException("only a gate is open or a drop target down: " + name + " is "
                     + registry.requireGizmo(name).kind().withArticle());
         }
         play.switchCell(cell, false);
-    }
-
-    /** The portal and its pair, if it has one, are left without. */
-    void unpair(String portal) {
-        unpair(requirePortal(portal));
-    }
-
-    private void unpair(Portal portal) {
-        portal.pair().map(registry::gizmo).ifPresent(other -> ((Portal) other).setPair(Optional.empty()));
-        portal.setPair(Optional.empty());
-    }
-
-    private Portal requirePortal(String name) {
-        GizmoBase gizmo = registry.requireGizmo(name);
-        if (!(gizmo instanceof Portal portal)) {
-            throw new BoardEditException("only portals are paired: " + name + " is " + gizmo.kind().withArticle());
-        }
-        return portal;
     }
 
     private static double requireFinite(double coordinate, String ball) {

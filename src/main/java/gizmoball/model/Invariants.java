@@ -1,6 +1,7 @@
 package gizmoball.model;
 
 import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Ball;
 import gizmoball.model.loop.Tolerances;
 
@@ -41,18 +42,18 @@ public final class Invariants {
                 found.add(ball + ": not a finite state");
                 continue;
             }
-            if (v.length() > Board.MAX_SPEED * (1 + 1e-12)) {
-                found.add(ball + ": speed " + v.length() + " over " + Board.MAX_SPEED);
+            if (v.length() > Arena.MAX_SPEED * (1 + 1e-12)) {
+                found.add(ball + ": speed " + v.length() + " over " + Arena.MAX_SPEED);
             }
             if (!ball.isCaptured()) {
                 free.add(ball);
             }
         }
-        double r = Board.BALL_RADIUS;
+        double r = Arena.BALL_RADIUS;
         for (Ball ball : free) {
             Vect p = ball.position();
-            if (p.x() < r - Tolerances.INVARIANT || p.x() > Board.SIZE - r + Tolerances.INVARIANT
-                    || p.y() < r - Tolerances.INVARIANT || p.y() > Board.SIZE - r + Tolerances.INVARIANT) {
+            if (p.x() < r - Tolerances.INVARIANT || p.x() > Arena.SIZE - r + Tolerances.INVARIANT
+                    || p.y() < r - Tolerances.INVARIANT || p.y() > Arena.SIZE - r + Tolerances.INVARIANT) {
                 found.add(ball + ": outside the board");
             }
             for (GizmoBase gizmo : board.gizmoBases()) {

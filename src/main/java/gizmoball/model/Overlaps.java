@@ -1,6 +1,7 @@
 package gizmoball.model;
 
 import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Tolerances;
 
 import physics.Vect;
@@ -15,11 +16,11 @@ final class Overlaps {
 
     /** A ball centred at p is inside the gizmo's body by more than {@link Tolerances#PLACEMENT}. */
     static boolean ballInGizmo(GizmoBase gizmo, Vect p) {
-        return gizmo.signedDistance(p) < Board.BALL_RADIUS - Tolerances.PLACEMENT;
+        return gizmo.signedDistance(p) < Arena.BALL_RADIUS - Tolerances.PLACEMENT;
     }
 
     /** Balls centred at a and b overlap by more than {@link Tolerances#PLACEMENT}. */
     static boolean balls(Vect a, Vect b) {
-        return Math.sqrt(a.distanceSquared(b)) < 2 * Board.BALL_RADIUS - Tolerances.PLACEMENT;
+        return Math.sqrt(a.distanceSquared(b)) < 2 * Arena.BALL_RADIUS - Tolerances.PLACEMENT;
     }
 }

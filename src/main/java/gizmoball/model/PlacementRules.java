@@ -3,6 +3,7 @@ package gizmoball.model;
 import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Ball;
 import gizmoball.model.loop.SpatialIndex;
 import gizmoball.model.loop.Tolerances;
@@ -109,7 +110,7 @@ final class PlacementRules {
         String what = "ball " + name + " at (" + position.x() + "," + position.y() + ")";
         if (!insideBoard(position)) {
             throw new BoardEditException(what + " is outside the board (its centre must be at least "
-                    + Board.BALL_RADIUS + " L inside each wall)");
+                    + Arena.BALL_RADIUS + " L inside each wall)");
         }
         Absorber captor = null;
         for (GizmoBase gizmo : gizmosUnder(position)) {
@@ -135,7 +136,7 @@ final class PlacementRules {
 
     /** The gizmos a ball centred there would be inside, in the order of the cells around it. */
     private List<GizmoBase> gizmosUnder(Vect position) {
-        double r = Board.BALL_RADIUS;
+        double r = Arena.BALL_RADIUS;
         return registry.index().within(position.x() - r, position.y() - r, position.x() + r, position.y() + r)
                 .stream()
                 .filter(gizmo -> Overlaps.ballInGizmo(gizmo, position))
@@ -161,8 +162,8 @@ final class PlacementRules {
      * 3e-14 L into it, and a board saved then must load again.
      */
     static boolean insideBoard(Vect position) {
-        double least = Board.BALL_RADIUS - Tolerances.PLACEMENT;
-        double most = Board.SIZE - least;
+        double least = Arena.BALL_RADIUS - Tolerances.PLACEMENT;
+        double most = Arena.SIZE - least;
         return position.x() >= least && position.x() <= most && position.y() >= least && position.y() <= most;
     }
 

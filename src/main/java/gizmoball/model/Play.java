@@ -4,6 +4,7 @@ import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.Action;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.MovingShape;
+import gizmoball.model.gizmo.Plunger;
 import gizmoball.model.gizmo.DropTarget;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.Sink;
@@ -11,6 +12,7 @@ import gizmoball.model.gizmo.Spawner;
 import gizmoball.model.gizmo.Spinner;
 import gizmoball.model.gizmo.Surroundings;
 import gizmoball.model.gizmo.SwitchedCell;
+import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Ball;
 import gizmoball.model.loop.PlayEvent;
 import gizmoball.model.loop.Sleepers;
@@ -23,6 +25,7 @@ import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.OptionalInt;
 import java.util.Set;
 
 import physics.Vect;
@@ -72,15 +75,67 @@ final class Play implements Surroundings {
     /**
      * The key went down or up: the gizmos bound to that edge do what their binding orders (by default as keys drive
      * them: a flipper stays up while the key is held), and on DOWN those bound to CHANGE too (by default what a trigger
-     * makes them do: a flipper toggles).
+     * makes them do: a flipper toggles). A plunger that the press would fire at once is pulled instead, and fires when
+     * that key goes up. While the game is tilted, flippers and plungers do not answer.
      */
-    void keyAction(List<KeyBinding> bindings, int keyCode, KeyEdge edge, double now) {
+    void keyAction(List<KeyBinding> bindings, int keyCode, KeyEdge edge, double now, boolean tilted) {
+        if (edge == KeyEdge.UP) {
+            releasePlungers(keyCode, now);
+        }
         for (KeyBinding binding : bindings) {
             if (binding.keyCode() == keyCode
                     && (binding.edge() == edge || binding.edge() == KeyEdge.CHANGE && edge == KeyEdge.DOWN)) {
                 GizmoBase gizmo = registry.gizmo(binding.gizmo());
-                carryOut(gizmo, binding.order().action().orElse(binding.edge().actionOf(gizmo.kind())),
-                        binding.order().delay(), now);
+                if (tilted && deadInTilt(gizmo)) {
+                    continue;
+                }
+                Action action = binding.order().action().orElse(binding.edge().actionOf(gizmo.kind()));
+                if (edge == KeyEdge.DOWN && action == Action.FIRE && binding.order().delay() == 0
+                        && gizmo instanceof Absorber absorber && absorber.plunger().isPresent()) {
+                    if (absorber.pullingKey().isEmpty()) {
+                        absorber.markTriggered(now);
+                        absorber.startPull(keyCode);
+                    }
+                } else {
+                    carryOut(gizmo, action, binding.order().delay(), now);
+                }
+            }
+        }
+    }
+
+    /** The key went up: every plunger it pulls fires, at the speed its pull has reached. */
+    private void releasePlungers(int keyCode, double now) {
+        for (GizmoBase gizmo : registry.gizmos()) {
+            if (gizmo instanceof Absorber absorber && absorber.pullingKey().equals(OptionalInt.of(keyCode))) {
+                double speed = absorber.releaseSpeed();
+                absorber.letGoOfPull();
+                absorber.markTriggered(now);
+                launch(absorber, speed);
+            }
+        }
+    }
+
+    /** A tick of {@code dt} seconds ran: every plunger being pulled was held that much longer. */
+    void holdPulls(double dt) {
+        for (GizmoBase gizmo : registry.gizmos()) {
+            if (gizmo instanceof Absorber absorber && absorber.pullingKey().isPresent()) {
+                absorber.heldFor(dt);
+            }
+        }
+    }
+
+    /** What a tilt kills: the flippers and the plungers do not answer their keys. */
+    private static boolean deadInTilt(GizmoBase gizmo) {
+        return gizmo instanceof Flipper || gizmo instanceof Absorber absorber && absorber.plunger().isPresent();
+    }
+
+    /** The game tilted: every flipper falls back to rest and every plunger lets go of its pull without firing. */
+    void tilt() {
+        for (GizmoBase gizmo : registry.gizmos()) {
+            if (gizmo instanceof Flipper flipper) {
+                flipper.perform(Action.LOWER, this);
+            } else if (gizmo instanceof Absorber absorber) {
+                absorber.letGoOfPull();
             }
         }
     }
@@ -162,13 +217,14 @@ final class Play implements Surroundings {
 
     /** Wakes every ball in the moving shape's box, where all of its sweep lies, and what rests on them. */
     void wakeSweep(MovingShape moving) {
-        double margin = 2 * Board.BALL_RADIUS;
+        double margin = 2 * Arena.BALL_RADIUS;
         sleepers.wakeWithin(moving.x() - margin, moving.y() - margin, moving.x() + moving.width() + margin,
                 moving.y() + moving.height() + margin);
     }
 
     /**
-     * Shoots the longest-held ball straight up from just above the top edge, if the spot there is free (inside
+     * Shoots the longest-held ball straight up from just above the top edge (at the standard speed, or a plunger's
+     * full-pull speed: a trigger fires a plunger at once), if the spot there is free (inside
      * the board, no gizmo or free ball in the way); otherwise the ball stays held. An absorber fires at most once a
      * tick: a ball it fires into a ball wedged against the wall above, or a flipper a hair above its mouth, comes
      * straight back, and an absorber that its own capture triggers would fire it again and again, at no time or a
@@ -176,28 +232,33 @@ final class Play implements Surroundings {
      */
     @Override
     public void fire(Absorber absorber) {
+        launch(absorber, absorber.plunger().map(Plunger::fullSpeed).orElse(Board.ABSORBER_LAUNCH_SPEED));
+    }
+
+    /** Fires the longest-held ball straight up at {@code speed}, as {@link #fire} says. */
+    private void launch(Absorber absorber, double speed) {
         List<String> held = absorber.held();
         if (held.isEmpty()) {
             return;
         }
         String name = held.get(0);
-        Vect launch = absorber.launchPosition(Board.BALL_RADIUS);
+        Vect launch = absorber.launchPosition(Arena.BALL_RADIUS);
         if (fired.contains(absorber.name())) {
             return;   // fired already in this tick: what came straight back stays held until the next
         }
         if (rules.freeForBall(launch)) {
             fired.add(absorber.name());
             absorber.letGo(name);
-            registry.ball(name).release(launch, new Vect(0, -Board.ABSORBER_LAUNCH_SPEED));
+            registry.ball(name).release(launch, new Vect(0, -speed));
             recordEvent(new PlayEvent.Fired(absorber.name()));
-            double margin = 4 * Board.BALL_RADIUS;
+            double margin = 4 * Arena.BALL_RADIUS;
             sleepers.wakeWithin(launch.x() - margin, launch.y() - margin, launch.x() + margin, launch.y() + margin);
         }
     }
 
     /** Holds the ball at the absorber's bottom-right corner, at rest, behind any it already holds. */
     void capture(Ball ball, Absorber absorber) {
-        ball.capture(absorber.holdingPosition(Board.BALL_RADIUS));
+        ball.capture(absorber.holdingPosition(Arena.BALL_RADIUS));
         absorber.hold(ball.name());
     }
 
@@ -233,7 +294,7 @@ final class Play implements Surroundings {
         boolean wasSolid = cell.isSolid();
         if (solid) {
             boolean blocked = registry.balls().stream()
-                    .anyMatch(b -> cell.solidOver(b.position()) < Board.BALL_RADIUS - Tolerances.PLACEMENT);
+                    .anyMatch(b -> cell.solidOver(b.position()) < Arena.BALL_RADIUS - Tolerances.PLACEMENT);
             cell.set(!blocked, blocked);
         } else {
             cell.set(false, false);
@@ -283,7 +344,7 @@ final class Play implements Surroundings {
     }
 
     private void spawnNow(Spawner spawner) {
-        Vect mouth = spawner.mouth(Board.BALL_RADIUS);
+        Vect mouth = spawner.mouth(Arena.BALL_RADIUS);
         if (registry.balls().size() >= Spawner.MAX_BALLS || !rules.freeForBall(mouth)) {
             return;
         }
@@ -291,7 +352,7 @@ final class Play implements Surroundings {
         ball.setVelocity(spawner.velocity());
         registry.add(ball);
         recordEvent(new PlayEvent.Spawned(spawner.name(), ball.name()));
-        double margin = 4 * Board.BALL_RADIUS;
+        double margin = 4 * Arena.BALL_RADIUS;
         sleepers.wakeWithin(mouth.x() - margin, mouth.y() - margin, mouth.x() + margin, mouth.y() + margin);
     }
 

@@ -17,17 +17,27 @@ import physics.Vect;
 /**
  * View > Ball trails: a short fading tail behind each ball, its positions at the last {@link #LENGTH} ticks.
  * Painted under the moving parts, so the ball itself stays on top. An edit or a new board starts the trails
- * afresh, and a captured ball has none (it did not travel to the absorber's corner).
+ * afresh, and a captured ball has none (it did not travel to the absorber's corner). A ball that jumps (out of a
+ * portal's pair, or fired from an absorber in the tick it was taken) starts a new trail where it reappears, and the
+ * trails go when the game stops: a trail shows motion, and a stopped board has none.
  */
 public final class BallTrails implements BoardOverlay {
     /** A quarter of a second at 60 ticks per second. */
     static final int LENGTH = 15;
+    /**
+     * A ball that moved further in a tick than this many times its greater speed (before or after) times the tick
+     * jumped: its path is no longer than that speed times the tick, for gravity and friction keep the fastest point
+     * of a tick's path at one of its ends, and a collision leaves the ball no faster than it ends the tick.
+     */
+    private static final double JUMP = 1.5;
     private static final Color COLOUR = new Color(0x8fd3ff);
     private static final int MAX_ALPHA = 170;
 
     private final Board board;
     private final Map<String, ArrayDeque<Vect>> trails = new HashMap<>();
+    private final Map<String, Double> speeds = new HashMap<>();
     private final BoardObserver recorder = this::boardChanged;
+    private double lastTime;
     private boolean enabled;
 
     public BallTrails(Board board) {
@@ -44,7 +54,8 @@ public final class BallTrails implements BoardOverlay {
             return;
         }
         enabled = on;
-        trails.clear();
+        clear();
+        lastTime = board.time();
         if (on) {
             board.addObserver(recorder);
         } else {
@@ -58,23 +69,41 @@ public final class BallTrails implements BoardOverlay {
         return trail == null ? List.of() : List.copyOf(trail);
     }
 
+    /** Forgets every trail (the game stopped); the next tick starts them afresh. */
+    public void clear() {
+        trails.clear();
+        speeds.clear();
+    }
+
     private void boardChanged(Board b, BoardChange change) {
+        double dt = b.time() - lastTime;
+        lastTime = b.time();
         if (change != BoardChange.TICK) {
-            trails.clear();
+            clear();
             return;
         }
         trails.keySet().removeIf(name -> b.ball(name).isEmpty());
+        speeds.keySet().removeIf(name -> b.ball(name).isEmpty());
         for (BallView ball : b.balls()) {
             if (ball.isCaptured()) {
                 trails.remove(ball.name());
                 continue;
             }
+            double speed = ball.velocity().length();
+            Double before = speeds.put(ball.name(), speed);
             ArrayDeque<Vect> trail = trails.computeIfAbsent(ball.name(), n -> new ArrayDeque<>());
+            if (!trail.isEmpty() && jumped(trail.getLast(), ball.position(), Math.max(before, speed) * dt)) {
+                trail.clear();
+            }
             if (trail.size() == LENGTH) {
                 trail.removeFirst();
             }
             trail.addLast(ball.position());
         }
+    }
+
+    private static boolean jumped(Vect from, Vect to, double reach) {
+        return from.minus(to).length() > JUMP * reach;
     }
 
     @Override

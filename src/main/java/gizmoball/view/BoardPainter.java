@@ -1,6 +1,7 @@
 package gizmoball.view;
 
 import gizmoball.model.Board;
+import gizmoball.model.gizmo.AbsorberView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.loop.BallView;
@@ -41,6 +42,11 @@ public final class BoardPainter {
     /** Size in L of the number of balls an absorber holds, written on the ball in its corner. */
     private static final float HELD_COUNT_FONT = 0.36f;
     private static final Color HELD_COUNT = new Color(0x202020);
+    /** A plunger's rod and knob. */
+    private static final Color PLUNGER = new Color(0xd8dce6);
+    /** L: the knob's height, and how far above a held ball it stands at rest (a full pull brings it down to it). */
+    private static final double PLUNGER_KNOB = 0.12;
+    private static final double PLUNGER_TRAVEL = 0.3;
     /** Thickness of the outer walls, drawn just outside the board. */
     static final int WALL_PIXELS = 3;
     /** How long (simulated seconds) a triggered gizmo stays lit, fading out. */
@@ -118,7 +124,7 @@ public final class BoardPainter {
             float pixel = (float) (1 / t.scale());
             for (Gizmo gizmo : board.gizmos()) {
                 GizmoArt art = GizmoArt.of(gizmo.kind());
-                double glow = flash(board.time() - gizmo.lastTriggeredAt());
+                double glow = glow(board, gizmo);
                 if (glow > 0) {
                     paintHalo(g, art.outline(gizmo, between), glow);
                 }
@@ -126,12 +132,36 @@ public final class BoardPainter {
                     art.paint(g, gizmo, between, lit(colourOf(gizmo), glow), pixel);
                 }
             }
+            paintPlungers(g, board, pixel);
             for (BallView ball : board.balls()) {
                 paintShape(g, GizmoArt.circle(new Circle(between.ball(ball), ball.radius())), BALL, pixel);
             }
             paintHeldCounts(g, board);
         } finally {
             g.dispose();
+        }
+    }
+
+    /**
+     * A plunger's spring in the column where its ball is held: a rod under a knob, and, while it is pulled, a glow that
+     * rises from the bottom and turns from yellow to red as the pull nears full.
+     */
+    private static void paintPlungers(Graphics2D g, Board board, float pixel) {
+        for (Gizmo gizmo : board.gizmos()) {
+            if (gizmo instanceof AbsorberView absorber && absorber.plunger().isPresent()) {
+                double left = gizmo.x() + gizmo.width() - 1;
+                double bottom = gizmo.y() + gizmo.height();
+                double pull = absorber.pull();
+                if (pull > 0) {
+                    double h = pull * gizmo.height();
+                    g.setColor(new Color(255, (int) Math.round(220 * (1 - pull)), 40, 200));
+                    g.fill(new Rectangle2D.Double(left + 0.1, bottom - h, 0.8, h));
+                }
+                double knob = bottom - 2 * Board.BALL_RADIUS - PLUNGER_KNOB - (1 - pull) * PLUNGER_TRAVEL;
+                g.setColor(PLUNGER);
+                g.fill(new Rectangle2D.Double(left + 0.45, knob, 0.1, bottom - knob));
+                paintShape(g, new Rectangle2D.Double(left + 0.2, knob, 0.6, PLUNGER_KNOB), PLUNGER, pixel);
+            }
         }
     }
 
@@ -174,6 +204,14 @@ public final class BoardPainter {
         g.setColor(fill.darker());
         g.setStroke(new BasicStroke(pixel));
         g.draw(shape);
+    }
+
+    /**
+     * How brightly {@code gizmo} flashes now. Nothing lights once the game is over: the board's clock stops with
+     * the game, and a flash that started in the last tick would otherwise stay lit until a new game.
+     */
+    static double glow(Board board, Gizmo gizmo) {
+        return board.game().isOver() ? 0 : flash(board.time() - gizmo.lastTriggeredAt());
     }
 
     /** How brightly a gizmo triggered that long ago flashes: 1 at the trigger, fading linearly to 0 at FLASH_SECONDS. */

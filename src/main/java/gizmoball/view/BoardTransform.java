@@ -8,8 +8,8 @@ import physics.Vect;
 
 /**
  * Maps board coordinates (L, y downward) to component pixels and back. The 20x20 board keeps its aspect
- * ratio and is centred; one L is a whole number of pixels (SPEC: grid lines then fall on pixel
- * boundaries and stay crisp). HiDPI screens are handled by Java2D's own device scaling on top of this.
+ * ratio and is centred; one L is a whole number of pixels (docs/rules.md, "Units and the board": grid lines then
+ * fall on pixel boundaries and stay crisp). HiDPI screens are handled by Java2D's own device scaling on top of this.
  */
 public final class BoardTransform {
     private final double scale;

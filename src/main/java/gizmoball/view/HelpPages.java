@@ -1,5 +1,6 @@
 package gizmoball.view;
 
+import gizmoball.boardfile.Decimals;
 import gizmoball.boardfile.KeyCodes;
 import gizmoball.editor.Tool;
 import gizmoball.model.Board;
@@ -11,12 +12,10 @@ import java.awt.Dimension;
 import java.awt.FlowLayout;
 import java.awt.Window;
 import java.awt.event.InputEvent;
-import java.awt.event.KeyEvent;
 import java.util.List;
 import java.util.Objects;
 import java.util.stream.IntStream;
 import javax.swing.JButton;
-import javax.swing.JComponent;
 import javax.swing.JDialog;
 import javax.swing.JEditorPane;
 import javax.swing.JMenu;
@@ -39,7 +38,8 @@ final class HelpPages {
     private HelpPages() {
     }
 
-    static String howToPlay(JMenuBar menus, Board board) {
+    /** @param settingsPlace where the settings and high scores are kept, as the page says it */
+    static String howToPlay(JMenuBar menus, Board board, String settingsPlace) {
         List<String> keys = KeyHelp.describe(board);
         StringBuilder html = new StringBuilder("<html><body><h2>How to play</h2>")
                 .append("<p>Press <b>Start</b> (Ctrl+G) and play with the board's keys. Holding a key keeps a")
@@ -61,7 +61,11 @@ final class HelpPages {
                     .append(escape(String.join(", ", items(menu)))).append("</td></tr>");
         }
         html.append("</table><p>The title shows * while there are unsaved changes; New, Open, Reload and Quit")
-                .append(" ask first.</p></body></html>");
+                .append(" ask first.</p>");
+        if (!settingsPlace.isEmpty()) {
+            html.append("<h3>Settings and high scores</h3><p>").append(escape(settingsPlace)).append("</p>");
+        }
+        html.append("</body></html>");
         return html.toString();
     }
 
@@ -77,9 +81,18 @@ final class HelpPages {
         }
         return "A game of " + rules.ballsPerGame() + (rules.ballsPerGame() == 1 ? " ball" : " balls") + ": a ball"
                 + " captured by the drain (" + String.join(", ", rules.drains().stream().sorted().toList())
-                + ") is lost, and the next waits there for the drain's key."
+                + ") is lost, and the next waits in the plunger (else in the drain) for its key; a plunger is pulled"
+                + " while its key is held and launches faster the longer the hold."
                 + (rules.extraBallAt().isPresent() ? " An extra ball at " + rules.extraBallAt().getAsLong()
-                + " points." : "") + " " + scoring + " Game > New game (Ctrl+Shift+N) starts again; Game > High"
+                + " points." : "")
+                + rules.nudge().map(n -> " " + KeyCodes.name(n.leftKey()) + ", " + KeyCodes.name(n.rightKey()) + " and "
+                + KeyCodes.name(n.upKey()) + " nudge the table; " + rules.tilt().nudges() + " nudges within "
+                + Decimals.format(rules.tilt().seconds()) + " s tilt it: flippers and plunger dead, no score, until"
+                + " the ball drains.").orElse("")
+                + (rules.ballSaveSeconds() > 0 ? " A ball lost within " + Decimals.format(rules.ballSaveSeconds())
+                + " s of its launch is given back once." : "")
+                + " " + scoring + " Game > New game (Ctrl+Shift+N) starts again; Game > Players starts a game for 1"
+                + " to 4 players, taking turns ball by ball; Game > High"
                 + " scores shows the board's ten best, whose games Watch plays again.";
     }
 
@@ -118,6 +131,9 @@ final class HelpPages {
                 .append(" tooltip.</p><p><b>Right-click</b> on the board selects what is there and opens a")
                 .append(" context menu: Rotate, Delete, Cut, Copy, Paste, Duplicate, Connect from here, Properties.")
                 .append("</p><p><b>File &gt; Open recent</b> lists the last ten boards opened or saved.</p>")
+                .append("<p><b>Test &gt; Play-test</b> (<b>Ctrl+L</b>) plays the board 100 times with an autoplayer")
+                .append(" and 100 times launching only, in the background, then shows where the balls went, the")
+                .append(" mean scores, how long a ball lasts and the gizmos never hit.</p>")
                 .append("</body></html>");
         return html.toString();
     }
@@ -159,8 +175,7 @@ final class HelpPages {
         dialog.add(scroll, BorderLayout.CENTER);
         dialog.add(buttons, BorderLayout.SOUTH);
         dialog.getRootPane().setDefaultButton(close);
-        dialog.getRootPane().registerKeyboardAction(e -> dialog.dispose(), KeyStroke.getKeyStroke(KeyEvent.VK_ESCAPE, 0),
-                JComponent.WHEN_IN_FOCUSED_WINDOW);
+        EscapeCloses.install(dialog);
         dialog.setDefaultCloseOperation(JDialog.DISPOSE_ON_CLOSE);
         dialog.pack();
         dialog.setLocationRelativeTo(owner);

@@ -102,6 +102,8 @@ public final class HighScoresDialog {
         content.add(buttons, BorderLayout.SOUTH);
         dialog.setContentPane(content);
         dialog.getRootPane().setDefaultButton(watchButton.isEnabled() ? watchButton : close);
+        dialog.setDefaultCloseOperation(JDialog.DISPOSE_ON_CLOSE);
+        EscapeCloses.install(dialog);
         dialog.pack();
         dialog.setLocationRelativeTo(parent);
         dialog.setVisible(true);

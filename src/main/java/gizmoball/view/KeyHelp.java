@@ -6,6 +6,7 @@ import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.gizmo.Action;
+import gizmoball.model.gizmo.AbsorberView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import java.util.ArrayList;
@@ -13,6 +14,7 @@ import java.util.EnumMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Predicate;
 import java.util.stream.Collectors;
 
 /**
@@ -26,11 +28,20 @@ final class KeyHelp {
     private record KeyAndGizmo(int keyCode, String gizmo) {
     }
 
-    /** What a player new to the game is told once: how to start, and the keys that play the board. */
-    static String firstRunHint(Board board) {
+    /**
+     * What a player new to the game is told once: how to start, and the keys that play the board, as many of them
+     * as {@code fits} (whole entries, never a word cut), the rest left to Help > Keys of this board.
+     */
+    static String firstRunHint(Board board, Predicate<String> fits) {
         List<String> keys = describe(board);
-        return "Press Start (Ctrl+G) to play" + (keys.isEmpty() ? "" : "; keys: " + String.join(", ", keys))
+        String hint = "Press Start (Ctrl+G) to play" + (keys.isEmpty() ? "" : "; keys: " + String.join(", ", keys))
                 + ". Help > Keys of this board (Ctrl+K) lists them again.";
+        for (int shown = keys.size() - 1; shown >= 0 && !fits.test(hint); shown--) {
+            hint = "Press Start (Ctrl+G) to play; " + (shown == 0 ? "the keys"
+                    : "keys: " + String.join(", ", keys.subList(0, shown)) + " and more")
+                    + ": Help > Keys of this board (Ctrl+K).";
+        }
+        return hint;
     }
 
     static List<String> describe(Board board) {
@@ -38,12 +49,17 @@ final class KeyHelp {
         for (KeyBinding b : board.keyBindings()) {
             bindings.computeIfAbsent(new KeyAndGizmo(b.keyCode(), b.gizmo()), k -> new ArrayList<>()).add(b);
         }
-        return bindings.entrySet().stream().map(e -> {
+        List<String> lines = new ArrayList<>(bindings.entrySet().stream().map(e -> {
             KeyAndGizmo k = e.getKey();
             GizmoKind kind = board.gizmo(k.gizmo()).map(Gizmo::kind).orElse(null);
-            return KeyCodes.name(k.keyCode()) + ": " + kindName(kind) + k.gizmo()
-                    + " (" + use(kind, e.getValue()) + ")";
-        }).toList();
+            boolean plunger = board.gizmo(k.gizmo()).filter(g -> g instanceof AbsorberView a
+                    && a.plunger().isPresent()).isPresent();
+            return KeyCodes.name(k.keyCode()) + ": " + (plunger ? "plunger " : kindName(kind)) + k.gizmo()
+                    + " (" + (plunger ? "hold to pull, release to launch" : use(kind, e.getValue())) + ")";
+        }).toList());
+        board.gameRules().nudge().ifPresent(n -> lines.add(KeyCodes.name(n.leftKey()) + ", "
+                + KeyCodes.name(n.rightKey()) + ", " + KeyCodes.name(n.upKey()) + ": nudge left, right, up"));
+        return lines;
     }
 
     /** "left flipper " for LEFT_FLIPPER; nothing for a name the board does not hold. */

@@ -45,8 +45,12 @@ public final class LaunchHint implements BoardOverlay {
                 Optional<KeyBinding> key = board.keyBindings().stream()
                         .filter(k -> k.gizmo().equals(gizmo.name())).min((a, b) -> rank(a) - rank(b));
                 if (key.isPresent()) {
+                    String keyName = KeyCodes.name(key.get().keyCode());
+                    if (absorber.plunger().isPresent() && key.get().edge() != KeyEdge.UP) {
+                        return Optional.of(new Hint(gizmo, "Hold " + keyName + " to pull, release to launch"));
+                    }
                     String verb = key.get().edge() == KeyEdge.UP ? "Press and release " : "Press ";
-                    return Optional.of(new Hint(gizmo, verb + KeyCodes.name(key.get().keyCode()) + " to launch"));
+                    return Optional.of(new Hint(gizmo, verb + keyName + " to launch"));
                 }
             }
         }

@@ -21,6 +21,7 @@ import java.awt.geom.RoundRectangle2D;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 import physics.Vect;
 
 /**
@@ -46,6 +47,7 @@ public final class PhysicsOverlay implements BoardOverlay {
     private static final Color TEXT = new Color(0xe8ecf4);
     private static final float[] DASH = {4f, 4f};
 
+    static final Font FONT = new Font(Font.MONOSPACED, Font.PLAIN, 11);
     /** The panel keeps this far from the board and from the view's edge. */
     private static final int GAP = 6;
 
@@ -80,25 +82,32 @@ public final class PhysicsOverlay implements BoardOverlay {
         board.setNextCollisionLookAhead(on ? LOOK_AHEAD_SECONDS : 0);
     }
 
-    /** The panel's lines for {@code r}: the tick, the six stage times, collisions, balls awake. */
+    /**
+     * The panel's lines for {@code r}: the tick, the six stage times in the order the loop runs them (detection
+     * before motion: the product description numbers them otherwise, docs/rules.md, "The tick", and the panel says
+     * so), collisions, balls awake. Short lines, so that the panel fits beside the board in most windows.
+     */
     static List<String> panelLines(TickReport r) {
         List<String> lines = new ArrayList<>();
         if (r == TickReport.NONE) {
-            lines.add("no tick since the board was");
-            lines.add("loaded, edited or reset");
+            lines.add("no tick since a load,");
+            lines.add("an edit or Reset");
             return lines;
         }
         lines.add(String.format(Locale.ROOT, "tick at t = %.3f s", r.time()));
+        lines.add("stages, in run order:");
         long total = 0;
         for (Stage stage : Stage.values()) {
             long nanos = r.stageNanos().get(stage);
             total += nanos;
-            lines.add(String.format(Locale.ROOT, "%d %-10s %8.1f us", stage.number(), stageName(stage), nanos / 1e3));
+            lines.add(String.format(Locale.ROOT, "%d %-10s %7.1f us", stage.number(), stageName(stage), nanos / 1e3));
         }
-        lines.add(String.format(Locale.ROOT, "  %-10s %8.1f us", "total", total / 1e3));
-        lines.add(String.format(Locale.ROOT, "collisions %d (%d at zero time)", r.collisions(), r.zeroTimeCollisions()));
+        lines.add(String.format(Locale.ROOT, "  %-10s %7.1f us", "total", total / 1e3));
+        lines.add(String.format(Locale.ROOT, "collisions %d", r.collisions()));
+        lines.add(String.format(Locale.ROOT, "  %d at zero time", r.zeroTimeCollisions()));
         lines.add(String.format(Locale.ROOT, "  %d at once apart", r.simultaneousCollisions()));
-        lines.add(String.format(Locale.ROOT, "balls awake %d, asleep %d", r.ballsAwake(), r.ballsAsleep()));
+        lines.add(String.format(Locale.ROOT, "balls awake %d", r.ballsAwake()));
+        lines.add(String.format(Locale.ROOT, "balls asleep %d", r.ballsAsleep()));
         return lines;
     }
 
@@ -121,22 +130,47 @@ public final class PhysicsOverlay implements BoardOverlay {
         };
     }
 
+    /** A ball's label and where it goes. */
+    record Label(String text, Rectangle2D box) { }
+
+    /** Where everything written goes: the tick panel, and the balls' labels (none over another). */
+    record Layout(Rectangle2D panel, List<String> lines, List<Label> labels) { }
+
     @Override
     public void paint(Graphics2D screen, BoardTransform t) {
         if (!enabled) {
             return;
         }
-        TickReport report = shown;
         Graphics2D g = (Graphics2D) screen.create();
         try {
-            g.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 11));
-            for (BallReport ball : report.balls()) {
+            g.setFont(FONT);
+            Layout layout = layout(g.getFontMetrics(), t, shown);
+            for (BallReport ball : shown.balls()) {
                 paintBall(g, t, ball);
             }
-            paintPanel(g, panelBox(g.getFontMetrics(), t, panelLines(report)), panelLines(report));
+            for (Label label : layout.labels()) {
+                g.drawString(label.text(), (float) label.box().getX(),
+                        (float) (label.box().getY() + g.getFontMetrics().getAscent()));
+            }
+            paintPanel(g, layout.panel(), layout.lines());
         } finally {
             g.dispose();
         }
+    }
+
+    /** The layout of {@code report}'s writing over the view {@code t} in the font {@code m} measures. */
+    Layout layout(FontMetrics m, BoardTransform t, TickReport report) {
+        List<String> lines = panelLines(report);
+        Rectangle2D panel = panelBox(m, t, lines);
+        List<Label> labels = new ArrayList<>();
+        for (BallReport ball : report.balls()) {
+            String text = ballLabel(ball);
+            List<Rectangle2D> taken = new ArrayList<>(labels.stream().map(Label::box).toList());
+            taken.add(panel);
+            labelBox(m, t, t.toScreen(ball.position().x(), ball.position().y()), text, taken)
+                    .ifPresent(box -> labels.add(new Label(text, box)));
+        }
+        return new Layout(panel, lines, labels);
     }
 
     private static void paintBall(Graphics2D g, BoardTransform t, BallReport ball) {
@@ -164,22 +198,32 @@ public final class PhysicsOverlay implements BoardOverlay {
         });
         g.setStroke(new BasicStroke(2f));
         g.draw(new Ellipse2D.Double(at.getX() - r - 3, at.getY() - r - 3, 2 * r + 6, 2 * r + 6));
-        String label = ballLabel(ball);
-        Rectangle2D box = labelBox(g.getFontMetrics(), t, at, label);
-        g.drawString(label, (float) box.getX(), (float) (box.getY() + g.getFontMetrics().getAscent()));
     }
 
     /**
-     * The text box of a ball's label: centred under the ball, above it on the bottom row, and moved in from the
-     * board's sides so that it never runs past them.
+     * The text box of a ball's label, kept on the board: under the ball, else above it, else beside it (right, then
+     * left), whichever first overlaps none of the boxes {@code taken}; none if every place does (the ball's ring
+     * still says its state by its colour).
      */
-    static Rectangle2D labelBox(FontMetrics m, BoardTransform t, Point2D ball, String label) {
+    static Optional<Rectangle2D> labelBox(FontMetrics m, BoardTransform t, Point2D ball, String label,
+                                         List<Rectangle2D> taken) {
         double r = Board.BALL_RADIUS * t.scale();
         double width = m.stringWidth(label);
-        double below = ball.getY() + r + 4;
-        Rectangle2D area = t.board();
-        double y = below + m.getHeight() <= area.getMaxY() ? below : ball.getY() - r - 4 - m.getHeight();
-        return BoardTransform.keptInside(new Rectangle2D.Double(ball.getX() - width / 2, y, width, m.getHeight()), area);
+        double height = m.getHeight();
+        double[][] places = {
+            {ball.getX() - width / 2, ball.getY() + r + 4},
+            {ball.getX() - width / 2, ball.getY() - r - 4 - height},
+            {ball.getX() + r + 6, ball.getY() - height / 2},
+            {ball.getX() - r - 6 - width, ball.getY() - height / 2},
+        };
+        for (double[] place : places) {
+            Rectangle2D box = BoardTransform.keptInside(new Rectangle2D.Double(place[0], place[1], width, height),
+                    t.board());
+            if (taken.stream().noneMatch(box::intersects)) {
+                return Optional.of(box);
+            }
+        }
+        return Optional.empty();
     }
 
     private static void paintArrowHead(Graphics2D g, Point2D from, Point2D tip) {

@@ -74,6 +74,14 @@ public final class StatusLine extends JPanel {
         }
     }
 
+    /** Whether {@code text} would show whole as the message, once the other facts have given way for it. */
+    public boolean fitsWhole(String text) {
+        Insets in = getInsets();
+        int boardClaim = Math.min(fullBoardWidth(), SHORT_BOARD_WIDTH) + GAP;
+        return message.getFontMetrics(message.getFont()).stringWidth(text)
+                <= getWidth() - in.left - in.right - boardClaim;
+    }
+
     public String message() {
         return messageText;
     }

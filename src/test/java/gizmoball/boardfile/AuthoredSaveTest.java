@@ -99,6 +99,44 @@ class AuthoredSaveTest {
                 """);
     }
 
+    /**
+     * Issue 40 item 7: a key binding written with {@code #@} (it says what the gizmo does) is a key binding: it goes
+     * after the last {@code KeyConnect} line, not after the last {@code #@} line of any sort; and never before the
+     * line that defines the gizmo it names.
+     */
+    @Test
+    void aMarkedKeyBindingGoesAfterTheLastKeyBindingAndAfterItsGizmo() {
+        String text = """
+                Square S1 2 2
+                Absorber A 0 19 20 20
+                KeyConnect key 32 down A
+                #@Portal P1 5 5
+                #@Rotate P1
+                Gravity 25
+                """;
+        LoadResult loaded = load(text);
+        Board board = loaded.board();
+        board.bindKey(70, KeyEdge.DOWN, "S1", new gizmoball.model.gizmo.Order(java.util.Optional.empty(), 0.5));
+        board.bindKey(71, KeyEdge.DOWN, "P1", new gizmoball.model.gizmo.Order(java.util.Optional.empty(), 0.5));
+        board.addGizmo(GizmoKind.PORTAL, "P2", 8, 8);
+        board.rotate("P2");
+        board.bindKey(72, KeyEdge.DOWN, "P2", new gizmoball.model.gizmo.Order(java.util.Optional.empty(), 0.5));
+
+        assertThat(loaded.authored().saving(board).text()).isEqualTo("""
+                Square S1 2 2
+                Absorber A 0 19 20 20
+                KeyConnect key 32 down A
+                #@KeyConnect key 70 down S1 after 0.5
+                #@Portal P1 5 5
+                #@KeyConnect key 71 down P1 after 0.5
+                #@Portal P2 8 8
+                #@KeyConnect key 72 down P2 after 0.5
+                #@Rotate P1
+                #@Rotate P2
+                Gravity 25
+                """);
+    }
+
     @Test
     void aChangedRotationReplacesAllTheRotateLinesOfItsGizmo() {
         String text = "Triangle T 1 1\nRotate T\n# two more\nRotate T\nRotate T\nGravity 25.0\n";

@@ -1,5 +1,6 @@
 package gizmoball.boardfile;
 
+import gizmoball.model.gizmo.Setting;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.model.Board;
@@ -28,9 +29,9 @@ class BoardContentsTest {
 
     static Stream<Arguments> changes() {
         return Stream.of(
-                Arguments.of("an accelerator's factor", (Consumer<Board>) b -> b.setFactor("A", 2)),
-                Arguments.of("a spawner's velocity", (Consumer<Board>) b -> b.setSpawnVelocity("P", 0, -30)),
-                Arguments.of("a spinner's speed", (Consumer<Board>) b -> b.setSpinnerSpeed("N", -1)));
+                Arguments.of("an accelerator's factor", (Consumer<Board>) b -> b.set("A", new Setting.Factor(2))),
+                Arguments.of("a spawner's velocity", (Consumer<Board>) b -> b.set("P", new Setting.Launch(0, -30))),
+                Arguments.of("a spinner's speed", (Consumer<Board>) b -> b.set("N", new Setting.Speed(-1))));
     }
 
     @ParameterizedTest(name = "{0}")

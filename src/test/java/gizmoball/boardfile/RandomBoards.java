@@ -1,5 +1,6 @@
 package gizmoball.boardfile;
 
+import gizmoball.model.gizmo.Setting;
 import gizmoball.model.Board;
 import gizmoball.model.game.GameRules;
 import gizmoball.model.game.Points;
@@ -93,10 +94,10 @@ final class RandomBoards {
             GizmoKind kind = EXTENSIONS[random.nextInt(EXTENSIONS.length)];
             attempt(() -> board.addGizmo(kind, name, random.nextInt(20), random.nextInt(20)));
             if (kind == GizmoKind.ACCELERATOR && random.nextBoolean()) {
-                attempt(() -> board.setFactor(name, 1 + random.nextInt(17) / 4.0));
+                attempt(() -> board.set(name, new Setting.Factor(1 + random.nextInt(17) / 4.0)));
             }
             if (kind == GizmoKind.SPINNER && random.nextBoolean()) {
-                attempt(() -> board.setSpinnerSpeed(name, (random.nextBoolean() ? 1 : -1) * (1 + random.nextInt(12)) / 4.0));
+                attempt(() -> board.set(name, new Setting.Speed((random.nextBoolean() ? 1 : -1) * (1 + random.nextInt(12)) / 4.0)));
             }
         }
         List<String> portals = board.gizmos().stream().filter(g -> g.kind() == GizmoKind.PORTAL).map(Gizmo::name)
@@ -104,7 +105,7 @@ final class RandomBoards {
         for (int i = 0; i + 1 < portals.size(); i += 1 + random.nextInt(2)) {
             String first = portals.get(i);
             String second = portals.get(i + 1);
-            attempt(() -> board.pair(first, second));
+            attempt(() -> board.set(first, Setting.Pair.with(second)));
         }
         List<String> names = board.gizmos().stream().map(Gizmo::name).toList();
         if (names.isEmpty()) {

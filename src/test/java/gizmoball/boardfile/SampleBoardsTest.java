@@ -5,7 +5,7 @@ import static org.assertj.core.api.Assertions.fail;
 
 import gizmoball.model.Board;
 import gizmoball.model.Invariants;
-import gizmoball.model.KeyEdge;
+import gizmoball.model.gizmo.AbsorberView;
 import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.GizmoKind;
 import java.io.IOException;
@@ -20,7 +20,8 @@ class SampleBoardsTest {
     private static final Path BOARDS = Path.of("boards");
 
     @ParameterizedTest
-    @ValueSource(strings = {"default.txt", "extensions.txt", "multiball.txt", "rube-goldberg.txt", "stress.txt"})
+    @ValueSource(strings = {"default.txt", "arcade.txt", "orbit.txt", "castle.txt", "extensions.txt", "multiball.txt",
+        "rube-goldberg.txt", "stress.txt"})
     void loadsStrictlyAndRunsWithTheInvariantsHolding(String name) throws IOException, BoardFileException {
         Board board = BoardFiles.load(BOARDS.resolve(name));
         assertThat(Invariants.violations(board)).isEmpty();
@@ -34,14 +35,15 @@ class SampleBoardsTest {
     }
 
     @Test
-    void theDefaultBoardHasKeyedFlippersAKeyedAbsorberBumperTriggersAndABall() throws Exception {
+    void theDefaultBoardHasKeyedFlippersAPlungerUnderItsLaneADrainAndABall() throws Exception {
         Board board = BoardFiles.load(BOARDS.resolve("default.txt"));
         assertThat(board.gizmos()).filteredOn(g -> g instanceof FlipperView).extracting(g -> g.name())
                 .containsExactly("LF", "RF");
         assertThat(board.keyBindings()).extracting(k -> k.keyCode() + " " + k.edge() + " " + k.gizmo())
-                .contains("90 DOWN LF", "90 UP LF", "47 DOWN RF", "47 UP RF", "32 DOWN A");
-        assertThat(board.gizmo("A").orElseThrow().kind()).isEqualTo(GizmoKind.ABSORBER);
-        assertThat(board.connections()).extracting(c -> c.target()).contains("LF", "RF");
+                .contains("90 DOWN LF", "90 UP LF", "47 DOWN RF", "47 UP RF", "32 DOWN Drain", "32 DOWN Plunger");
+        assertThat(board.gizmo("Drain").orElseThrow().kind()).isEqualTo(GizmoKind.ABSORBER);
+        assertThat(board.gameRules().isDrain("Drain")).isTrue();
+        assertThat(((AbsorberView) board.gizmo("Plunger").orElseThrow()).plunger()).isPresent();
         assertThat(board.balls()).hasSize(1);
     }
 
@@ -53,20 +55,25 @@ class SampleBoardsTest {
         assertThat(((gizmoball.model.gizmo.PortalView) board.gizmo("PL").orElseThrow()).pair()).contains("PR");
         assertThat(board.connections()).anyMatch(c -> c.order().delay() > 0 && c.order().action().isPresent());
         assertThat(board.keyBindings()).anyMatch(k -> k.order().delay() > 0);
-        assertThat(board.gameRules().isGame()).isTrue();
+        assertThat(board.gameRules().isGame()).as("a sandbox").isFalse();
     }
 
     @Test
-    void theDefaultBoardRelaunchesItsBallOnSpace() throws Exception {
+    void theDefaultBoardServesItsBallToThePlungerOnSpaceAndTheReleaseLaunchesIt() throws Exception {
         Board board = BoardFiles.load(BOARDS.resolve("default.txt"));
-        for (int tick = 0; tick < 120 && !board.balls().get(0).isCaptured(); tick++) {
+        AbsorberView plunger = (AbsorberView) board.gizmo("Plunger").orElseThrow();
+        board.keyDown(32);
+        for (int tick = 0; tick < 60 && plunger.held().isEmpty(); tick++) {
             board.tick(Board.DEFAULT_TICK);
         }
-        assertThat(board.balls().get(0).isCaptured()).as("the ball falls into the absorber").isTrue();
-        board.keyDown(32);
+        assertThat(plunger.held()).as("the drained ball goes up into the plunger").containsExactly("B");
+        for (int tick = 0; tick < 120; tick++) {
+            board.tick(Board.DEFAULT_TICK);
+        }
+        board.keyUp(32);
         assertThat(board.balls().get(0).isCaptured()).isFalse();
-        assertThat(board.balls().get(0).velocity().y()).isEqualTo(-Board.ABSORBER_LAUNCH_SPEED);
-        assertThat(board.keyBindings()).anyMatch(k -> k.keyCode() == 32 && k.edge() == KeyEdge.DOWN);
+        assertThat(board.balls().get(0).velocity().y()).as("a full pull")
+                .isEqualTo(-plunger.plunger().orElseThrow().fullSpeed());
     }
 
     @Test

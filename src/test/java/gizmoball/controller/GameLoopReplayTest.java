@@ -23,7 +23,7 @@ class GameLoopReplayTest {
 
     /** Key bindings whose actions wait: delays run on the board's clock, so they replay as the keys do. */
     private static final String DELAYED_BINDINGS = """
-            #@KeyConnect key 88 down A after 0.75
+            #@KeyConnect key 88 down Plunger after 0.75
             #@KeyConnect key 67 down LF toggle after 0.2
             #@KeyConnect key 67 up RF raise after 0.05
             """;

@@ -454,11 +454,11 @@ class EditorTest {
 
     @Test
     void constantsAreValidatedAndSetAsOneUndoStep() {
-        assertThat(editor.setConstants(12.5, 0.5, -1)).isFalse();
+        assertThat(editor.properties().setConstants(12.5, 0.5, -1)).isFalse();
         assertThat(board.gravity()).isEqualTo(Board.DEFAULT_GRAVITY);
         assertThat(board.mu()).isEqualTo(Board.DEFAULT_MU);
 
-        assertThat(editor.setConstants(12.5, 0.5, 0.1)).isTrue();
+        assertThat(editor.properties().setConstants(12.5, 0.5, 0.1)).isTrue();
         assertThat(List.of(board.gravity(), board.mu(), board.mu2())).containsExactly(12.5, 0.5, 0.1);
         editor.undo();
         assertThat(List.of(board.gravity(), board.mu(), board.mu2()))
@@ -469,13 +469,13 @@ class EditorTest {
     @Test
     void theSelectedBallsPositionAndVelocityCanBeTypedIn() {
         board.addBall("B1", 3, 3, 0, 0);
-        assertThat(editor.setBall("B1", 4.5, 6, -3, 7.25)).isTrue();
+        assertThat(editor.properties().setBall("B1", 4.5, 6, -3, 7.25)).isTrue();
         BallView b = board.ball("B1").orElseThrow();
         assertThat(List.of(b.position().x(), b.position().y(), b.velocity().x(), b.velocity().y()))
                 .containsExactly(4.5, 6.0, -3.0, 7.25);
 
         BoardContents before = BoardContents.of(board);
-        assertThat(editor.setBall("B1", 25, 6, 1, 1)).isFalse();
+        assertThat(editor.properties().setBall("B1", 25, 6, 1, 1)).isFalse();
         assertThat(BoardContents.of(board)).isEqualTo(before);
         editor.undo();
         // One step took back both the move and the new velocity.
@@ -488,7 +488,7 @@ class EditorTest {
     void changingABallsVelocityKeepsTheOrderOfTheBalls() {
         board.addBall("B1", 3, 3, 0, 0);
         board.addBall("B2", 6, 6, 0, 0);
-        assertThat(editor.setBall("B1", 3, 3, 5, -5)).isTrue();
+        assertThat(editor.properties().setBall("B1", 3, 3, 5, -5)).isTrue();
         assertThat(board.balls()).extracting(BallView::name).containsExactly("B1", "B2");
         assertThat(board.ball("B1").orElseThrow().velocity()).isEqualTo(new Vect(5, -5));
     }
@@ -539,7 +539,7 @@ class EditorTest {
         click(Tool.SQUARE, 1, 1);
         click(Tool.LEFT_FLIPPER, 4, 4);
         board.connect(TriggerSource.gizmo("S1"), "LF1");
-        editor.setConstants(10, 0, 0);
+        editor.properties().setConstants(10, 0, 0);
         BoardContents full = BoardContents.of(board);
 
         editor.clearBoard();
@@ -664,22 +664,22 @@ class EditorTest {
     @Test
     void aColourTypedAsHexIsOneUndoableEditAndBadTextIsRefusedWithAReason() {
         board.addGizmo(GizmoKind.CIRCLE, "C", 4, 4);
-        assertThat(editor.setColour("C", " 99b3ff ")).isTrue();
+        assertThat(editor.properties().setColour("C", " 99b3ff ")).isTrue();
         assertThat(gizmo("C").colour()).contains(new Rgb(0x99, 0xb3, 0xff));
         assertThat(lastMessage()).isEqualTo("C coloured #99b3ff");
         int before = edits;
-        assertThat(editor.setColour("C", "#99B3FF")).as("the same colour").isTrue();
+        assertThat(editor.properties().setColour("C", "#99B3FF")).as("the same colour").isTrue();
         assertThat(edits).as("is no edit").isEqualTo(before);
-        assertThat(editor.setColour("C", "#12345")).isFalse();
+        assertThat(editor.properties().setColour("C", "#12345")).isFalse();
         assertThat(lastMessage()).contains("'#12345' is not #rrggbb");
-        assertThat(editor.setColour("Nope", "#123456")).isFalse();
-        assertThat(editor.setColour("C", "")).isTrue();
+        assertThat(editor.properties().setColour("Nope", "#123456")).isFalse();
+        assertThat(editor.properties().setColour("C", "")).isTrue();
         assertThat(gizmo("C").colour()).isEmpty();
         editor.undo();
         assertThat(gizmo("C").colour()).contains(new Rgb(0x99, 0xb3, 0xff));
         editor.undo();
         assertThat(gizmo("C").colour()).isEmpty();
-        assertThat(Editor.hex(new Rgb(0, 10, 255))).isEqualTo("#000aff");
+        assertThat(PropertyEdits.hex(new Rgb(0, 10, 255))).isEqualTo("#000aff");
     }
 
     @Test
@@ -719,7 +719,7 @@ class EditorTest {
         editor.chooseConnection();
         assertThat(messages).contains("Connected S1 \u2192 S2");
 
-        editor.disconnect(TriggerSource.gizmo("S1"), "S2");
+        editor.properties().disconnect(TriggerSource.gizmo("S1"), "S2");
         assertThat(lastMessage()).isEqualTo("Disconnected S1 \u2192 S2");
         assertThat(messages).noneMatch(m -> m.contains("->"));
     }
@@ -727,10 +727,10 @@ class EditorTest {
     /** Issue 23, item 15: a refusal is kept, for the field that asked, with its reason. */
     @Test
     void aRefusedEditLeavesItsReasonForTheFieldThatAskedForIt() {
-        assertThat(editor.setConstants(25, -1, 0.025)).isFalse();
+        assertThat(editor.properties().setConstants(25, -1, 0.025)).isFalse();
         assertThat(editor.lastRefusal()).hasValueSatisfying(reason -> assertThat(lastMessage()).isEqualTo(reason));
         click(Tool.SQUARE, 3, 3);
-        assertThat(editor.setColour("S1", "green")).isFalse();
+        assertThat(editor.properties().setColour("S1", "green")).isFalse();
         assertThat(editor.lastRefusal()).contains(lastMessage());
     }
 }

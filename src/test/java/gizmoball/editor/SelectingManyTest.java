@@ -194,11 +194,11 @@ class SelectingManyTest {
     @Test
     void copyingAGroupTakesTheConnectionsInsideItAndPastesUnderFreshNamesAllSelected() {
         editor.selectAll(List.of("S1", "T1"), false);
-        String text = editor.copySelected().orElseThrow();
+        String text = editor.clipboard().copySelected().orElseThrow();
         assertThat(text).contains("Square S1 2 2", "Triangle T1 4 2", "Connect S1 T1").doesNotContain("C1");
         assertThat(lastMessage()).isEqualTo("Copied S1 and T1");
 
-        assertThat(editor.paste(text)).isTrue();
+        assertThat(editor.clipboard().paste(text)).isTrue();
         List<String> pasted = editor.selection();
         assertThat(pasted).hasSize(2).doesNotContain("S1", "T1");
         assertThat(board.connections()).contains(new Connection(TriggerSource.gizmo(pasted.get(0)), pasted.get(1)));
@@ -214,13 +214,13 @@ class SelectingManyTest {
     @Test
     void cutAndDuplicateActOnTheWholeGroup() {
         editor.selectAll(List.of("S1", "S2", "B1"), false);
-        assertThat(editor.duplicateSelected()).isTrue();
+        assertThat(editor.clipboard().duplicateSelected()).isTrue();
         assertThat(editor.selection()).hasSize(3).doesNotContain("S1", "S2", "B1");
         assertThat(board.gizmos()).hasSize(6);
         assertThat(board.balls()).hasSize(2);
 
         editor.selectAll(List.of("S1", "S2", "B1"), false);
-        String text = editor.cutSelected().orElseThrow();
+        String text = editor.clipboard().cutSelected().orElseThrow();
         assertThat(text).contains("Square S1", "Square S2", "Ball B1");
         assertThat(board.gizmo("S1")).isEmpty();
         assertThat(board.ball("B1")).isEmpty();

@@ -1,5 +1,6 @@
 package gizmoball.editor;
 
+import gizmoball.model.gizmo.Setting;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.boardfile.BoardContents;
@@ -45,11 +46,11 @@ class TransferTest {
 
     @Test
     void aTypedPositionMovesTheGizmoAndUndoesInOneStep() {
-        assertThat(editor.moveGizmoTo("C1", 12, 2)).isTrue();
+        assertThat(editor.properties().moveGizmoTo("C1", 12, 2)).isTrue();
         assertThat(gizmo("C1").x()).isEqualTo(12);
         assertThat(gizmo("C1").y()).isEqualTo(2);
 
-        assertThat(editor.moveGizmoTo("C1", 9, 9)).as("onto T1").isFalse();
+        assertThat(editor.properties().moveGizmoTo("C1", 9, 9)).as("onto T1").isFalse();
         assertThat(gizmo("C1").x()).isEqualTo(12);
         editor.undo();
         assertThat(gizmo("C1").x()).isEqualTo(3);
@@ -60,7 +61,7 @@ class TransferTest {
         BoardContents before = BoardContents.of(board);
         editor.select("LF");
 
-        assertThat(editor.rename("LF", "Left")).isTrue();
+        assertThat(editor.properties().rename("LF", "Left")).isTrue();
 
         assertThat(board.gizmo("LF")).isEmpty();
         assertThat(gizmo("Left").x()).isEqualTo(4);
@@ -74,7 +75,7 @@ class TransferTest {
 
     @Test
     void aRenamedGizmoKeepsItsTurnsColourAndItsConnectionToItself() {
-        assertThat(editor.rename("T1", "Ramp")).isTrue();
+        assertThat(editor.properties().rename("T1", "Ramp")).isTrue();
 
         assertThat(gizmo("Ramp").rotation()).isEqualTo(1);
         assertThat(gizmo("Ramp").colour()).contains(Rgb.of(0x99b3ff));
@@ -85,10 +86,10 @@ class TransferTest {
     void aNameTakenOrWithSpacesIsRefusedAndChangesNothing() {
         BoardContents before = BoardContents.of(board);
         Optional<String> lastStep = editor.history().undoable();
-        assertThat(editor.rename("LF", "C1")).isFalse();
-        assertThat(editor.rename("LF", "two words")).isFalse();
+        assertThat(editor.properties().rename("LF", "C1")).isFalse();
+        assertThat(editor.properties().rename("LF", "two words")).isFalse();
         assertThat(editor.lastRefusal()).hasValueSatisfying(r -> assertThat(r).contains("one word"));
-        assertThat(editor.rename("LF", "OuterWalls")).isFalse();
+        assertThat(editor.properties().rename("LF", "OuterWalls")).isFalse();
         assertThat(BoardContents.of(board)).isEqualTo(before);
         assertThat(editor.history().undoable()).isEqualTo(lastStep);
     }
@@ -97,20 +98,20 @@ class TransferTest {
     void aPairTypedInThePropertiesIsOneUndoStepAndFollowsARenameAndACopyOfBoth() {
         board.addGizmo(GizmoKind.PORTAL, "P1", 1, 1);
         board.addGizmo(GizmoKind.PORTAL, "P2", 15, 1);
-        assertThat(editor.setPair("P1", "P2")).isTrue();
+        assertThat(editor.properties().set("P1", Setting.Pair.with("P2"))).isTrue();
         assertThat(pair("P2")).contains("P1");
-        assertThat(editor.setPair("P1", "C1")).as("a circle is no portal").isFalse();
+        assertThat(editor.properties().set("P1", Setting.Pair.with("C1"))).as("a circle is no portal").isFalse();
         assertThat(messages).last().asString().contains("only portals are paired: C1 is a circle");
 
-        assertThat(editor.rename("P2", "Exit")).isTrue();
+        assertThat(editor.properties().rename("P2", "Exit")).isTrue();
         assertThat(pair("P1")).contains("Exit");
         editor.selectAll(List.of("P1", "Exit"), false);
-        String text = editor.copySelected().orElseThrow();
-        assertThat(editor.paste(text)).isTrue();
+        String text = editor.clipboard().copySelected().orElseThrow();
+        assertThat(editor.clipboard().paste(text)).isTrue();
         assertThat(pair("P2")).as("the copies (fresh names P2, P3) are each other's pair").contains("P3");
         assertThat(pair("P1")).contains("Exit");
 
-        assertThat(editor.setPair("P1", "")).isTrue();
+        assertThat(editor.properties().set("P1", Setting.Pair.with(""))).isTrue();
         assertThat(pair("Exit")).isEmpty();
         editor.undo();
         assertThat(pair("Exit")).contains("P1");
@@ -123,11 +124,11 @@ class TransferTest {
     @Test
     void copyThenPasteOnAnotherBoardPutsItWhereItWasUnderAFreshName() {
         editor.select("T1");
-        String text = editor.copySelected().orElseThrow();
+        String text = editor.clipboard().copySelected().orElseThrow();
         Board other = new Board();
         Editor second = Editor.of(other);
 
-        assertThat(second.paste(text)).isTrue();
+        assertThat(second.clipboard().paste(text)).isTrue();
 
         Gizmo pasted = other.gizmos().get(0);
         assertThat(pasted.name()).isEqualTo("T1");
@@ -142,9 +143,9 @@ class TransferTest {
     @Test
     void pastingOntoTheSameBoardTakesTheNearestFreePlaceAndAFreshName() {
         editor.select("C1");
-        String text = editor.copySelected().orElseThrow();
+        String text = editor.clipboard().copySelected().orElseThrow();
 
-        assertThat(editor.paste(text)).isTrue();
+        assertThat(editor.clipboard().paste(text)).isTrue();
 
         Gizmo pasted = gizmo("C2");
         assertThat(Math.max(Math.abs(pasted.x() - 3), Math.abs(pasted.y() - 4))).isEqualTo(1);
@@ -157,7 +158,7 @@ class TransferTest {
     @Test
     void aCopiedFlipperTakesItsKeyAlong() {
         editor.select("LF");
-        assertThat(editor.duplicateSelected()).isTrue();
+        assertThat(editor.clipboard().duplicateSelected()).isTrue();
 
         assertThat(board.keyBindings()).contains(new KeyBinding(90, KeyEdge.DOWN, "LF1"));
         assertThat(editor.selected()).contains("LF1");
@@ -167,11 +168,11 @@ class TransferTest {
     @Test
     void cutCopiesAndDeletesInOneStep() {
         editor.select("C1");
-        String text = editor.cutSelected().orElseThrow();
+        String text = editor.clipboard().cutSelected().orElseThrow();
 
         assertThat(board.gizmo("C1")).isEmpty();
         assertThat(text).contains("Circle C1 3 4");
-        assertThat(editor.paste(text)).isTrue();
+        assertThat(editor.clipboard().paste(text)).isTrue();
         assertThat(gizmo("C1").x()).as("back where it was, its name free again").isEqualTo(3);
         editor.undo();
         editor.undo();
@@ -182,8 +183,8 @@ class TransferTest {
     @Test
     void textThatIsNoBoardIsNotPasted() {
         BoardContents before = BoardContents.of(board);
-        assertThat(editor.paste("hello world")).isFalse();
-        assertThat(editor.paste("")).isFalse();
+        assertThat(editor.clipboard().paste("hello world")).isFalse();
+        assertThat(editor.clipboard().paste("")).isFalse();
         assertThat(editor.lastRefusal()).hasValueSatisfying(r -> assertThat(r).startsWith("Nothing to paste"));
         assertThat(BoardContents.of(board)).isEqualTo(before);
     }
@@ -192,7 +193,7 @@ class TransferTest {
     void aBallCopiesWithItsVelocity() {
         board.addBall("B", 15.5, 3.5, 2, -1);
         editor.select("B");
-        assertThat(editor.duplicateSelected()).isTrue();
+        assertThat(editor.clipboard().duplicateSelected()).isTrue();
 
         assertThat(board.ball("B1").orElseThrow().velocity().x()).isEqualTo(2.0);
     }

@@ -16,7 +16,8 @@ import java.util.List;
 
 /**
  * The solid body of each gizmo, built from what a view may read (kind, footprint cell, size, rotation, a flipper's
- * angle, a spinner's) and the product description's shapes (SPEC.md, "Gizmos"), never from the game's own shapes or distances.
+ * angle, a spinner's) and the product description's shapes (docs/rules.md, "Gizmos"), never from the game's own
+ * shapes or distances.
  */
 final class Bodies {
     /** A flipper's bar: 2 L long with round ends of radius 0.25 L, so the ends' centres are 1.5 L apart. */

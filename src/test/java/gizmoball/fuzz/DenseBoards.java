@@ -1,5 +1,6 @@
 package gizmoball.fuzz;
 
+import gizmoball.model.gizmo.Setting;
 import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyEdge;
@@ -278,7 +279,7 @@ public final class DenseBoards {
             }
             spinners.add(name);
             double turns = r.nextInt(3) == 0 ? 1 : round(r.nextDouble(0.25, 3));
-            board.setSpinnerSpeed(name, r.nextBoolean() ? turns : -turns);
+            board.set(name, new Setting.Speed(r.nextBoolean() ? turns : -turns));
             if (r.nextInt(3) == 0) {
                 try {
                     board.setSpinnerState(name, r.nextDouble(0, 2 * Math.PI), r.nextInt(4) > 0);
@@ -420,7 +421,7 @@ public final class DenseBoards {
     private void pairPortals() {
         for (int i = 0; i + 1 < portals.size(); i += 2) {
             if (random.nextInt(5) > 0) {
-                board.pair(portals.get(i), portals.get(i + 1));
+                board.set(portals.get(i), Setting.Pair.with(portals.get(i + 1)));
             }
         }
         if (!portals.isEmpty()) {

@@ -41,7 +41,7 @@ public final class TickChecker {
     static final double DT = Board.DEFAULT_TICK;
 
     private static final double R = Board.BALL_RADIUS;
-    /** L/s: the speed an absorber fires a ball at (SPEC.md), stated here again on purpose. */
+    /** L/s: the speed an absorber fires a ball at (docs/rules.md, "Gizmos"), stated here again on purpose. */
     private static final double LAUNCH_SPEED = 50;
     private static final int SIZE = Board.SIZE;
 
@@ -273,8 +273,8 @@ public final class TickChecker {
                 || ball.position().x() != last.x() || ball.position().y() != last.y()) {
             return;
         }
-        // Stage 1 of the tick (SPEC.md): v (1 - mu dt - mu2 |v| dt) + g dt, gravity along +y; friction that would
-        // take more than the whole velocity stops the ball instead of turning it round.
+        // Stage 1 of the tick (docs/rules.md, "The tick"): v (1 - mu dt - mu2 |v| dt) + g dt, gravity along +y;
+        // friction that would take more than the whole velocity stops the ball instead of turning it round.
         double speedBefore = Math.hypot(last.vx(), last.vy());
         double keep = Math.max(0, 1 - mu * DT - mu2 * speedBefore * DT);
         double speed = Math.hypot(last.vx() * keep, last.vy() * keep + gravity * DT);
@@ -310,7 +310,8 @@ public final class TickChecker {
             nearest = Math.min(nearest, Bodies.of(cell).signedDistance(x, y) - R);   // there or not, it was near
         }
         for (Gizmo absorber : fired) {
-            // SPEC.md: a fired ball leaves the top at 50 L/s; in a tick its centre goes at most that far above it
+            // docs/rules.md, "Gizmos": a fired ball leaves the top at 50 L/s; in a tick its centre goes at most that
+            // far above it
             double above = Math.max(absorber.y() - R - LAUNCH_SPEED * DT - y, Math.max(0, y - absorber.y() - R));
             double across = Math.max(0, Math.max(absorber.x() - x, x - absorber.x() - absorber.width()));
             nearest = Math.min(nearest, Math.hypot(Math.max(0, above), across) - 2 * R);

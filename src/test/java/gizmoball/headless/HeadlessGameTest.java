@@ -3,6 +3,7 @@ package gizmoball.headless;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import com.google.gson.JsonArray;
+import com.google.gson.JsonElement;
 import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
 import gizmoball.model.Board;
@@ -95,6 +96,27 @@ class HeadlessGameTest {
         assertThat(Files.readString(directory.resolve("after.txt"))).doesNotContain("Ball B");
     }
 
+    /** Two players, a ball each: the first launch is player 1's, the second player 2's, and the replay says so. */
+    @Test
+    void aGameOfTwoPlayersIsReportedPlayerByPlayerAndReplaysWithThem() throws Exception {
+        Path report = directory.resolve("report.json");
+        Path replay = directory.resolve("game.replay.json");
+        String oneBallEach = BOARD.replace("#@Balls 2", "#@Balls 1");
+
+        assertThat(run("--headless", "--ticks", "300", "--players", "2", "--keys", file("keys.txt", SCRIPT).toString(),
+                "--report", report.toString(), "--record", replay.toString(), file("board.txt", oneBallEach).toString()))
+                .as(err.toString(StandardCharsets.UTF_8)).isEqualTo(HeadlessRunner.OK);
+
+        JsonObject json = JsonParser.parseString(Files.readString(report)).getAsJsonObject();
+        assertThat(json.get("players").getAsInt()).isEqualTo(2);
+        assertThat(json.getAsJsonArray("playerScores")).extracting(JsonElement::getAsLong).containsExactly(125L, 125L);
+        assertThat(json.get("gameOver").getAsBoolean()).isTrue();
+        assertThat(ReplayFiles.read(replay).players()).isEqualTo(2);
+        out.reset();
+        assertThat(run("--headless", "--replay", replay.toString())).isEqualTo(HeadlessRunner.OK);
+        assertThat(out.toString(StandardCharsets.UTF_8)).isEqualTo("score 250 after 300 ticks\n");
+    }
+
     @Test
     void aRecordedGameReplaysToItsScoreAndAChangedScoreExitsFour() throws Exception {
         Path replay = directory.resolve("game.replay.json");
@@ -110,7 +132,7 @@ class HeadlessGameTest {
         assertThat(out.toString(StandardCharsets.UTF_8)).isEqualTo("score 250 after 300 ticks\n");
 
         Path forged = file("forged.json", ReplayFiles.toJson(new Replay(recorded.board(), recorded.dt(),
-                recorded.ticks(), recorded.keys(), 9999)));
+                recorded.ticks(), recorded.keys(), 9999, 1)));
         assertThat(run("--headless", "--replay", forged.toString())).isEqualTo(HeadlessRunner.REPLAY_DIFFERS);
         assertThat(err.toString(StandardCharsets.UTF_8)).contains("the replay reaches 250, not the 9999 it recorded");
     }
@@ -128,6 +150,6 @@ class HeadlessGameTest {
     @Test
     void aFileThatIsNoReplayExitsTwoSayingSo() throws IOException {
         assertThat(run("--headless", "--replay", file("board.txt", BOARD).toString())).isEqualTo(HeadlessRunner.BAD_INPUT);
-        assertThat(err.toString(StandardCharsets.UTF_8)).contains("board.txt: not a replay file");
+        assertThat(err.toString(StandardCharsets.UTF_8)).contains("board.txt is not a replay file: a replay is JSON text, and this is not");
     }
 }

@@ -20,7 +20,7 @@ import physics.Vect;
 class FlipperCollisionTest {
     private static final double DT = Board.DEFAULT_TICK;
     private static final double R = Board.BALL_RADIUS;
-    /** A flipper's coefficient of reflection, from the product description's table of gizmos. */
+    /** A flipper's coefficient of reflection, from the product description's table of gizmos (docs/rules.md). */
     private static final double FLIPPER_REFLECTION = 0.95;
 
     @ParameterizedTest

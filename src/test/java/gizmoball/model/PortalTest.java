@@ -1,5 +1,7 @@
 package gizmoball.model;
 
+import gizmoball.model.gizmo.Setting;
+import java.util.Optional;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.within;
@@ -97,7 +99,7 @@ class PortalTest {
         Board board = board();
         portal(board, "A", 4, 10, a);
         portal(board, "Z", 14, 10, b);
-        board.pair("A", "Z");
+        board.set("A", Setting.Pair.with("Z"));
         aimAt(board, 4, 10, a);
         List<PlayEvent> events = play(board);
 
@@ -137,7 +139,7 @@ class PortalTest {
         portal(board, "A", 4, 10, 0);
         portal(board, "Z", 14, 10, 1);
         board.addGizmo(GizmoKind.SQUARE, "S", 15, 10);   // in front of Z's mouth, which faces right
-        board.pair("A", "Z");
+        board.set("A", Setting.Pair.with("Z"));
         aimAt(board, 4, 10, 0);
         List<PlayEvent> events = play(board);
         assertBouncedOffTheMouth(board, 4, 10, 0);
@@ -151,7 +153,7 @@ class PortalTest {
         Board board = board();
         portal(board, "A", 4, 10, 2);
         portal(board, "Z", 14, 10, 3);
-        board.pair("A", "Z");
+        board.set("A", Setting.Pair.with("Z"));
         board.addBall("Still", 13.6, 10.6, 0, 0);   // overlapping the spot left of Z's mouth where B would appear
         aimAt(board, 4, 10, 2);
         play(board);
@@ -164,7 +166,7 @@ class PortalTest {
         Board board = board();
         portal(board, "A", 4, 10, 1);
         portal(board, "Z", 19, 5, 1);   // its mouth on the right wall: no room for a ball
-        board.pair("A", "Z");
+        board.set("A", Setting.Pair.with("Z"));
         aimAt(board, 4, 10, 1);
         play(board);
         assertBouncedOffTheMouth(board, 4, 10, 1);
@@ -184,7 +186,7 @@ class PortalTest {
         Board board = board();
         portal(board, "A", 4, 10, 1);   // mouth right; the ball comes at its top
         portal(board, "Z", 14, 10, 0);
-        board.pair("A", "Z");
+        board.set("A", Setting.Pair.with("Z"));
         aimAt(board, 4, 10, 0);
         play(board);
         assertBouncedOffTheMouth(board, 4, 10, 0);
@@ -196,22 +198,22 @@ class PortalTest {
         portal(board, "A", 1, 1, 0);
         portal(board, "Z", 5, 1, 0);
         portal(board, "Q", 9, 1, 0);
-        board.pair("A", "Z");
+        board.set("A", Setting.Pair.with("Z"));
         assertThat(pair(board, "Z")).contains("A");
-        board.pair("Q", "Z");
+        board.set("Q", Setting.Pair.with("Z"));
         assertThat(pair(board, "A")).as("Z left it for Q").isEmpty();
         assertThat(pair(board, "Q")).contains("Z");
         board.delete("Q");
         assertThat(pair(board, "Z")).isEmpty();
         board.addGizmo(GizmoKind.SQUARE, "S", 12, 12);
-        assertThatThrownBy(() -> board.pair("A", "S")).isInstanceOf(BoardEditException.class)
+        assertThatThrownBy(() -> board.set("A", Setting.Pair.with("S"))).isInstanceOf(BoardEditException.class)
                 .hasMessage("only portals are paired: S is a square");
-        assertThatThrownBy(() -> board.pair("A", "A")).isInstanceOf(BoardEditException.class)
+        assertThatThrownBy(() -> board.set("A", Setting.Pair.with("A"))).isInstanceOf(BoardEditException.class)
                 .hasMessage("a portal cannot be paired with itself: A");
-        board.pair("A", "Z");
+        board.set("A", Setting.Pair.with("Z"));
         Board copy = board.copy();
         assertThat(pair(copy, "A")).contains("Z");
-        board.unpair("Z");
+        board.set("Z", new Setting.Pair(Optional.empty()));
         assertThat(pair(board, "A")).isEmpty();
         assertThat(pair(copy, "A")).as("the copy keeps its own pair").contains("Z");
     }

@@ -1,5 +1,6 @@
 package gizmoball.model;
 
+import gizmoball.model.gizmo.Setting;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.within;
@@ -73,6 +74,25 @@ class SinkAndAcceleratorTest {
         assertThat(board.ball("B")).as("a ball lying on a sink is taken, never held").isEmpty();
     }
 
+    /**
+     * Issue 40 item 14: a ball touching a sink's side is taken in the first tick, though it never moves into it:
+     * under gravity it would slide down along the side, at rest it would stay. It is taken where it touches, when the
+     * tick begins.
+     */
+    @ParameterizedTest(name = "gravity {0}")
+    @ValueSource(doubles = {25, 0})
+    void aBallTouchingASinkWithoutMovingIntoItIsTaken(double gravity) throws Exception {
+        Board board = gizmoball.boardfile.BoardFiles.load("touching.txt", """
+                #@Sink K 5 5
+                Ball B1 6.25 5.5 0 0
+                Gravity %s
+                """.formatted(gravity));
+        board.tick(DT);
+        assertThat(board.ball("B1")).as("taken in the first tick").isEmpty();
+        assertThat(board.lastTick().events()).contains(new PlayEvent.Sunk("K", "B1", new Vect(6.25, 5.5)));
+        assertThat(board.gizmo("K").orElseThrow().lastTriggeredAt()).isZero();
+    }
+
     @Test
     void aHeadOnHitLeavesTheAcceleratorAtItsFactorTimesTheSpeed() {
         Board board = still();
@@ -114,16 +134,16 @@ class SinkAndAcceleratorTest {
         Board board = still();
         board.addGizmo(GizmoKind.ACCELERATOR, "AC", 5, 8);
         board.addGizmo(GizmoKind.SQUARE, "S", 1, 1);
-        board.setFactor("AC", 2);
+        board.set("AC", new Setting.Factor(2));
         assertThat(((AcceleratorView) board.gizmo("AC").orElseThrow()).factor()).isEqualTo(2);
         board.addBall("B", 5.5, 3, 0, 10);
         ticks(board, 40);
         assertThat(board.ball("B").orElseThrow().velocity().y()).isCloseTo(-20, within(1e-12));
         for (double bad : new double[] {0.99, 5.01, Double.NaN}) {
-            assertThatThrownBy(() -> board.setFactor("AC", bad)).isInstanceOf(BoardEditException.class)
+            assertThatThrownBy(() -> board.set("AC", new Setting.Factor(bad))).isInstanceOf(BoardEditException.class)
                     .hasMessageStartingWith("an accelerator's factor is 1 to 5");
         }
-        assertThatThrownBy(() -> board.setFactor("S", 2)).hasMessage("only an accelerator has a factor: S is a square");
+        assertThatThrownBy(() -> board.set("S", new Setting.Factor(2))).hasMessage("only an accelerator has a factor: S is a square");
         assertThat(board.copy().gizmo("AC").map(g -> ((AcceleratorView) g).factor())).contains(2.0);
     }
 }

@@ -1,5 +1,6 @@
 package gizmoball.model;
 
+import gizmoball.model.gizmo.Setting;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
@@ -33,7 +34,7 @@ class SpawnerTest {
     @CsvSource({"0, 8.5, 7.75", "1, 9.25, 8.5", "2, 8.5, 9.25", "3, 7.75, 8.5"})
     void aBallAppearsTouchingTheSideItFacesWithTheAuthorsVelocity(int turns, double x, double y) {
         Board board = boardWithSpawner(turns);
-        board.setSpawnVelocity("SP", 3, -4);
+        board.set("SP", new Setting.Launch(3, -4));
         board.keyDown(KEY);
         assertThat(board.balls()).hasSize(1);
         BallView ball = board.balls().get(0);
@@ -101,10 +102,10 @@ class SpawnerTest {
     void theVelocityIsFiniteAndWithinTheSpeedLimitAndOnlyASpawnersOwn() {
         Board board = boardWithSpawner(0);
         board.addGizmo(GizmoKind.SQUARE, "S", 1, 1);
-        assertThatThrownBy(() -> board.setSpawnVelocity("SP", 300, 0)).isInstanceOf(BoardEditException.class)
+        assertThatThrownBy(() -> board.set("SP", new Setting.Launch(300, 0))).isInstanceOf(BoardEditException.class)
                 .hasMessageStartingWith("a spawner's velocity is finite and at most 200 L/s");
-        assertThatThrownBy(() -> board.setSpawnVelocity("SP", Double.NaN, 0)).isInstanceOf(BoardEditException.class);
-        assertThatThrownBy(() -> board.setSpawnVelocity("S", 1, 0))
+        assertThatThrownBy(() -> board.set("SP", new Setting.Launch(Double.NaN, 0))).isInstanceOf(BoardEditException.class);
+        assertThatThrownBy(() -> board.set("S", new Setting.Launch(1, 0)))
                 .hasMessage("only a spawner has a velocity for its balls: S is a square");
     }
 }

@@ -1,5 +1,6 @@
 package gizmoball.model;
 
+import gizmoball.model.gizmo.Setting;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
@@ -25,7 +26,7 @@ import physics.Vect;
 class SpinnerTest {
     private static final double DT = Board.DEFAULT_TICK;
     private static final double R = Board.BALL_RADIUS;
-    /** The spinner's coefficient of reflection: a flipper's, from the product description's table. */
+    /** The spinner's coefficient of reflection: a flipper's, from the product description's table (docs/rules.md). */
     private static final double REFLECTION = 0.95;
     /** From the pivot to the centre of each round end: the bar is 2 L long and its ends have radius 0.25. */
     private static final double ARM = 0.75;
@@ -175,7 +176,7 @@ class SpinnerTest {
     void stopHoldsItsAngleExactlyStartTurnsItOnAndReverseTurnsItBack() {
         Board board = new Board();
         board.addGizmo(GizmoKind.SPINNER, "SN", 8, 8);
-        board.setSpinnerSpeed("SN", 0.5);
+        board.set("SN", new Setting.Speed(0.5));
         board.bindKey(KEY, KeyEdge.DOWN, "SN", Order.of(Action.STOP));
         board.bindKey(KEY + 1, KeyEdge.DOWN, "SN", Order.of(Action.START));
         board.bindKey(KEY + 2, KeyEdge.DOWN, "SN");   // its default: reverse
@@ -213,12 +214,12 @@ class SpinnerTest {
         board.addGizmo(GizmoKind.SPINNER, "SN", 8, 8);
         board.addGizmo(GizmoKind.SQUARE, "S", 1, 1);
         for (double turns : new double[] {0, 3.01, -3.01, Double.NaN, Double.POSITIVE_INFINITY}) {
-            org.assertj.core.api.Assertions.assertThatThrownBy(() -> board.setSpinnerSpeed("SN", turns))
+            org.assertj.core.api.Assertions.assertThatThrownBy(() -> board.set("SN", new Setting.Speed(turns)))
                     .isInstanceOf(BoardEditException.class).hasMessageStartingWith("a spinner turns up to 3 times");
         }
-        org.assertj.core.api.Assertions.assertThatThrownBy(() -> board.setSpinnerSpeed("S", 1))
+        org.assertj.core.api.Assertions.assertThatThrownBy(() -> board.set("S", new Setting.Speed(1)))
                 .isInstanceOf(BoardEditException.class).hasMessageStartingWith("only a spinner");
-        board.setSpinnerSpeed("SN", -3);
+        board.set("SN", new Setting.Speed(-3));
         assertThat(spinner(board, "SN").turnsPerSecond()).isEqualTo(-3);
     }
 
@@ -266,7 +267,7 @@ class SpinnerTest {
         double[] speeds = {1, -1, 3, -3, 0.5, 2, -0.25};
         for (int i = 0; i < spinners.length; i++) {
             board.addGizmo(GizmoKind.SPINNER, spinners[i], cells[i][0], cells[i][1]);
-            board.setSpinnerSpeed(spinners[i], speeds[i]);
+            board.set(spinners[i], new Setting.Speed(speeds[i]));
         }
         board.addGizmo(GizmoKind.SQUARE, "S1", 13, 9);   // a pocket beside SN4
         board.addGizmo(GizmoKind.TRIANGLE, "T1", 8, 10);  // and one beside SN3

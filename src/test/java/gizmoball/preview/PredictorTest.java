@@ -1,5 +1,6 @@
 package gizmoball.preview;
 
+import gizmoball.model.gizmo.Setting;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
@@ -55,7 +56,7 @@ class PredictorTest {
         Board board = new Board();
         board.addGizmo(GizmoKind.SPINNER, "SN1", 8, 10);
         board.addGizmo(GizmoKind.SPINNER, "SN2", 12, 12);
-        board.setSpinnerSpeed("SN2", -2.5);
+        board.set("SN2", new Setting.Speed(-2.5));
         board.addBall("B", 9.6, 6, 0, 0);
         GameSession session = new GameSession();
         session.setMode(Mode.BUILD);

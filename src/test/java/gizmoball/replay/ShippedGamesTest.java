@@ -7,22 +7,29 @@ import gizmoball.boardfile.BoardFiles;
 import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.game.Drain;
 import gizmoball.model.game.KeyPress;
+import gizmoball.model.loop.BallView;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Set;
+import java.util.stream.Collectors;
 import java.util.stream.Stream;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 
 /**
- * Every shipped board that is a game can be played to its end: its drain's key launches each ball, and a player who
- * only launches (never touches a flipper) loses every ball, one drain each, and the game ends with a score.
+ * Every shipped board that is a game can be played to its end: its drain's key launches each ball (through the plunger
+ * where the table has one, held for a full pull), and a player who only launches (never touches a flipper) loses every
+ * ball, one drain each (and one for each ball a multiball adds), and the game ends with a score.
  */
 class ShippedGamesTest {
-    private static final long GIVE_UP = 60 * 60;
+    private static final long GIVE_UP = 120 * 60;
+    /** Ticks the launch key is held: a full pull of every shipped plunger. */
+    private static final long HOLD = 100;
 
     static Stream<Path> games() throws IOException, BoardFileException {
         List<Path> games = new ArrayList<>();
@@ -33,7 +40,8 @@ class ShippedGamesTest {
                 }
             }
         }
-        assertThat(games).extracting(p -> p.getFileName().toString()).contains("default.txt", "arcade.txt");
+        assertThat(games).extracting(p -> p.getFileName().toString()).contains("default.txt", "arcade.txt", "orbit.txt",
+                "castle.txt");
         return games.stream();
     }
 
@@ -47,19 +55,23 @@ class ShippedGamesTest {
         assertThat(launchKeys).as("a key launches from the drain").isNotEmpty();
         int balls = board.game().ballsLeft();
 
-        // Every second, the launch key down and up again.
+        // Every two seconds, the launch key down and, a full pull later, up again.
         List<KeyPress> keys = new ArrayList<>();
-        for (long tick = 0; tick < GIVE_UP; tick += 60) {
+        for (long tick = 0; tick < GIVE_UP; tick += 120) {
             keys.add(new KeyPress(tick, KeyPress.Motion.DOWN, launchKeys.get(0)));
-            keys.add(new KeyPress(tick + 1, KeyPress.Motion.UP, launchKeys.get(0)));
+            keys.add(new KeyPress(tick + HOLD, KeyPress.Motion.UP, launchKeys.get(0)));
         }
         ScriptedPlay play = new ScriptedPlay(board, new KeyScript(keys), Board.DEFAULT_TICK);
         while (!board.game().isOver() && board.ticks() < GIVE_UP) {
             play.tick();
         }
 
-        assertThat(board.game().isOver()).as("over within a minute of play").isTrue();
-        assertThat(board.game().drains()).hasSize(balls);
+        assertThat(board.game().isOver()).as("over within two minutes of play").isTrue();
+        // One drain for each ball of the game, the extra ball if it was won, and each ball a multiball added.
+        Set<String> first = BoardFiles.load(file).balls().stream().map(BallView::name).collect(Collectors.toSet());
+        long added = board.game().drains().stream().map(Drain::ball).filter(b -> !first.contains(b)).distinct().count();
+        int extra = board.game().extraBallTick().isPresent() ? 1 : 0;
+        assertThat(board.game().drains()).hasSize(balls + extra + (int) added);
         assertThat(board.game().score()).isPositive();
     }
 }

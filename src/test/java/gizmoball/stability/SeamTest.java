@@ -66,7 +66,7 @@ class SeamTest {
             BallView ball = b.balls().get(0);
             assertThat(ball.position().y()).as("height at tick " + tick).isBetween(12 - R - hop - 1e-9, 12 - R + 1e-6);
             assertThat(Math.abs(ball.velocity().y())).as("vertical speed at tick " + tick).isLessThanOrEqualTo(g * DT + 1e-9);
-            // Friction alone, SPEC's V (1 - mu dt - mu2 |V| dt) each tick; |V| includes the small vertical
+            // Friction alone, docs/rules.md's V (1 - mu dt - mu2 |V| dt) each tick; |V| includes the small vertical
             // speed of resting contact (at most g dt), which shifts vx by far less than 0.01 over 90 ticks.
             expectedVx[0] *= 1 - b.mu() * DT - b.mu2() * expectedVx[0] * DT;
             assertThat(ball.velocity().x()).as("vx at tick " + tick).isCloseTo(expectedVx[0], within(0.01));

@@ -4,6 +4,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.model.Board;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Setting;
+import gizmoball.model.loop.TriggerSource;
 import java.awt.Color;
 import java.awt.Graphics2D;
 import java.awt.geom.Point2D;
@@ -63,6 +65,51 @@ class BallTrailsTest {
         }
         assertThat(board.ball("C").orElseThrow().isCaptured()).isTrue();
         assertThat(trails.trail("C")).isEmpty();
+    }
+
+    /**
+     * Issue 40 item 2: out of a portal's pair the trail starts afresh, with no streak across the board. The ball
+     * leaves at sqrt(6^2 + 1.5^2) L/s with no gravity or friction, so its whole trail is within LENGTH - 1 ticks of
+     * that speed of it.
+     */
+    @Test
+    void aBallOutOfAPortalStartsANewTrailWhereItReappears() {
+        board.setGravity(0);
+        board.setFriction(0, 0);
+        board.addGizmo(GizmoKind.PORTAL, "P1", 4, 10);
+        board.addGizmo(GizmoKind.PORTAL, "P2", 14, 10);
+        board.set("P1", Setting.Pair.with("P2"));
+        board.addBall("B", 4.5 + 0.125, 10 - 0.25 - 1.05, 1.5, 6);
+        trails.setEnabled(true);
+        for (int i = 0; i < 25; i++) {
+            board.tick(Board.DEFAULT_TICK);
+        }
+        Vect ball = board.ball("B").orElseThrow().position();
+        assertThat(ball.x()).as("through the pair").isGreaterThan(12);
+        double reach = (BallTrails.LENGTH - 1) * Math.hypot(6, 1.5) * Board.DEFAULT_TICK;
+        assertThat(trails.trail("B")).isNotEmpty()
+                .allSatisfy(p -> assertThat(p.minus(ball).length()).isLessThanOrEqualTo(reach + 1e-9));
+    }
+
+    /** Issue 40 item 2: a ball an absorber takes and fires in one tick has no streak from where it went in. */
+    @Test
+    void aBallFiredInTheTickItWasTakenStartsANewTrail() {
+        board.setGravity(0);
+        board.setFriction(0, 0);
+        board.addAbsorber("A", 0, 19, 20, 20);
+        board.connect(TriggerSource.named("A"), "A");
+        board.addBall("B", 5.5, 18.5, 0, 5);
+        trails.setEnabled(true);
+        double furthest = 0;
+        for (int i = 0; i < 40; i++) {
+            board.tick(Board.DEFAULT_TICK);
+            List<Vect> trail = trails.trail("B");
+            for (int j = 1; j < trail.size(); j++) {
+                furthest = Math.max(furthest, trail.get(j).minus(trail.get(j - 1)).length());
+            }
+        }
+        assertThat(board.ball("B").orElseThrow().position().x()).as("fired from the right").isGreaterThan(19);
+        assertThat(furthest).as("the longest step of any trail, L").isLessThan(2);
     }
 
     @Test

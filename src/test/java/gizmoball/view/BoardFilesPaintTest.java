@@ -5,10 +5,12 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import gizmoball.boardfile.BoardFiles;
 import gizmoball.model.Board;
+import gizmoball.model.gizmo.AbsorberView;
 import gizmoball.model.gizmo.BumperView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.PortalView;
+import gizmoball.model.gizmo.SpawnerView;
 import gizmoball.model.loop.BallView;
 import java.awt.Color;
 import java.awt.Graphics2D;
@@ -71,14 +73,18 @@ class BoardFilesPaintTest {
             if (gizmo.kind() == GizmoKind.LEFT_FLIPPER || gizmo.kind() == GizmoKind.RIGHT_FLIPPER) {
                 continue;
             }
-            // A triangle at its centroid, a sink, a spawner or a drop target on its frame (the centre is a hole, an
-            // arrow, a bull's-eye), a portal on the side away from its mouth, a spinner on its bar (lying flat as
-            // loaded) half-way out from its hub, anything else at its centre.
+            // A triangle at its centroid, a sink, a drop target or a plunger on its frame (the centre is a hole, a
+            // bull's-eye, a rod), a portal or a spawner on the side away from its mouth (the spawner's arrow points
+            // to it), a spinner on its bar (lying flat as loaded) half-way out from its hub, anything else at its
+            // centre.
             Vect inside = gizmo instanceof BumperView b && gizmo.kind() == GizmoKind.TRIANGLE ? centroid(b.outline())
                     : gizmo instanceof PortalView portal
                     ? new Vect(gizmo.x() + 0.5, gizmo.y() + 0.5).minus(portal.facing().times(0.4))
-                    : gizmo.kind() == GizmoKind.SINK || gizmo.kind() == GizmoKind.SPAWNER
+                    : gizmo instanceof SpawnerView spawner
+                    ? centre(gizmo).minus(spawner.mouth(0).minus(centre(gizmo)).times(0.8))
+                    : gizmo.kind() == GizmoKind.SINK
                     || gizmo.kind() == GizmoKind.DROP_TARGET
+                    || gizmo instanceof AbsorberView absorber && absorber.plunger().isPresent()
                     ? new Vect(gizmo.x() + 0.1, gizmo.y() + 0.5)
                     : gizmo.kind() == GizmoKind.SPINNER ? new Vect(gizmo.x() + 0.5, gizmo.y() + 1)
                     : new Vect(gizmo.x() + gizmo.width() / 2.0, gizmo.y() + gizmo.height() / 2.0);
@@ -93,6 +99,10 @@ class BoardFilesPaintTest {
                         .isEqualTo(BoardPainter.BALL);
             }
         }
+    }
+
+    private static Vect centre(Gizmo gizmo) {
+        return new Vect(gizmo.x() + gizmo.width() / 2.0, gizmo.y() + gizmo.height() / 2.0);
     }
 
     private static Vect centroid(List<Vect> corners) {

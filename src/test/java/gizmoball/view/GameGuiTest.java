@@ -70,9 +70,7 @@ class GameGuiTest {
 
     @AfterEach
     void close() throws Exception {
-        for (Window w : Window.getWindows()) {
-            onEdt(w::dispose);
-        }
+        Gui.closeAllWindows();
         node.removeNode();
     }
 
@@ -98,8 +96,13 @@ class GameGuiTest {
                 .hasValue("Press Space to launch");
         screenshot("game-default-start");
 
+        // Space serves the ball up into the plunger and pulls it while held; the release launches it.
         onEdt(() -> {
             app.session().board().keyDown(KeyEvent.VK_SPACE);
+            for (int tick = 0; tick < 30; tick++) {
+                app.loop().step();
+            }
+            app.session().board().keyUp(KeyEvent.VK_SPACE);
             app.loop().step();
         });
         assertThat(onEdt(() -> app.gameFeatures().launchHint().current())).as("the ball is on its way").isEmpty();
@@ -109,6 +112,28 @@ class GameGuiTest {
         await("the narrow window laid out", () -> app.window().getWidth() == smallest.width);
         screenshot("game-default-narrow");
         assertThat(cells()).containsExactly("Score 0", "Balls 3", "Best -");
+    }
+
+    /**
+     * Issue 40 item 5: at game over nothing stays lit. The drain takes the last ball in the game's last tick, so
+     * its flash had just begun when the clock stopped with the game.
+     */
+    @Test
+    void atGameOverNoFlashStaysLit(@TempDir Path dir) throws Exception {
+        Path file = Files.writeString(dir.resolve("one-shot.txt"), ONE_SHOT);
+        app = Gizmoball.launch(file, settings);
+        await("the window", () -> app.window().isShowing());
+        onEdt(() -> app.session().board().keyDown(KeyEvent.VK_SPACE));
+        onEdt(() -> app.session().board().keyUp(KeyEvent.VK_SPACE));
+        clickMenu(app.window().menus(), "Start");
+        await("the game-over dialog", () -> Gui.showingWindow("gameover.dialog").isPresent());
+
+        gizmoball.model.Board board = app.session().board();
+        gizmoball.model.gizmo.Gizmo drain = onEdt(() -> board.gizmo("A").orElseThrow());
+        assertThat(onEdt(() -> BoardPainter.flash(board.time() - drain.lastTriggeredAt())))
+                .as("the drain's flash when the clock stopped").isPositive();
+        assertThat(onEdt(() -> board.gizmos().stream().mapToDouble(g -> BoardPainter.glow(board, g)).max()))
+                .hasValue(0);
     }
 
     @Test

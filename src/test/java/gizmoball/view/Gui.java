@@ -69,6 +69,18 @@ public final class Gui {
     }
 
     /** Waits until {@code condition} (evaluated on the EDT) holds; fails with {@code what} after a few seconds. */
+    /**
+     * Disposes every window and waits until their closing has been handled (a window's closed listener, which may
+     * write settings, runs on the event thread after the dispose): settings may then be removed without a listener
+     * writing to a removed node.
+     */
+    public static void closeAllWindows() {
+        for (Window w : Window.getWindows()) {
+            onEdt(w::dispose);
+        }
+        onEdt(() -> { });
+    }
+
     public static void await(String what, BooleanSupplier condition) {
         long deadline = System.currentTimeMillis() + PATIENCE_MILLIS;
         while (!onEdt(condition::getAsBoolean)) {

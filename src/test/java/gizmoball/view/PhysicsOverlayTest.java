@@ -36,7 +36,8 @@ class PhysicsOverlayTest {
         TickReport r = scriptedTick();
         assertThat(r.collisions()).isEqualTo(1);
         assertThat(r.ballsAwake()).isEqualTo(1);
-        assertThat(PhysicsOverlay.panelLines(r)).contains("collisions 1 (0 at zero time)", "  0 at once apart", "balls awake 1, asleep 0")
+        assertThat(PhysicsOverlay.panelLines(r)).contains("collisions 1", "  0 at zero time", "  0 at once apart",
+                        "balls awake 1", "balls asleep 0")
                 .filteredOn(line -> line.matches("[1-6] .* us")).hasSize(6);
     }
 
@@ -143,8 +144,44 @@ class PhysicsOverlayTest {
         BoardTransform t = BoardTransform.fit(SIZE, SIZE, 6);
         String label = "flying, hit in 0.642 s";
         for (double[] at : new double[][] {{19.75, 10}, {0.25, 10}, {10, 19.75}, {0.25, 19.75}}) {
-            java.awt.geom.Rectangle2D box = PhysicsOverlay.labelBox(metrics(), t, t.toScreen(at[0], at[1]), label);
+            java.awt.geom.Rectangle2D box = PhysicsOverlay.labelBox(metrics(), t, t.toScreen(at[0], at[1]), label,
+                    java.util.List.of()).orElseThrow();
             assertThat(t.board().contains(box)).as("label of a ball at (%s, %s)", at[0], at[1]).isTrue();
+        }
+    }
+
+    /** Issue 40 item 3: the stages are listed as the loop runs them (3 before 2), and the panel says so. */
+    @Test
+    void thePanelSaysItListsTheStagesInTheOrderTheyRun() {
+        java.util.List<String> lines = PhysicsOverlay.panelLines(scriptedTick());
+        assertThat(lines).contains("stages, in run order:");
+        assertThat(lines.subList(lines.indexOf("stages, in run order:") + 1, lines.size()))
+                .filteredOn(line -> line.matches("[1-6] .*")).extracting(line -> line.charAt(0))
+                .containsExactly('1', '3', '2', '4', '5', '6');
+    }
+
+    /** Issue 40 item 3: balls close together get labels that overlap neither each other nor the panel. */
+    @Test
+    void labelsOfBallsCloseTogetherDoNotOverlap() {
+        board.setGravity(0);
+        board.setFriction(0, 0);
+        for (int i = 0; i < 6; i++) {
+            board.addBall("B" + i, 8.5 + 0.6 * i, 10 + 0.6 * (i % 2), 1, 0);
+        }
+        overlay.setEnabled(true);
+        board.tick(Board.DEFAULT_TICK);
+        BoardTransform t = BoardTransform.fit(SIZE, SIZE, 6);
+
+        PhysicsOverlay.Layout layout = overlay.layout(metrics(), t, board.lastTick());
+
+        assertThat(layout.labels()).isNotEmpty();
+        java.util.List<java.awt.geom.Rectangle2D> boxes = new java.util.ArrayList<>(layout.labels().stream()
+                .map(PhysicsOverlay.Label::box).toList());
+        boxes.add(layout.panel());
+        for (int i = 0; i < boxes.size(); i++) {
+            for (int j = i + 1; j < boxes.size(); j++) {
+                assertThat(boxes.get(i).intersects(boxes.get(j))).as("box %d over box %d", i, j).isFalse();
+            }
         }
     }
 }

@@ -13,7 +13,6 @@ import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.preview.AimPreview;
 import gizmoball.preview.Prediction;
 import java.awt.Rectangle;
-import java.awt.Window;
 import java.awt.event.WindowEvent;
 import java.nio.file.Path;
 import java.util.UUID;
@@ -34,9 +33,7 @@ class PlayFeaturesGuiTest {
 
     @AfterEach
     void close() throws Exception {
-        for (Window w : Window.getWindows()) {
-            onEdt(w::dispose);
-        }
+        Gui.closeAllWindows();
         node.removeNode();
     }
 
@@ -71,6 +68,33 @@ class PlayFeaturesGuiTest {
         assertThat(onEdt(() -> app.loop().speed())).isEqualTo(Speed.QUARTER);
         assertThat(onEdt(() -> Gui.menuItem(next.menus(), "1/4x").isSelected())).isTrue();
         assertThat(onEdt(() -> next.statusLine().text())).contains("at 1/4x");
+    }
+
+    /** Issue 40 item 2: the trails go when the game stops (a stopped board shows no motion). */
+    @Test
+    void theTrailsGoWhenTheGameStops() {
+        GameWindow window = open();
+        onEdt(() -> app.session().board().addBall("B", 10.5, 5.5, 3, 0));
+        clickMenu(window.menus(), "Ball trails");
+        clickMenu(window.menus(), "Start");
+        await("a trail", () -> features.trails().trail("B").size() > 2);
+        clickMenu(window.menus(), "Stop");
+        assertThat(onEdt(() -> features.trails().trail("B"))).isEmpty();
+    }
+
+    /** Issue 40 item 13: How to play says where the settings and high scores are kept and how to move them. */
+    @Test
+    void howToPlaySaysWhereTheSettingsAreKept() {
+        GameWindow window = open();
+        javax.swing.SwingUtilities.invokeLater(() -> Gui.menuItem(window.menus(), HelpPages.HOW_TO_PLAY + "...")
+                .doClick(0));
+        await("the page", () -> Gui.showingWindow("help").isPresent());
+        java.awt.Window help = Gui.showingWindow("help").orElseThrow();
+        String page = onEdt(() -> Gui.find(help, javax.swing.JEditorPane.class, p -> true).orElseThrow().getText());
+        onEdt(help::dispose);
+        java.nio.file.Path folder = java.nio.file.Path.of(System.getProperty(Settings.PREFS_ROOT), ".java",
+                ".userPrefs", node.absolutePath().substring(1));
+        assertThat(page).contains(folder.toString(), "-Djava.util.prefs.userRoot=FOLDER");
     }
 
     @Test

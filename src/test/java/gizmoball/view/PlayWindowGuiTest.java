@@ -58,9 +58,7 @@ class PlayWindowGuiTest {
 
     @AfterEach
     void close() throws Exception {
-        for (Window w : Window.getWindows()) {
-            onEdt(w::dispose);
-        }
+        Gui.closeAllWindows();
         node.removeNode();
     }
 

@@ -48,9 +48,7 @@ abstract class WindowOnFiles {
 
     @AfterEach
     void close() {
-        for (Window w : Window.getWindows()) {
-            onEdt(w::dispose);
-        }
+        Gui.closeAllWindows();
     }
 
     /** Launches the game on the board file (null: none) and keeps its window. */

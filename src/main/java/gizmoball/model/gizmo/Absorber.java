@@ -3,18 +3,27 @@ package gizmoball.model.gizmo;
 import java.util.ArrayDeque;
 import java.util.Deque;
 import java.util.List;
+import java.util.Optional;
+import java.util.function.Function;
+import java.util.OptionalInt;
 
 import physics.Vect;
 
 /**
  * A rectangle of whole cells that captures every ball touching it, holds captured balls at its bottom-right
- * corner and, when triggered, fires the longest-held one straight up.
+ * corner and, when triggered, fires the longest-held one straight up. A board can make it a {@link Plunger}: the key
+ * that fires it then pulls it while held, and its release fires.
  */
 public final class Absorber extends PolygonGizmo implements AbsorberView {
     private final int width;
     private final int height;
     /** Names of the balls held, in capture order (names keep deep copies of the board simple). */
     private final Deque<String> held = new ArrayDeque<>();
+    private Optional<Plunger> plunger = Optional.empty();
+    /** The key pulling it, while one is (play state, like a flipper's angle). */
+    private OptionalInt pullingKey = OptionalInt.empty();
+    /** Seconds of board time the pulling key has been held. */
+    private double heldSeconds;
 
     /**
      * An absorber of width x height cells with its top-left cell at (x, y), holding nothing. For the board and its
@@ -32,6 +41,9 @@ public final class Absorber extends PolygonGizmo implements AbsorberView {
         this.width = width;
         this.height = height;
         this.held.addAll(other.held);
+        this.plunger = other.plunger;
+        this.pullingKey = other.pullingKey;
+        this.heldSeconds = other.heldSeconds;
     }
 
     /**
@@ -101,6 +113,58 @@ public final class Absorber extends PolygonGizmo implements AbsorberView {
      */
     public void letGo(String ball) {
         held.remove(ball);
+    }
+
+    @Override
+    public Optional<Plunger> plunger() {
+        return plunger;
+    }
+
+    @Override
+    public Setting setting() {
+        return new Setting.Pull(plunger);
+    }
+
+    /** Makes it a plunger, or with an empty pull an absorber that fires at once. */
+    @Override
+    public void hold(Setting setting, Function<String, GizmoBase> gizmos) {
+        plunger = ((Setting.Pull) setting).plunger();
+        letGoOfPull();
+    }
+
+    @Override
+    public double pull() {
+        return plunger.isPresent() && pullingKey.isPresent() ? plunger.get().pullAfter(heldSeconds) : 0;
+    }
+
+    /** The key pulling it, if one is. For the board, not for views. */
+    public OptionalInt pullingKey() {
+        return pullingKey;
+    }
+
+    /** The key starts to pull it, from no pull. For the board, not for views. */
+    public void startPull(int keyCode) {
+        pullingKey = OptionalInt.of(keyCode);
+        heldSeconds = 0;
+    }
+
+    /** The pulling key was held through a tick of {@code dt} seconds. For the board, not for views. */
+    public void heldFor(double dt) {
+        heldSeconds += dt;
+    }
+
+    /**
+     * The speed its release fires at now, after the time the key was held (a plunger that is pulled). For the board,
+     * not for views.
+     */
+    public double releaseSpeed() {
+        return plunger.orElseThrow().speedAfter(heldSeconds);
+    }
+
+    /** The pull is over, released or dropped. For the board, not for views. */
+    public void letGoOfPull() {
+        pullingKey = OptionalInt.empty();
+        heldSeconds = 0;
     }
 
     /** Fires the longest-held ball, if the spot above is free. */

@@ -1,5 +1,7 @@
 package gizmoball.model.gizmo;
 
+import java.util.function.Function;
+
 import physics.Circle;
 import physics.Vect;
 
@@ -35,11 +37,14 @@ public final class Accelerator extends GizmoBase implements AcceleratorView {
         return factor;
     }
 
-    /**
-     * Sets the factor, 1 to {@link #MAX_FACTOR} (the board has checked it). For the board and its loop, not for views.
-     */
-    public void setFactor(double newFactor) {
-        factor = newFactor;
+    @Override
+    public Setting setting() {
+        return new Setting.Factor(factor);
+    }
+
+    @Override
+    public void hold(Setting setting, Function<String, GizmoBase> gizmos) {
+        factor = ((Setting.Factor) setting).factor();
     }
 
     /**

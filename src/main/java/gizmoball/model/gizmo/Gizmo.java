@@ -31,4 +31,7 @@ public sealed interface Gizmo permits BumperView, FlipperView, AbsorberView, Sin
 
     /** Its own colour, or empty for the kind's colour (see {@link Rgb}). */
     Optional<Rgb> colour();
+
+    /** The value its author set on it beyond its place, turn and colour; {@link Setting.None} for most kinds. */
+    Setting setting();
 }

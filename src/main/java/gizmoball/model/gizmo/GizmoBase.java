@@ -2,6 +2,7 @@ package gizmoball.model.gizmo;
 
 import java.util.List;
 import java.util.Optional;
+import java.util.function.Function;
 
 import physics.Vect;
 
@@ -76,6 +77,18 @@ public abstract sealed class GizmoBase permits Bumper, Flipper, PolygonGizmo, Ac
     }
 
     /** Its own colour, or empty for the kind's. For the board and its loop, not for views. */
+    /** Most kinds hold nothing beyond their place, turn and colour; a kind that does says what. */
+    public Setting setting() {
+        return new Setting.None();
+    }
+
+    /**
+     * Takes a setting of the record its {@link #setting} is (the board has checked it); {@code gizmos} finds the
+     * board's others by name, for a setting that changes them too. For the board, not for views.
+     */
+    public void hold(Setting setting, Function<String, GizmoBase> gizmos) {
+    }
+
     public void setColour(Optional<Rgb> newColour) {
         colour = newColour.orElse(null);
     }

@@ -2,6 +2,7 @@ package gizmoball.model.gizmo;
 
 import java.util.List;
 import java.util.Optional;
+import java.util.function.Function;
 
 import physics.Vect;
 
@@ -37,9 +38,26 @@ public final class Portal extends PolygonGizmo implements PortalView {
         return Optional.ofNullable(pair);
     }
 
-    /** Pairs it with the named portal, or with empty with none. For the board, which pairs both; not for views. */
-    public void setPair(Optional<String> portal) {
-        pair = portal.orElse(null);
+    @Override
+    public Setting setting() {
+        return new Setting.Pair(pair());
+    }
+
+    /** Pairs both: each leaves the pair it had, whose other portal is left without one (a wall). */
+    @Override
+    public void hold(Setting setting, Function<String, GizmoBase> gizmos) {
+        Optional<Portal> other = ((Setting.Pair) setting).portal().map(name -> (Portal) gizmos.apply(name));
+        leavePair(gizmos);
+        other.ifPresent(o -> {
+            o.leavePair(gizmos);
+            o.pair = name();
+            pair = o.name();
+        });
+    }
+
+    private void leavePair(Function<String, GizmoBase> gizmos) {
+        pair().ifPresent(old -> ((Portal) gizmos.apply(old)).pair = null);
+        pair = null;
     }
 
     /** Whether segment {@code index} of its shape is an open mouth: the mouth of a portal that has a pair. */

@@ -1,6 +1,7 @@
 package gizmoball.model.gizmo;
 
 import java.util.List;
+import java.util.function.Function;
 
 import physics.Vect;
 
@@ -34,9 +35,15 @@ public final class Spawner extends PolygonGizmo implements SpawnerView {
         return velocity;
     }
 
-    /** The velocity of the balls it spawns (the board has checked it). For the board and its loop, not for views. */
-    public void setVelocity(Vect newVelocity) {
-        velocity = newVelocity;
+    @Override
+    public Setting setting() {
+        return new Setting.Launch(velocity.x(), velocity.y());
+    }
+
+    @Override
+    public void hold(Setting setting, Function<String, GizmoBase> gizmos) {
+        Setting.Launch launch = (Setting.Launch) setting;
+        velocity = new Vect(launch.vx(), launch.vy());
     }
 
     @Override

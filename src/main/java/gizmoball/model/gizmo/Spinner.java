@@ -1,6 +1,7 @@
 package gizmoball.model.gizmo;
 
 import java.util.List;
+import java.util.function.Function;
 
 import physics.Circle;
 import physics.LineSegment;
@@ -60,12 +61,14 @@ public final class Spinner extends GizmoBase implements SpinnerView, MovingShape
         return turnsPerSecond;
     }
 
-    /**
-     * Sets its speed and way, nonzero and at most {@link #MAX_TURNS_PER_SECOND} either way (the board has checked
-     * it). For the board and its loop, not for views.
-     */
-    public void setTurnsPerSecond(double turns) {
-        turnsPerSecond = turns;
+    @Override
+    public Setting setting() {
+        return new Setting.Speed(turnsPerSecond);
+    }
+
+    @Override
+    public void hold(Setting setting, Function<String, GizmoBase> gizmos) {
+        turnsPerSecond = ((Setting.Speed) setting).turnsPerSecond();
     }
 
     /** Puts the bar at an angle (reduced to [0, 2 pi)). For the board and its loop, not for views. */

@@ -6,7 +6,7 @@ import physics.Geometry;
 import physics.Vect;
 
 /**
- * Stage 4 for two balls meeting (docs/design.md, "Piles"): an elastic bounce, or, where they meet slowly and one of
+ * Stage 4 for two balls meeting (docs/design.md, "The tick"): an elastic bounce, or, where they meet slowly and one of
  * them is held up, a pile that settles.
  */
 final class BallPairs {

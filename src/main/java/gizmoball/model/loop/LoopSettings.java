@@ -1,7 +1,7 @@
 package gizmoball.model.loop;
 
 /**
- * The loop's tuning, each value with its unit in its name's comment (docs/design.md, "The loop's settings" and
+ * The loop's tuning, each value with its unit in its name's comment (docs/design.md, "The tick" and
  * "Guards"). Lengths and speeds shared with the editor and the loader are {@link Tolerances}; the cluster solver's own
  * limits are {@link NormalImpulses}'. The loop runs with {@link #STANDARD}; tests read the values from there.
  *

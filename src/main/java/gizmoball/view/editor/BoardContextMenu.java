@@ -29,10 +29,10 @@ public final class BoardContextMenu {
         rotate = item("Rotate", controller::rotateSelected);
         JMenuItem delete = item("Delete", controller::deleteSelected);
         menu.addSeparator();
-        JMenuItem cut = item("Cut", () -> controller.cutSelected().ifPresent(Clipboard::put));
-        JMenuItem copy = item("Copy", () -> controller.copySelected().ifPresent(Clipboard::put));
-        item("Paste", () -> controller.paste(Clipboard.text()));
-        JMenuItem duplicate = item("Duplicate", controller::duplicateSelected);
+        JMenuItem cut = item("Cut", () -> controller.clipboard().cutSelected().ifPresent(Clipboard::put));
+        JMenuItem copy = item("Copy", () -> controller.clipboard().copySelected().ifPresent(Clipboard::put));
+        item("Paste", () -> controller.clipboard().paste(Clipboard.text()));
+        JMenuItem duplicate = item("Duplicate", controller.clipboard()::duplicateSelected);
         menu.addSeparator();
         JMenuItem connect = item("Connect from here", controller::connectFromSelected);
         JMenuItem properties = item("Properties", showProperties);

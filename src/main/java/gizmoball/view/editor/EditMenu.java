@@ -43,13 +43,13 @@ public final class EditMenu extends JMenu {
         addSeparator();
         // The clipboard holds board-file lines: they paste into another window, or into a text editor.
         cut = item("Cut", KeyStroke.getKeyStroke(KeyEvent.VK_X, InputEvent.CTRL_DOWN_MASK),
-                () -> controller.cutSelected().ifPresent(Clipboard::put));
+                () -> controller.clipboard().cutSelected().ifPresent(Clipboard::put));
         copy = item("Copy", KeyStroke.getKeyStroke(KeyEvent.VK_C, InputEvent.CTRL_DOWN_MASK),
-                () -> controller.copySelected().ifPresent(Clipboard::put));
+                () -> controller.clipboard().copySelected().ifPresent(Clipboard::put));
         item("Paste", KeyStroke.getKeyStroke(KeyEvent.VK_V, InputEvent.CTRL_DOWN_MASK),
-                () -> controller.paste(Clipboard.text()));
+                () -> controller.clipboard().paste(Clipboard.text()));
         duplicate = item("Duplicate", KeyStroke.getKeyStroke(KeyEvent.VK_D, InputEvent.CTRL_DOWN_MASK),
-                controller::duplicateSelected);
+                controller.clipboard()::duplicateSelected);
         addSeparator();
         item("Clear board\u2026", null, () -> {
             int answer = JOptionPane.showConfirmDialog(parent,

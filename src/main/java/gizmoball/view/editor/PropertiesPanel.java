@@ -4,17 +4,16 @@ import gizmoball.boardfile.Decimals;
 import gizmoball.boardfile.KeyCodes;
 import gizmoball.boardfile.OrderWords;
 import gizmoball.editor.Editor;
+import gizmoball.editor.PropertyEdits;
 import gizmoball.model.Board;
 import gizmoball.model.BoardChange;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.game.GameRules;
 import gizmoball.model.game.Points;
-import gizmoball.model.gizmo.AcceleratorView;
 import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.Plunger;
 import gizmoball.model.gizmo.Rgb;
-import gizmoball.model.gizmo.PortalView;
-import gizmoball.model.gizmo.SpawnerView;
-import gizmoball.model.gizmo.SpinnerView;
+import gizmoball.model.gizmo.Setting;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import gizmoball.model.loop.TriggerSource;
@@ -76,8 +75,6 @@ public final class PropertiesPanel extends JPanel {
 
     private static final int WIDTH = 250;
     private static final int SELECTION_WIDTH = 226;
-    /** Names of a group the selection label lists before "...". */
-    private static final int GROUP_NAMES = 5;
 
     private final Editor controller;
     private final Runnable focusBoard;
@@ -86,8 +83,15 @@ public final class PropertiesPanel extends JPanel {
     private final NumberField mu2 = new NumberField("mu2");
     private final NumberField balls = new NumberField("game.balls");
     private final JTextField extraBall = new JTextField(7);
+    private final JTextField nudgeSpeed = new JTextField(7);
+    private final NumberField tiltNudges = new NumberField("game.tilt.nudges");
+    private final NumberField tiltSeconds = new NumberField("game.tilt.seconds");
+    private final NumberField ballSave = new NumberField("game.ballsave");
     private final NumberField points = new NumberField("gizmo.points");
     private final JCheckBox drain = new JCheckBox("Drain: its balls are lost");
+    private final JCheckBox plunger = new JCheckBox("Plunger");
+    private final NumberField plungerSpeed = new NumberField("gizmo.plunger.speed");
+    private final NumberField plungerSeconds = new NumberField("gizmo.plunger.seconds");
     private final NumberField factor = new NumberField("gizmo.factor");
     private final JTextField pair = new JTextField(5);
     private final JPanel factorPart = new JPanel(new BorderLayout(4, 0));
@@ -166,6 +170,14 @@ public final class PropertiesPanel extends JPanel {
         extraBall.setText(board.gameRules().extraBallAt().isPresent()
                 ? Long.toString(board.gameRules().extraBallAt().getAsLong()) : "");
         RefusedValue.unmark(extraBall);
+        GameRules rules = board.gameRules();
+        nudgeSpeed.setText(rules.nudge().map(n -> Decimals.format(n.speed())).orElse(""));
+        tiltNudges.show(rules.tilt().nudges());
+        tiltSeconds.show(rules.tilt().seconds());
+        ballSave.show(rules.ballSaveSeconds());
+        for (JTextField f : new JTextField[] {nudgeSpeed, tiltNudges, tiltSeconds, ballSave}) {
+            RefusedValue.unmark(f);
+        }
 
         shownSelection = controller.selected().orElse(null);
         shownGroup = controller.selection();
@@ -181,13 +193,14 @@ public final class PropertiesPanel extends JPanel {
                 f.setText("");
             }
         }
-        Optional<SpawnerView> spawner = gizmo.filter(g -> g instanceof SpawnerView).map(g -> (SpawnerView) g);
-        applyBall.setEnabled(ball.isPresent() || spawner.isPresent());
-        spawner.ifPresent(sp -> {
+        Setting setting = gizmo.map(Gizmo::setting).orElse(new Setting.None());
+        Optional<Setting.Launch> launch = as(setting, Setting.Launch.class);
+        applyBall.setEnabled(ball.isPresent() || launch.isPresent());
+        launch.ifPresent(l -> {
             ballVx.setEnabled(true);
             ballVy.setEnabled(true);
-            ballVx.show(sp.velocity().x());
-            ballVy.show(sp.velocity().y());
+            ballVx.show(l.vx());
+            ballVy.show(l.vy());
         });
         enableAll(nameRows, gizmo.isPresent() || ball.isPresent());
         name.setText(gizmo.map(Gizmo::name).or(() -> ball.map(BallView::name)).orElse(""));
@@ -206,17 +219,16 @@ public final class PropertiesPanel extends JPanel {
         points.setText(gizmo.map(g -> Integer.toString(board.gameRules().pointsOf(g.name(), g.kind()))).orElse(""));
         RefusedValue.unmark(points);
         drain.setEnabled(gizmo.filter(g -> g.kind().canDrain()).isPresent());
-        Optional<AcceleratorView> accelerator = gizmo.filter(g -> g instanceof AcceleratorView)
-                .map(g -> (AcceleratorView) g);
+        Optional<Setting.Factor> accelerator = as(setting, Setting.Factor.class);
         factor.setEnabled(accelerator.isPresent());
         factor.setText("");
         accelerator.ifPresent(a -> factor.show(a.factor()));
         RefusedValue.unmark(factor);
-        Optional<PortalView> portal = gizmo.filter(g -> g instanceof PortalView).map(g -> (PortalView) g);
+        Optional<Setting.Pair> portal = as(setting, Setting.Pair.class);
         pair.setEnabled(portal.isPresent());
-        pair.setText(portal.flatMap(PortalView::pair).orElse(""));
+        pair.setText(portal.flatMap(Setting.Pair::portal).orElse(""));
         RefusedValue.unmark(pair);
-        Optional<SpinnerView> spinner = gizmo.filter(g -> g instanceof SpinnerView).map(g -> (SpinnerView) g);
+        Optional<Setting.Speed> spinner = as(setting, Setting.Speed.class);
         speed.setEnabled(spinner.isPresent());
         speed.setText("");
         spinner.ifPresent(s -> speed.show(s.turnsPerSecond()));
@@ -224,8 +236,21 @@ public final class PropertiesPanel extends JPanel {
         factorPart.setVisible(spinner.isEmpty());
         speedPart.setVisible(spinner.isPresent());
         drain.setSelected(gizmo.filter(g -> board.gameRules().isDrain(g.name())).isPresent());
+        Optional<Setting.Pull> absorber = as(setting, Setting.Pull.class);
+        Optional<Plunger> pull = absorber.flatMap(Setting.Pull::plunger);
+        plunger.setEnabled(absorber.isPresent());
+        plunger.setSelected(pull.isPresent());
+        for (NumberField f : new NumberField[] {plungerSpeed, plungerSeconds}) {
+            f.setEnabled(pull.isPresent());
+            f.setText("");
+            RefusedValue.unmark(f);
+        }
+        pull.ifPresent(p -> {
+            plungerSpeed.show(p.fullSpeed());
+            plungerSeconds.show(p.pullSeconds());
+        });
         gizmo.ifPresent(g -> {
-            colour.setText(g.colour().map(Editor::hex).orElse(""));
+            colour.setText(g.colour().map(PropertyEdits::hex).orElse(""));
             swatch.setBackground(BoardPainter.colourOf(g));
         });
         ball.ifPresent(b -> {
@@ -241,16 +266,21 @@ public final class PropertiesPanel extends JPanel {
             for (Connection c : board.connections()) {
                 if (c.source().equals(TriggerSource.named(name)) || c.target().equals(name)) {
                     links.addElement(new Link(c.source() + " \u2192 " + c.target() + OrderWords.of(c.order()),
-                            () -> controller.disconnect(c.source(), c.target())));
+                            () -> controller.properties().disconnect(c.source(), c.target())));
                 }
             }
             for (KeyBinding k : board.keyBindings()) {
                 if (k.gizmo().equals(name)) {
-                    links.addElement(new Link(KeyCodes.describe(k), () -> controller.unbind(k)));
+                    links.addElement(new Link(KeyCodes.describe(k), () -> controller.properties().unbind(k)));
                 }
             }
         }
         removeLink.setEnabled(!links.isEmpty());
+    }
+
+    /** The setting as its record, if it is one: each field of the panel shows the setting of one record. */
+    private static <S extends Setting> Optional<S> as(Setting setting, Class<S> record) {
+        return Optional.of(setting).filter(record::isInstance).map(record::cast);
     }
 
     private JComponent boardSection() {
@@ -262,14 +292,32 @@ public final class PropertiesPanel extends JPanel {
         extraBall.setName("game.extra");
         extraBall.setToolTipText("The score that gives one extra ball; empty for none");
         row(p, 4, "Extra ball at", extraBall);
+        nudgeSpeed.setName("game.nudge");
+        nudgeSpeed.setToolTipText("L/s a nudge (arrow keys unless the file says) adds to every free ball; empty: none");
+        row(p, 5, "Nudge (L/s)", nudgeSpeed);
+        tiltNudges.setToolTipText("The nudge that tilts: that many within the seconds beside it");
+        tiltSeconds.setToolTipText("The seconds within which that many nudges tilt");
+        JPanel tilt = new JPanel(new BorderLayout(4, 0));
+        tiltNudges.setColumns(2);
+        tilt.add(tiltNudges, BorderLayout.WEST);
+        tilt.add(new JLabel("in"), BorderLayout.CENTER);
+        tiltSeconds.setColumns(3);
+        JPanel seconds = new JPanel(new BorderLayout(4, 0));
+        seconds.add(tiltSeconds, BorderLayout.CENTER);
+        seconds.add(new JLabel("s"), BorderLayout.EAST);
+        tilt.add(seconds, BorderLayout.EAST);
+        row(p, 6, "Tilt: nudges", tilt);
+        ballSave.setToolTipText("Seconds after a launch in which a drained ball is given back, once; 0: none");
+        row(p, 7, "Ball save (s)", ballSave);
         JButton apply = new JButton("Apply");
         apply.setName("board.apply");
         apply.addActionListener(e -> applyBoard());
-        for (JTextField f : new JTextField[]{gravity, mu, mu2, balls, extraBall}) {
+        for (JTextField f : new JTextField[]{gravity, mu, mu2, balls, extraBall, nudgeSpeed, tiltNudges, tiltSeconds,
+                ballSave}) {
             f.addActionListener(e -> applyBoard());
             restoreOnEscape(f);
         }
-        p.add(apply, constraints(1, 5));
+        p.add(apply, constraints(1, 8));
         return p;
     }
 
@@ -330,14 +378,14 @@ public final class PropertiesPanel extends JPanel {
         drain.setName("gizmo.drain");
         drain.setToolTipText("A ball this absorber captures is lost to the game; the next one waits in it");
         drain.addActionListener(e -> controller.selectedGizmo().ifPresent(g -> {
-            controller.setDrain(g.name(), drain.isSelected());
+            controller.properties().setDrain(g.name(), drain.isSelected());
             focusBoard.run();
         }));
         pair.setName("gizmo.pair");
         pair.setToolTipText("A portal: the portal a ball entering its mouth leaves by (empty: none, a wall)");
         pair.addActionListener(e -> applyPair());
         restoreOnEscape(pair);
-        p.add(drain, wide(constraints(0, 4)));
+        p.add(absorberRows(), wide(constraints(0, 4)));
         p.add(nameRows(), wide(constraints(0, 5)));
 
         GridBagConstraints l = constraints(0, 6);
@@ -366,6 +414,60 @@ public final class PropertiesPanel extends JPanel {
         return p;
     }
 
+    /**
+     * An absorber's game: whether it is a drain, and whether it is a plunger with its full-pull speed and the seconds
+     * of holding a full pull takes.
+     */
+    private JComponent absorberRows() {
+        JPanel rows = new JPanel(new BorderLayout(0, 2));
+        rows.add(drain, BorderLayout.NORTH);
+        plunger.setName("gizmo.plunger");
+        plunger.setToolTipText("Its key pulls it while held; the release launches faster the longer the hold");
+        plunger.addActionListener(e -> applyPlunger());
+        plungerSpeed.setToolTipText("A plunger: L/s of a full pull, above " + Decimals.format(Plunger.MIN_SPEED)
+                + " and at most " + Decimals.format(Board.MAX_SPEED));
+        plungerSeconds.setToolTipText("A plunger: seconds of holding for a full pull, "
+                + Decimals.format(Plunger.MIN_PULL_SECONDS) + " to " + Decimals.format(Plunger.MAX_PULL_SECONDS));
+        JPanel pull = new JPanel(new FlowLayout(FlowLayout.LEFT, 3, 0));
+        pull.add(plunger);
+        for (NumberField f : new NumberField[] {plungerSpeed, plungerSeconds}) {
+            f.setColumns(3);
+            f.addActionListener(e -> applyPlunger());
+            restoreOnEscape(f);
+            pull.add(f);
+            pull.add(new JLabel(f == plungerSpeed ? "L/s" : "s"));
+        }
+        rows.add(pull, BorderLayout.SOUTH);
+        return rows;
+    }
+
+    private void applyPlunger() {
+        Optional<Gizmo> gizmo = controller.selectedGizmo();
+        if (gizmo.isEmpty()) {
+            return;
+        }
+        if (!plunger.isSelected()) {
+            controller.properties().set(gizmo.get().name(), new Setting.Pull(Optional.empty()));
+            focusBoard.run();
+            return;
+        }
+        NumberField[] fields = {plungerSpeed, plungerSeconds};
+        Optional<double[]> v = plungerSpeed.getText().isBlank() ? Optional.of(new double[] {
+                Plunger.DEFAULT_FULL_SPEED, Plunger.DEFAULT_PULL_SECONDS}) : values(fields);
+        if (v.isEmpty()) {
+            return;
+        }
+        Map<JTextField, String> typed = new LinkedHashMap<>();
+        for (NumberField f : fields) {
+            typed.put(f, f.getText());
+        }
+        if (controller.properties().set(gizmo.get().name(), new Setting.Pull(Optional.of(new Plunger(v.get()[0], v.get()[1]))))) {
+            focusBoard.run();
+        } else {
+            keepRefused(typed);
+        }
+    }
+
     /** The selected gizmo's own colour as #rrggbb (empty: its kind's), a swatch, a chooser and a reset. */
     private JComponent colourRows() {
         colour.setName("gizmo.colour");
@@ -386,7 +488,7 @@ public final class PropertiesPanel extends JPanel {
             Color chosen = JColorChooser.showDialog(SwingUtilities.getWindowAncestor(this),
                     "Colour of " + shownSelection, swatch.getBackground());
             if (chosen != null) {
-                applyColour(Editor.hex(Rgb.of(chosen.getRGB())));
+                applyColour(PropertyEdits.hex(Rgb.of(chosen.getRGB())));
             }
         });
         JButton reset = new JButton("Kind's");
@@ -435,7 +537,7 @@ public final class PropertiesPanel extends JPanel {
         Optional<String> selected = controller.selected().filter(n -> !controller.wallsSelected());
         String typed = name.getText();
         if (selected.isPresent()) {
-            if (controller.rename(selected.get(), typed)) {
+            if (controller.properties().rename(selected.get(), typed)) {
                 focusBoard.run();
             } else {
                 keepRefused(Map.of(name, typed));
@@ -459,7 +561,7 @@ public final class PropertiesPanel extends JPanel {
         Map<JTextField, String> typed = new LinkedHashMap<>();
         typed.put(cellX, cellX.getText());
         typed.put(cellY, cellY.getText());
-        if (controller.moveGizmoTo(gizmo.get().name(), (int) x, (int) y)) {
+        if (controller.properties().moveGizmoTo(gizmo.get().name(), (int) x, (int) y)) {
             focusBoard.run();
         } else {
             keepRefused(typed);
@@ -468,7 +570,7 @@ public final class PropertiesPanel extends JPanel {
 
     private void applyColour(String text) {
         controller.selectedGizmo().ifPresent(g -> {
-            if (controller.setColour(g.name(), text)) {
+            if (controller.properties().setColour(g.name(), text)) {
                 focusBoard.run();
             } else {
                 keepRefused(Map.of(colour, text));
@@ -528,17 +630,39 @@ public final class PropertiesPanel extends JPanel {
         }
         Board board = controller.board();
         Map<JTextField, String> typed = changed(constants, new double[] {board.gravity(), board.mu(), board.mu2()});
-        if (!controller.setConstants(v.get()[0], v.get()[1], v.get()[2])) {
+        if (!controller.properties().setConstants(v.get()[0], v.get()[1], v.get()[2])) {
             keepRefused(typed);
             return;
         }
         Map<JTextField, String> game = new LinkedHashMap<>();
         game.put(balls, balls.getText());
         game.put(extraBall, extraBall.getText());
-        if (controller.setGame((int) v.get()[3], extra)) {
+        if (!controller.properties().setGame((int) v.get()[3], extra)) {
+            keepRefused(game);
+            return;
+        }
+        applyTable();
+    }
+
+    /** The nudge (empty: none), the tilt and the ball save, as one edit. */
+    private void applyTable() {
+        Optional<double[]> v = values(tiltNudges, tiltSeconds, ballSave);
+        String speedText = nudgeSpeed.getText().strip();
+        OptionalDouble speed = speedText.isEmpty() ? OptionalDouble.empty() : Decimals.parse(speedText);
+        if (v.isEmpty() || !speedText.isEmpty() && speed.isEmpty()) {
+            if (v.isPresent()) {
+                refuse(nudgeSpeed, "Nudge '" + speedText + "' is not a number of L/s");
+            }
+            return;
+        }
+        Map<JTextField, String> typed = new LinkedHashMap<>();
+        for (JTextField f : new JTextField[] {nudgeSpeed, tiltNudges, tiltSeconds, ballSave}) {
+            typed.put(f, f.getText());
+        }
+        if (controller.properties().setTable(speed, v.get()[0], v.get()[1], v.get()[2])) {
             focusBoard.run();
         } else {
-            keepRefused(game);
+            keepRefused(typed);
         }
     }
 
@@ -549,7 +673,7 @@ public final class PropertiesPanel extends JPanel {
             return;
         }
         String typed = factor.getText();
-        if (controller.setFactor(gizmo.get().name(), v.get()[0])) {
+        if (controller.properties().set(gizmo.get().name(), new Setting.Factor(v.get()[0]))) {
             focusBoard.run();
         } else {
             keepRefused(Map.of(factor, typed));
@@ -562,7 +686,7 @@ public final class PropertiesPanel extends JPanel {
             return;
         }
         String typed = pair.getText();
-        if (controller.setPair(gizmo.get().name(), typed.strip())) {
+        if (controller.properties().set(gizmo.get().name(), Setting.Pair.with(typed.strip()))) {
             focusBoard.run();
         } else {
             keepRefused(Map.of(pair, typed));
@@ -576,7 +700,7 @@ public final class PropertiesPanel extends JPanel {
             return;
         }
         String typed = speed.getText();
-        if (controller.setSpinnerSpeed(gizmo.get().name(), v.get()[0])) {
+        if (controller.properties().set(gizmo.get().name(), new Setting.Speed(v.get()[0]))) {
             focusBoard.run();
         } else {
             keepRefused(Map.of(speed, typed));
@@ -595,7 +719,7 @@ public final class PropertiesPanel extends JPanel {
             return;
         }
         String typed = points.getText();
-        if (controller.setPoints(gizmo.get().name(), (int) value)) {
+        if (controller.properties().setPoints(gizmo.get().name(), (int) value)) {
             focusBoard.run();
         } else {
             keepRefused(Map.of(points, typed));
@@ -610,10 +734,9 @@ public final class PropertiesPanel extends JPanel {
     }
 
     private void applyBall() {
-        Optional<SpawnerView> spawner = controller.selectedGizmo().filter(g -> g instanceof SpawnerView)
-                .map(g -> (SpawnerView) g);
+        Optional<Gizmo> spawner = controller.selectedGizmo().filter(g -> g.setting() instanceof Setting.Launch);
         if (spawner.isPresent()) {
-            applySpawnVelocity(spawner.get());
+            applySpawnVelocity(spawner.get().name(), (Setting.Launch) spawner.get().setting());
             return;
         }
         Optional<BallView> ball = controller.selectedBall();
@@ -625,7 +748,7 @@ public final class PropertiesPanel extends JPanel {
         BallView b = ball.get();
         Map<JTextField, String> typed = changed(fields,
                 new double[] {b.position().x(), b.position().y(), b.velocity().x(), b.velocity().y()});
-        if (controller.setBall(b.name(), v.get()[0], v.get()[1], v.get()[2], v.get()[3])) {
+        if (controller.properties().setBall(b.name(), v.get()[0], v.get()[1], v.get()[2], v.get()[3])) {
             focusBoard.run();
         } else {
             keepRefused(typed);
@@ -633,14 +756,14 @@ public final class PropertiesPanel extends JPanel {
     }
 
     /** A spawner's balls' velocity, in the ball's vx and vy fields (its balls are what they describe). */
-    private void applySpawnVelocity(SpawnerView spawner) {
+    private void applySpawnVelocity(String spawner, Setting.Launch now) {
         NumberField[] fields = {ballVx, ballVy};
         Optional<double[]> v = values(fields);
         if (v.isEmpty()) {
             return;
         }
-        Map<JTextField, String> typed = changed(fields, new double[] {spawner.velocity().x(), spawner.velocity().y()});
-        if (controller.setSpawnVelocity(spawner.name(), v.get()[0], v.get()[1])) {
+        Map<JTextField, String> typed = changed(fields, new double[] {now.vx(), now.vy()});
+        if (controller.properties().set(spawner, new Setting.Launch(v.get()[0], v.get()[1]))) {
             focusBoard.run();
         } else {
             keepRefused(typed);
@@ -695,10 +818,25 @@ public final class PropertiesPanel extends JPanel {
     }
 
     /** Several selected: how many, and which (the first few). */
-    private static String describe(List<String> group) {
-        String names = String.join(", ", group.subList(0, Math.min(group.size(), GROUP_NAMES)))
-                + (group.size() > GROUP_NAMES ? ", \u2026" : "");
-        return named(group.size() + " selected", names + " (Shift+click takes one out)");
+    /**
+     * "5 selected: S1, S2, T1 and 2 more (Shift+click takes one out)": as many names as the label's two lines hold,
+     * and how many more, so that no name is cut.
+     */
+    private String describe(List<String> group) {
+        for (int shown = group.size(); ; shown--) {
+            String names = String.join(", ", group.subList(0, shown))
+                    + (shown == group.size() ? "" : (shown == 0 ? "" : " and ") + (group.size() - shown) + " more");
+            String text = named(group.size() + " selected", names + " (Shift+click takes one out)");
+            if (shown == 0 || fitsTheLabel(text)) {
+                return text;
+            }
+        }
+    }
+
+    private boolean fitsTheLabel(String text) {
+        JLabel probe = new JLabel(text);
+        probe.setFont(selection.getFont());
+        return probe.getPreferredSize().height <= selection.getPreferredSize().height;
     }
 
     private static void enableAll(Container rows, boolean enabled) {

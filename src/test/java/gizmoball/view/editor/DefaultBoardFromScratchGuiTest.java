@@ -8,6 +8,7 @@ import gizmoball.model.Invariants;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.game.GameRules;
+import gizmoball.model.gizmo.AbsorberView;
 import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.loop.BallView;
@@ -65,6 +66,21 @@ class DefaultBoardFromScratchGuiTest {
                 }
                 if (target.gameRules().isDrain(g.name())) {
                     EditorGui.find(w.build.properties(), JCheckBox.class, "gizmo.drain").doClick(0);
+                }
+                if (g.colour().isPresent()) {
+                    JTextField colour = EditorGui.find(w.build.properties(), JTextField.class, "gizmo.colour");
+                    colour.setText(String.format("#%02x%02x%02x", g.colour().get().red(), g.colour().get().green(),
+                            g.colour().get().blue()));
+                    colour.postActionEvent();
+                }
+                // A plunger: ticked, then its full-pull speed and pull time typed (Enter in the last applies both).
+                if (g instanceof AbsorberView absorber && absorber.plunger().isPresent()) {
+                    EditorGui.find(w.build.properties(), JCheckBox.class, "gizmo.plunger").doClick(0);
+                    JTextField speed = EditorGui.find(w.build.properties(), JTextField.class, "gizmo.plunger.speed");
+                    JTextField seconds = EditorGui.find(w.build.properties(), JTextField.class, "gizmo.plunger.seconds");
+                    speed.setText(Double.toString(absorber.plunger().get().fullSpeed()));
+                    seconds.setText(Double.toString(absorber.plunger().get().pullSeconds()));
+                    seconds.postActionEvent();
                 }
             }
             for (BallView b : target.balls()) {
@@ -173,7 +189,7 @@ class DefaultBoardFromScratchGuiTest {
     private static BoardContents renamed(BoardContents d, Map<String, String> name) {
         return new BoardContents(
                 d.gizmos().stream().map(g -> new BoardContents.GizmoState(name.get(g.name()), g.kind(), g.x(), g.y(),
-                        g.width(), g.height(), g.rotation(), g.colour(), g.pair().map(name::get), g.setting())).toList(),
+                        g.width(), g.height(), g.rotation(), g.colour(), g.setting().renamed(name::get))).toList(),
                 d.balls().stream().map(b -> new BoardContents.BallState(name.get(b.name()), b.x(), b.y(), b.vx(),
                         b.vy(), b.captured())).toList(),
                 d.connections().stream().map(c -> new Connection(TriggerSource.named(name.get(c.source().name())),
@@ -182,6 +198,7 @@ class DefaultBoardFromScratchGuiTest {
                 d.gravity(), d.mu(), d.mu2(), new GameRules(d.game().ballsPerGame(),
                         d.game().drains().stream().map(name::get).collect(Collectors.toSet()),
                         d.game().ownPoints().entrySet().stream().collect(Collectors.toMap(e -> name.get(e.getKey()),
-                                Map.Entry::getValue)), d.game().extraBallAt()));
+                                Map.Entry::getValue)), d.game().extraBallAt(), d.game().nudge(), d.game().tilt(),
+                        d.game().ballSaveSeconds()));
     }
 }

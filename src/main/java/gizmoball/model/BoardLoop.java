@@ -1,0 +1,175 @@
+package gizmoball.model;
+
+import gizmoball.model.gizmo.Absorber;
+import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.MovingShape;
+import gizmoball.model.gizmo.Order;
+import gizmoball.model.gizmo.Sink;
+import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallGrid;
+import gizmoball.model.loop.Connection;
+import gizmoball.model.loop.LoopActions;
+import gizmoball.model.loop.LoopMode;
+import gizmoball.model.loop.LoopView;
+import gizmoball.model.loop.PlayEvent;
+import gizmoball.model.loop.Sleepers;
+import gizmoball.model.loop.SpatialIndex;
+import gizmoball.model.loop.TickRun;
+import gizmoball.model.loop.TriggerSource;
+
+import java.util.Collection;
+import java.util.List;
+
+import physics.Vect;
+
+/**
+ * The board as the loop sees it and acts on it: the one way in for a {@link TickRun}, which may not use the model's
+ * package. Each member hands the loop one of the board's parts or one of its numbers; the board keeps them.
+ */
+final class BoardLoop implements LoopView, LoopActions {
+    private final Board board;
+    private final Registry registry;
+    private final Wiring wiring;
+    private final Play play;
+    private final Sleepers sleepers;
+    /** Reused by every tick: the broad phase for ball pairs. */
+    private final BallGrid ballGrid = new BallGrid();
+
+    BoardLoop(Board board, Registry registry, Wiring wiring, Play play, Sleepers sleepers) {
+        this.board = board;
+        this.registry = registry;
+        this.wiring = wiring;
+        this.play = play;
+        this.sleepers = sleepers;
+    }
+
+    @Override
+    public Collection<Ball> balls() {
+        return registry.balls();
+    }
+
+    @Override
+    public Collection<GizmoBase> gizmos() {
+        return registry.gizmos();
+    }
+
+    @Override
+    public GizmoBase gizmo(String name) {
+        return registry.gizmo(name);
+    }
+
+    @Override
+    public Ball ball(String name) {
+        return registry.ball(name);
+    }
+
+    @Override
+    public List<MovingShape> movingShapes() {
+        return registry.movingShapes();
+    }
+
+    @Override
+    public List<Connection> connectionsFrom(TriggerSource source) {
+        return wiring.connectionsFrom(source);
+    }
+
+    @Override
+    public SpatialIndex index() {
+        return registry.index();
+    }
+
+    @Override
+    public boolean spatialIndexEnabled() {
+        return board.spatialIndexEnabled();
+    }
+
+    @Override
+    public Vect gravity() {
+        return new Vect(0, board.gravity());   // the board's gravity pulls down the board, along +y
+    }
+
+    @Override
+    public double mu() {
+        return board.mu();
+    }
+
+    @Override
+    public double mu2() {
+        return board.mu2();
+    }
+
+    @Override
+    public double time() {
+        return board.time();
+    }
+
+    @Override
+    public LoopMode loopMode() {
+        return board.loopMode();
+    }
+
+    @Override
+    public boolean passingThrough(Ball a, Ball b) {
+        return registry.passingThrough(a, b);
+    }
+
+    @Override
+    public double nextCollisionLookAhead() {
+        return board.nextCollisionLookAhead();
+    }
+
+    @Override
+    public long lastRedrawNanos() {
+        return board.lastRedrawNanos();
+    }
+
+    @Override
+    public Sleepers sleepers() {
+        return sleepers;
+    }
+
+    @Override
+    public BallGrid ballGrid() {
+        return ballGrid;
+    }
+
+    @Override
+    public void recordEvent(PlayEvent event) {
+        play.recordEvent(event);
+    }
+
+    @Override
+    public List<PlayEvent> drainEvents() {
+        return play.drainEvents();
+    }
+
+    @Override
+    public void trigger(GizmoBase gizmo, Order order, double now) {
+        play.carryOut(gizmo, order.action().orElse(gizmo.kind().defaultAction()), order.delay(), now);
+    }
+
+    @Override
+    public void capture(Ball ball, Absorber absorber) {
+        play.capture(ball, absorber);
+    }
+
+    @Override
+    public void sink(Ball ball, Sink sink) {
+        play.sink(ball, sink);
+    }
+
+    @Override
+    public void wakeSweep(MovingShape moving) {
+        play.wakeSweep(moving);
+    }
+
+    @Override
+    public void forgetSeparatedPairs() {
+        registry.forgetSeparatedPairs();
+    }
+
+    @Override
+    public void advanceTime(double dt) {
+        board.advanceTime(dt);
+    }
+}
