@@ -710,9 +710,6 @@ public final class Editor {
 
     private ToolHandler newHandler(Tool t) {
         return switch (t) {
-            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER, GATE,
-                    DROP_TARGET, PORTAL, SPINNER ->
-                    new PlaceGizmoTool(this, t.kind().orElseThrow());
             case ABSORBER -> new PlaceAbsorberTool(this);
             case BALL -> new PlaceBallTool(this);
             case SELECT -> new SelectTool(this);
@@ -722,6 +719,8 @@ public final class Editor {
             case DISCONNECT -> new ConnectTool(this, false);
             case KEY_CONNECT -> new KeyConnectTool(this, true);
             case KEY_DISCONNECT -> new KeyConnectTool(this, false);
+            // Every other tool places a gizmo of its kind on one cell.
+            default -> new PlaceGizmoTool(this, t.kind().orElseThrow());
         };
     }
 
