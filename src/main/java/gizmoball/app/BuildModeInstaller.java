@@ -16,7 +16,11 @@ import gizmoball.view.editor.PalettePanel;
 import gizmoball.view.editor.PropertiesPanel;
 import gizmoball.view.editor.SidePane;
 
+import gizmoball.controller.PlayTest;
+import javax.swing.JMenu;
 import javax.swing.JMenuBar;
+import javax.swing.JMenuItem;
+import javax.swing.KeyStroke;
 import javax.swing.JScrollPane;
 import java.awt.Cursor;
 import java.awt.Dimension;
@@ -25,12 +29,14 @@ import java.awt.Rectangle;
 import java.awt.Toolkit;
 import java.awt.event.ComponentAdapter;
 import java.awt.event.ComponentEvent;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
 import java.util.function.BooleanSupplier;
 
 /**
- * Adds build mode to a game window: palette (west), properties (east), the Edit menu, the overlay and the
+ * Adds build mode to a game window: palette (west), properties (east), the Edit and Test menus, the overlay and the
  * mouse and key handling on the board view. Everything acts only while the session is in BUILD mode.
  */
 public final class BuildModeInstaller {
@@ -39,7 +45,7 @@ public final class BuildModeInstaller {
 
     /** The installed parts, for tests and for anyone who wants to drive the editor directly. */
     public record BuildMode(Editor controller, PalettePanel palette, PropertiesPanel properties,
-                            EditMenu editMenu) { }
+                            EditMenu editMenu, JMenu testMenu) { }
 
     /** Pixels of board wanted beside the labelled palette and the properties before the palette turns compact. */
     private static final int MIN_BOARD = 480;
@@ -92,6 +98,8 @@ public final class BuildModeInstaller {
         EditMenu editMenu = EditMenu.of(controller, window, building);
         JMenuBar menus = window.menus();
         menus.add(editMenu, Math.min(1, menus.getMenuCount()));
+        JMenu testMenu = testMenu(window, session);
+        menus.add(testMenu, Math.min(2, menus.getMenuCount()));
         menus.revalidate();
 
         panel.addOverlay(new BuildOverlay(controller, building));
@@ -102,10 +110,30 @@ public final class BuildModeInstaller {
         session.addModeListener(mode -> {
             controller.cancel();
             editMenu.update();
+            testMenu.setEnabled(building.getAsBoolean());
             cursor.run();
             panel.repaint();
         });
-        return new BuildMode(controller, palette, properties, editMenu);
+        return new BuildMode(controller, palette, properties, editMenu, testMenu);
+    }
+
+    /**
+     * Build mode's Test menu: Play-test (Ctrl+L) plays the design {@link PlayTest#GAMES} times with the lab's
+     * autoplayer and idle player in the background and shows what came of it. Enabled in build mode only.
+     */
+    private static JMenu testMenu(GameWindow window, GameSession session) {
+        JMenu menu = new JMenu("Test");
+        menu.setMnemonic(KeyEvent.VK_T);
+        JMenuItem playTest = new JMenuItem("Play-test\u2026");
+        playTest.setName("test.playtest");
+        playTest.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_L, InputEvent.CTRL_DOWN_MASK));
+        playTest.setToolTipText("Play the board " + PlayTest.GAMES + " times with an autoplayer and " + PlayTest.GAMES
+                + " with a player who only launches: scores, seconds per ball, gizmos never hit, a heat map");
+        playTest.addActionListener(e -> PlayTest.start(window, session.boardToSave(), session.boardName(),
+                PlayTest.settings()));
+        menu.add(playTest);
+        menu.setEnabled(session.mode() == Mode.BUILD);
+        return menu;
     }
 
     /**

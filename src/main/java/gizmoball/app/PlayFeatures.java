@@ -81,7 +81,18 @@ public final class PlayFeatures {
         features.rememberRecentFiles();
         features.hintOnFirstRun();
         features.rememberPlace();
+        features.tellWhereSettingsAreKept();
         return features;
+    }
+
+    /** Help > How to play says where the settings and high scores are, and how to keep them elsewhere. */
+    private void tellWhereSettingsAreKept() {
+        window.tellWhereSettingsAreKept(settings.whereKept().map(folder -> "They are kept in " + folder
+                + " (under your account's home, whatever HOME says). To keep them in another folder, start the"
+                + " game with -D" + Settings.PREFS_ROOT + "=FOLDER (for instance in JDK_JAVA_OPTIONS), and move"
+                + " .java/.userPrefs there to take them along.")
+                .orElse("They are kept in Java's preferences of your account (on Windows in the registry, under"
+                        + " HKEY_CURRENT_USER\\Software\\JavaSoft\\Prefs)."));
     }
 
     public BallTrails trails() {

@@ -1,6 +1,7 @@
 package gizmoball.boardfile;
 
 import java.io.IOException;
+import java.nio.charset.CharacterCodingException;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.FileSystemException;
 import java.nio.file.Files;
@@ -41,10 +42,14 @@ public final class FileErrors {
                 : common(e));
     }
 
-    /** Why reading {@code file} failed: "there is no such file", "permission denied", ... */
+    /** Why reading {@code file} failed: "there is no such file", "permission denied", "it is not text", ... */
     public static String readReason(Path file, IOException e) {
         if (Files.isDirectory(file)) {
             return "it is a folder";
+        }
+        if (e instanceof CharacterCodingException) {
+            // The JDK says only "Input length = 1": the file holds bytes that are no UTF-8 text (an image, say).
+            return "it is not text (it holds bytes that are not UTF-8)";
         }
         return folderProblem(file, e).orElseGet(() -> e instanceof NoSuchFileException
                 ? "there is no such file"

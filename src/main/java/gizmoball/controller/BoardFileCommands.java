@@ -313,11 +313,14 @@ public final class BoardFileCommands {
     }
 
     private static List<String> describe(List<BoardFileError> errors) {
-        return errors.stream().map(e -> "line " + e.line() + ": " + e.text().strip() + "   <- " + e.reason()).toList();
+        return errors.stream()
+                .map(e -> "line " + e.line() + ": " + e.text().strip() + LoadProblemsDialog.BECAUSE + e.reason())
+                .toList();
     }
 
     private static List<String> notes(LoadResult result) {
-        return result.notes().stream().map(n -> "line " + n.line() + ": " + n.text().strip() + "   <- " + n.note())
+        return result.notes().stream()
+                .map(n -> "line " + n.line() + ": " + n.text().strip() + LoadProblemsDialog.BECAUSE + n.note())
                 .toList();
     }
 

@@ -208,8 +208,9 @@ public final class GameCommands {
         }
         Replay replay = Replay.of(asBuilt(), session.board(), Board.DEFAULT_TICK);
         JFileChooser chooser = replayChooser();
-        chooser.setSelectedFile(new java.io.File(session.suggestedFileName().replaceFirst("\\.txt$", "")
-                + ".replay.json"));
+        // Named after the board: its file's name (or a sample's, or untitled) without its extension.
+        String board = session.file().map(f -> String.valueOf(f.getFileName())).orElse(session.suggestedFileName());
+        chooser.setSelectedFile(new java.io.File(board.replaceFirst("\\.[^.]*$", "") + ".replay.json"));
         if (chooser.showSaveDialog(window) != JFileChooser.APPROVE_OPTION) {
             return;
         }

@@ -39,6 +39,10 @@ public final class Settings {
     private static final String PLAYER = "playerName";
     private static final String HIGH_SCORES = "highscores";
 
+    /** The system property that moves the JDK's file-kept preferences to another folder. */
+    public static final String PREFS_ROOT = "java.util.prefs.userRoot";
+    private static final String FILE_PREFERENCES = "java.util.prefs.FileSystemPreferences";
+
     private final Preferences node;
 
     public Settings(Preferences node) {
@@ -48,6 +52,20 @@ public final class Settings {
     /** The settings of this user (or of the node the system property names). */
     public static Settings forUser() {
         return new Settings(Preferences.userRoot().node(System.getProperty(NODE_PROPERTY, DEFAULT_NODE)));
+    }
+
+    /**
+     * The folder these settings and the high scores are kept in where Java keeps preferences in files (Linux and
+     * other Unix): {@code .java/.userPrefs} and the node's path under the folder {@value #PREFS_ROOT} names, else
+     * under {@code user.home}, the account's home from the system's user database (so HOME does not move it; that
+     * property does). Empty where Java keeps them elsewhere (the Windows registry, a macOS property list).
+     */
+    public Optional<Path> whereKept() {
+        if (!FILE_PREFERENCES.equals(node.getClass().getName())) {
+            return Optional.empty();
+        }
+        String root = System.getProperty(PREFS_ROOT, System.getProperty("user.home"));
+        return Optional.of(Path.of(root, ".java", ".userPrefs").resolve(node.absolutePath().substring(1)));
     }
 
     /** The boards' high-score tables, in a node of their own beside these settings. */

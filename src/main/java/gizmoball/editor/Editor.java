@@ -265,9 +265,11 @@ public final class Editor {
     /** Shift+click: adds the gizmo or ball to the selection, or takes it out if it is in it. */
     public void toggleSelected(String name) {
         selection.removeIf(Editor::isWalls);
-        if (!selection.remove(name)) {
+        boolean added = !selection.remove(name);
+        if (added) {
             selection.add(name);
         }
+        say((added ? "Added " + name : "Took out " + name) + ": " + selection.size() + " selected");
         stateChanged();
     }
 

@@ -103,9 +103,17 @@ public final class Lab {
         }
     }
 
-    /** A game's seed, from its number and player: the same game gets the same chances on every run. */
+    /**
+     * A game's seed, from its number and player: the same game gets the same chances on every run. The number and
+     * player are mixed (SplitMix64's finaliser) because a {@code SplittableRandom} steps its seed by the golden gamma:
+     * seeds a multiple of it apart would give each game the draws of the one before, shifted by one, so that games
+     * repeat each other.
+     */
     static long seed(int game, PlayerKind kind) {
-        return 0x9E3779B97F4A7C15L * (game + 1) + 0xBF58476D1CE4E5B9L * kind.ordinal();
+        long z = 0x9E3779B97F4A7C15L * (game + 1) + 0xBF58476D1CE4E5B9L * kind.ordinal();
+        z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;
+        z = (z ^ (z >>> 27)) * 0x94D049BB133111EBL;
+        return z ^ (z >>> 31);
     }
 
     /** The drains and sinks of the board, in board order, with their length in cells. */

@@ -41,21 +41,24 @@ public record LabReport(String board, int gamesPerPlayer, double gameCapSeconds,
 
     /** What a heat map of the autoplayer's games says it shows. */
     public String heatMapCaption() {
-        return String.format(Locale.ROOT, "%s: autoplayer, %d games, mean score %.0f", board, gamesPerPlayer,
-                autoplayer.score().mean());
+        return String.format(Locale.ROOT, "%s, autoplayer, %d games", board, gamesPerPlayer);
     }
 
     public String toJson() {
         return GSON.toJson(this) + "\n";
     }
 
-    /** One line for people: the two mean scores, their ratio, the verdict and how long a ball lasts. */
-    public String summaryLine() {
+    /** The verdict with the two mean scores and their ratio: "the flippers matter (autoplayer mean score ...)". */
+    public String verdictLine() {
         String ratio = autoplayerOverIdle == null ? "" : String.format(Locale.ROOT, " = %.2fx", autoplayerOverIdle);
-        return String.format(Locale.ROOT,
-                "%s: %s (autoplayer mean score %.0f / idle %.0f%s); a ball lasts %.1f s (autoplayer), %.1f s (idle);"
-                        + " %d games each",
-                board, verdict, autoplayer.score().mean(), idle.score().mean(), ratio,
-                autoplayer.secondsPerBall().mean(), idle.secondsPerBall().mean(), gamesPerPlayer);
+        return String.format(Locale.ROOT, "%s (autoplayer mean score %.0f / idle %.0f%s)", verdict,
+                autoplayer.score().mean(), idle.score().mean(), ratio);
+    }
+
+    /** One line for people: the verdict line, how long a ball lasts, and the games played. */
+    public String summaryLine() {
+        return String.format(Locale.ROOT, "%s: %s; a ball lasts %.1f s (autoplayer), %.1f s (idle); %d games each",
+                board, verdictLine(), autoplayer.secondsPerBall().mean(), idle.secondsPerBall().mean(),
+                gamesPerPlayer);
     }
 }

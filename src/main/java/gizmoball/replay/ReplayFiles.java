@@ -4,8 +4,10 @@ import com.google.gson.Gson;
 import com.google.gson.GsonBuilder;
 import com.google.gson.JsonParseException;
 import gizmoball.boardfile.AtomicFileWriter;
+import gizmoball.boardfile.FileErrors;
 import gizmoball.model.game.KeyPress;
 import java.io.IOException;
+import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -77,20 +79,20 @@ public final class ReplayFiles {
         try {
             json = GSON.fromJson(text, Json.class);
         } catch (JsonParseException e) {
-            throw new BadReplay(source + ": not a replay file: " + e.getMessage());
+            throw new BadReplay(source + " is not a replay file: a replay is JSON text, and this is not");
         }
         if (json == null || !FORMAT.equals(json.format)) {
-            throw new BadReplay(source + ": not a replay file (no \"format\": \"" + FORMAT + "\")");
+            throw new BadReplay(source + " is not a replay file: it does not say \"format\": \"" + FORMAT + "\"");
         }
         if (json.version == null || json.version != VERSION) {
             throw new BadReplay(source + ": a replay of version " + json.version + "; this game reads version "
                     + VERSION);
         }
-        require(source, "board", json.board);
-        require(source, "dt", json.dt);
-        require(source, "ticks", json.ticks);
-        require(source, "score", json.score);
-        require(source, "keys", json.keys);
+        require(source, "board", "the board it was played on", json.board);
+        require(source, "dt", "the length of a tick", json.dt);
+        require(source, "ticks", "how many ticks it lasts", json.ticks);
+        require(source, "score", "the score it reached", json.score);
+        require(source, "keys", "the keys pressed", json.keys);
         List<KeyPress> keys = new ArrayList<>();
         for (int i = 0; i < json.keys.size(); i++) {
             Key key = json.keys.get(i);
@@ -113,14 +115,20 @@ public final class ReplayFiles {
         }
     }
 
-    private static void require(String source, String field, Object value) throws BadReplay {
+    private static void require(String source, String field, String meaning, Object value) throws BadReplay {
         if (value == null) {
-            throw new BadReplay(source + ": a replay file needs \"" + field + "\"");
+            throw new BadReplay(source + " is not a whole replay: it has no \"" + field + "\" (" + meaning + ")");
         }
     }
 
     public static Replay read(Path file) throws IOException, BadReplay {
-        return fromJson(file.toString(), Files.readString(file, StandardCharsets.UTF_8));
+        String text;
+        try {
+            text = Files.readString(file, StandardCharsets.UTF_8);
+        } catch (CharacterCodingException e) {
+            throw new BadReplay(file + " is not a replay file: " + FileErrors.readReason(file, e));
+        }
+        return fromJson(file.toString(), text);
     }
 
     /** All at once: a failed write leaves an earlier file as it was. */

@@ -74,6 +74,8 @@ public final class GameWindow extends JFrame {
     private final BoardPanel boardPanel;
     private final BoardZoom zoom;
     private final StatusLine statusLine = new StatusLine();
+    /** Where the player's settings are kept, as How to play says it (empty: not said). */
+    private String settingsPlace = "";
     /** The first-run hint while the status line shows it: starting the game takes it away. */
     private String firstRunHint;
     private final Timer statusRefresh = new Timer(STATUS_REFRESH_MILLIS, e -> refreshStatus());
@@ -119,7 +121,8 @@ public final class GameWindow extends JFrame {
         build = action("Build", KeyEvent.VK_B, 0, () -> commands.setMode(Mode.BUILD));
         keysHelp = action("Keys of this board...", KeyEvent.VK_K, 0, this::showKeys);
         howToPlay = command(HelpPages.HOW_TO_PLAY + "...",
-                () -> HelpPages.show(this, HelpPages.HOW_TO_PLAY, HelpPages.howToPlay(menus, session.board())));
+                () -> HelpPages.show(this, HelpPages.HOW_TO_PLAY, HelpPages.howToPlay(menus, session.board(),
+                        settingsPlace)));
         buildModeHelp = command(HelpPages.BUILD_MODE + "...",
                 () -> HelpPages.show(this, HelpPages.BUILD_MODE, HelpPages.buildMode()));
         setDefaultCloseOperation(DO_NOTHING_ON_CLOSE);
@@ -181,6 +184,11 @@ public final class GameWindow extends JFrame {
     public void showFirstRunHint() {
         firstRunHint = KeyHelp.firstRunHint(session.board(), statusLine::fitsWhole);
         statusLine.showMessage(firstRunHint);
+    }
+
+    /** How to play says this of where the settings and high scores are kept. */
+    public void tellWhereSettingsAreKept(String place) {
+        settingsPlace = place;
     }
 
     public BoardPanel boardPanel() {

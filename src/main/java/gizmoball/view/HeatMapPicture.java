@@ -155,7 +155,7 @@ public final class HeatMapPicture {
         g.drawString("more time", barX + barWidth - g.getFontMetrics().stringWidth("more time"), barY + 26);
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
         g.drawString(caption, barX + barWidth + 14, barY + 11);
-        g.drawString("where the balls were, time on a log scale", barX + barWidth + 14, barY + 27);
+        g.drawString("where the balls were (time, log scale)", barX + barWidth + 14, barY + 27);
     }
 
     /** The picture as PNG bytes. */

@@ -37,7 +37,8 @@ final class HelpPages {
     private HelpPages() {
     }
 
-    static String howToPlay(JMenuBar menus, Board board) {
+    /** @param settingsPlace where the settings and high scores are kept, as the page says it */
+    static String howToPlay(JMenuBar menus, Board board, String settingsPlace) {
         List<String> keys = KeyHelp.describe(board);
         StringBuilder html = new StringBuilder("<html><body><h2>How to play</h2>")
                 .append("<p>Press <b>Start</b> (Ctrl+G) and play with the board's keys. Holding a key keeps a")
@@ -59,7 +60,11 @@ final class HelpPages {
                     .append(escape(String.join(", ", items(menu)))).append("</td></tr>");
         }
         html.append("</table><p>The title shows * while there are unsaved changes; New, Open, Reload and Quit")
-                .append(" ask first.</p></body></html>");
+                .append(" ask first.</p>");
+        if (!settingsPlace.isEmpty()) {
+            html.append("<h3>Settings and high scores</h3><p>").append(escape(settingsPlace)).append("</p>");
+        }
+        html.append("</body></html>");
         return html.toString();
     }
 
@@ -116,6 +121,9 @@ final class HelpPages {
                 .append(" tooltip.</p><p><b>Right-click</b> on the board selects what is there and opens a")
                 .append(" context menu: Rotate, Delete, Cut, Copy, Paste, Duplicate, Connect from here, Properties.")
                 .append("</p><p><b>File &gt; Open recent</b> lists the last ten boards opened or saved.</p>")
+                .append("<p><b>Test &gt; Play-test</b> (<b>Ctrl+L</b>) plays the board 100 times with an autoplayer")
+                .append(" and 100 times launching only, in the background, then shows where the balls went, the")
+                .append(" mean scores, how long a ball lasts and the gizmos never hit.</p>")
                 .append("</body></html>");
         return html.toString();
     }

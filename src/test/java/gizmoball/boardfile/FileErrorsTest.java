@@ -73,4 +73,12 @@ class FileErrorsTest {
         IOException e = catchThrowableOfType(() -> BoardFiles.load(file), IOException.class);
         assertThat(FileErrors.cannotRead(file, e)).isEqualTo("cannot read " + file + ": there is no such file");
     }
+
+    /** Issue 40 item 8: a file that is not text says so, not the JDK's "Input length = 1". */
+    @Test
+    void readingAFileThatIsNotText() {
+        Path file = directory.resolve("junk.json");
+        assertThat(FileErrors.cannotRead(file, new java.nio.charset.MalformedInputException(1)))
+                .isEqualTo("cannot read " + file + ": it is not text (it holds bytes that are not UTF-8)");
+    }
 }

@@ -20,8 +20,8 @@ class SampleBoardsTest {
     private static final Path BOARDS = Path.of("boards");
 
     @ParameterizedTest
-    @ValueSource(strings = {"default.txt", "arcade.txt", "orbit.txt", "extensions.txt", "multiball.txt", "rube-goldberg.txt",
-        "stress.txt"})
+    @ValueSource(strings = {"default.txt", "arcade.txt", "orbit.txt", "castle.txt", "extensions.txt", "multiball.txt",
+        "rube-goldberg.txt", "stress.txt"})
     void loadsStrictlyAndRunsWithTheInvariantsHolding(String name) throws IOException, BoardFileException {
         Board board = BoardFiles.load(BOARDS.resolve(name));
         assertThat(Invariants.violations(board)).isEmpty();

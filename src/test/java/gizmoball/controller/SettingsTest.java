@@ -64,6 +64,20 @@ class SettingsTest {
                 + " java.awt.Rectangle[x=12,y=34,width=800,height=600]");
     }
 
+    /**
+     * Issue 40 item 13: where the settings are kept is where the JDK writes them: the folder the preferences root
+     * property names (the tests set it), then .java/.userPrefs and the node's path.
+     */
+    @Test
+    void theySayTheFolderTheyAreWrittenTo() throws Exception {
+        Settings s = new Settings(node);
+        s.setSpeed(Speed.HALF);
+        node.flush();
+        Path folder = Path.of(System.getProperty(Settings.PREFS_ROOT), ".java", ".userPrefs", path.substring(1));
+        assertThat(s.whereKept()).contains(folder);
+        assertThat(folder.resolve("prefs.xml")).exists();
+    }
+
     @Test
     void unreadableValuesReadAsTheDefaults(@TempDir Path folder) {
         node.put("speed", "WARP");

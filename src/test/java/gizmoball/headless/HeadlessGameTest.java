@@ -128,6 +128,6 @@ class HeadlessGameTest {
     @Test
     void aFileThatIsNoReplayExitsTwoSayingSo() throws IOException {
         assertThat(run("--headless", "--replay", file("board.txt", BOARD).toString())).isEqualTo(HeadlessRunner.BAD_INPUT);
-        assertThat(err.toString(StandardCharsets.UTF_8)).contains("board.txt: not a replay file");
+        assertThat(err.toString(StandardCharsets.UTF_8)).contains("board.txt is not a replay file: a replay is JSON text, and this is not");
     }
 }

@@ -5,7 +5,10 @@ import static org.assertj.core.api.Assertions.assertThat;
 import gizmoball.boardfile.BoardFiles;
 import gizmoball.model.Board;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Set;
+import java.util.SplittableRandom;
 import java.util.concurrent.CancellationException;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.assertj.core.api.Assertions;
@@ -16,6 +19,23 @@ import org.junit.jupiter.api.Test;
  * a second run; its sums agree with one another; progress is told and cancelling stops it.
  */
 class LabTest {
+    /** Every game of the lab draws chances of its own, never another game's draws shifted (they would repeat it). */
+    @Test
+    void eachGameDrawsItsOwnChances() {
+        Set<Long> draws = new HashSet<>();
+        int count = 0;
+        for (PlayerKind kind : PlayerKind.values()) {
+            for (int game = 0; game < 200; game++) {
+                SplittableRandom random = new SplittableRandom(Lab.seed(game, kind));
+                for (int draw = 0; draw < 8; draw++) {
+                    draws.add(random.nextLong());
+                    count++;
+                }
+            }
+        }
+        assertThat(draws).hasSize(count);
+    }
+
     /** A small table: a drain that launches up the right side, a deflector, two flippers, bumpers and a sink. */
     static final String TABLE = """
             Absorber A 0 19 20 20

@@ -40,7 +40,8 @@ class ShippedGamesTest {
                 }
             }
         }
-        assertThat(games).extracting(p -> p.getFileName().toString()).contains("default.txt", "arcade.txt", "orbit.txt");
+        assertThat(games).extracting(p -> p.getFileName().toString()).contains("default.txt", "arcade.txt", "orbit.txt",
+                "castle.txt");
         return games.stream();
     }
 

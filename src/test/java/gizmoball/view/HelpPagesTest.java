@@ -58,7 +58,7 @@ class HelpPagesTest {
         game.add(new JMenuItem("About"));
         menus.add(game);
 
-        String page = HelpPages.howToPlay(menus, board);
+        String page = HelpPages.howToPlay(menus, board, "");
 
         assertThat(page).contains(KeyEvent.getKeyText(KeyEvent.VK_Z) + ": left flipper LF (hold)");
         assertThat(page).contains("Start (Ctrl+G), Reset (Ctrl+Shift+R), About");
@@ -66,14 +66,14 @@ class HelpPagesTest {
 
     @Test
     void howToPlaySaysWhatTheBoardsGameIs() throws Exception {
-        assertThat(HelpPages.howToPlay(new JMenuBar(), new Board())).contains("it is a sandbox, which never ends");
+        assertThat(HelpPages.howToPlay(new JMenuBar(), new Board(), "")).contains("it is a sandbox, which never ends");
         Board game = BoardFiles.load(Path.of("boards", "default.txt"));
-        assertThat(HelpPages.howToPlay(new JMenuBar(), game)).contains("A game of 3 balls: a ball captured by the"
+        assertThat(HelpPages.howToPlay(new JMenuBar(), game, "")).contains("A game of 3 balls: a ball captured by the"
                 + " drain (Drain) is lost", "An extra ball at 3000 points.", "circle 50, triangle 25, square 10");
     }
 
     @Test
     void aBoardWithoutKeysSaysSo() {
-        assertThat(HelpPages.howToPlay(new JMenuBar(), new Board())).contains("This board binds no keys.");
+        assertThat(HelpPages.howToPlay(new JMenuBar(), new Board(), "")).contains("This board binds no keys.");
     }
 }

@@ -53,7 +53,7 @@ class LoadNotesGuiTest extends WindowOnFiles {
                 "line 1: Connect S C   <- applied after line 3, which defines C");
         assertThat(onEdt(() -> Gui.find(dialog.getContentPane(), JLabel.class,
                 l -> "loadProblems.notes.heading".equals(l.getName())).orElseThrow().getText()))
-                .isEqualTo("A note: lines written for another Gizmoball, read as it meant them");
+                .isEqualTo("A note on a line that loads:");
         click(dialog, LoadProblemsDialog.SKIP);
         await("the board without line 4", () -> onEdt(() -> window.session().board().connections().size()) == 1);
     }

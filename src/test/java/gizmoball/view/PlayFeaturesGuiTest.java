@@ -82,6 +82,21 @@ class PlayFeaturesGuiTest {
         assertThat(onEdt(() -> features.trails().trail("B"))).isEmpty();
     }
 
+    /** Issue 40 item 13: How to play says where the settings and high scores are kept and how to move them. */
+    @Test
+    void howToPlaySaysWhereTheSettingsAreKept() {
+        GameWindow window = open();
+        javax.swing.SwingUtilities.invokeLater(() -> Gui.menuItem(window.menus(), HelpPages.HOW_TO_PLAY + "...")
+                .doClick(0));
+        await("the page", () -> Gui.showingWindow("help").isPresent());
+        java.awt.Window help = Gui.showingWindow("help").orElseThrow();
+        String page = onEdt(() -> Gui.find(help, javax.swing.JEditorPane.class, p -> true).orElseThrow().getText());
+        onEdt(help::dispose);
+        java.nio.file.Path folder = java.nio.file.Path.of(System.getProperty(Settings.PREFS_ROOT), ".java",
+                ".userPrefs", node.absolutePath().substring(1));
+        assertThat(page).contains(folder.toString(), "-Djava.util.prefs.userRoot=FOLDER");
+    }
+
     @Test
     void trailsAndWindowPlaceAreRemembered() {
         GameWindow window = open();

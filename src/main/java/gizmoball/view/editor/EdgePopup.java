@@ -120,8 +120,9 @@ public final class EdgePopup {
         boolean key = controller.awaitingEdge();
         popup.add(action(kind.map(k -> key ? unlessTold(k) : "its own: " + k.defaultAction().word())
                 .orElse("its own"), "action.default", Optional.empty(), true));
-        kind.ifPresent(k -> k.actions().forEach(a -> popup.add(action(a.word(), "action." + a.word(),
-                Optional.of(a), false))));
+        // An action that is what "its own" does is not offered again: chosen, it would be saved as no action anyway.
+        kind.ifPresent(k -> k.actions().stream().filter(a -> !Optional.of(a).equals(own(k, key)))
+                .forEach(a -> popup.add(action(a.word(), "action." + a.word(), Optional.of(a), false))));
         popup.add(delayRow);
         popup.addSeparator();
         if (key) {
@@ -158,6 +159,15 @@ public final class EdgePopup {
             controller.tell("The delay \"" + delay.getText().strip() + "\" is not a number of seconds");
             popup.setVisible(true);
         }
+    }
+
+    /** The one action the gizmo takes unless told, if it is one for both edges of a key. */
+    private static Optional<Action> own(GizmoKind kind, boolean key) {
+        if (!key) {
+            return Optional.of(kind.defaultAction());
+        }
+        Action press = KeyEdge.DOWN.actionOf(kind);
+        return press == KeyEdge.UP.actionOf(kind) ? Optional.of(press) : Optional.empty();
     }
 
     /** What the gizmo does when nothing else is chosen: "raise on press, lower on release", "fire". */

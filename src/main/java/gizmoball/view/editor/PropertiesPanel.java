@@ -52,8 +52,6 @@ import java.util.Optional;
 public final class PropertiesPanel extends JPanel {
     private static final int WIDTH = 250;
     private static final int SELECTION_WIDTH = 226;
-    /** Names of a group the selection label lists before "...". */
-    private static final int GROUP_NAMES = 5;
 
     private final Editor controller;
     private final Runnable focusBoard;
@@ -469,10 +467,25 @@ public final class PropertiesPanel extends JPanel {
     }
 
     /** Several selected: how many, and which (the first few). */
-    private static String describe(List<String> group) {
-        String names = String.join(", ", group.subList(0, Math.min(group.size(), GROUP_NAMES)))
-                + (group.size() > GROUP_NAMES ? ", \u2026" : "");
-        return named(group.size() + " selected", names + " (Shift+click takes one out)");
+    /**
+     * "5 selected: S1, S2, T1 and 2 more (Shift+click takes one out)": as many names as the label's two lines hold,
+     * and how many more, so that no name is cut.
+     */
+    private String describe(List<String> group) {
+        for (int shown = group.size(); ; shown--) {
+            String names = String.join(", ", group.subList(0, shown))
+                    + (shown == group.size() ? "" : (shown == 0 ? "" : " and ") + (group.size() - shown) + " more");
+            String text = named(group.size() + " selected", names + " (Shift+click takes one out)");
+            if (shown == 0 || fitsTheLabel(text)) {
+                return text;
+            }
+        }
+    }
+
+    private boolean fitsTheLabel(String text) {
+        JLabel probe = new JLabel(text);
+        probe.setFont(selection.getFont());
+        return probe.getPreferredSize().height <= selection.getPreferredSize().height;
     }
 
 

@@ -44,6 +44,7 @@ import java.awt.Rectangle;
 import static gizmoball.view.Gui.await;
 import static gizmoball.view.Gui.onEdt;
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.within;
 
 /**
@@ -199,8 +200,9 @@ class BuildModeGuiTest {
                         return false;
                     }
                 }).toList());
-        assertThat(offered).as("an absorber fires or flashes; it does not rise")
-                .containsExactly("action.default", "action.fire", "action.flash");
+        assertThat(offered).as("an absorber fires (its own action, not offered twice) or flashes; it does not rise")
+                .containsExactly("action.default", "action.flash");
+        assertThat(onEdt(() -> EditorGui.showingMenuItem("action.default").getText())).isEqualTo("its own: fire");
         onEdt(() -> EditorGui.showingMenuItem("action.flash").doClick(0));
         JTextField delay = onEdt(() -> Gui.find(EditorGui.showingMenuItem("edge.down").getParent(), JTextField.class,
                 f -> "order.delay".equals(f.getName())).orElseThrow());
@@ -209,6 +211,22 @@ class BuildModeGuiTest {
 
         assertThat(board.keyBindings()).containsExactly(new KeyBinding(KeyEvent.VK_SPACE, KeyEdge.DOWN, "A1",
                 Order.of(Action.FLASH).after(0.25)));
+    }
+
+    /** Issue 40 item 11: Connect's popup offers a spawner's own action once ("its own: spawn"), not again. */
+    @Test
+    void connectsPopupOffersTheOwnActionOnce() {
+        onEdt(() -> {
+            board.addGizmo(GizmoKind.SQUARE, "S9", 2, 2);
+            board.addGizmo(GizmoKind.SPAWNER, "SP", 6, 2);
+        });
+        w.clickTool(Tool.CONNECT);
+        w.clickCell(2, 2);
+        w.clickCell(6, 2);
+        assertThat(onEdt(() -> EditorGui.showingMenuItem("action.default").getText())).isEqualTo("its own: spawn");
+        assertThatThrownBy(() -> onEdt(() -> EditorGui.showingMenuItem("action.spawn")))
+                .hasMessageContaining("no showing menu item action.spawn");
+        onEdt(() -> EditorGui.showingMenuItem("action.flash").getText());
     }
 
     @Test

@@ -72,6 +72,37 @@ class SelectingManyGuiTest {
         assertThat(onEdt(() -> w.board.gizmos())).hasSize(4);
     }
 
+    /**
+     * Issue 40 item 10: long names of many selected are listed as far as the label's two lines hold, then "and N
+     * more", never cut; and Shift+click says in the status line what it did and how many are now selected.
+     */
+    @Test
+    void manyLongNamesFitTheSummaryAndShiftClickSaysWhatItDid() {
+        onEdt(() -> {
+            for (int i = 0; i < 8; i++) {
+                w.board.addGizmo(GizmoKind.CIRCLE, "AVeryLongBumperName" + i, 2 * i, 14);
+            }
+        });
+        w.clickTool(Tool.SELECT);
+        w.drag(0.2, 13.8, 16.8, 15.2);
+        assertThat(selection()).hasSize(8);
+        w.shiftClick(10.5, 10.5);
+        assertThat(w.status()).isEqualTo("Added C1: 9 selected");
+
+        JLabel label = onEdt(() -> EditorGui.find(w.build.properties(), JLabel.class, "selection"));
+        String shown = onEdt(label::getText);
+        assertThat(shown).contains("9 selected", "AVeryLongBumperName0").containsPattern(" and [1-9] more ");
+        JLabel probe = onEdt(() -> {
+            JLabel p = new JLabel(shown);
+            p.setFont(label.getFont());
+            return p;
+        });
+        assertThat(onEdt(() -> probe.getPreferredSize().height)).as("the summary's height")
+                .isLessThanOrEqualTo(onEdt(label::getHeight));
+        w.shiftClick(10.5, 10.5);
+        assertThat(w.status()).isEqualTo("Took out C1: 8 selected");
+    }
+
     @Test
     void aDraggedBumperToolFillsTheRectangleAndAnAbsorberHandleResizesIt() {
         w.clickTool(Tool.TRIANGLE);
