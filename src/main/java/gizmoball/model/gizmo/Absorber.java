@@ -71,12 +71,6 @@ public final class Absorber extends PolygonGizmo implements AbsorberView {
         return 0;
     }
 
-    /** It captures every ball that touches it. */
-    @Override
-    public boolean takesBalls() {
-        return true;
-    }
-
     @Override
     List<Vect> outline() {
         int x = x();

@@ -24,12 +24,6 @@ public final class Sink extends PolygonGizmo implements SinkView {
         return 0;
     }
 
-    /** It sinks every ball that touches it. */
-    @Override
-    public boolean takesBalls() {
-        return true;
-    }
-
     /** Where a ball it takes stops until the board removes it: its centre. For the board and its loop. */
     public Vect centre() {
         return new Vect(x() + 0.5, y() + 0.5);
