@@ -3,6 +3,7 @@ package gizmoball.boardfile;
 import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.game.GameRules;
+import gizmoball.model.game.Tilt;
 import gizmoball.model.gizmo.AbsorberView;
 import gizmoball.model.gizmo.DropTargetView;
 import gizmoball.model.gizmo.FlipperView;
@@ -20,7 +21,7 @@ import java.util.stream.Collectors;
 /**
  * The canonical form of a board: one command per line, gizmos (in the board's order), then rotations, the
  * colours of gizmos that have their own, their own values (factors, plungers, spawn velocities, portals' pairs), the play state of flippers play has moved, balls, connections, key bindings,
- * gravity and friction, then the game: balls per game, the extra-ball score, the drains and the gizmos' own points
+ * gravity and friction, then the game: balls per game, the extra-ball score, the nudge, tilt and ball save, the drains and the gizmos' own points
  * (each only where the board has it, so a board without them is written as the standard format has it). Reading it
  * back gives an equal board.
  */
@@ -124,6 +125,13 @@ final class BoardWriter {
             commands.add(new Command.BallsPerGame(rules.ballsPerGame()));
         }
         rules.extraBallAt().ifPresent(score -> commands.add(new Command.ExtraBall(score)));
+        rules.nudge().ifPresent(nudge -> commands.add(new Command.NudgeLine(nudge)));
+        if (!rules.tilt().equals(Tilt.DEFAULT)) {
+            commands.add(new Command.TiltLine(rules.tilt()));
+        }
+        if (rules.ballSaveSeconds() > 0) {
+            commands.add(new Command.BallSave(rules.ballSaveSeconds()));
+        }
         board.gizmos().stream().filter(g -> rules.isDrain(g.name()))
                 .forEach(g -> commands.add(new Command.Drain(g.name())));
         board.gizmos().stream().filter(g -> rules.ownPoints().containsKey(g.name()))

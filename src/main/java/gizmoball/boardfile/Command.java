@@ -5,6 +5,8 @@ import static gizmoball.boardfile.Decimals.format;
 import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.game.Nudge;
+import gizmoball.model.game.Tilt;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Plunger;
@@ -474,6 +476,52 @@ public sealed interface Command {
 
         public List<String> references() {
             return List.of(absorber);
+        }
+    }
+
+    /** {@code #@Nudge <speed> <left-key> <right-key> <up-key>}: the board can be nudged with those keys. */
+    record NudgeLine(Nudge nudge) implements Command {
+        public void applyTo(Board board) {
+            board.setNudge(Optional.of(nudge));
+        }
+
+        public String toLine() {
+            return CommandWord.NUDGE.written() + " " + format(nudge.speed()) + " " + nudge.leftKey() + " "
+                    + nudge.rightKey() + " " + nudge.upKey();
+        }
+
+        public Subject subject() {
+            return new Subject("nudge", "");
+        }
+    }
+
+    /** {@code #@Tilt <nudges> <seconds>}: that many nudges within that time tilt the game. */
+    record TiltLine(Tilt tilt) implements Command {
+        public void applyTo(Board board) {
+            board.setTilt(tilt);
+        }
+
+        public String toLine() {
+            return CommandWord.TILT.written() + " " + tilt.nudges() + " " + format(tilt.seconds());
+        }
+
+        public Subject subject() {
+            return new Subject("tilt", "");
+        }
+    }
+
+    /** {@code #@BallSave <seconds>}: a ball drained that soon after its launch is given back, once. */
+    record BallSave(double seconds) implements Command {
+        public void applyTo(Board board) {
+            board.setBallSave(seconds);
+        }
+
+        public String toLine() {
+            return CommandWord.BALL_SAVE.written() + " " + format(seconds);
+        }
+
+        public Subject subject() {
+            return new Subject("ball save", "");
         }
     }
 

@@ -2,6 +2,8 @@ package gizmoball.boardfile;
 
 import gizmoball.model.Board;
 import gizmoball.model.KeyEdge;
+import gizmoball.model.game.Nudge;
+import gizmoball.model.game.Tilt;
 import gizmoball.model.gizmo.Accelerator;
 import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Plunger;
@@ -194,6 +196,13 @@ final class CommandParser {
             padded.addAll(defaults.subList(args.size() - 1, 2));
             args = padded;
         }
+        if (word == CommandWord.NUDGE && (args.size() == 0 || args.size() == 1)) {
+            List<String> padded = new ArrayList<>(args.isEmpty()
+                    ? List.of(Decimals.format(Nudge.DEFAULT.speed())) : args);
+            padded.addAll(List.of(Integer.toString(Nudge.DEFAULT.leftKey()), Integer.toString(Nudge.DEFAULT.rightKey()),
+                    Integer.toString(Nudge.DEFAULT.upKey())));
+            args = padded;
+        }
         if (word == CommandWord.KEY_CONNECT && args.size() == 5 && args.get(3).equals(args.get(4))) {
             notes.add("target " + args.get(4) + " written twice: read once");
             args = args.subList(0, 4);
@@ -229,6 +238,9 @@ final class CommandParser {
             case EXTRA_BALL -> new Command.ExtraBall(score(args.get(0)));
             case DRAIN -> new Command.Drain(args.get(0));
             case POINTS -> new Command.Points(args.get(0), wholeNumber("points", args.get(1)));
+            case NUDGE -> new Command.NudgeLine(nudge(args, notes));
+            case TILT -> new Command.TiltLine(tilt(args));
+            case BALL_SAVE -> new Command.BallSave(number("ball save seconds", args.get(0)));
             case COLOUR -> throw new IllegalStateException("colours are read by colour(), in any spelling");
             // Every other word adds a gizmo of its kind on one cell (CommandWord.of says which: a word that adds none
             // throws there).
@@ -443,6 +455,23 @@ final class CommandParser {
     }
 
     /** A score: a whole number, up to far more than any game reaches. */
+    private static Nudge nudge(List<String> args, List<String> notes) throws Refusal {
+        try {
+            return new Nudge(number("nudge speed", args.get(0)), keyCode(args.get(1), notes),
+                    keyCode(args.get(2), notes), keyCode(args.get(3), notes));
+        } catch (IllegalArgumentException refused) {
+            throw new Refusal(refused.getMessage());
+        }
+    }
+
+    private static Tilt tilt(List<String> args) throws Refusal {
+        try {
+            return new Tilt(wholeNumber("nudges", args.get(0)), number("seconds", args.get(1)));
+        } catch (IllegalArgumentException refused) {
+            throw new Refusal(refused.getMessage());
+        }
+    }
+
     private static long score(String word) throws Refusal {
         double value = number("score", word);
         if (value != Math.rint(value) || Math.abs(value) > 1e15) {

@@ -67,7 +67,13 @@ enum CommandWord {
     /** The game: an absorber whose captured balls are lost. */
     DRAIN("Drain", "<name>", true),
     /** The game: what a hit on the gizmo scores. */
-    POINTS("Points", "<name> <points>", true);
+    POINTS("Points", "<name> <points>", true),
+    /** The game: the board can be nudged (its speed and keys optional when read). */
+    NUDGE("Nudge", "<speed> <left-key> <right-key> <up-key>", true),
+    /** The game: how many nudges within how many seconds tilt it. */
+    TILT("Tilt", "<nudges> <seconds>", true),
+    /** The game: the seconds after a launch in which a drained ball is given back. */
+    BALL_SAVE("BallSave", "<seconds>", true);
 
     /** What comes before the word of each of our commands: no space, so that {@code #@ text} stays a comment. */
     static final String OURS = "#@";

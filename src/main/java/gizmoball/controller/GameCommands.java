@@ -8,6 +8,7 @@ import gizmoball.highscore.HighScoreStore;
 import gizmoball.highscore.HighScoreTable;
 import gizmoball.model.Board;
 import gizmoball.model.BoardChange;
+import gizmoball.model.game.Notice;
 import gizmoball.replay.Replay;
 import gizmoball.replay.ReplayFiles;
 import gizmoball.session.GameSession;
@@ -21,10 +22,9 @@ import java.nio.file.Path;
 import java.text.NumberFormat;
 import java.time.Clock;
 import java.time.LocalDate;
+import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
-import java.util.OptionalInt;
-import java.util.OptionalLong;
 import javax.swing.JFileChooser;
 import javax.swing.SwingUtilities;
 import javax.swing.filechooser.FileNameExtensionFilter;
@@ -47,6 +47,10 @@ public final class GameCommands {
     private final Clock clock;
     /** The game over was answered: the dialog shows once a game. */
     private boolean gameOverSeen;
+    /** The game's notices already told in the status line. */
+    private int noticesTold;
+    /** How many players a new game on the board is for (Game > Players). */
+    private int players = 1;
 
     public GameCommands(GameWindow window, GameSession session, GameLoop loop, Settings settings, ScorePanel scorePanel,
                         Clock clock) {
@@ -77,18 +81,42 @@ public final class GameCommands {
     private void boardChanged(BoardChange change) {
         Board board = session.board();
         if (change != BoardChange.TICK) {
-            // A reset or a load: a new game on the board.
+            // A reset or a load: a new game on the board, for the players chosen.
             gameOverSeen = board.game().isOver();
+            noticesTold = board.game().notices().size();
+            if (board.ticks() == 0 && board.game().players() != players) {
+                board.setPlayers(players);
+            }
             return;
         }
-        if (board.game().extraBallTick().equals(OptionalLong.of(board.ticks()))) {
-            window.statusLine().showMessage("Extra ball!");
-        }
+        List<Notice> notices = board.game().notices();
+        // A nudge's notice comes between ticks, so each is told at the first tick that shows it.
+        notices.subList(Math.min(noticesTold, notices.size()), notices.size())
+                .forEach(n -> window.statusLine().showMessage(say(n, board.game().players())));
+        noticesTold = notices.size();
         if (!gameOverSeen && !loop.isWatching() && board.game().isGame() && board.game().isOver()) {
             gameOverSeen = true;
             // After the tick's own listeners (the views) have seen it, and outside the tick.
             SwingUtilities.invokeLater(this::gameOver);
         }
+    }
+
+    /** What the window says of a notice of the game. */
+    static String say(Notice notice, int players) {
+        String who = "Player " + (notice.player() + 1);
+        return switch (notice.kind()) {
+            case WARNING -> "Careful: one more nudge tilts!";
+            case TILT -> "TILT: flippers and plunger dead until the ball drains";
+            case BALL_SAVED -> "Ball saved: launch it again";
+            case EXTRA_BALL -> players > 1 ? "Extra ball for " + who + "!" : "Extra ball!";
+            case NEXT_PLAYER -> who + ", your ball";
+        };
+    }
+
+    /** Game > Players: a new game for that many players, who stay chosen for the games after it. */
+    public void newGame(int count) {
+        players = count;
+        newGame();
     }
 
     /** Game > New game: back to the board as built, in play mode, running. */
@@ -98,9 +126,10 @@ public final class GameCommands {
             session.setMode(Mode.PLAY);
         }
         session.reset();
+        session.board().setPlayers(players);
         loop.start();
         window.refresh();
-        window.statusLine().showMessage("New game");
+        window.statusLine().showMessage(players == 1 ? "New game" : "New game for " + players + " players");
     }
 
     /** Leaves a replay being watched, if any: the board's next ticks are the player's. */
@@ -112,21 +141,31 @@ public final class GameCommands {
         scorePanel.setNotice("");
     }
 
+    /** The final score of each player in turn, with a name for the table from each whose score ranks on it. */
     private void gameOver() {
         loop.stop();
         Board board = session.board();
-        long score = board.game().score();
         String built = asBuilt();
         HighScoreStore.Loaded loaded = store.load(built);
         loaded.problem().ifPresent(window.statusLine()::showMessage);
-        OptionalInt place = loaded.table().placeOf(score);
-        GameOverDialog.show(window, score, place, settings.playerName(), NEW_GAME_SHORTCUT).ifPresent(name -> {
-            settings.setPlayerName(name);
-            HighScore entry = new HighScore(name, score, LocalDate.now(clock), Replay.of(built, board, Board.DEFAULT_TICK));
-            store.save(built, loaded.table().with(entry)).ifPresentOrElse(window.statusLine()::showMessage,
-                    () -> window.statusLine().showMessage("High score kept: " + format(score) + ", " + entry.name()));
-            showBest();
-        });
+        HighScoreTable table = loaded.table();
+        int count = board.game().players();
+        for (int player = 0; player < count; player++) {
+            long score = board.game().score(player);
+            String who = count == 1 ? "" : "Player " + (player + 1);
+            Optional<String> name = GameOverDialog.show(window, who, score, table.placeOf(score),
+                    settings.playerName(), NEW_GAME_SHORTCUT);
+            if (name.isPresent()) {
+                settings.setPlayerName(name.get());
+                HighScore entry = new HighScore(name.get(), score, LocalDate.now(clock),
+                        Replay.of(built, board, Board.DEFAULT_TICK));
+                table = table.with(entry);
+                store.save(built, table).ifPresentOrElse(window.statusLine()::showMessage,
+                        () -> window.statusLine().showMessage("High score kept: " + format(score) + ", "
+                                + entry.name()));
+                showBest();
+            }
+        }
         window.refresh();
     }
 
@@ -185,6 +224,7 @@ public final class GameCommands {
         }
         loop.stop();
         session.board().replaceContents(board);
+        session.board().setPlayers(replay.players());   // the board's observers set the players chosen here
         gameOverSeen = false;
         scorePanel.setNotice("Watching " + what);
         loop.watch(replay.keys(), replay.ticks(), () -> {

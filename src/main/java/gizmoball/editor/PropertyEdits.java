@@ -1,8 +1,11 @@
 package gizmoball.editor;
 
+import gizmoball.boardfile.Decimals;
 import gizmoball.boardfile.KeyCodes;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.game.GameRules;
+import gizmoball.model.game.Nudge;
+import gizmoball.model.game.Tilt;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.gizmo.Setting;
@@ -10,12 +13,13 @@ import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.TriggerSource;
 import java.util.Locale;
 import java.util.Optional;
+import java.util.OptionalDouble;
 import java.util.OptionalLong;
 import java.util.regex.Pattern;
 
 /**
  * What the properties panel changes, each one undo step of its editor with the reason for a refusal on the status
- * line: the board's constants and game, a gizmo's points, setting, drain, colour, cell and name, a ball's place and
+ * line: the board's constants and game (with its nudge, tilt and ball save), a gizmo's points, setting, drain, colour, cell and name, a ball's place and
  * velocity, and the removal of one connection or key binding. The same value again is no edit.
  */
 public final class PropertyEdits {
@@ -51,6 +55,37 @@ public final class PropertyEdits {
                 + extraBallAt.getAsLong() : ", no extra ball"), b -> {
                     b.setBallsPerGame(ballsPerGame);
                     b.setExtraBallAt(extraBallAt);
+                });
+    }
+
+    /**
+     * The nudge's speed (empty: the board cannot be nudged; its keys kept, the arrows for a new one), the tilt's nudges
+     * and seconds and the ball save's seconds, as one undo step (the same values again are no edit).
+     */
+    public boolean setTable(OptionalDouble nudgeSpeed, double tiltNudges, double tiltSeconds, double ballSaveSeconds) {
+        GameRules rules = editor.board().gameRules();
+        Nudge keys = rules.nudge().orElse(Nudge.DEFAULT);
+        Optional<Nudge> nudge;
+        Tilt tilt;
+        try {
+            nudge = nudgeSpeed.isEmpty() ? Optional.empty() : Optional.of(new Nudge(nudgeSpeed.getAsDouble(),
+                    keys.leftKey(), keys.rightKey(), keys.upKey()));
+            if (tiltNudges != Math.rint(tiltNudges)) {
+                throw new IllegalArgumentException("a tilt comes with a whole number of nudges, not " + tiltNudges);
+            }
+            tilt = new Tilt((int) tiltNudges, tiltSeconds);
+        } catch (IllegalArgumentException refused) {
+            return editor.refuse(refused.getMessage());
+        }
+        if (rules.nudge().equals(nudge) && rules.tilt().equals(tilt) && rules.ballSaveSeconds() == ballSaveSeconds) {
+            return true;
+        }
+        return editor.edit("Nudge " + nudge.map(n -> Decimals.format(n.speed()) + " L/s").orElse("off")
+                + ", tilt at " + tilt.nudges() + " nudges in " + Decimals.format(tilt.seconds()) + " s, ball save "
+                + Decimals.format(ballSaveSeconds) + " s", b -> {
+                    b.setNudge(nudge);
+                    b.setTilt(tilt);
+                    b.setBallSave(ballSaveSeconds);
                 });
     }
 

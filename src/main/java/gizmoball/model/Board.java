@@ -4,6 +4,8 @@ import gizmoball.model.game.Game;
 import gizmoball.model.game.GameProgress;
 import gizmoball.model.game.GameRules;
 import gizmoball.model.game.KeyPress;
+import gizmoball.model.game.Nudge;
+import gizmoball.model.game.Tilt;
 
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoBase;
@@ -242,6 +244,9 @@ public final class Board {
 
     /** The key's edge drives the gizmo as {@code order} says: one of its kind's actions, after a delay. */
     public void bindKey(int keyCode, KeyEdge edge, String gizmo, Order order) {
+        if (gameRules.nudge().flatMap(n -> n.wayOf(keyCode)).isPresent()) {
+            throw new BoardEditException("key " + keyCode + " nudges the board: it drives nothing else");
+        }
         wiring.bindKey(keyCode, edge, gizmo, order);
         edited();
     }
@@ -343,6 +348,43 @@ public final class Board {
     /** The score at which a game gives one extra ball, once; empty for none. */
     public void setExtraBallAt(OptionalLong score) {
         changeRules(() -> gameRules.withExtraBallAt(score));
+    }
+
+    /**
+     * Lets the board be nudged with the nudge's keys, or with empty not at all. The keys must drive nothing on the
+     * board: a key is a nudge key or a key of the board's bindings, never both.
+     */
+    public void setNudge(Optional<Nudge> nudge) {
+        nudge.ifPresent(n -> {
+            for (KeyBinding binding : wiring.keyBindings()) {
+                if (n.wayOf(binding.keyCode()).isPresent()) {
+                    throw new BoardEditException("key " + binding.keyCode() + " drives " + binding.gizmo()
+                            + ": a nudge key drives nothing else");
+                }
+            }
+        });
+        changeRules(() -> gameRules.withNudge(nudge));
+    }
+
+    /** When nudging tilts the game (with a nudge: the board's {@link Tilt}, 4 nudges within 5 s unless set). */
+    public void setTilt(Tilt tilt) {
+        changeRules(() -> gameRules.withTilt(tilt));
+    }
+
+    /** For how many seconds after a launch a drained ball is given back, once (0: never, the default). */
+    public void setBallSave(double seconds) {
+        changeRules(() -> gameRules.withBallSave(seconds));
+    }
+
+    /**
+     * A new game on this board is for that many players, 1 to {@link Game#MAX_PLAYERS}, taking turns ball by ball;
+     * chosen before its first tick (a board made or reset has a game for as many as it had).
+     */
+    public void setPlayers(int players) {
+        if (ticks > 0) {
+            throw new IllegalStateException("the number of players is chosen before the first tick");
+        }
+        game.setPlayers(players);
     }
 
     private void changeRules(Supplier<GameRules> changed) {
@@ -489,7 +531,32 @@ public final class Board {
 
     private void keyAction(int keyCode, KeyEdge edge) {
         game.keyPressed(ticks, edge == KeyEdge.DOWN ? KeyPress.Motion.DOWN : KeyPress.Motion.UP, keyCode);
-        play.keyAction(wiring.keyBindings(), keyCode, edge, time);
+        Optional<Nudge.Way> nudge = gameRules.nudge().flatMap(n -> n.wayOf(keyCode));
+        if (nudge.isPresent()) {
+            if (edge == KeyEdge.DOWN) {
+                nudge(nudge.get());
+            }
+            return;
+        }
+        play.keyAction(wiring.keyBindings(), keyCode, edge, time, game.isTilted());
+    }
+
+    /**
+     * Every free ball gets the nudge's speed that way, woken if asleep; held balls feel nothing. The nudge counts
+     * toward the tilt: one that tilts lowers every flipper and lets go of every plunger's pull.
+     */
+    private void nudge(Nudge.Way way) {
+        double speed = gameRules.nudge().orElseThrow().speed();
+        Vect push = new Vect(way.dx() * speed, way.dy() * speed);
+        sleepers.wakeWithin(-SIZE, -SIZE, 2 * SIZE, 2 * SIZE);
+        for (Ball ball : registry.balls()) {
+            if (!ball.isCaptured()) {
+                ball.setVelocity(ball.velocity().plus(push));
+            }
+        }
+        if (game.nudged(ticks)) {
+            play.tilt();
+        }
     }
 
     /** The gizmo performs its action: a flipper toggles, an absorber fires, a bumper only records the time. */

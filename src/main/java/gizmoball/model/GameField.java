@@ -3,13 +3,18 @@ package gizmoball.model;
 import gizmoball.model.game.GameRules;
 import gizmoball.model.game.Playfield;
 import gizmoball.model.gizmo.Absorber;
-import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Ball;
 
+import java.util.Optional;
+import java.util.stream.Stream;
+
 import physics.Vect;
 
-/** The board as its game sees it: the rules, and the balls, which a game may take off when they drain. */
+/**
+ * The board as its game sees it: the rules, the clock, and the balls, which a game may take off when they drain or
+ * serve into the launcher.
+ */
 final class GameField implements Playfield {
     private final Board board;
     private final Registry registry;
@@ -27,8 +32,24 @@ final class GameField implements Playfield {
     }
 
     @Override
+    public double time() {
+        return board.time();
+    }
+
+    @Override
     public int ballCount() {
         return registry.balls().size();
+    }
+
+    @Override
+    public int freeBallCount() {
+        return (int) registry.balls().stream().filter(b -> !b.isCaptured()).count();
+    }
+
+    @Override
+    public boolean isLauncher(String absorber) {
+        return board.gameRules().isDrain(absorber)
+                || registry.gizmo(absorber) instanceof Absorber a && a.plunger().isPresent();
     }
 
     @Override
@@ -37,17 +58,30 @@ final class GameField implements Playfield {
     }
 
     @Override
-    public boolean serveNextBall() {
-        for (GizmoBase gizmo : registry.gizmos()) {
-            if (gizmo instanceof Absorber absorber && board.gameRules().isDrain(absorber.name())) {
-                String name = play.freshBallName();
-                Vect at = absorber.holdingPosition(Arena.BALL_RADIUS);
-                Ball ball = new Ball(name, at, Vect.ZERO);
-                registry.add(ball);
-                play.capture(ball, absorber);
-                return true;
-            }
+    public boolean serve(Optional<String> drained) {
+        Optional<Absorber> holder = drained.flatMap(ball -> absorbers().filter(a -> a.held().contains(ball))
+                .findFirst());
+        Optional<Absorber> launcher = absorbers().filter(a -> a.plunger().isPresent()).findFirst()
+                .or(() -> holder)
+                .or(() -> absorbers().filter(a -> board.gameRules().isDrain(a.name())).findFirst());
+        if (launcher.isEmpty()) {
+            return false;
         }
-        return false;
+        Ball ball = drained.map(registry::ball).orElseGet(() -> {
+            Ball fresh = new Ball(play.freshBallName(), launcher.get().holdingPosition(Arena.BALL_RADIUS), Vect.ZERO);
+            registry.add(fresh);
+            return fresh;
+        });
+        if (holder.isPresent() && holder.get() != launcher.get()) {
+            holder.get().letGo(ball.name());
+        }
+        if (holder.isEmpty() || holder.get() != launcher.get()) {
+            play.capture(ball, launcher.get());
+        }
+        return true;
+    }
+
+    private Stream<Absorber> absorbers() {
+        return registry.gizmos().stream().filter(g -> g instanceof Absorber).map(g -> (Absorber) g);
     }
 }

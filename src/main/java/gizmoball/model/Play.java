@@ -76,9 +76,9 @@ final class Play implements Surroundings {
      * The key went down or up: the gizmos bound to that edge do what their binding orders (by default as keys drive
      * them: a flipper stays up while the key is held), and on DOWN those bound to CHANGE too (by default what a trigger
      * makes them do: a flipper toggles). A plunger that the press would fire at once is pulled instead, and fires when
-     * that key goes up.
+     * that key goes up. While the game is tilted, flippers and plungers do not answer.
      */
-    void keyAction(List<KeyBinding> bindings, int keyCode, KeyEdge edge, double now) {
+    void keyAction(List<KeyBinding> bindings, int keyCode, KeyEdge edge, double now, boolean tilted) {
         if (edge == KeyEdge.UP) {
             releasePlungers(keyCode, now);
         }
@@ -86,6 +86,9 @@ final class Play implements Surroundings {
             if (binding.keyCode() == keyCode
                     && (binding.edge() == edge || binding.edge() == KeyEdge.CHANGE && edge == KeyEdge.DOWN)) {
                 GizmoBase gizmo = registry.gizmo(binding.gizmo());
+                if (tilted && deadInTilt(gizmo)) {
+                    continue;
+                }
                 Action action = binding.order().action().orElse(binding.edge().actionOf(gizmo.kind()));
                 if (edge == KeyEdge.DOWN && action == Action.FIRE && binding.order().delay() == 0
                         && gizmo instanceof Absorber absorber && absorber.plunger().isPresent()) {
@@ -121,10 +124,17 @@ final class Play implements Surroundings {
         }
     }
 
-    /** Every plunger being pulled lets go without firing (a tilt). */
-    void dropPulls() {
+    /** What a tilt kills: the flippers and the plungers do not answer their keys. */
+    private static boolean deadInTilt(GizmoBase gizmo) {
+        return gizmo instanceof Flipper || gizmo instanceof Absorber absorber && absorber.plunger().isPresent();
+    }
+
+    /** The game tilted: every flipper falls back to rest and every plunger lets go of its pull without firing. */
+    void tilt() {
         for (GizmoBase gizmo : registry.gizmos()) {
-            if (gizmo instanceof Absorber absorber) {
+            if (gizmo instanceof Flipper flipper) {
+                flipper.perform(Action.LOWER, this);
+            } else if (gizmo instanceof Absorber absorber) {
                 absorber.letGoOfPull();
             }
         }

@@ -17,8 +17,9 @@ import java.util.Locale;
 
 /**
  * Replay files: JSON, {@code {"format": "gizmoball replay", "version": 1, "board": "...", "dt": ..., "ticks": ...,
- * "score": ..., "keys": [{"tick": 12, "key": "down", "code": 32}, ...]}}. The board is the board-file text as built;
- * doubles are written so that they read back to the same bits.
+ * "score": ..., "players": ..., "keys": [{"tick": 12, "key": "down", "code": 32}, ...]}}. The board is the board-file
+ * text as built; doubles are written so that they read back to the same bits. A file without "players" (written before
+ * games had several) is of one player.
  */
 public final class ReplayFiles {
     static final String FORMAT = "gizmoball replay";
@@ -45,6 +46,7 @@ public final class ReplayFiles {
         Double dt;
         Long ticks;
         Long score;
+        Integer players;
         List<Key> keys;
     }
 
@@ -61,6 +63,7 @@ public final class ReplayFiles {
         json.dt = replay.dt();
         json.ticks = replay.ticks();
         json.score = replay.score();
+        json.players = replay.players();
         json.keys = new ArrayList<>();
         for (KeyPress press : replay.keys().keys()) {
             Key key = new Key();
@@ -109,7 +112,8 @@ public final class ReplayFiles {
             }
         }
         try {
-            return new Replay(json.board, json.dt, json.ticks, new KeyScript(keys), json.score);
+            return new Replay(json.board, json.dt, json.ticks, new KeyScript(keys), json.score,
+                    json.players == null ? 1 : json.players);
         } catch (IllegalArgumentException e) {
             throw new BadReplay(source + ": " + e.getMessage());
         }

@@ -23,12 +23,14 @@ public final class GameOverDialog {
 
     /**
      * Shows the dialog (modal) and returns the name given for the table; empty when the score does not rank or the
-     * player declined. {@code place} is 0 for the best.
+     * player declined. {@code who} names the player of a game of several ("Player 2"), empty for a game of one;
+     * {@code place} is 0 for the best.
      */
-    public static Optional<String> show(Component parent, long score, OptionalInt place, String suggestedName,
-                                        String newGameShortcut) {
+    public static Optional<String> show(Component parent, String who, long score, OptionalInt place,
+                                        String suggestedName, String newGameShortcut) {
         JPanel panel = new JPanel(new GridLayout(0, 1, 0, 6));
-        JLabel total = new JLabel("Final score: " + NumberFormat.getIntegerInstance(Locale.ROOT).format(score));
+        JLabel total = new JLabel((who.isEmpty() ? "Final score: " : who + ", final score: ")
+                + NumberFormat.getIntegerInstance(Locale.ROOT).format(score));
         total.setName("gameover.score");
         total.setFont(total.getFont().deriveFont(total.getFont().getSize2D() * 1.6f));
         panel.add(total);

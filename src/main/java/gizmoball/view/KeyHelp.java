@@ -6,6 +6,7 @@ import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.gizmo.Action;
+import gizmoball.model.gizmo.AbsorberView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import java.util.ArrayList;
@@ -48,12 +49,17 @@ final class KeyHelp {
         for (KeyBinding b : board.keyBindings()) {
             bindings.computeIfAbsent(new KeyAndGizmo(b.keyCode(), b.gizmo()), k -> new ArrayList<>()).add(b);
         }
-        return bindings.entrySet().stream().map(e -> {
+        List<String> lines = new ArrayList<>(bindings.entrySet().stream().map(e -> {
             KeyAndGizmo k = e.getKey();
             GizmoKind kind = board.gizmo(k.gizmo()).map(Gizmo::kind).orElse(null);
-            return KeyCodes.name(k.keyCode()) + ": " + kindName(kind) + k.gizmo()
-                    + " (" + use(kind, e.getValue()) + ")";
-        }).toList();
+            boolean plunger = board.gizmo(k.gizmo()).filter(g -> g instanceof AbsorberView a
+                    && a.plunger().isPresent()).isPresent();
+            return KeyCodes.name(k.keyCode()) + ": " + (plunger ? "plunger " : kindName(kind)) + k.gizmo()
+                    + " (" + (plunger ? "hold to pull, release to launch" : use(kind, e.getValue())) + ")";
+        }).toList());
+        board.gameRules().nudge().ifPresent(n -> lines.add(KeyCodes.name(n.leftKey()) + ", "
+                + KeyCodes.name(n.rightKey()) + ", " + KeyCodes.name(n.upKey()) + ": nudge left, right, up"));
+        return lines;
     }
 
     /** "left flipper " for LEFT_FLIPPER; nothing for a name the board does not hold. */

@@ -18,8 +18,9 @@ import java.util.stream.Collectors;
 import javax.swing.JComponent;
 
 /**
- * The strip above the board: score, balls left and the board's best (a sandbox says so instead of balls), and what is
- * on (a replay being watched, game over). Its three cells share the width equally and the text takes the largest font
+ * The strip above the board: score (in a game of several players each one's, "> " before the player whose ball is in
+ * play), balls left (the player's own), the board's best (a sandbox says so instead of balls), and what is on (a
+ * replay being watched, game over, a tilt). Its three cells share the width equally and the text takes the largest font
  * that fits them, so it stays readable in a narrow window and does not shout in a wide one.
  */
 public final class ScorePanel extends JComponent {
@@ -71,9 +72,17 @@ public final class ScorePanel extends JComponent {
     public List<Cell> cells() {
         GameProgress game = board.game();
         List<Cell> cells = new ArrayList<>();
-        cells.add(new Cell("Score ", format(game.score())));
+        if (game.players() == 1) {
+            cells.add(new Cell("Score ", format(game.score())));
+        } else {
+            for (int p = 0; p < game.players(); p++) {
+                boolean up = p == game.currentPlayer() && !game.isOver();
+                cells.add(new Cell((up ? "> " : "") + "P" + (p + 1) + " ", format(game.score(p))));
+            }
+        }
+        int balls = game.players() == 1 ? game.ballsLeft() : game.ballsLeft(game.currentPlayer());
         cells.add(!game.isGame() ? new Cell("", "Sandbox") : game.isOver() ? new Cell("", "Game over")
-                : new Cell("Balls ", Integer.toString(game.ballsLeft())));
+                : game.isTilted() ? new Cell("", "TILT") : new Cell("Balls ", Integer.toString(balls)));
         cells.add(new Cell("Best ", best));
         if (!notice.isEmpty()) {
             cells.add(new Cell("", notice));
@@ -109,8 +118,9 @@ public final class ScorePanel extends JComponent {
                 int x = i * cell + (cell - m.stringWidth(c.text())) / 2;
                 g.setColor(LABEL);
                 g.drawString(c.label(), x, baseline);
-                // A cell without a label is news: the game is over, a replay is on.
-                g.setColor(c.label().isEmpty() && board.game().isGame() || i == 3 ? NOTICE : VALUE);
+                // A cell without a label is news (the game is over, a tilt, a replay is on), and so is whose turn it is.
+                g.setColor(c.label().isEmpty() && board.game().isGame() || c.label().startsWith("> ")
+                        || i == cells.size() - 1 && !notice.isEmpty() ? NOTICE : VALUE);
                 g.drawString(c.value(), x + m.stringWidth(c.label()), baseline);
             }
             setToolTipText(cells.stream().map(Cell::text).collect(Collectors.joining("   ")));

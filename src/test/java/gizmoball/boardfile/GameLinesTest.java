@@ -5,11 +5,14 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import gizmoball.model.Board;
 import gizmoball.model.game.GameRules;
+import gizmoball.model.game.Nudge;
+import gizmoball.model.game.Tilt;
 import gizmoball.model.game.Points;
 import gizmoball.model.gizmo.GizmoKind;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.OptionalLong;
 import java.util.Set;
 import java.util.stream.Collectors;
@@ -30,6 +33,9 @@ class GameLinesTest {
             Friction 0.025 0.025
             #@Balls 5
             #@ExtraBall 1000
+            #@Nudge 3.0 65 68 87
+            #@Tilt 3 4.0
+            #@BallSave 6.0
             #@Drain A
             #@Drain Side
             #@Points C 250
@@ -41,7 +47,7 @@ class GameLinesTest {
         Board board = BoardFiles.load("game", GAME);
 
         assertThat(board.gameRules()).isEqualTo(new GameRules(5, Set.of("A", "Side"), Map.of("C", 250, "S", -5),
-                OptionalLong.of(1000)));
+                OptionalLong.of(1000), Optional.of(new Nudge(3, 65, 68, 87)), new Tilt(3, 4), 6));
         assertThat(BoardFiles.toText(board)).isEqualTo(GAME);
         assertThat(BoardContents.of(BoardFiles.load("again", BoardFiles.toText(board))))
                 .isEqualTo(BoardContents.of(board));
@@ -117,15 +123,28 @@ class GameLinesTest {
                 #@Balls 2.5
                 #@Points S 2000000
                 #@ExtraBall 0
+                #@Nudge 30
+                #@Nudge 4 37 37 38
+                #@Tilt 1 5
+                #@Tilt 4 0
+                #@BallSave 31
+                #@Nudge
+                KeyConnect key 37 down S
                 """).skippedLines();
 
-        assertThat(errors).extracting(BoardFileError::line).containsExactly(2, 3, 4, 5, 6, 7);
+        assertThat(errors).extracting(BoardFileError::line).containsExactly(2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 14);
         assertThat(errors.get(0).reason()).contains("only an absorber can be a drain: S is a square");
         assertThat(errors.get(1).reason()).contains("no gizmo named Nowhere");
         assertThat(errors.get(2).reason()).contains("a game has 1 to 99 balls, not 0");
         assertThat(errors.get(3).reason()).contains("is not a whole number");
         assertThat(errors.get(4).reason()).contains("points of S must lie within");
         assertThat(errors.get(5).reason()).contains("an extra ball is awarded at a score of 1 or more");
+        assertThat(errors.get(6).reason()).contains("a nudge adds more than 0 and at most 20 L/s, not 30");
+        assertThat(errors.get(7).reason()).contains("three different keys");
+        assertThat(errors.get(8).reason()).contains("a tilt comes with the 2nd to 20th nudge, not the 1th");
+        assertThat(errors.get(9).reason()).contains("at most 60 seconds, not 0");
+        assertThat(errors.get(10).reason()).contains("a ball save lasts 0 (none) to 30 seconds, not 31");
+        assertThat(errors.get(11).reason()).contains("key 37 nudges the board: it drives nothing else");
     }
 
     /** The author's file stays as written where the game did not change: comments, order, the other game lines. */

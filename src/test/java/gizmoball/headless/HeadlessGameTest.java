@@ -110,7 +110,7 @@ class HeadlessGameTest {
         assertThat(out.toString(StandardCharsets.UTF_8)).isEqualTo("score 250 after 300 ticks\n");
 
         Path forged = file("forged.json", ReplayFiles.toJson(new Replay(recorded.board(), recorded.dt(),
-                recorded.ticks(), recorded.keys(), 9999)));
+                recorded.ticks(), recorded.keys(), 9999, 1)));
         assertThat(run("--headless", "--replay", forged.toString())).isEqualTo(HeadlessRunner.REPLAY_DIFFERS);
         assertThat(err.toString(StandardCharsets.UTF_8)).contains("the replay reaches 250, not the 9999 it recorded");
     }

@@ -28,7 +28,7 @@ class HighScoreTest {
     }
 
     private static HighScore score(String name, long score) {
-        return new HighScore(name, score, DAY, new Replay(BOARD, 1.0 / 60, 10, KeyScript.NONE, score));
+        return new HighScore(name, score, DAY, new Replay(BOARD, 1.0 / 60, 10, KeyScript.NONE, score, 1));
     }
 
     private static HighScoreTable tableOf(long... scores) {
@@ -77,7 +77,7 @@ class HighScoreTest {
     void aTableLargerThanOnePreferenceValueIsSplitAndReadBack() {
         String big = "# " + "x".repeat(50_000) + "\n" + BOARD;
         HighScoreTable table = HighScoreTable.EMPTY.with(new HighScore("big", 7, DAY,
-                new Replay(big, 1.0 / 60, 3, KeyScript.NONE, 7)));
+                new Replay(big, 1.0 / 60, 3, KeyScript.NONE, 7, 1)));
 
         assertThat(store.save(big, table)).isEmpty();
 

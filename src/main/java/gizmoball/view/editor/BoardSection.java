@@ -5,6 +5,7 @@ import gizmoball.editor.Editor;
 import gizmoball.model.Board;
 import gizmoball.model.game.GameRules;
 
+import java.awt.BorderLayout;
 import java.awt.GridBagLayout;
 import java.util.LinkedHashMap;
 import java.util.Map;
@@ -13,10 +14,14 @@ import java.util.OptionalDouble;
 import java.util.OptionalLong;
 import javax.swing.JButton;
 import javax.swing.JComponent;
+import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JTextField;
 
-/** The properties panel's Board section: gravity, friction, the balls of a game and the extra-ball score. */
+/**
+ * The properties panel's Board section: gravity, friction, the balls of a game, the extra-ball score, and the table's
+ * nudge, tilt and ball save.
+ */
 final class BoardSection {
     private final Editor controller;
     private final PanelFields fields;
@@ -25,6 +30,10 @@ final class BoardSection {
     private final NumberField mu2 = new NumberField("mu2");
     private final NumberField balls = new NumberField("game.balls");
     private final JTextField extraBall = new JTextField(7);
+    private final JTextField nudgeSpeed = new JTextField(7);
+    private final NumberField tiltNudges = new NumberField("game.tilt.nudges");
+    private final NumberField tiltSeconds = new NumberField("game.tilt.seconds");
+    private final NumberField ballSave = new NumberField("game.ballsave");
 
     BoardSection(Editor controller, PanelFields fields) {
         this.controller = controller;
@@ -40,6 +49,14 @@ final class BoardSection {
         extraBall.setText(board.gameRules().extraBallAt().isPresent()
                 ? Long.toString(board.gameRules().extraBallAt().getAsLong()) : "");
         RefusedValue.unmark(extraBall);
+        GameRules rules = board.gameRules();
+        nudgeSpeed.setText(rules.nudge().map(n -> Decimals.format(n.speed())).orElse(""));
+        tiltNudges.show(rules.tilt().nudges());
+        tiltSeconds.show(rules.tilt().seconds());
+        ballSave.show(rules.ballSaveSeconds());
+        for (JTextField f : new JTextField[] {nudgeSpeed, tiltNudges, tiltSeconds, ballSave}) {
+            RefusedValue.unmark(f);
+        }
     }
 
     JComponent component() {
@@ -51,14 +68,29 @@ final class BoardSection {
         extraBall.setName("game.extra");
         extraBall.setToolTipText("The score that gives one extra ball; empty for none");
         PanelFields.row(p, 4, "Extra ball at", extraBall);
+        nudgeSpeed.setName("game.nudge");
+        nudgeSpeed.setToolTipText("L/s a nudge (arrow keys unless the file says) adds to every free ball; empty: none");
+        PanelFields.row(p, 5, "Nudge (L/s)", nudgeSpeed);
+        tiltNudges.setToolTipText("The nudge that tilts: that many within the seconds beside it");
+        tiltSeconds.setToolTipText("The seconds within which that many nudges tilt");
+        JPanel tilt = new JPanel(new BorderLayout(4, 0));
+        tiltNudges.setColumns(2);
+        tilt.add(tiltNudges, BorderLayout.WEST);
+        tilt.add(new JLabel("in"), BorderLayout.CENTER);
+        tiltSeconds.setColumns(3);
+        tilt.add(tiltSeconds, BorderLayout.EAST);
+        PanelFields.row(p, 6, "Tilt: nudges", tilt);
+        ballSave.setToolTipText("Seconds after a launch in which a drained ball is given back, once; 0: none");
+        PanelFields.row(p, 7, "Ball save (s)", ballSave);
         JButton apply = new JButton("Apply");
         apply.setName("board.apply");
         apply.addActionListener(e -> apply());
-        for (JTextField f : new JTextField[]{gravity, mu, mu2, balls, extraBall}) {
+        for (JTextField f : new JTextField[]{gravity, mu, mu2, balls, extraBall, nudgeSpeed, tiltNudges, tiltSeconds,
+                ballSave}) {
             f.addActionListener(e -> apply());
             fields.restoreOnEscape(f);
         }
-        p.add(apply, PanelFields.constraints(1, 5));
+        p.add(apply, PanelFields.constraints(1, 8));
         return p;
     }
 
@@ -93,10 +125,28 @@ final class BoardSection {
         Map<JTextField, String> game = new LinkedHashMap<>();
         game.put(balls, balls.getText());
         game.put(extraBall, extraBall.getText());
-        if (controller.properties().setGame((int) v.get()[3], extra)) {
-            fields.focusBoard();
-        } else {
+        if (!controller.properties().setGame((int) v.get()[3], extra)) {
             fields.keepRefused(game);
+            return;
         }
+        applyTable();
+    }
+
+    /** The table's nudge, tilt and ball save, applied with the rest of the section. */
+    private void applyTable() {
+        Optional<double[]> v = fields.values(tiltNudges, tiltSeconds, ballSave);
+        String speedText = nudgeSpeed.getText().strip();
+        OptionalDouble speed = speedText.isEmpty() ? OptionalDouble.empty() : Decimals.parse(speedText);
+        if (v.isEmpty() || !speedText.isEmpty() && speed.isEmpty()) {
+            if (v.isPresent()) {
+                fields.refuse(nudgeSpeed, "Nudge '" + speedText + "' is not a number of L/s");
+            }
+            return;
+        }
+        Map<JTextField, String> typed = new LinkedHashMap<>();
+        for (JTextField f : new JTextField[] {nudgeSpeed, tiltNudges, tiltSeconds, ballSave}) {
+            typed.put(f, f.getText());
+        }
+        fields.applied(controller.properties().setTable(speed, v.get()[0], v.get()[1], v.get()[2]), typed);
     }
 }

@@ -198,6 +198,7 @@ class DefaultBoardFromScratchGuiTest {
                 d.gravity(), d.mu(), d.mu2(), new GameRules(d.game().ballsPerGame(),
                         d.game().drains().stream().map(name::get).collect(Collectors.toSet()),
                         d.game().ownPoints().entrySet().stream().collect(Collectors.toMap(e -> name.get(e.getKey()),
-                                Map.Entry::getValue)), d.game().extraBallAt()));
+                                Map.Entry::getValue)), d.game().extraBallAt(), d.game().nudge(), d.game().tilt(),
+                        d.game().ballSaveSeconds()));
     }
 }
