@@ -1,5 +1,6 @@
 package gizmoball.view;
 
+import gizmoball.boardfile.Decimals;
 import gizmoball.boardfile.KeyCodes;
 import gizmoball.editor.Tool;
 import gizmoball.model.Board;
@@ -80,9 +81,18 @@ final class HelpPages {
         }
         return "A game of " + rules.ballsPerGame() + (rules.ballsPerGame() == 1 ? " ball" : " balls") + ": a ball"
                 + " captured by the drain (" + String.join(", ", rules.drains().stream().sorted().toList())
-                + ") is lost, and the next waits there for the drain's key."
+                + ") is lost, and the next waits in the plunger (else in the drain) for its key; a plunger is pulled"
+                + " while its key is held and launches faster the longer the hold."
                 + (rules.extraBallAt().isPresent() ? " An extra ball at " + rules.extraBallAt().getAsLong()
-                + " points." : "") + " " + scoring + " Game > New game (Ctrl+Shift+N) starts again; Game > High"
+                + " points." : "")
+                + rules.nudge().map(n -> " " + KeyCodes.name(n.leftKey()) + ", " + KeyCodes.name(n.rightKey()) + " and "
+                + KeyCodes.name(n.upKey()) + " nudge the table; " + rules.tilt().nudges() + " nudges within "
+                + Decimals.format(rules.tilt().seconds()) + " s tilt it: flippers and plunger dead, no score, until"
+                + " the ball drains.").orElse("")
+                + (rules.ballSaveSeconds() > 0 ? " A ball lost within " + Decimals.format(rules.ballSaveSeconds())
+                + " s of its launch is given back once." : "")
+                + " " + scoring + " Game > New game (Ctrl+Shift+N) starts again; Game > Players starts a game for 1"
+                + " to 4 players, taking turns ball by ball; Game > High"
                 + " scores shows the board's ten best, whose games Watch plays again.";
     }
 

@@ -78,7 +78,10 @@ final class BoardSection {
         tilt.add(tiltNudges, BorderLayout.WEST);
         tilt.add(new JLabel("in"), BorderLayout.CENTER);
         tiltSeconds.setColumns(3);
-        tilt.add(tiltSeconds, BorderLayout.EAST);
+        JPanel seconds = new JPanel(new BorderLayout(4, 0));
+        seconds.add(tiltSeconds, BorderLayout.CENTER);
+        seconds.add(new JLabel("s"), BorderLayout.EAST);
+        tilt.add(seconds, BorderLayout.EAST);
         PanelFields.row(p, 6, "Tilt: nudges", tilt);
         ballSave.setToolTipText("Seconds after a launch in which a drained ball is given back, once; 0: none");
         PanelFields.row(p, 7, "Ball save (s)", ballSave);
