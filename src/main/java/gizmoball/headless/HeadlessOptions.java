@@ -12,7 +12,7 @@ import java.util.Optional;
 public sealed interface HeadlessOptions {
 
     String PLAY_USAGE = "gizmoball --headless --ticks N [--dt SECONDS] [--skip-bad-lines] [--out FILE] [--keys SCRIPT]"
-            + " [--report FILE] [--record FILE] BOARD";
+            + " [--players N] [--report FILE] [--record FILE] BOARD";
     String CHECK_USAGE = "gizmoball --headless --replay FILE [--report FILE]";
     String LAB_USAGE = "gizmoball --headless --lab N [--threads N] [--game-cap SECONDS] [--skip-bad-lines]"
             + " [--report FILE] [--heatmap FILE.png] BOARD";
@@ -27,9 +27,11 @@ public sealed interface HeadlessOptions {
      *
      * @param dt empty: the model's default tick
      * @param record where to write the replay of the game
+     * @param players how many take turns in the game, 1 to 4
      */
     record Play(Path board, long ticks, Optional<Double> dt, boolean skipBadLines, Optional<Path> out,
-                Optional<Path> keys, Optional<Path> report, Optional<Path> record) implements HeadlessOptions {
+                Optional<Path> keys, Optional<Path> report, Optional<Path> record, int players)
+            implements HeadlessOptions {
     }
 
     /** Plays a replay file again and compares the score it reaches with the one it recorded. */
@@ -65,6 +67,7 @@ public sealed interface HeadlessOptions {
         Optional<Path> replay = Optional.empty();
         Optional<Path> heatmap = Optional.empty();
         Integer labGames = null;
+        Integer players = null;
         Integer threads = null;
         Double gameCap = null;
         Path board = null;
@@ -80,6 +83,7 @@ public sealed interface HeadlessOptions {
                 case "--report" -> report = Optional.of(OptionValues.path(OptionValues.of(args, ++i, arg)));
                 case "--record" -> record = Optional.of(OptionValues.path(OptionValues.of(args, ++i, arg)));
                 case "--replay" -> replay = Optional.of(OptionValues.path(OptionValues.of(args, ++i, arg)));
+                case "--players" -> players = OptionValues.players(OptionValues.of(args, ++i, arg));
                 case "--lab" -> labGames = OptionValues.count(OptionValues.of(args, ++i, arg), arg);
                 case "--threads" -> threads = OptionValues.count(OptionValues.of(args, ++i, arg), arg);
                 case "--heatmap" -> heatmap = Optional.of(OptionValues.path(OptionValues.of(args, ++i, arg)));
@@ -103,7 +107,7 @@ public sealed interface HeadlessOptions {
         if (labGames != null) {
             // The lab plays its own games: no script, no tick count, no single game's outputs.
             if (replay.isPresent() || ticks != null || dt.isPresent() || keys.isPresent() || record.isPresent()
-                    || out.isPresent()) {
+                    || out.isPresent() || players != null) {
                 throw new BadArguments("--lab takes only --threads, --game-cap, --skip-bad-lines, --report and --heatmap:"
                         + " its players press the keys and each game runs to game over or the cap");
             }
@@ -117,9 +121,9 @@ public sealed interface HeadlessOptions {
         if (replay.isPresent()) {
             // The replay holds the board, the ticks, the tick length and the keys: nothing may say otherwise.
             if (board != null || ticks != null || dt.isPresent() || keys.isPresent() || record.isPresent()
-                    || out.isPresent() || skipBadLines) {
-                throw new BadArguments("--replay takes only --report: the replay file holds the board, its ticks and"
-                        + " keys");
+                    || out.isPresent() || skipBadLines || players != null) {
+                throw new BadArguments("--replay takes only --report: the replay file holds the board, its ticks,"
+                        + " keys and players");
             }
             return new Check(replay.get(), report);
         }
@@ -129,6 +133,6 @@ public sealed interface HeadlessOptions {
         if (board == null) {
             throw new BadArguments("no board file given");
         }
-        return new Play(board, ticks, dt, skipBadLines, out, keys, report, record);
+        return new Play(board, ticks, dt, skipBadLines, out, keys, report, record, players != null ? players : 1);
     }
 }

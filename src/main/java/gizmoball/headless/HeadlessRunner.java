@@ -82,6 +82,7 @@ public final class HeadlessRunner {
         Board board = load(options, err);
         KeyScript keys = options.keys().isPresent() ? keys(options.keys().get(), err) : KeyScript.NONE;
         String asBuilt = BoardFiles.toText(board);
+        board.setPlayers(options.players());
         double dt = options.dt().orElse(Board.DEFAULT_TICK);
         ScriptedPlay.play(board, keys, options.ticks(), dt);
         report(board, options.report(), err);

@@ -1,5 +1,6 @@
 package gizmoball.headless;
 
+import gizmoball.model.game.Game;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.List;
@@ -33,6 +34,14 @@ final class OptionValues {
     }
 
     /** A whole number of at least 1: of games, of threads. */
+    static int players(String value) throws HeadlessOptions.BadArguments {
+        int players = count(value, "--players");
+        if (players > Game.MAX_PLAYERS) {
+            throw new HeadlessOptions.BadArguments("--players needs 1 to " + Game.MAX_PLAYERS + ", not " + players);
+        }
+        return players;
+    }
+
     static int count(String value, String option) throws HeadlessOptions.BadArguments {
         try {
             int count = Integer.parseInt(value);

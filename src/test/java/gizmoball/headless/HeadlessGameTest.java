@@ -3,6 +3,7 @@ package gizmoball.headless;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import com.google.gson.JsonArray;
+import com.google.gson.JsonElement;
 import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
 import gizmoball.model.Board;
@@ -93,6 +94,27 @@ class HeadlessGameTest {
         assertThat(hits.get(1).getAsJsonObject().get("gizmo").getAsString()).isEqualTo("S");
         assertThat(hits.get(1).getAsJsonObject().get("points").getAsInt()).isEqualTo(125);
         assertThat(Files.readString(directory.resolve("after.txt"))).doesNotContain("Ball B");
+    }
+
+    /** Two players, a ball each: the first launch is player 1's, the second player 2's, and the replay says so. */
+    @Test
+    void aGameOfTwoPlayersIsReportedPlayerByPlayerAndReplaysWithThem() throws Exception {
+        Path report = directory.resolve("report.json");
+        Path replay = directory.resolve("game.replay.json");
+        String oneBallEach = BOARD.replace("#@Balls 2", "#@Balls 1");
+
+        assertThat(run("--headless", "--ticks", "300", "--players", "2", "--keys", file("keys.txt", SCRIPT).toString(),
+                "--report", report.toString(), "--record", replay.toString(), file("board.txt", oneBallEach).toString()))
+                .as(err.toString(StandardCharsets.UTF_8)).isEqualTo(HeadlessRunner.OK);
+
+        JsonObject json = JsonParser.parseString(Files.readString(report)).getAsJsonObject();
+        assertThat(json.get("players").getAsInt()).isEqualTo(2);
+        assertThat(json.getAsJsonArray("playerScores")).extracting(JsonElement::getAsLong).containsExactly(125L, 125L);
+        assertThat(json.get("gameOver").getAsBoolean()).isTrue();
+        assertThat(ReplayFiles.read(replay).players()).isEqualTo(2);
+        out.reset();
+        assertThat(run("--headless", "--replay", replay.toString())).isEqualTo(HeadlessRunner.OK);
+        assertThat(out.toString(StandardCharsets.UTF_8)).isEqualTo("score 250 after 300 ticks\n");
     }
 
     @Test

@@ -17,22 +17,24 @@ class HeadlessOptionsTest {
         HeadlessOptions options = HeadlessOptions.parse(List.of(
                 "--out", "after.txt", "board.txt", "--skip-bad-lines", "--dt", "0.01", "--headless", "--ticks", "2000"));
         assertThat(options).isEqualTo(new HeadlessOptions.Play(Path.of("board.txt"), 2000, Optional.of(0.01), true,
-                Optional.of(Path.of("after.txt")), Optional.empty(), Optional.empty(), Optional.empty()));
+                Optional.of(Path.of("after.txt")), Optional.empty(), Optional.empty(), Optional.empty(), 1));
     }
 
     @Test
     void onlyTicksAndBoardAreRequired() throws HeadlessOptions.BadArguments {
         assertThat(HeadlessOptions.parse(List.of("--headless", "--ticks", "0", "b.txt"))).isEqualTo(
                 new HeadlessOptions.Play(Path.of("b.txt"), 0, Optional.empty(), false, Optional.empty(),
-                        Optional.empty(), Optional.empty(), Optional.empty()));
+                        Optional.empty(), Optional.empty(), Optional.empty(), 1));
     }
 
     @Test
     void readsTheGameOptions() throws HeadlessOptions.BadArguments {
         assertThat(HeadlessOptions.parse(List.of("--headless", "--keys", "k.txt", "--ticks", "9", "--record", "r.json",
-                "--report", "s.json", "b.txt"))).isEqualTo(new HeadlessOptions.Play(Path.of("b.txt"), 9, Optional.empty(),
-                false, Optional.empty(), Optional.of(Path.of("k.txt")), Optional.of(Path.of("s.json")),
-                Optional.of(Path.of("r.json"))));
+                "--report", "s.json", "--players", "3", "b.txt"))).isEqualTo(new HeadlessOptions.Play(Path.of("b.txt"), 9,
+                Optional.empty(), false, Optional.empty(), Optional.of(Path.of("k.txt")), Optional.of(Path.of("s.json")),
+                Optional.of(Path.of("r.json")), 3));
+        assertThatThrownBy(() -> HeadlessOptions.parse(List.of("--ticks", "9", "--players", "5", "b.txt")))
+                .hasMessageContaining("--players needs 1 to 4, not 5");
         assertThat(HeadlessOptions.parse(List.of("--replay", "r.json", "--headless", "--report", "s.json")))
                 .isEqualTo(new HeadlessOptions.Check(Path.of("r.json"), Optional.of(Path.of("s.json"))));
     }
@@ -61,8 +63,8 @@ class HeadlessOptionsTest {
             "--headless --ticks 5 a.txt b.txt | more than one board file: a.txt and b.txt",
             "--headless --ticks 5 b.txt --out | --out needs a value",
             "--headless --ticks 5 --keys | --keys needs a value",
-            "--headless --replay r.json b.txt | --replay takes only --report: the replay file holds the board, its ticks and keys",
-            "--headless --replay r.json --ticks 5 | --replay takes only --report: the replay file holds the board, its ticks and keys",
+            "--headless --replay r.json b.txt | --replay takes only --report: the replay file holds the board, its ticks, keys and players",
+            "--headless --replay r.json --ticks 5 | --replay takes only --report: the replay file holds the board, its ticks, keys and players",
             "--headless --lab 0 b.txt | --lab needs a whole number >= 1, not '0'",
             "--headless --lab many b.txt | --lab needs a whole number >= 1, not 'many'",
             "--headless --lab 5 --threads 0 b.txt | --threads needs a whole number >= 1, not '0'",

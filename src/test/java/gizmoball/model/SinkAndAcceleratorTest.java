@@ -74,6 +74,25 @@ class SinkAndAcceleratorTest {
         assertThat(board.ball("B")).as("a ball lying on a sink is taken, never held").isEmpty();
     }
 
+    /**
+     * Issue 40 item 14: a ball touching a sink's side is taken in the first tick, though it never moves into it:
+     * under gravity it would slide down along the side, at rest it would stay. It is taken where it touches, when the
+     * tick begins.
+     */
+    @ParameterizedTest(name = "gravity {0}")
+    @ValueSource(doubles = {25, 0})
+    void aBallTouchingASinkWithoutMovingIntoItIsTaken(double gravity) throws Exception {
+        Board board = gizmoball.boardfile.BoardFiles.load("touching.txt", """
+                #@Sink K 5 5
+                Ball B1 6.25 5.5 0 0
+                Gravity %s
+                """.formatted(gravity));
+        board.tick(DT);
+        assertThat(board.ball("B1")).as("taken in the first tick").isEmpty();
+        assertThat(board.lastTick().events()).contains(new PlayEvent.Sunk("K", "B1", new Vect(6.25, 5.5)));
+        assertThat(board.gizmo("K").orElseThrow().lastTriggeredAt()).isZero();
+    }
+
     @Test
     void aHeadOnHitLeavesTheAcceleratorAtItsFactorTimesTheSpeed() {
         Board board = still();

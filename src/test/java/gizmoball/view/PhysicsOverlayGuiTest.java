@@ -36,6 +36,20 @@ class PhysicsOverlayGuiTest {
         node.removeNode();
     }
 
+    /** At the size the window opens in too; the screenshot is docs/playing.md's picture of the overlay. */
+    @Test
+    void atTheFirstSizeThePanelIsBesideTheBoard() throws Exception {
+        Gizmoball app = Gizmoball.launch(Path.of("boards", "multiball.txt"), new Settings(node));
+        GameWindow window = app.window();
+        await("the window", () -> window.isShowing() && window.boardPanel().getWidth() > 100);
+        clickMenu(window.menus(), "Ball trails");
+        clickMenu(window.menus(), "Physics overlay");
+        for (int i = 0; i < 40; i++) {
+            onEdt(() -> app.loop().step());
+        }
+        assertBesideTheBoard(app, "overlay-first");
+    }
+
     @Test
     void inAWindowAsLargeAsTheScreenThePanelIsBesideTheBoard() throws Exception {
         Gizmoball app = Gizmoball.launch(Path.of("boards", "multiball.txt"), new Settings(node));
@@ -48,6 +62,11 @@ class PhysicsOverlayGuiTest {
         for (int i = 0; i < 30; i++) {
             onEdt(() -> app.loop().step());
         }
+        assertBesideTheBoard(app, "overlay-large");
+    }
+
+    private static void assertBesideTheBoard(Gizmoball app, String shot) throws Exception {
+        GameWindow window = app.window();
         BoardPanel panel = window.boardPanel();
         PhysicsOverlay overlay = app.playFeatures().physicsOverlay();
         PhysicsOverlay.Layout layout = onEdt(() -> {
@@ -64,7 +83,7 @@ class PhysicsOverlayGuiTest {
         Gui.sleep(300);
         Files.createDirectories(Path.of("build", "screenshots"));
         ImageIO.write(new Robot().createScreenCapture(onEdt(() -> window.getBounds())), "png",
-                Path.of("build", "screenshots", "overlay-large.png").toFile());
+                Path.of("build", "screenshots", shot + ".png").toFile());
         assertThat(layout.panel().intersects(board)).as("panel " + layout.panel() + " over the board " + board)
                 .isFalse();
         assertThat(onEdt(() -> new Rectangle(panel.getSize())).contains(layout.panel().getBounds())).isTrue();

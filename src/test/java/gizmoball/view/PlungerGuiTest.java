@@ -6,13 +6,19 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.app.Gizmoball;
 import gizmoball.controller.Settings;
+import gizmoball.model.game.KeyPress;
 import gizmoball.model.gizmo.AbsorberView;
+import java.awt.Component;
+import java.awt.KeyboardFocusManager;
+import java.awt.Point;
 import java.awt.Rectangle;
 import java.awt.Robot;
 import java.awt.Toolkit;
+import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.UUID;
 import java.util.prefs.Preferences;
 import javax.imageio.ImageIO;
@@ -24,7 +30,8 @@ import physics.Vect;
 
 /**
  * A plunger in the window: the hint says to hold and release, the pull is drawn while the key is held (a screenshot
- * in build/screenshots to look at), and the release launches at the pull's speed.
+ * in build/screenshots to look at), and the release launches at the pull's speed, also when the real keyboard holds
+ * the key through X11's auto-repeat.
  */
 class PlungerGuiTest {
     private static final String LANE = """
@@ -53,6 +60,51 @@ class PlungerGuiTest {
     void close() throws Exception {
         Gui.closeAllWindows();
         node.removeNode();
+    }
+
+    /** Holding the real key through the window (X11's auto-repeat pairs and all) pulls for exactly the ticks held. */
+    @Test
+    void theKeyboardsHoldIsOnePullOfTheTicksItLasted(@TempDir Path dir) throws Exception {
+        app = Gizmoball.launch(Files.writeString(dir.resolve("lane.txt"), LANE), new Settings(node));
+        await("the window", () -> app.window().isShowing());
+        Robot robot = new Robot();
+        Point centre = onEdt(() -> {
+            Point p = app.window().boardPanel().getLocationOnScreen();
+            return new Point(p.x + app.window().boardPanel().getWidth() / 2,
+                    p.y + app.window().boardPanel().getHeight() / 2);
+        });
+        robot.mouseMove(centre.x, centre.y);
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        await("the board to have the keyboard focus", () -> app.window().boardPanel().isFocusOwner());
+
+        robot.keyPress(KeyEvent.VK_SPACE);
+        await("the pull to start", () -> onEdt(() -> !app.session().board().game().keys().isEmpty()));
+        for (int i = 0; i < 30; i++) {
+            onEdt(() -> {
+                app.loop().step();
+                // What X11 sends while a key is held: a release and a press together.
+                Component focused = KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner();
+                long when = System.currentTimeMillis();
+                focused.dispatchEvent(new KeyEvent(focused, KeyEvent.KEY_RELEASED, when, 0, KeyEvent.VK_SPACE,
+                        KeyEvent.CHAR_UNDEFINED));
+                focused.dispatchEvent(new KeyEvent(focused, KeyEvent.KEY_PRESSED, when, 0, KeyEvent.VK_SPACE,
+                        KeyEvent.CHAR_UNDEFINED));
+            });
+        }
+        assertThat(pull()).isGreaterThan(0);
+        robot.keyRelease(KeyEvent.VK_SPACE);
+        await("the launch", () -> onEdt(() -> !app.session().board().ball("B").orElseThrow().isCaptured()));
+
+        List<KeyPress> keys = onEdt(() -> app.session().board().game().keys());
+        assertThat(keys).extracting(KeyPress::motion).containsExactly(KeyPress.Motion.DOWN, KeyPress.Motion.UP);
+        double held = 0;
+        for (long t = keys.get(0).tick(); t < keys.get(1).tick(); t++) {
+            held += 1.0 / 60;
+        }
+        double expected = 10 + 50 * Math.min(held, 1.0);
+        assertThat(onEdt(() -> app.session().board().ball("B").orElseThrow().velocity()))
+                .isEqualTo(new Vect(0, -expected));
     }
 
     private double pull() {

@@ -38,16 +38,21 @@ final class StillSurfaces {
             step.energy.lost(ball);
             step.ballLeft(ball);
         } else if (gizmo instanceof Sink sink) {
-            step.actions.recordEvent(new PlayEvent.Sunk(sink.name(), ball.name(), ball.position()));
-            step.actions.sink(ball, sink);
-            step.energy.lost(ball);
-            step.ballLeft(ball);
+            takeIntoSink(ball, sink);
         } else if (passage != null) {
             enter(ball, (Portal) gizmo, passage);
         } else if (bounceOff(ball, surface, surface.normal(ball.position()))) {
             bounceAmongContacts(ball, surface.ref());
         }
         return surface.struck();
+    }
+
+    /** The sink takes the ball out of play (met in a collision, or touched when the tick begins: TickRun). */
+    void takeIntoSink(Ball ball, Sink sink) {
+        step.actions.recordEvent(new PlayEvent.Sunk(sink.name(), ball.name(), ball.position()));
+        step.actions.sink(ball, sink);
+        step.energy.lost(ball);
+        step.ballLeft(ball);
     }
 
     /**
