@@ -212,10 +212,6 @@ final class CommandParser {
                     + " (" + word.usage() + "), found " + args.size());
         }
         return switch (word) {
-            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER, GATE,
-                    DROP_TARGET, PORTAL, SPINNER ->
-                    new Command.AddGizmo(word.kind(),
-                    args.get(0), cell("x", args.get(1)), cell("y", args.get(2)));
             case ABSORBER -> absorber(args, notes);
             case BALL -> new Command.AddBall(args.get(0), ballCoordinate("x", args.get(1)),
                     ballCoordinate("y", args.get(2)), number("vx", args.get(3)), number("vy", args.get(4)));
@@ -246,6 +242,9 @@ final class CommandParser {
             case TILT -> new Command.TiltLine(tilt(args));
             case BALL_SAVE -> new Command.BallSave(number("ball save seconds", args.get(0)));
             case COLOUR -> throw new IllegalStateException("colours are read by colour(), in any spelling");
+            // Every other word adds a gizmo of its kind on one cell (CommandWord.of says which: a word that adds none
+            // throws there).
+            default -> new Command.AddGizmo(word.kind(), args.get(0), cell("x", args.get(1)), cell("y", args.get(2)));
         };
     }
 

@@ -1,15 +1,9 @@
 package gizmoball.editor;
 
-import gizmoball.boardfile.Decimals;
-import gizmoball.boardfile.KeyCodes;
-import gizmoball.boardfile.OrderWords;
 import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
-import gizmoball.model.KeyBinding;
-import gizmoball.model.KeyEdge;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
-import gizmoball.model.gizmo.Order;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.TriggerSource;
 import java.awt.event.KeyEvent;
@@ -32,7 +26,7 @@ import physics.Vect;
  * Longer than 400 lines because it is the one facade of build mode: the state the views read, the commands of
  * the menus, and the services the handlers share (editing inside the history, previews, picking). What each tool
  * does is in its handler, what the properties panel changes in {@link PropertyEdits}, copy and paste in
- * {@link ClipboardEdits}.
+ * {@link ClipboardEdits}, the answers that complete Connect and Key Connect in {@link LinkSteps}.
  */
 public final class Editor {
     /** Ball centres snap to quarter cells: positions stay readable in saved files and easy to hit again. */
@@ -53,6 +47,7 @@ public final class Editor {
     private final NameGenerator names;
     private final PropertyEdits properties = new PropertyEdits(this);
     private final ClipboardEdits clipboard = new ClipboardEdits(this);
+    private final LinkSteps links = new LinkSteps(this);
     private final Map<Tool, ToolHandler> handlers = new EnumMap<>(Tool.class);
     private final List<Runnable> stateListeners = new ArrayList<>();
     private final List<Runnable> editListeners = new ArrayList<>();
@@ -90,6 +85,11 @@ public final class Editor {
     /** What the properties panel changes: constants, game, a gizmo's or a ball's values, names, links. */
     public PropertyEdits properties() {
         return properties;
+    }
+
+    /** The answers that complete Connect and Key Connect (what the target does, which edges of the key). */
+    public LinkSteps links() {
+        return links;
     }
 
     /** Copy, cut, paste and duplicate. */
@@ -229,12 +229,12 @@ public final class Editor {
         return step instanceof PendingStep.AwaitingKey k ? Optional.of(k.gizmo()) : Optional.empty();
     }
 
-    /** True after Key Connect has its gizmo and key and waits for {@link #chooseEdges}. */
+    /** True after Key Connect has its gizmo and key and waits for {@link LinkSteps#chooseEdges}. */
     public boolean awaitingEdge() {
         return step instanceof PendingStep.AwaitingEdge;
     }
 
-    /** True after Connect has its source and target and waits for {@link #chooseConnection}. */
+    /** True after Connect has its source and target and waits for {@link LinkSteps#chooseConnection}. */
     public boolean awaitingAction() {
         return step instanceof PendingStep.AwaitingAction;
     }
@@ -342,72 +342,6 @@ public final class Editor {
             return refuse("Circles and absorbers look the same turned: none of the selection can be rotated");
         }
         return edit("Rotated " + listed(turning), b -> turning.forEach(b::rotate));
-    }
-
-    /**
-     * Completes Key Connect: binds the pending key's chosen edges to the gizmo with the pending order, its action
-     * (empty: as each edge drives it unless told) and delay (one undo step; the board refuses an action the gizmo
-     * lacks).
-     */
-    public boolean chooseEdges(EdgeChoice choice) {
-        if (!(step instanceof PendingStep.AwaitingEdge pending)) {
-            say("Key Connect: click a gizmo and press a key first");
-            return false;
-        }
-        List<KeyBinding> bindings = choice.edges().stream()
-                .map(edge -> new KeyBinding(pending.keyCode(), edge, pending.gizmo(), pending.order())).toList();
-        step = PendingStep.NONE;
-        String what = bindings.size() == 1 ? KeyCodes.describe(bindings.get(0))
-                : "key " + KeyCodes.name(pending.keyCode()) + " down and up \u2192 " + pending.gizmo();
-        boolean done = edit("Bound " + what,
-                b -> bindings.forEach(k -> b.bindKey(k.keyCode(), k.edge(), k.gizmo(), k.order())));
-        stateChanged();
-        return done;
-    }
-
-    /** {@link #chooseEdges} with one edge. */
-    public boolean chooseEdge(KeyEdge edge) {
-        return chooseEdges(edge == KeyEdge.DOWN ? EdgeChoice.DOWN : EdgeChoice.UP);
-    }
-
-    /**
-     * What Key Connect's binding or Connect's connection will make its gizmo do, and after how long, once it is
-     * made.
-     */
-    public void orderPending(Order order) {
-        if (step instanceof PendingStep.AwaitingEdge pending) {
-            step = new PendingStep.AwaitingEdge(pending.gizmo(), pending.keyCode(), order);
-        } else if (step instanceof PendingStep.AwaitingAction pending) {
-            step = new PendingStep.AwaitingAction(pending.source(), pending.target(), order);
-        }
-    }
-
-    /** Completes Connect: connects the pending source to the target with the pending order (one undo step). */
-    public boolean chooseConnection() {
-        if (!(step instanceof PendingStep.AwaitingAction pending)) {
-            say("Connect: click the source, then the gizmo it triggers, first");
-            return false;
-        }
-        step = PendingStep.NONE;
-        boolean done = edit("Connected " + pending.source() + " \u2192 " + pending.target()
-                + OrderWords.of(pending.order()), b -> b.connect(pending.source(), pending.target(), pending.order()));
-        stateChanged();
-        return done;
-    }
-
-    /**
-     * The kind of the gizmo the pending step will drive (Key Connect awaiting its edge, Connect its action), whose
-     * actions the popup
-     * offers; empty when no such answer is awaited.
-     */
-    public Optional<GizmoKind> awaitedTargetKind() {
-        if (step instanceof PendingStep.AwaitingEdge pending) {
-            return board().gizmo(pending.gizmo()).map(Gizmo::kind);
-        }
-        if (step instanceof PendingStep.AwaitingAction pending) {
-            return board().gizmo(pending.target()).map(Gizmo::kind);
-        }
-        return Optional.empty();
     }
 
     // ---- pointer, in board coordinates ----
@@ -713,9 +647,6 @@ public final class Editor {
 
     private ToolHandler newHandler(Tool t) {
         return switch (t) {
-            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER, GATE,
-                    DROP_TARGET, PORTAL, SPINNER ->
-                    new PlaceGizmoTool(this, t.kind().orElseThrow());
             case ABSORBER -> new PlaceAbsorberTool(this);
             case BALL -> new PlaceBallTool(this);
             case SELECT -> new SelectTool(this);
@@ -725,6 +656,8 @@ public final class Editor {
             case DISCONNECT -> new ConnectTool(this, false);
             case KEY_CONNECT -> new KeyConnectTool(this, true);
             case KEY_DISCONNECT -> new KeyConnectTool(this, false);
+            // Every other tool places a gizmo of its kind on one cell.
+            default -> new PlaceGizmoTool(this, t.kind().orElseThrow());
         };
     }
 

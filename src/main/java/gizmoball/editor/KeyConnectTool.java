@@ -40,7 +40,7 @@ final class KeyConnectTool implements ToolHandler {
         if (step instanceof PendingStep.AwaitingEdge) {
             // Waiting for the edge: the arrows answer; other keys must not start something else meanwhile.
             if (keyCode == KeyEvent.VK_DOWN || keyCode == KeyEvent.VK_UP) {
-                editor.chooseEdges(keyCode == KeyEvent.VK_DOWN ? EdgeChoice.DOWN : EdgeChoice.UP);
+                editor.links().chooseEdges(keyCode == KeyEvent.VK_DOWN ? EdgeChoice.DOWN : EdgeChoice.UP);
             }
             return true;
         }

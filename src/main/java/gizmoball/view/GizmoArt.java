@@ -44,43 +44,9 @@ enum GizmoArt {
         }
     },
     /** A flipper: its bar with round ends, at the angle play has turned it to, and a hub at the pivot. */
-    FLIPPER_BAR {
-        @Override
-        boolean changesInPlay() {
-            return true;
-        }
-
-        @Override
-        Shape outline(Gizmo gizmo, Interpolation between) {
-            FlipperView f = (FlipperView) gizmo;
-            return roundCapped(2 * f.radius()).createStrokedShape(bar(f, between));
-        }
-
-        @Override
-        void paint(Graphics2D g, Gizmo gizmo, Interpolation between, Color fill, float pixel) {
-            FlipperView f = (FlipperView) gizmo;
-            paintBar(g, bar(f, between), f.radius(), f.pivot(), fill, pixel);
-        }
-    },
+    FLIPPER_BAR(GizmoArt::flipperBar),
     /** A spinner: its bar with round ends across the pivot, at the angle play has turned it to, and a hub. */
-    SPINNER_BAR {
-        @Override
-        boolean changesInPlay() {
-            return true;
-        }
-
-        @Override
-        Shape outline(Gizmo gizmo, Interpolation between) {
-            SpinnerView s = (SpinnerView) gizmo;
-            return roundCapped(2 * s.radius()).createStrokedShape(bar(s, between));
-        }
-
-        @Override
-        void paint(Graphics2D g, Gizmo gizmo, Interpolation between, Color fill, float pixel) {
-            SpinnerView s = (SpinnerView) gizmo;
-            paintBar(g, bar(s, between), s.radius(), s.pivot(), fill, pixel);
-        }
-    },
+    SPINNER_BAR(GizmoArt::spinnerBar),
     /** A sink: its cell, with the hole the balls go into. */
     SINK_HOLE {
         @Override
@@ -223,6 +189,17 @@ enum GizmoArt {
         }
     };
 
+    /** The bar of a drawing that is one (then play changes it), null for every other. */
+    private final BarOf barOf;
+
+    GizmoArt() {
+        this(null);
+    }
+
+    GizmoArt(BarOf barOf) {
+        this.barOf = barOf;
+    }
+
     /** How far (L) a sink's hole stays inside its cell. */
     private static final double HOLE_MARGIN = 0.15;
     /** L: how deep a portal's mouth band reaches into its cell. */
@@ -255,40 +232,61 @@ enum GizmoArt {
      * with the fixed part, which only an edit changes (and again over it while it flashes).
      */
     boolean changesInPlay() {
-        return false;
+        return barOf != null;
     }
 
-    /** Its outline in board units as it is drawn now ({@code between} two ticks), where its flash glows. */
-    abstract Shape outline(Gizmo gizmo, Interpolation between);
+    /**
+     * Its outline in board units as it is drawn now ({@code between} two ticks), where its flash glows: a bar's
+     * stroked round-capped, else each drawing's own.
+     */
+    Shape outline(Gizmo gizmo, Interpolation between) {
+        Bar bar = barOf.at(gizmo, between);
+        return roundCapped(2 * bar.radius()).createStrokedShape(bar.line());
+    }
 
-    /** Paints it in {@code fill}: by default its outline filled, with a one-pixel darker edge. */
+    /** Paints it in {@code fill}: a bar as a bar, by default its outline filled, with a one-pixel darker edge. */
     void paint(Graphics2D g, Gizmo gizmo, Interpolation between, Color fill, float pixel) {
-        BoardPainter.paintShape(g, outline(gizmo, between), fill, pixel);
+        if (barOf != null) {
+            barOf.at(gizmo, between).paint(g, fill, pixel);
+        } else {
+            BoardPainter.paintShape(g, outline(gizmo, between), fill, pixel);
+        }
     }
 
-    private static Line2D bar(FlipperView f, Interpolation between) {
-        return new Line2D.Double(f.pivot().toPoint2D(), between.tip(f).toPoint2D());
+    /** A bar that turns (a flipper's, a spinner's) as drawn between two ticks. */
+    private interface BarOf {
+        Bar at(Gizmo gizmo, Interpolation between);
+    }
+
+    /** A bar from end centre to end centre, with round ends of {@code radius} and a hub at its pivot. */
+    private record Bar(Line2D line, double radius, Vect pivot) {
+        /** With a one-pixel darker edge and a darker hub. */
+        void paint(Graphics2D g, Color fill, float pixel) {
+            g.setColor(fill.darker());
+            g.setStroke(roundCapped(2 * radius));
+            g.draw(line);
+            g.setColor(fill);
+            g.setStroke(roundCapped(2 * radius - 2 * pixel));
+            g.draw(line);
+            double hub = radius / 3;
+            g.setColor(fill.darker().darker());
+            g.fill(new Ellipse2D.Double(pivot.x() - hub, pivot.y() - hub, 2 * hub, 2 * hub));
+        }
+    }
+
+    private static Bar flipperBar(Gizmo gizmo, Interpolation between) {
+        FlipperView f = (FlipperView) gizmo;
+        return new Bar(new Line2D.Double(f.pivot().toPoint2D(), between.tip(f).toPoint2D()), f.radius(), f.pivot());
     }
 
     /** From one end's centre to the other's, at the angle drawn between two ticks. */
-    private static Line2D bar(SpinnerView s, Interpolation between) {
+    private static Bar spinnerBar(Gizmo gizmo, Interpolation between) {
+        SpinnerView s = (SpinnerView) gizmo;
         double angle = between.angle(s);
         double arm = s.ends().get(1).minus(s.pivot()).length();
         Vect along = new Vect(arm * Math.cos(angle), arm * Math.sin(angle));
-        return new Line2D.Double(s.pivot().minus(along).toPoint2D(), s.pivot().plus(along).toPoint2D());
-    }
-
-    /** A bar of round ends {@code radius}, with a one-pixel darker edge and a hub at its pivot. */
-    private static void paintBar(Graphics2D g, Line2D bar, double radius, Vect pivot, Color fill, float pixel) {
-        g.setColor(fill.darker());
-        g.setStroke(roundCapped(2 * radius));
-        g.draw(bar);
-        g.setColor(fill);
-        g.setStroke(roundCapped(2 * radius - 2 * pixel));
-        g.draw(bar);
-        double hub = radius / 3;
-        g.setColor(fill.darker().darker());
-        g.fill(new Ellipse2D.Double(pivot.x() - hub, pivot.y() - hub, 2 * hub, 2 * hub));
+        return new Bar(new Line2D.Double(s.pivot().minus(along).toPoint2D(), s.pivot().plus(along).toPoint2D()),
+                s.radius(), s.pivot());
     }
 
     private static BasicStroke roundCapped(double width) {

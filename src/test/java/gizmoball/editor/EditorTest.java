@@ -233,8 +233,8 @@ class EditorTest {
         assertThat(editor.connectSource()).contains(TriggerSource.gizmo("C1"));
         clickCell(9, 9);
         assertThat(board.connections()).as("not before the popup's answer").isEmpty();
-        assertThat(editor.awaitedTargetKind()).contains(GizmoKind.LEFT_FLIPPER);
-        editor.chooseConnection();
+        assertThat(editor.links().awaitedTargetKind()).contains(GizmoKind.LEFT_FLIPPER);
+        editor.links().chooseConnection();
 
         assertThat(board.connections()).containsExactly(new Connection(TriggerSource.gizmo("C1"), "LF1"));
         assertThat(editor.connectSource()).isEmpty();
@@ -248,7 +248,7 @@ class EditorTest {
         editor.setTool(Tool.CONNECT);
         editor.press(x, y);
         clickCell(10, 18);
-        editor.chooseConnection();
+        editor.links().chooseConnection();
 
         assertThat(board.connections()).containsExactly(new Connection(TriggerSource.OUTER_WALLS, "A1"));
     }
@@ -260,7 +260,7 @@ class EditorTest {
         editor.setTool(Tool.CONNECT);
         editor.press(0.1, 5.5);
         clickCell(3, 5);
-        editor.chooseConnection();
+        editor.links().chooseConnection();
         assertThat(board.connections()).containsExactly(new Connection(TriggerSource.gizmo("S1"), "S2"));
     }
 
@@ -283,10 +283,10 @@ class EditorTest {
         editor.setTool(Tool.CONNECT);
         clickCell(3, 3);
         clickCell(5, 3);
-        editor.chooseConnection();
+        editor.links().chooseConnection();
         clickCell(3, 3);
         clickCell(5, 3);
-        editor.chooseConnection();
+        editor.links().chooseConnection();
 
         assertThat(board.connections()).containsExactly(new Connection(TriggerSource.gizmo("S1"), "S2"));
         assertThat(messages).anyMatch(m -> m.startsWith("Connected"));
@@ -314,7 +314,7 @@ class EditorTest {
         clickCell(4, 16);
         assertThat(editor.keyPressed(KeyEvent.VK_SPACE, false)).isTrue();
         assertThat(editor.awaitingEdge()).isTrue();
-        editor.chooseEdge(KeyEdge.DOWN);
+        editor.links().chooseEdge(KeyEdge.DOWN);
 
         assertThat(board.keyBindings()).containsExactly(new KeyBinding(KeyEvent.VK_SPACE, KeyEdge.DOWN, "LF1"));
         assertThat(editor.awaitingEdge()).isFalse();
@@ -333,7 +333,7 @@ class EditorTest {
         editor.setTool(Tool.KEY_CONNECT);
         clickCell(4, 4);
         editor.keyPressed(KeyEvent.VK_S, false);
-        editor.chooseEdge(KeyEdge.UP);
+        editor.links().chooseEdge(KeyEdge.UP);
 
         assertThat(editor.tool()).isEqualTo(Tool.KEY_CONNECT);
         assertThat(board.keyBindings()).containsExactly(new KeyBinding(KeyEvent.VK_S, KeyEdge.UP, "C1"));
@@ -347,7 +347,7 @@ class EditorTest {
         editor.keyPressed(KeyEvent.VK_Z, false);
         editor.keyPressed(KeyEvent.VK_ESCAPE, false);
 
-        assertThat(editor.chooseEdge(KeyEdge.DOWN)).isFalse();
+        assertThat(editor.links().chooseEdge(KeyEdge.DOWN)).isFalse();
         assertThat(board.keyBindings()).isEmpty();
     }
 
@@ -701,8 +701,8 @@ class EditorTest {
         editor.setTool(Tool.CONNECT);
         clickCell(3, 3);
         clickCell(8, 8);
-        editor.orderPending(Order.of(Action.RAISE).after(0.25));
-        editor.chooseConnection();
+        editor.links().orderPending(Order.of(Action.RAISE).after(0.25));
+        editor.links().chooseConnection();
 
         assertThat(board.connections()).containsExactly(new Connection(TriggerSource.gizmo("S1"), "LF1",
                 Order.of(Action.RAISE).after(0.25)));
@@ -716,7 +716,7 @@ class EditorTest {
         editor.setTool(Tool.CONNECT);
         clickCell(3, 3);
         clickCell(5, 3);
-        editor.chooseConnection();
+        editor.links().chooseConnection();
         assertThat(messages).contains("Connected S1 \u2192 S2");
 
         editor.properties().disconnect(TriggerSource.gizmo("S1"), "S2");

@@ -211,7 +211,7 @@ class TransferTest {
         assertThat(editor.tool()).isEqualTo(Tool.CONNECT);
         editor.press(3.5, 4.5);
         editor.release(3.5, 4.5);
-        editor.chooseConnection();
+        editor.links().chooseConnection();
         assertThat(board.connections()).contains(new Connection(TriggerSource.gizmo("T1"), "C1"));
     }
 }

@@ -66,9 +66,7 @@ class TwoPlayerGuiTest {
 
     @AfterEach
     void close() throws Exception {
-        for (Window w : Window.getWindows()) {
-            onEdt(w::dispose);
-        }
+        Gui.closeAllWindows();   // and waits for their closing, which writes to the node
         node.removeNode();
     }
 

@@ -77,6 +77,15 @@ public abstract sealed class GizmoBase permits Bumper, Flipper, PolygonGizmo, Ac
     }
 
     /** Its own colour, or empty for the kind's. For the board and its loop, not for views. */
+    /**
+     * Whether a ball that touches it is taken (captured, sunk) rather than bounced or held: what touches it is never
+     * a contact. The loop asks this, not which kinds take balls. Final and answered here, where the kinds are known,
+     * so that the hot loops that ask it pay two class checks, not a call through every kind.
+     */
+    public final boolean takesBalls() {
+        return this instanceof Absorber || this instanceof Sink;
+    }
+
     /** Most kinds hold nothing beyond their place, turn and colour; a kind that does says what. */
     public Setting setting() {
         return new Setting.None();

@@ -1,10 +1,8 @@
 package gizmoball.model.loop;
 
-import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.MovingShape;
-import gizmoball.model.gizmo.Sink;
 
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
@@ -42,7 +40,7 @@ final class ClusterSolve {
         // What touches an absorber or a sink, on a face or at a corner, is taken, never a contact of a cluster; what
         // meets the open mouth of a portal with room beyond passes through it.
         if (step.view.loopMode() != LoopMode.CONTINUOUS || contact instanceof Contact.StillSurface surface
-                && (surface.gizmo() instanceof Absorber || surface.gizmo() instanceof Sink)
+                && surface.gizmo() != null && surface.gizmo().takesBalls()
                 || Passages.of(step.view, collision.ball(), contact) != null) {
             return null;
         }

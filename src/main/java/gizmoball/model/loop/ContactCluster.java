@@ -1,10 +1,8 @@
 package gizmoball.model.loop;
 
-import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Shape;
-import gizmoball.model.gizmo.Sink;
 
 import java.util.ArrayList;
 import java.util.IdentityHashMap;
@@ -201,7 +199,7 @@ final class ContactCluster {
         }
         double reach = Arena.BALL_RADIUS + touching;
         for (GizmoBase gizmo : view.index().within(p.x() - reach, p.y() - reach, p.x() + reach, p.y() + reach)) {
-            if (gizmo instanceof Absorber || gizmo instanceof Sink) {
+            if (gizmo.takesBalls()) {
                 continue;   // what touches an absorber or a sink is taken by it, not held
             }
             Shape shape = gizmo.shape();

@@ -1,10 +1,8 @@
 package gizmoball.model.loop;
 
-import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Shape;
-import gizmoball.model.gizmo.Sink;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -411,8 +409,7 @@ final class Contacts {
         Vect p = ball.position();
         double reach = Arena.BALL_RADIUS + Tolerances.CONTACT;
         for (GizmoBase gizmo : view.index().within(p.x() - reach, p.y() - reach, p.x() + reach, p.y() + reach)) {
-            if (gizmo instanceof Absorber || gizmo instanceof Sink
-                    || gizmo instanceof MovingShape moving && moving.isMoving()) {
+            if (gizmo.takesBalls() || gizmo instanceof MovingShape moving && moving.isMoving()) {
                 continue;   // an absorber or a sink takes what touches it; a moving shape is no support
             }
             Shape shape = gizmo.shape();

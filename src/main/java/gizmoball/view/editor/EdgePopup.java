@@ -115,7 +115,7 @@ public final class EdgePopup {
         actionGroup = new ButtonGroup();
         chosen = Optional.empty();
         delay.setText("0");
-        Optional<GizmoKind> kind = controller.awaitedTargetKind();
+        Optional<GizmoKind> kind = controller.links().awaitedTargetKind();
         popup.add(sectionTitle("Action"));
         boolean key = controller.awaitingEdge();
         popup.add(action(kind.map(k -> key ? unlessTold(k) : "its own: " + k.defaultAction().word())
@@ -126,11 +126,11 @@ public final class EdgePopup {
         popup.add(delayRow);
         popup.addSeparator();
         if (key) {
-            popup.add(item("On key down and up (hold)", "edge.both", () -> controller.chooseEdges(EdgeChoice.DOWN_AND_UP)));
-            popup.add(item("On key down (press)  \u2193", "edge.down", () -> controller.chooseEdges(EdgeChoice.DOWN)));
-            popup.add(item("On key up (release)  \u2191", "edge.up", () -> controller.chooseEdges(EdgeChoice.UP)));
+            popup.add(item("On key down and up (hold)", "edge.both", () -> controller.links().chooseEdges(EdgeChoice.DOWN_AND_UP)));
+            popup.add(item("On key down (press)  \u2193", "edge.down", () -> controller.links().chooseEdges(EdgeChoice.DOWN)));
+            popup.add(item("On key up (release)  \u2191", "edge.up", () -> controller.links().chooseEdges(EdgeChoice.UP)));
         } else {
-            popup.add(item("Connect", "order.connect", controller::chooseConnection));
+            popup.add(item("Connect", "order.connect", controller.links()::chooseConnection));
         }
         Point2D at = controller.selectedGizmo()
                 .map(g -> panel.transform().toScreen(g.x() + g.width(), g.y()))
@@ -147,7 +147,7 @@ public final class EdgePopup {
             RefusedValue.mark(delay, "\"" + delay.getText().strip() + "\" is not a number of seconds");
         } else {
             RefusedValue.unmark(delay);
-            controller.orderPending(new Order(chosen, seconds.getAsDouble()));
+            controller.links().orderPending(new Order(chosen, seconds.getAsDouble()));
         }
     }
 

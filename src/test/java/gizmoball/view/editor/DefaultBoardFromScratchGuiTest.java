@@ -94,7 +94,7 @@ class DefaultBoardFromScratchGuiTest {
                 w.clickTool(Tool.CONNECT);
                 clickOn(target, c.source().name());
                 clickOn(target, c.target());
-                w.build.controller().chooseConnection();   // the popup's Connect, its own action at once
+                w.build.controller().links().chooseConnection();   // the popup's Connect, its own action at once
             }
         });
         for (KeyBinding k : target.keyBindings()) {
