@@ -9,6 +9,7 @@ import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.game.Drain;
 import gizmoball.model.game.KeyPress;
+import gizmoball.model.game.Notice;
 import gizmoball.model.loop.BallView;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -67,11 +68,13 @@ class ShippedGamesTest {
         }
 
         assertThat(board.game().isOver()).as("over within two minutes of play").isTrue();
-        // One drain for each ball of the game, the extra ball if it was won, and each ball a multiball added.
+        // One drain for each ball of the game, the extra ball if it was won, each ball a multiball added, and each
+        // ball the ball save gave back.
         Set<String> first = BoardFiles.load(file).balls().stream().map(BallView::name).collect(Collectors.toSet());
         long added = board.game().drains().stream().map(Drain::ball).filter(b -> !first.contains(b)).distinct().count();
         int extra = board.game().extraBallTick().isPresent() ? 1 : 0;
-        assertThat(board.game().drains()).hasSize(balls + extra + (int) added);
+        long saved = board.game().notices().stream().filter(n -> n.kind() == Notice.Kind.BALL_SAVED).count();
+        assertThat(board.game().drains()).hasSize(balls + extra + (int) added + (int) saved);
         assertThat(board.game().score()).isPositive();
     }
 }

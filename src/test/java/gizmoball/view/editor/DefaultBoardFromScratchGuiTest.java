@@ -109,6 +109,7 @@ class DefaultBoardFromScratchGuiTest {
         type("mu2", target.mu2());
         type("game.balls", target.gameRules().ballsPerGame());
         type("game.extra", target.gameRules().extraBallAt().orElseThrow());
+        type("game.nudge", target.gameRules().nudge().orElseThrow().speed());   // on the default keys, the arrows
 
         Board built = w.board;
         assertThat(renamed(BoardContents.of(built), inverse(editorName))).isEqualTo(BoardContents.of(target));
