@@ -34,7 +34,7 @@ final class ResultsPage {
 
     /** Issue 20's targets against this run ({@link Targets}: what each asks, what was measured, met or not). */
     void targets(List<Targets.Verdict> verdicts) {
-        targets.append("\n## Targets of issue 20 (benchmark figures on 2 cores)\n\n");
+        targets.append("\n## Targets of issues 20 and 39 (benchmark figures on 2 cores)\n\n");
         if (quick) {
             targets.append("A quick run: its windows, pile and fuzz are shorter than those the targets are stated for, so "
                     + "these verdicts only preview a full run's.\n\n");
@@ -62,15 +62,27 @@ final class ResultsPage {
     void steadyState(List<SteadyState.Row> rows, SteadyState.Windows w) {
         section(String.format(Locale.ROOT, "Steady state: ticks %,d-%,d at 1/60 s, each tick timed alone", w.from(),
                 w.to()));
-        page.append("| board | gizmos, balls | wall mean / p99 / max (us) | CPU mean / p99 / max (us) | collisions per tick: "
-                + "mean, max | zero-time per tick: mean, max | asleep / awake at the end | guards (wedged, pinched, cap) "
-                + "| GCs (ms) |\n|---|---|---|---|---|---|---|---|---|\n");
+        page.append("| board | ticks | gizmos, balls | wall mean / p99 / max (us) | CPU mean / p99 / max (us) | bytes per tick "
+                + "| collisions per tick: mean, max | zero-time per tick: mean, max | asleep / awake at the end "
+                + "| guards (wedged, pinched, cap) | GCs (ms) |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
         for (SteadyState.Row r : rows) {
-            page.append(String.format(Locale.ROOT, "| `%s` | %d, %d | %s / %s / %s | %s / %s / %s | %.2f, %d | %.2f, %d "
-                            + "| %d / %d | %d, %d, %d | %d (%d) |%n", SteadyState.shortName(r.board()), r.gizmos(), r.balls(),
+            page.append(String.format(Locale.ROOT, "| `%s` | %,d-%,d | %d, %d | %s / %s / %s | %s / %s / %s | %,.0f "
+                            + "| %.2f, %d | %.2f, %d | %d / %d | %d, %d, %d | %d (%d) |%n", SteadyState.shortName(r.board()),
+                    r.from(), r.to(), r.gizmos(), r.balls(),
                     us(r.meanUs()), us(r.p99Us()), us(r.maxUs()), us(r.cpuMeanUs()), us(r.cpuP99Us()), us(r.cpuMaxUs()),
+                    r.bytesPerTick(),
                     r.meanCollisions(), r.maxCollisions(), r.meanZeroTime(), r.maxZeroTime(), r.asleep(), r.awake(),
                     r.guards().wedged(), r.guards().pinched(), r.guards().collisionCap(), r.gcPauses(), r.gcMillis()));
+        }
+    }
+
+    void reproductions(List<Reproductions.Row> rows) {
+        section("Reproductions: each file of `../shared/repro` with its key script, played again, each tick by CPU");
+        page.append("| file | ticks | balls at the end | CPU mean (us) | CPU max (us) | ticks over " + Targets.ms(
+                Targets.FUZZ_TICK_NANOS) + " ms |\n|---|---|---|---|---|---|\n");
+        for (Reproductions.Row r : rows) {
+            page.append(String.format(Locale.ROOT, "| `%s` | %,d | %d | %s | %s | %,d |%n", r.file(), r.ticks(), r.balls(),
+                    us(r.meanUs()), us(r.maxUs()), r.ticksOver()));
         }
     }
 

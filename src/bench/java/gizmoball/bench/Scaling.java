@@ -19,11 +19,11 @@ import java.util.Optional;
 final class Scaling {
 
     static final int[] GIZMOS = {0, 50, 100, 200, 300, 380};
-    static final int[] BALLS = {1, 5, 10, 20, 50, 100};
+    static final int[] BALLS = {1, 5, 10, 20, 50, 100, 150, 200};
     static final int BALLS_WHILE_GIZMOS_GROW = 20;
     static final int GIZMOS_WHILE_BALLS_GROW = 100;
     static final int STRESS_GIZMOS = 300;
-    private static final long SEED = 300;
+    static final long SEED = 300;
 
     private Scaling() {
     }

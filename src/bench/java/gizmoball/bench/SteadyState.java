@@ -16,7 +16,6 @@ import java.io.IOException;
 import java.io.PrintStream;
 import java.lang.management.GarbageCollectorMXBean;
 import java.lang.management.ManagementFactory;
-import java.lang.management.ThreadMXBean;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -65,11 +64,12 @@ final class SteadyState {
 
     /**
      * One board's window. Times in microseconds, by wall clock and by the thread's CPU clock (a second run of the
-     * same board; play is deterministic, so it is the same ticks); guards are those fired within the window; the
-     * slowest tick is the slowest by CPU time.
+     * same board; play is deterministic, so it is the same ticks); bytes the ticking thread allocated per tick over
+     * the window, in that second run; guards are those fired within the window; the slowest tick is the slowest by CPU
+     * time.
      */
     record Row(String board, int gizmos, int balls, int from, int to, double meanUs, double p99Us, double maxUs,
-               double cpuMeanUs, double cpuP99Us, double cpuMaxUs,
+               double cpuMeanUs, double cpuP99Us, double cpuMaxUs, double bytesPerTick,
                double meanCollisions, int maxCollisions, double meanZeroTime, int maxZeroTime, int awake, int asleep,
                GuardCounts guards, long gcPauses, long gcMillis, int slowestTick, int slowestCollisions,
                Map<Stage, Long> stageNanos) {
@@ -126,7 +126,9 @@ final class SteadyState {
         }
     }
 
-    private static final ThreadMXBean THREADS = ManagementFactory.getThreadMXBean();
+    /** The JDK's own ThreadMXBean, which also counts the bytes a thread allocates. */
+    private static final com.sun.management.ThreadMXBean THREADS =
+            (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
 
     private SteadyState() {
     }
@@ -145,10 +147,11 @@ final class SteadyState {
         }
         // Wall times on a shared machine mean little without its load: said at both ends of the part.
         printLoad(out, "start");
-        List<NamedBoard> boards = boards(shipped, peers);
+        List<NamedBoard> boards = new ArrayList<>(boards(shipped, peers));
+        boards.addAll(builtBoards(w));
         List<Row> rows = new ArrayList<>();
         for (NamedBoard board : boards) {
-            Run run = measure(board, w);
+            Run run = measure(board, board.windowsOr(w));
             rows.add(run.row());
             if (board.name().equals(CHARTED)) {
                 writeBins(dir.resolve("steady-state-ticks.csv"), run.tickNanos());
@@ -200,7 +203,53 @@ final class SteadyState {
         return boards;
     }
 
-    record NamedBoard(String name, Board board) {
+    /** The boards the benchmark builds: {@link #ONE_BALL} and {@link #MANY_IN_PLAY} (in its own, earlier window). */
+    static List<NamedBoard> builtBoards(Windows w) {
+        return List.of(new NamedBoard(ONE_BALL, oneBallAmongFiveBumpers()),
+                new NamedBoard(MANY_IN_PLAY, RandomBoards.generate(Scaling.SEED, Scaling.GIZMOS_WHILE_BALLS_GROW, 200),
+                        Optional.of(w.equals(Windows.FULL) ? IN_PLAY : IN_PLAY_QUICK)));
+    }
+
+    /**
+     * A board of the table and the ticks it is measured over: the table's windows, or its own where what it shows
+     * is not the settled state ({@link #IN_PLAY}).
+     */
+    record NamedBoard(String name, Board board, Optional<Windows> windows) {
+        NamedBoard(String name, Board board) {
+            this(name, board, Optional.empty());
+        }
+
+        Windows windowsOr(Windows standard) {
+            return windows.orElse(standard);
+        }
+    }
+
+    /** The board of one ball in flight among five bumpers, no gravity or friction: what a tick costs at least. */
+    static final String ONE_BALL = "one ball among five bumpers";
+    /** The board of 200 balls among 100 bumpers under gravity, timed while they fall, bounce and pile. */
+    static final String MANY_IN_PLAY = "200 balls in play";
+    /**
+     * Ticks of {@link #MANY_IN_PLAY}: from 1 s after load, while most of its balls are still in flight and meeting
+     * each other, for 20 s; from 50 s on (the table's window) nearly all of them sleep in piles.
+     */
+    static final Windows IN_PLAY = new Windows(60, 1_260, 0, 0, 0);
+    static final Windows IN_PLAY_QUICK = new Windows(60, 660, 0, 0, 0);
+
+    /**
+     * One ball at 15.8 L/s (13, -9) among two circles, two squares and a triangle, with no gravity or friction: it
+     * flies and bounces for ever, so every tick is the loop's fixed cost and one ball's detection.
+     */
+    static Board oneBallAmongFiveBumpers() {
+        Board board = new Board();
+        board.setGravity(0);
+        board.setFriction(0, 0);
+        board.addGizmo(GizmoKind.CIRCLE, "C0", 4, 4);
+        board.addGizmo(GizmoKind.SQUARE, "S0", 14, 5);
+        board.addGizmo(GizmoKind.TRIANGLE, "T0", 6, 14);
+        board.addGizmo(GizmoKind.CIRCLE, "C1", 15, 15);
+        board.addGizmo(GizmoKind.SQUARE, "S1", 10, 10);
+        board.addBall("B", 2.5, 17.5, 13, -9);
+        return board;
     }
 
     /**
@@ -219,7 +268,8 @@ final class SteadyState {
     static Run measure(NamedBoard named, Windows w) {
         Board board = named.board();
         warmUp(board, w.to());
-        long[] cpuWindow = cpuPerTick(board.copy(), w);
+        CpuWindow cpuRun = cpuPerTick(board.copy(), w);
+        long[] cpuWindow = cpuRun.nanos();
         long[] nanos = new long[w.to()];
         int[] collisions = new int[w.to()];
         int[] zeroTime = new int[w.to()];
@@ -254,7 +304,7 @@ final class SteadyState {
         TickReport last = board.lastTick();
         Row row = new Row(named.name(), board.gizmos().size(), board.balls().size(), w.from(), w.to(),
                 Arrays.stream(window).average().orElse(0) / 1e3, window[p99(n)] / 1e3, window[n - 1] / 1e3, Arrays.stream(cpuWindow).average().orElse(0) / 1e3,
-                cpuWindow[p99(n)] / 1e3, cpuWindow[n - 1] / 1e3, mean(collisions, w.from()), max(collisions, w.from()), mean(zeroTime, w.from()),
+                cpuWindow[p99(n)] / 1e3, cpuWindow[n - 1] / 1e3, cpuRun.bytesPerTick(), mean(collisions, w.from()), max(collisions, w.from()), mean(zeroTime, w.from()),
                 max(zeroTime, w.from()), last.ballsAwake(), last.ballsAsleep(), guards, gcAtEnd[0] - gcAtStart[0],
                 gcAtEnd[1] - gcAtStart[1], slowestTick, collisions[slowestTick], stages);
         return new Run(row, nanos);
@@ -264,12 +314,17 @@ final class SteadyState {
         return (int) Math.ceil(0.99 * n) - 1;
     }
 
+    /** The CPU time of each tick of a window (unsorted), and the bytes the ticking thread allocated per tick in it. */
+    record CpuWindow(long[] nanos, double bytesPerTick) {
+    }
+
     /**
      * The thread CPU time of each tick of the window (unsorted), the clock read once between ticks. A read costs
      * about 2 us, which lands in the interval it ends; that cost, the median interval with no tick in it, is
-     * taken off every tick.
+     * taken off every tick. The bytes allocated are read at the window's ends
+     * ({@code com.sun.management.ThreadMXBean.getCurrentThreadAllocatedBytes}): the clock's reads allocate nothing.
      */
-    private static long[] cpuPerTick(Board board, Windows w) {
+    private static CpuWindow cpuPerTick(Board board, Windows w) {
         for (int t = 0; t < w.from(); t++) {
             board.tick(DT);
         }
@@ -284,6 +339,7 @@ final class SteadyState {
         Arrays.sort(reads);
         long readCost = reads[reads.length / 2];
         long[] cpu = new long[w.to() - w.from()];
+        long allocatedBefore = THREADS.getCurrentThreadAllocatedBytes();
         long before = THREADS.getCurrentThreadCpuTime();
         for (int i = 0; i < cpu.length; i++) {
             board.tick(DT);
@@ -291,7 +347,8 @@ final class SteadyState {
             cpu[i] = Math.max(0, after - before - readCost);
             before = after;
         }
-        return cpu;
+        long allocated = THREADS.getCurrentThreadAllocatedBytes() - allocatedBefore;
+        return new CpuWindow(cpu, allocated / (double) cpu.length);
     }
 
     /**
@@ -430,22 +487,26 @@ final class SteadyState {
                         + "alone; guards: fired within the window%n", w.from(), w.to(), w.from(),
                 !w.equals(Windows.FULL) ? " (quick run: shorter windows than the full run's 3,000-15,000)" : "");
         out.println("                                    ------- wall us ------- -------- CPU us -------");
-        String format = "%-22s %6s %5s %7s %7s %8s %7s %7s %7s %9s %8s %9s %8s %6s %5s %6s %7s %5s %8s%n";
-        out.printf(Locale.ROOT, format, "board", "gizmos", "balls", "mean", "p99", "max", "mean", "p99", "max", "coll/tick",
+        String format = "%-28s %6s %5s %7s %7s %8s %7s %7s %7s %9s %9s %8s %9s %8s %6s %5s %6s %7s %5s %8s%n";
+        out.printf(Locale.ROOT, format, "board", "gizmos", "balls", "mean", "p99", "max", "mean", "p99", "max", "B/tick",
+                "coll/tick",
                 "max coll", "zero/tick", "max zero", "asleep", "awake", "wedged", "pinched", "cap", "GCs (ms)");
         for (Row r : rows) {
             out.printf(Locale.ROOT, format, shortName(r.board()), r.gizmos(), r.balls(), f1(r.meanUs()), f1(r.p99Us()),
-                    f1(r.maxUs()), f1(r.cpuMeanUs()), f1(r.cpuP99Us()), f1(r.cpuMaxUs()), f2(r.meanCollisions()),
+                    f1(r.maxUs()), f1(r.cpuMeanUs()), f1(r.cpuP99Us()), f1(r.cpuMaxUs()),
+                    String.format(Locale.ROOT, "%,.0f", r.bytesPerTick()), f2(r.meanCollisions()),
                     r.maxCollisions(), f2(r.meanZeroTime()), r.maxZeroTime(),
                     r.asleep(), r.awake(), r.guards().wedged(), r.guards().pinched(), r.guards().collisionCap(),
                     r.gcPauses() + " (" + r.gcMillis() + ")");
         }
         out.println("(wall: each tick by System.nanoTime; CPU: the ticking thread's CPU time of each tick, in a second run; "
+                + "B/tick: bytes the ticking thread allocated per tick of the window, in the second run; "
+                + MANY_IN_PLAY + ": ticks " + IN_PLAY.from() + "-" + IN_PLAY.to() + " of a full run, while its balls fly; "
                 + "asleep, awake: balls at the end; GCs: garbage collections "
                 + "during the window and their total time)");
         out.println("Where the window's time goes: the slowest tick by CPU time, and each stage's share of the time the model's "
                 + "stage clocks measured (TickReport.stageNanos)");
-        StringBuilder stageFormat = new StringBuilder("%-22s %20s");
+        StringBuilder stageFormat = new StringBuilder("%-28s %20s");
         List<Object> header = new ArrayList<>(List.of("board", "slowest tick (coll)"));
         for (Stage stage : Stage.values()) {
             stageFormat.append(" %").append(stageLabel(stage).length()).append('s');
@@ -522,13 +583,13 @@ final class SteadyState {
 
     static void writeRows(Path file, List<Row> rows) throws IOException {
         List<String> lines = new ArrayList<>();
-        lines.add("board,gizmos,balls,from_tick,to_tick,wall_mean_us,wall_p99_us,wall_max_us,cpu_mean_us,cpu_p99_us,cpu_max_us,collisions_per_tick,max_collisions,"
+        lines.add("board,gizmos,balls,from_tick,to_tick,wall_mean_us,wall_p99_us,wall_max_us,cpu_mean_us,cpu_p99_us,cpu_max_us,bytes_per_tick,collisions_per_tick,max_collisions,"
                 + "zero_time_per_tick,max_zero_time,balls_asleep_end,balls_awake_end,guard_wedged,guard_pinched,guard_cap,"
                 + "gc_count,gc_ms");
         for (Row r : rows) {
-            lines.add(String.format(Locale.ROOT, "%s,%d,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.4f,%d,%.4f,%d,%d,%d,%d,%d,%d,%d,%d",
+            lines.add(String.format(Locale.ROOT, "%s,%d,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.0f,%.4f,%d,%.4f,%d,%d,%d,%d,%d,%d,%d,%d",
                     r.board(), r.gizmos(), r.balls(), r.from(), r.to(), r.meanUs(), r.p99Us(), r.maxUs(), r.cpuMeanUs(),
-                    r.cpuP99Us(), r.cpuMaxUs(),
+                    r.cpuP99Us(), r.cpuMaxUs(), r.bytesPerTick(),
                     r.meanCollisions(), r.maxCollisions(), r.meanZeroTime(), r.maxZeroTime(), r.asleep(), r.awake(), r.guards().wedged(),
                     r.guards().pinched(), r.guards().collisionCap(), r.gcPauses(), r.gcMillis()));
         }

@@ -85,6 +85,8 @@ public final class Board {
     private long lastRedrawNanos;
     private double nextCollisionLookAhead;
     private final BoardLoop loop = new BoardLoop(this, registry, wiring, play, sleepers);
+    /** The loop, kept with its books from tick to tick. */
+    private final TickRun tickRun = new TickRun(loop, loop);
 
     /** An empty board with default gravity and friction at time 0. */
     public Board() {
@@ -481,7 +483,7 @@ public final class Board {
         }
         play.performDue(time);
         play.ticking(true);
-        lastTick = new TickRun(loop, loop, dt).run();
+        lastTick = tickRun.run(dt);
         play.dropHitTargets(lastTick.events());
         play.ticking(false);
         play.removeSunk();

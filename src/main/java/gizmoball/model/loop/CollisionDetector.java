@@ -94,7 +94,9 @@ final class CollisionDetector {
         Vect mine = motion(ball);
         Vect theirs = motion(other);
         Vect relative = mine.minus(theirs);
-        double gap = Math.sqrt(ball.position().distanceSquared(other.position())) - 2 * Arena.BALL_RADIUS;
+        double dx = ball.x() - other.x();   // as Vect.distanceSquared, without making the centres' vectors
+        double dy = ball.y() - other.y();
+        double gap = Math.sqrt(dx * dx + dy * dy) - 2 * Arena.BALL_RADIUS;
         if (gap > speedBound(relative) * window + REACH_MARGIN) {
             return;   // cannot close the gap within the window
         }

@@ -5,8 +5,6 @@ import java.util.Arrays;
 import java.util.Collection;
 import java.util.List;
 
-import physics.Vect;
-
 /**
  * Stage 3 over the whole board: the earliest collision of any awake ball within the time left in the tick. It keeps
  * each ball's earliest collision with the scene (walls and gizmos) and with the other balls, in seconds since the
@@ -43,7 +41,19 @@ final class CollisionSchedule {
     private int[] awakeSlots = new int[0];
     private int awakeCount;
     private boolean[] isAwake = new boolean[0];
+    /** Each awake slot's place in {@link #awakeSlots}. */
+    private int[] awakeIndex = new int[0];
     private boolean awakeStale = true;
+    /**
+     * The awake balls in blocks of {@link #BLOCK} consecutive places of {@link #awakeSlots}, each with the earliest
+     * {@code at} of its balls' known collisions (found again when one of them changed): the search for the earliest
+     * collision passes over a block that cannot hold a better one, so a collision among 200 awake balls reads a few
+     * blocks, not 400 known collisions.
+     */
+    private double[] blockEarliest = new double[0];
+    private boolean[] blockStale = new boolean[0];
+    private static final int BLOCK = 16;
+    private final Best best = new Best();
     /**
      * By slot, the slots whose known ball collision has been with that ball (some since replaced): forgetting a ball
      * looks only at those, not at every ball.
@@ -53,6 +63,8 @@ final class CollisionSchedule {
     private int filed;
     private final BallGrid grid;
     private final List<Ball> nearby = new ArrayList<>();
+    /** One pair's search, asked again for every ball near the one asking (its collision is made only when found). */
+    private final Earliest pair = new Earliest(0);
     /** When the grid was filled, and the highest speed of any ball since: how stale its positions can be. */
     private double filedAt;
     private double fastest;
@@ -62,16 +74,39 @@ final class CollisionSchedule {
         this.grid = grid;
     }
 
+    /** A tick starts: no ball is filed (a ball forgotten before the first filing is not filed). */
+    void begin() {
+        filed = 0;
+        awakeStale = true;
+    }
+
     /**
      * Files every free ball (awake or asleep) where it is now, {@code elapsed} seconds into the tick; every known
-     * collision is forgotten.
+     * collision is forgotten. The books are kept from filing to filing, and from tick to tick, grown when the balls
+     * outgrow them.
      */
     void file(Collection<Ball> free, double elapsed) {
-        grid.clear();
+        int n = free.size();
+        grid.clear(n);
         filedAt = elapsed;
         fastest = 0;
         filed = 0;
-        int n = free.size();
+        if (bySlot.length < n) {
+            grow(Math.max(n, 2 * bySlot.length));
+        }
+        for (Ball ball : free) {
+            bySlot[filed] = ball;
+            ball.setSlot(filed++);
+            double speed = CollisionDetector.speedBound(detector.motion(ball));
+            fastest = Math.max(fastest, speed);
+            grid.add(ball, speed);
+        }
+        forgetAll();
+        awakeStale = true;
+    }
+
+    /** Books for {@code n} balls. */
+    private void grow(int n) {
         withScene = new Known[n];
         withBalls = new Known[n];
         sceneAt = new double[n];
@@ -83,16 +118,11 @@ final class CollisionSchedule {
         isUnknown = new boolean[n];
         awakeSlots = new int[n];
         isAwake = new boolean[n];
-        pointedAtBy = new int[n][];
+        awakeIndex = new int[n];
+        blockEarliest = new double[n / BLOCK + 1];
+        blockStale = new boolean[n / BLOCK + 1];
+        pointedAtBy = Arrays.copyOf(pointedAtBy, n);
         pointedAtCount = new int[n];
-        for (Ball ball : free) {
-            bySlot[filed] = ball;
-            ball.setSlot(filed++);
-            grid.add(ball);
-            sped(ball);
-        }
-        forgetAll();
-        awakeStale = true;
     }
 
     /** Which balls are awake changed (a wake-up, a capture, a new filing): found again before the next search. */
@@ -102,25 +132,47 @@ final class CollisionSchedule {
 
     /** A ball's velocity changed: positions may go stale faster. */
     void sped(Ball ball) {
-        fastest = Math.max(fastest, CollisionDetector.speedBound(detector.motion(ball)));
+        double speed = CollisionDetector.speedBound(detector.motion(ball));
+        fastest = Math.max(fastest, speed);
+        if (isFiled(ball)) {
+            grid.sped(ball, speed);
+        }
+    }
+
+    /** Whether the ball is filed now (not held since before the last filing). */
+    private boolean isFiled(Ball ball) {
+        int slot = ball.slot();
+        return slot < filed && bySlot[slot] == ball;
     }
 
     /**
      * The earliest collision of the awake balls within the window, {@code elapsed} seconds into the tick. The balls
      * whose collisions are not known are asked first, in slot order (asking about a ball may tell a later one of a
      * sooner pair); then every awake ball's known collisions are offered in board order, near-ties going to
-     * circles as {@link Earliest} has it.
+     * circles as {@link Earliest} has it. A block of balls whose earliest known collision is later than the best so
+     * far by more than {@link Earliest#TIE} is passed over: {@link Earliest#better} refuses every offer of it, so the
+     * search finds what offering them all would.
      */
     Collision next(List<Ball> awake, double elapsed, double window) {
         if (awakeStale) {
             findAwake(awake);
         }
         askTheUnknown(elapsed, window);
-        Best best = new Best(elapsed, window);
-        for (int k = 0; k < awakeCount; k++) {
-            int slot = awakeSlots[k];
-            best.offer(slot, true, sceneAt[slot], sceneCircle[slot]);
-            best.offer(slot, false, ballsAt[slot], ballsCircle[slot]);
+        best.reset(elapsed, window);
+        for (int block = 0, first = 0; first < awakeCount; block++, first += BLOCK) {
+            int end = Math.min(first + BLOCK, awakeCount);
+            if (blockStale[block]) {
+                blockEarliest[block] = earliestOf(first, end);
+                blockStale[block] = false;
+            }
+            if (best.refusesAll(blockEarliest[block])) {
+                continue;
+            }
+            for (int k = first; k < end; k++) {
+                int slot = awakeSlots[k];
+                best.offer(slot, true, sceneAt[slot], sceneCircle[slot]);
+                best.offer(slot, false, ballsAt[slot], ballsCircle[slot]);
+            }
         }
         if (best.slot < 0) {
             return null;
@@ -129,18 +181,50 @@ final class CollisionSchedule {
         return new Collision(best.time, found.ball(), found.contact());
     }
 
+    /** The earliest {@code at} of the known collisions of the awake balls in places [first, end). */
+    private double earliestOf(int first, int end) {
+        double earliest = Double.POSITIVE_INFINITY;
+        for (int k = first; k < end; k++) {
+            int slot = awakeSlots[k];
+            earliest = Math.min(earliest, Math.min(sceneAt[slot], ballsAt[slot]));
+        }
+        return earliest;
+    }
+
+    /** A known collision of the slot changed: its block's earliest is found again before the next search. */
+    private void changedAt(int slot) {
+        if (isAwake[slot]) {
+            blockStale[awakeIndex[slot] / BLOCK] = true;
+        }
+    }
+
     /** The earliest known collision offered so far, by slot: with the scene or with a ball. */
     private static final class Best {
-        private final double elapsed;
-        private final double window;
-        private int slot = -1;
+        private double elapsed;
+        private double window;
+        private int slot;
         private boolean withScene;
         private double time;
         private boolean circle;
 
-        Best(double elapsed, double window) {
-            this.elapsed = elapsed;
-            this.window = window;
+        /** Nothing offered yet, {@code elapsed} seconds into the tick, for the window. */
+        void reset(double elapsedNow, double windowNow) {
+            elapsed = elapsedNow;
+            window = windowNow;
+            slot = -1;
+        }
+
+        /** From now, the rounding kept in the window: the time a known collision at {@code at} is offered with. */
+        private double fromNow(double at) {
+            return Math.min(Math.max(0, at - elapsed), window);
+        }
+
+        /**
+         * Whether every offer at {@code earliest} or later is refused: one is offered already, and it is sooner by
+         * more than {@link Earliest#TIE} ({@link #fromNow} keeps the order of the times it is given).
+         */
+        boolean refusesAll(double earliest) {
+            return earliest == Double.POSITIVE_INFINITY || slot >= 0 && fromNow(earliest) > time + Earliest.TIE;
         }
 
         /** A known collision at {@code at} seconds since the tick began; positive infinity: none. */
@@ -148,7 +232,7 @@ final class CollisionSchedule {
             if (at == Double.POSITIVE_INFINITY) {
                 return;
             }
-            double from = Math.min(Math.max(0, at - elapsed), window);   // from now, the rounding kept in the window
+            double from = fromNow(at);
             if (Earliest.better(from, isCircle, slot < 0, time, circle)) {
                 slot = offered;
                 withScene = scene;
@@ -162,9 +246,11 @@ final class CollisionSchedule {
         Arrays.fill(isAwake, false);
         awakeCount = 0;
         for (Ball ball : awake) {
+            awakeIndex[ball.slot()] = awakeCount;
             awakeSlots[awakeCount++] = ball.slot();
             isAwake[ball.slot()] = true;
         }
+        Arrays.fill(blockStale, true);
         awakeStale = false;
     }
 
@@ -204,14 +290,15 @@ final class CollisionSchedule {
         withScene[slot] = known;
         sceneAt[slot] = known.at();
         sceneCircle[slot] = known.circle();
+        changedAt(slot);
     }
 
     /** The ball's velocity or position changed other than by moving on: ask again about it. */
     void forget(Ball ball) {
-        int slot = ball.slot();
-        if (slot >= filed || bySlot[slot] != ball) {
+        if (!isFiled(ball)) {
             return;   // not filed now (held since before the last filing): nothing is known of it
         }
+        int slot = ball.slot();
         // A ball just captured or sunk is forgotten too: what was to meet it where it was must not meet it in the
         // absorber (a ball fired from an absorber, knocked back into it by the next ball, bounced that one off where
         // it had been).
@@ -238,8 +325,7 @@ final class CollisionSchedule {
             Ball ball = bySlot[slot];
             double reach = Arena.BALL_RADIUS + CollisionDetector.speedBound(detector.motion(ball)) * window
                     + CollisionDetector.REACH_MARGIN;
-            Vect p = ball.position();
-            if (p.x() + reach >= x0 && p.x() - reach <= x1 && p.y() + reach >= y0 && p.y() - reach <= y1) {
+            if (ball.x() + reach >= x0 && ball.x() - reach <= x1 && ball.y() + reach >= y0 && ball.y() - reach <= y1) {
                 withScene[slot] = null;
                 markUnknown(slot);
             }
@@ -266,6 +352,7 @@ final class CollisionSchedule {
         withBalls[slot] = known;
         ballsAt[slot] = known.at();
         ballsCircle[slot] = known.circle();
+        changedAt(slot);
         if (known.collision() == null) {
             return;
         }
@@ -289,13 +376,15 @@ final class CollisionSchedule {
         // No ball farther now than this can meet this one within the window (the pair test's own bound, wider).
         double near = 2 * Arena.BALL_RADIUS + (speed + fastest) * window + CollisionDetector.REACH_MARGIN;
         double reach = near + fastest * (elapsed - filedAt);
+        // The same bound for one cell's balls, with twice the margin: rounding can never pass over a pair.
+        double alone = 2 * Arena.BALL_RADIUS + speed * window + 2 * CollisionDetector.REACH_MARGIN;
         nearby.clear();
-        grid.near(ball.position().x(), ball.position().y(), reach, near, nearby);
+        grid.near(ball.x(), ball.y(), reach, near, alone, window, elapsed - filedAt, nearby);
         for (Ball other : nearby) {
             if (other == ball || other.isCaptured()) {
                 continue;
             }
-            Earliest pair = new Earliest(window);
+            pair.reset(window);
             detector.againstBall(other, ball, window, pair);
             Collision found = pair.collision();
             if (found == null) {

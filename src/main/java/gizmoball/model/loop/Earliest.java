@@ -5,7 +5,7 @@ final class Earliest {
     /** Collisions this close in time count as simultaneous. */
     static final double TIE = 1e-12;
 
-    private final double limit;
+    private double limit;
     /** The earliest offer so far (ball null: none); its {@link Collision} is made only when asked for. */
     private double time;
     private Ball ball;
@@ -15,6 +15,14 @@ final class Earliest {
 
     Earliest(double limit) {
         this.limit = limit;
+    }
+
+    /** Nothing offered yet, offers later than {@code newLimit} dropped: as new, for a search that asks many times. */
+    void reset(double newLimit) {
+        limit = newLimit;
+        ball = null;
+        contact = null;
+        collision = null;
     }
 
     void offer(double time, Ball ball, Contact contact, boolean isCircle) {

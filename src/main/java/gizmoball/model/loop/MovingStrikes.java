@@ -40,6 +40,16 @@ final class MovingStrikes {
         this.step = step;
     }
 
+    /** A tick starts: no ball has been struck or carried yet. */
+    void begin() {
+        carried.clear();
+        strikes.clear();
+        metSinceStrike.clear();
+        metAfterStrike.clear();
+        lastStrike.clear();
+        squeezed.clear();
+    }
+
     /** A stalled shape goes on once no ball touches it any more, and wakes what fell asleep in its way. */
     void releaseStalled() {
         for (MovingShape moving : step.view.movingShapes()) {

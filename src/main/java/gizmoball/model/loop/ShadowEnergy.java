@@ -23,26 +23,26 @@ import physics.Vect;
  * them.
  */
 final class ShadowEnergy {
-    private final Vect gravity;
-    private final double dt;
-    private final Map<Ball, Double> atStart;
+    private Vect gravity;
+    private double dt;
+    private final Map<Ball, Double> atStart = new HashMap<>();
     /** The normal of each ball's last elastic bounce, in order of first bounce (runs stay bit-identical). */
-    private final Map<Ball, Vect> elasticNormals;
-    private final Set<Ball> lost;
+    private final Map<Ball, Vect> elasticNormals = new LinkedHashMap<>();
+    private final Set<Ball> lost = new HashSet<>();
     private final List<List<Ball>> pairs = new ArrayList<>();
     /** A correction's direction along a ball's contacts may close on one by no more than rounding. */
     private static final double TANGENT_ROUNDING = 1e-12;
     /** The least part of a bounce's normal along a sliding ball's contacts that carries a correction. */
     private static final double SLIDING_PART = 1e-3;
 
-    /** For a tick of {@code balls} balls: the books are sized for all of them, so a tick never regrows them. */
-    ShadowEnergy(Vect gravity, double dt, int balls) {
-        this.gravity = gravity;
-        this.dt = dt;
-        int capacity = 2 * balls + 16;
-        atStart = new HashMap<>(capacity);
-        elasticNormals = new LinkedHashMap<>(capacity);
-        lost = new HashSet<>(capacity);
+    /** A tick of {@code seconds} under this gravity starts: the books are emptied (kept at the size they grew to). */
+    void begin(Vect boardGravity, double seconds) {
+        gravity = boardGravity;
+        dt = seconds;
+        atStart.clear();
+        elasticNormals.clear();
+        lost.clear();
+        pairs.clear();
     }
 
     /** After stage 1: right after the gravity kick, u = v - g dt/2. */

@@ -14,20 +14,23 @@ import physics.Vect;
 /**
  * The state of one tick, shared by the jobs of a {@link TickRun} (as Box2D passes its step context): what the board
  * shows and lets the loop do, the tick's constants, the collision machinery, the balls' per-tick books and the
- * counters the report gives. Lives for one tick; nothing in it outlives the report.
+ * counters the report gives. The board's one {@link TickRun} keeps it from tick to tick, so that a tick allocates none
+ * of its books (as Box2D's step takes its per-step memory from an arena): {@link #begin} empties every book and sets
+ * the tick's constants; nothing in it carries from one tick to the next.
  */
 final class StepContext {
     final LoopView view;
     final LoopActions actions;
     final LoopSettings settings;
     /** Seconds: the length of the tick. */
-    final double dt;
+    double dt;
     /** Seconds of play at the start of the tick. */
-    final double startTime;
+    double startTime;
     /** L/s^2. */
-    final Vect gravity;
-    final Contacts contacts;
-    final ShadowEnergy energy;
+    Vect gravity;
+    /** The contact queries for this tick's gravity and length (made again only when either changes). */
+    Contacts contacts;
+    final ShadowEnergy energy = new ShadowEnergy();
     /** SEED: balls that have had their collision this tick and move no more; CONTINUOUS: balls over their cap. */
     final Set<Ball> finished = new HashSet<>();
     final CollisionDetector detector;
@@ -56,17 +59,40 @@ final class StepContext {
     /** Whether the collision resolved last was a resting contact rather than a bounce. */
     boolean restingContact;
 
-    StepContext(LoopView view, LoopActions actions, LoopSettings settings, double dt) {
+    /** Empty books for the board that {@code view} shows; {@link #begin} starts each tick. */
+    StepContext(LoopView view, LoopActions actions, LoopSettings settings) {
         this.view = view;
         this.actions = actions;
         this.settings = settings;
-        this.dt = dt;
-        this.startTime = view.time();
-        this.gravity = view.gravity();
-        this.contacts = new Contacts(view, gravity, dt);
-        this.energy = new ShadowEnergy(gravity, dt, view.balls().size());
         this.detector = new CollisionDetector(view, finished);
         this.schedule = new CollisionSchedule(detector, view.ballGrid());
+    }
+
+    /** A tick of {@code seconds} starts: the constants are the board's now, every book is empty, every count 0. */
+    void begin(double seconds) {
+        Vect boardGravity = view.gravity();
+        if (contacts == null || seconds != dt || !boardGravity.equals(gravity)) {
+            contacts = new Contacts(view, boardGravity, seconds);
+        }
+        dt = seconds;
+        startTime = view.time();
+        gravity = boardGravity;
+        energy.begin(gravity, dt);
+        schedule.begin();
+        finished.clear();
+        awake.clear();
+        lastCollisionAt.clear();
+        collisionsOf.clear();
+        alsoHit.clear();
+        reported.clear();
+        elapsed = 0;
+        collisions = 0;
+        zeroTimeCollisions = 0;
+        simultaneousCollisions = 0;
+        wedged = 0;
+        pinched = 0;
+        capped = 0;
+        restingContact = false;
     }
 
     /** Seconds of play now, within the tick. */
@@ -132,8 +158,9 @@ final class StepContext {
         }
     }
 
+    /** The balls no absorber holds, in board order (a list kept for the tick's filings). */
     List<Ball> freeBalls() {
-        List<Ball> free = new ArrayList<>();
+        free.clear();
         for (Ball ball : view.balls()) {
             if (!ball.isCaptured()) {
                 free.add(ball);
@@ -141,6 +168,8 @@ final class StepContext {
         }
         return free;
     }
+
+    private final List<Ball> free = new ArrayList<>();
 
     /** The ball moves differently now: stage 3 asks about it again. */
     void changed(Ball ball) {

@@ -5,6 +5,7 @@ import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Sink;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.EnumMap;
 import java.util.HashMap;
 import java.util.List;
@@ -40,23 +41,30 @@ public final class TickRun {
     private final ClusterSolve clusters;
     private final MovingStrikes strikes;
     private final Map<Ball, Integer> zeroTimeHits = new HashMap<>();
-    private final EnumMap<Stage, Long> nanos = new EnumMap<>(Stage.class);
+    /** Nanoseconds of each stage in this tick, by {@link Stage#ordinal()}. */
+    private final long[] nanos = new long[Stage.values().length];
+    private static final Stage[] STAGES = Stage.values();
 
     /**
-     * A tick of {@code dt} seconds on the board that {@code view} shows and {@code actions} act on. For the board,
-     * which runs one per {@code Board.tick}; not for views.
+     * The loop of the board that {@code view} shows and {@code actions} act on, which keeps it and runs it once per
+     * {@code Board.tick}; not for views. Its books last from tick to tick (each tick starts them empty), so a tick in
+     * the steady state allocates little beyond its report.
      */
-    public TickRun(LoopView view, LoopActions actions, double dt) {
-        this.step = new StepContext(view, actions, LoopSettings.STANDARD, dt);
+    public TickRun(LoopView view, LoopActions actions) {
+        this.step = new StepContext(view, actions, LoopSettings.STANDARD);
         this.still = new StillSurfaces(step);
         this.pairs = new BallPairs(step);
         this.clusters = new ClusterSolve(step);
         this.strikes = new MovingStrikes(step);
     }
 
-    /** Runs the tick once: the six stages, then the report for the board to keep. */
-    public TickReport run() {
+    /** Runs one tick of {@code dt} seconds: the six stages, then the report for the board to keep. */
+    public TickReport run(double dt) {
         long start = System.nanoTime();
+        step.begin(dt);
+        strikes.begin();
+        zeroTimeHits.clear();
+        Arrays.fill(nanos, 0);
         strikes.releaseStalled();
         stage1FrictionAndGravity();
         long mark = lap(Stage.FRICTION_AND_GRAVITY, start);
@@ -280,8 +288,12 @@ public final class TickRun {
                 balls.add(ballReport(ball, lookAhead));
             }
         }
-        nanos.put(Stage.REDRAWING, view.lastRedrawNanos());
-        return new TickReport(view.time(), nanos, step.collisions, step.zeroTimeCollisions,
+        nanos[Stage.REDRAWING.ordinal()] = view.lastRedrawNanos();
+        EnumMap<Stage, Long> stageNanos = new EnumMap<>(Stage.class);
+        for (Stage stage : STAGES) {
+            stageNanos.put(stage, nanos[stage.ordinal()]);
+        }
+        return new TickReport(view.time(), stageNanos, step.collisions, step.zeroTimeCollisions,
                 step.simultaneousCollisions, step.awake.size(), asleep,
                 step.guards(), step.actions.drainEvents(), balls);
     }
@@ -308,7 +320,7 @@ public final class TickRun {
 
     private long lap(Stage stage, long since) {
         long now = System.nanoTime();
-        nanos.merge(stage, now - since, Long::sum);
+        nanos[stage.ordinal()] += now - since;
         return now;
     }
 
