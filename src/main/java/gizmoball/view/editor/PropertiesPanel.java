@@ -1,6 +1,5 @@
 package gizmoball.view.editor;
 
-import static gizmoball.view.editor.PanelFields.changed;
 import static gizmoball.view.editor.PanelFields.constraints;
 import static gizmoball.view.editor.PanelFields.enableAll;
 import static gizmoball.view.editor.PanelFields.row;
@@ -19,7 +18,6 @@ import gizmoball.model.loop.TriggerSource;
 import javax.swing.BorderFactory;
 import javax.swing.Box;
 import javax.swing.BoxLayout;
-import javax.swing.JButton;
 import javax.swing.JCheckBox;
 import javax.swing.JComponent;
 import javax.swing.JLabel;
@@ -44,10 +42,10 @@ import java.util.Optional;
  * colour's #rrggbb itself. Enter or Apply applies a group of fields, Esc puts back the board's values; both hand
  * the keyboard back to the board, so the next key is a tool key again, not more text.
  * <p>
- * Each section that stands alone is a class of its own: the {@link BoardSection}, the {@link ColourRows}, an
- * absorber's {@link PlungerRow}, the {@link LinksSection}; what they do alike with fields is {@link PanelFields}'.
- * Over 400 lines because the selection's own rows (name and cell, a ball's or a spawner's velocity, points and a
- * kind's setting) share one grid and one refresh here.
+ * Each section that stands alone is a class of its own: the {@link BoardSection}, the {@link BallRows}, the
+ * {@link ColourRows}, an absorber's {@link PlungerRow}, the {@link LinksSection}; what they do alike with fields is
+ * {@link PanelFields}'. Just over 400 lines because the selection's own rows (its description, name and cell,
+ * points and a kind's setting) share one grid and one refresh here.
  */
 public final class PropertiesPanel extends JPanel {
     private static final int WIDTH = 250;
@@ -70,12 +68,7 @@ public final class PropertiesPanel extends JPanel {
     private final NumberField cellX = new NumberField("gizmo.x");
     private final NumberField cellY = new NumberField("gizmo.y");
     private final JPanel nameRows = new JPanel(new GridBagLayout());
-    private final NumberField ballX = new NumberField("ball.x");
-    private final NumberField ballY = new NumberField("ball.y");
-    private final NumberField ballVx = new NumberField("ball.vx");
-    private final NumberField ballVy = new NumberField("ball.vy");
-    private final JButton applyBall = new JButton("Apply");
-    private final JPanel ballRows = new JPanel(new GridBagLayout());
+    private final BallRows ballRows;
     private final ColourRows colourRows;
     private final LinksSection linksSection;
     private String shownSelection;
@@ -87,6 +80,7 @@ public final class PropertiesPanel extends JPanel {
         fields = new PanelFields(controller, focusBoard, this::refresh);
         boardSection = new BoardSection(controller, fields);
         plungerRow = new PlungerRow(controller, fields);
+        ballRows = new BallRows(controller, fields);
         linksSection = new LinksSection(controller);
         colourRows = new ColourRows(controller, fields);
         setLayout(new BorderLayout());
@@ -142,21 +136,8 @@ public final class PropertiesPanel extends JPanel {
         Optional<BallView> ball = several ? Optional.empty() : controller.selectedBall();
         selection.setText(several ? describe(shownGroup) : describe(gizmo, ball));
         // The ball's and the colour's rows keep their room when they do not apply, so that nothing below jumps.
-        for (NumberField f : new NumberField[]{ballX, ballY, ballVx, ballVy}) {
-            f.setEnabled(ball.isPresent());
-            if (ball.isEmpty()) {
-                f.setText("");
-            }
-        }
         Setting setting = gizmo.map(Gizmo::setting).orElse(new Setting.None());
-        Optional<Setting.Launch> launch = as(setting, Setting.Launch.class);
-        applyBall.setEnabled(ball.isPresent() || launch.isPresent());
-        launch.ifPresent(l -> {
-            ballVx.setEnabled(true);
-            ballVy.setEnabled(true);
-            ballVx.show(l.vx());
-            ballVy.show(l.vy());
-        });
+        ballRows.show(ball, as(setting, Setting.Launch.class));
         enableAll(nameRows, gizmo.isPresent() || ball.isPresent());
         name.setText(gizmo.map(Gizmo::name).or(() -> ball.map(BallView::name)).orElse(""));
         RefusedValue.unmark(name);
@@ -189,12 +170,6 @@ public final class PropertiesPanel extends JPanel {
         speedPart.setVisible(spinner.isPresent());
         drain.setSelected(gizmo.filter(g -> board.gameRules().isDrain(g.name())).isPresent());
         plungerRow.show(as(setting, Setting.Pull.class));
-        ball.ifPresent(b -> {
-            ballX.show(b.position().x());
-            ballY.show(b.position().y());
-            ballVx.show(b.velocity().x());
-            ballVy.show(b.velocity().y());
-        });
 
         linksSection.show(board, several ? null : shownSelection);
     }
@@ -203,7 +178,6 @@ public final class PropertiesPanel extends JPanel {
     private static <S extends Setting> Optional<S> as(Setting setting, Class<S> record) {
         return Optional.of(setting).filter(record::isInstance).map(record::cast);
     }
-
 
     private JComponent selectionSection() {
         JPanel p = new JPanel(new GridBagLayout());
@@ -217,20 +191,7 @@ public final class PropertiesPanel extends JPanel {
         GridBagConstraints c = constraints(0, 0);
         c.gridwidth = 2;
         p.add(selection, c);
-        row(ballRows, 0, "Ball x", ballX);
-        row(ballRows, 1, "Ball y", ballY);
-        row(ballRows, 2, "vx (L/s)", ballVx);
-        row(ballRows, 3, "vy (L/s)", ballVy);
-        applyBall.setName("ball.apply");
-        applyBall.addActionListener(e -> applyBall());
-        for (NumberField f : new NumberField[]{ballX, ballY, ballVx, ballVy}) {
-            f.addActionListener(e -> applyBall());
-            fields.restoreOnEscape(f);
-        }
-        ballRows.add(applyBall, constraints(1, 4));
-        GridBagConstraints b = constraints(0, 1);
-        b.gridwidth = 2;
-        p.add(ballRows, b);
+        p.add(ballRows.component(), wide(constraints(0, 1)));
 
         p.add(colourRows.component(), wide(constraints(0, 2)));
         points.setToolTipText("What a real hit on the gizmo scores");
@@ -279,8 +240,6 @@ public final class PropertiesPanel extends JPanel {
         linksSection.addTo(p, 6);
         return p;
     }
-
-
 
     /** The keyboard to the selection's name field, all of it selected, to rename or read on from there. */
     public void focusName() {
@@ -348,9 +307,6 @@ public final class PropertiesPanel extends JPanel {
     }
 
 
-
-
-
     private void applyFactor() {
         Optional<Gizmo> gizmo = controller.selectedGizmo();
         Optional<double[]> v = fields.values(factor);
@@ -411,46 +367,6 @@ public final class PropertiesPanel extends JPanel {
         }
     }
 
-
-    private void applyBall() {
-        Optional<Gizmo> spawner = controller.selectedGizmo().filter(g -> g.setting() instanceof Setting.Launch);
-        if (spawner.isPresent()) {
-            applySpawnVelocity(spawner.get().name(), (Setting.Launch) spawner.get().setting());
-            return;
-        }
-        Optional<BallView> ball = controller.selectedBall();
-        NumberField[] numbers = {ballX, ballY, ballVx, ballVy};
-        Optional<double[]> v = fields.values(numbers);
-        if (ball.isEmpty() || v.isEmpty()) {
-            return;
-        }
-        BallView b = ball.get();
-        Map<JTextField, String> typed = changed(numbers,
-                new double[] {b.position().x(), b.position().y(), b.velocity().x(), b.velocity().y()});
-        if (controller.properties().setBall(b.name(), v.get()[0], v.get()[1], v.get()[2], v.get()[3])) {
-            focusBoard.run();
-        } else {
-            fields.keepRefused(typed);
-        }
-    }
-
-    /** A spawner's balls' velocity, in the ball's vx and vy fields (its balls are what they describe). */
-    private void applySpawnVelocity(String spawner, Setting.Launch now) {
-        NumberField[] numbers = {ballVx, ballVy};
-        Optional<double[]> v = fields.values(numbers);
-        if (v.isEmpty()) {
-            return;
-        }
-        Map<JTextField, String> typed = changed(numbers, new double[] {now.vx(), now.vy()});
-        if (controller.properties().set(spawner, new Setting.Launch(v.get()[0], v.get()[1]))) {
-            focusBoard.run();
-        } else {
-            fields.keepRefused(typed);
-        }
-    }
-
-
-
     private String describe(Optional<Gizmo> gizmo, Optional<BallView> ball) {
         if (gizmo.isPresent()) {
             Gizmo g = gizmo.get();
@@ -488,14 +404,10 @@ public final class PropertiesPanel extends JPanel {
         return probe.getPreferredSize().height <= selection.getPreferredSize().height;
     }
 
-
     /** "<b>name</b>: what", wrapped within the label's width. */
     private static String named(String name, String what) {
         return "<html><body style='width: " + (SELECTION_WIDTH - 10) + "px'><b>" + name + "</b>: " + what
                 + "</body></html>";
     }
-
-
-
 
 }
