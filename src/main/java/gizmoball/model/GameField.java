@@ -76,7 +76,7 @@ final class GameField implements Playfield {
             holder.get().letGo(ball.name());
         }
         if (holder.isEmpty() || holder.get() != launcher.get()) {
-            play.capture(ball, launcher.get());
+            play.take(ball, launcher.get());
         }
         return true;
     }
