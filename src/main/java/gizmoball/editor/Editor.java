@@ -182,7 +182,7 @@ public final class Editor {
         if (tool != Tool.SELECT || step.isGesture() || severalSelected()) {
             return List.of();
         }
-        return selectedGizmo().filter(g -> g.kind() == GizmoKind.ABSORBER).map(Handle::of).orElse(List.of());
+        return selectedGizmo().filter(g -> g.kind().sizedByCorners()).map(Handle::of).orElse(List.of());
     }
 
     /** The source chosen by the first click of Connect or Disconnect, waiting for the target. */

@@ -2,7 +2,6 @@ package gizmoball.editor;
 
 import gizmoball.model.Board;
 import gizmoball.model.gizmo.Gizmo;
-import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.TriggerSource;
 import java.util.ArrayList;
@@ -190,6 +189,6 @@ final class SelectTool implements ToolHandler {
         int top = r.top() ? (int) Math.round(y) : a.y();
         int bottom = r.bottom() ? (int) Math.round(y) : a.y() + a.height();
         return new Preview.Footprint(left, top, right - left, bottom - top, editor.board().placementProblem(
-                GizmoKind.ABSORBER, left, top, right - left, bottom - top, a.name()));
+                a.kind(), left, top, right - left, bottom - top, a.name()));
     }
 }
