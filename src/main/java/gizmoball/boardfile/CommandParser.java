@@ -13,7 +13,8 @@ import static gizmoball.boardfile.ArgumentWords.tilt;
 import static gizmoball.boardfile.ArgumentWords.wholeNumber;
 import static gizmoball.boardfile.PeerDialects.genericFlipper;
 import static gizmoball.boardfile.PeerDialects.peerArguments;
-import static gizmoball.boardfile.PeerDialects.refuseMit3d;
+import static gizmoball.boardfile.PeerDialects.allNumbers;
+import static gizmoball.boardfile.PeerDialects.mit3d;
 import static gizmoball.boardfile.PeerDialects.unknownCommand;
 
 import gizmoball.model.KeyEdge;
@@ -26,6 +27,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 
@@ -36,6 +38,7 @@ import java.util.stream.Collectors;
  * word is read by {@link ArgumentWords}; what other implementations write, ours or not, is known to {@link PeerDialects}.
  */
 final class CommandParser {
+    private static final Pattern AXES = Pattern.compile("[XYZ]{2}", Pattern.CASE_INSENSITIVE);
     private static final Pattern HEX_COLOUR = Pattern.compile("#[0-9a-fA-F]{6}");
 
     private CommandParser() {
@@ -67,11 +70,9 @@ final class CommandParser {
         boolean markedOurs = written.get(0).startsWith(CommandWord.OURS);
         List<String> words = markedOurs ? ours(written) : written;
         String first = words.get(0).toLowerCase(Locale.ROOT);
-        if ((first.equals("left") || first.equals("right")) && words.size() > 1
-                && words.get(1).equalsIgnoreCase("flipper")) {
-            CommandWord word = first.equals("left") ? CommandWord.LEFT_FLIPPER : CommandWord.RIGHT_FLIPPER;
-            notes.add("'" + words.get(0) + " " + words.get(1) + "' read as " + word.spelling());
-            return new Parsed(parse(word, words.subList(2, words.size()), notes), notes);
+        Optional<CommandWord> twoWords = PeerDialects.twoWordFlipper(words, notes);
+        if (twoWords.isPresent()) {
+            return new Parsed(parse(twoWords.get(), words.subList(2, words.size()), notes), notes);
         }
         if (first.equals("flipper")) {
             return new Parsed(parse(genericFlipper(words.subList(1, words.size()), notes),
@@ -263,4 +264,18 @@ final class CommandParser {
         return new Command.KeyConnect(keyCode, edge, args.get(3));
     }
 
-                    }
+    /** The MIT 6.170 3-D variant: corners and positions with a z, rotations about two axes, a gravity vector. */
+    private static void refuseMit3d(CommandWord word, List<String> args) throws Refusal {
+        String form = switch (word) {
+            case ABSORBER -> args.size() == 7 && allNumbers(args.subList(1, 7)) ? "an absorber with x y z corners" : null;
+            case BALL -> args.size() == 8 && allNumbers(args.subList(1, 8)) ? "a ball with x y z and its velocity" : null;
+            case ROTATE -> args.size() == 2 && AXES.matcher(args.get(1)).matches() ? "a rotation in a plane of axes"
+                    : null;
+            case GRAVITY -> args.size() == 3 && allNumbers(args) ? "a gravity vector" : null;
+            default -> null;
+        };
+        if (form != null) {
+            throw mit3d(form);
+        }
+    }
+}

@@ -64,7 +64,6 @@ final class PeerDialects {
     record PeerGizmo(CommandWord word, String meaning) {
     }
 
-    private static final Pattern AXES = Pattern.compile("[XYZ]{2}", Pattern.CASE_INSENSITIVE);
     private static final Pattern WORD = Pattern.compile("[A-Za-z][A-Za-z0-9_]*");
 
     private PeerDialects() {
@@ -73,6 +72,18 @@ final class PeerDialects {
     /** The peer's gizmo that a line's first word (in lower case) names, unless the line is marked as ours. */
     static Optional<PeerGizmo> gizmo(String first) {
         return Optional.ofNullable(PEER_GIZMOS.get(first));
+    }
+
+    /** Left Flipper or Right Flipper (two words, any case), read as the one word of the format, with a note. */
+    static Optional<CommandWord> twoWordFlipper(List<String> words, List<String> notes) {
+        String first = words.get(0).toLowerCase(Locale.ROOT);
+        if ((first.equals("left") || first.equals("right")) && words.size() > 1
+                && words.get(1).equalsIgnoreCase("flipper")) {
+            CommandWord word = first.equals("left") ? CommandWord.LEFT_FLIPPER : CommandWord.RIGHT_FLIPPER;
+            notes.add("'" + words.get(0) + " " + words.get(1) + "' read as " + word.spelling());
+            return Optional.of(word);
+        }
+        return Optional.empty();
     }
 
     /** Whether the first word (in lower case) is a command of another implementation's own. */
@@ -96,21 +107,6 @@ final class PeerDialects {
         return word;
     }
 
-    /** The MIT 6.170 3-D variant: corners and positions with a z, rotations about two axes, a gravity vector. */
-    static void refuseMit3d(CommandWord word, List<String> args) throws Refusal {
-        String form = switch (word) {
-            case ABSORBER -> args.size() == 7 && allNumbers(args.subList(1, 7)) ? "an absorber with x y z corners" : null;
-            case BALL -> args.size() == 8 && allNumbers(args.subList(1, 8)) ? "a ball with x y z and its velocity" : null;
-            case ROTATE -> args.size() == 2 && AXES.matcher(args.get(1)).matches() ? "a rotation in a plane of axes"
-                    : null;
-            case GRAVITY -> args.size() == 3 && allNumbers(args) ? "a gravity vector" : null;
-            default -> null;
-        };
-        if (form != null) {
-            throw mit3d(form);
-        }
-    }
-
     /** A peer's gizmo line with other arguments than ours takes: a portal with its exit's cell is named as such. */
     static Refusal peerArguments(List<String> words, CommandWord word) {
         int found = words.size() - 1;
@@ -123,7 +119,7 @@ final class PeerDialects {
                 + why);
     }
 
-    private static Refusal mit3d(String form) {
+    static Refusal mit3d(String form) {
         return new Refusal("an MIT 6.170 3-D form (" + form + ")" + NOT_THE_FORMAT);
     }
 
@@ -147,7 +143,7 @@ final class PeerDialects {
                 + NearestWord.among(word, CommandWord.spellings()).map(w -> " (did you mean " + w + "?)").orElse(""));
     }
 
-    private static boolean allNumbers(List<String> words) {
+    static boolean allNumbers(List<String> words) {
         return words.stream().allMatch(w -> Decimals.parse(w).isPresent());
     }
 }

@@ -63,7 +63,7 @@ public final class Board {
     private final Wiring wiring = new Wiring(registry);
     private final Sleepers sleepers = new Sleepers(registry.balls());
     private final EventLog events = new EventLog();
-    private final EndOfTick endOfTick = new EndOfTick(registry, rules, sleepers, events);
+    private final EndOfTick endOfTick = new EndOfTick(registry, sleepers);
     private final DelayedActions delayed = new DelayedActions(registry);
     private final Play play = new Play(registry, rules, sleepers, events, endOfTick, delayed);
     private final Edits edits = new Edits(registry, rules, wiring, play);

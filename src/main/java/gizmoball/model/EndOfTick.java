@@ -2,7 +2,6 @@ package gizmoball.model;
 
 import gizmoball.model.gizmo.DropTarget;
 import gizmoball.model.gizmo.Sink;
-import gizmoball.model.gizmo.Spawner;
 import gizmoball.model.gizmo.SwitchedCell;
 import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Ball;
@@ -16,8 +15,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
-import physics.Vect;
-
 /**
  * The changes of play that wait for the end of the tick in which they were asked for, so that the loop never meets a
  * ball it did not start with nor loses a surface it is resolving: spawns, gates and drop targets switched, the balls
@@ -25,31 +22,27 @@ import physics.Vect;
  */
 final class EndOfTick {
     private final Registry registry;
-    private final PlacementRules rules;
     private final Sleepers sleepers;
-    private final EventLog events;
     /** Whether a tick is running: what is asked for waits for its end. */
     private boolean ticking;
     /** The gates and drop targets told to be solid (true) or nothing during this tick, the last order of each. */
     private final Map<String, Boolean> cellOrders = new LinkedHashMap<>();
-    /** The spawners told to spawn during this tick, in order. */
-    private final List<String> toSpawn = new ArrayList<>();
+    /** The spawns asked for during this tick, in order. */
+    private final List<Runnable> toSpawn = new ArrayList<>();
     /** The balls sinks took in this tick, which leave the board when it is over. */
     private final List<String> sunk = new ArrayList<>();
 
-    EndOfTick(Registry registry, PlacementRules rules, Sleepers sleepers, EventLog events) {
+    EndOfTick(Registry registry, Sleepers sleepers) {
         this.registry = registry;
-        this.rules = rules;
         this.sleepers = sleepers;
-        this.events = events;
     }
 
-    /** As {@link Play#spawn}: at once between ticks, at the tick's end during one. */
-    void spawn(Spawner spawner) {
+    /** A spawn ({@link Play#spawn}): at once between ticks, at the tick's end during one. */
+    void spawn(Runnable spawn) {
         if (ticking) {
-            toSpawn.add(spawner.name());
+            toSpawn.add(spawn);
         } else {
-            spawnNow(spawner);
+            spawn.run();
         }
     }
 
@@ -105,27 +98,10 @@ final class EndOfTick {
                     switchNow(cell, solid);
                 }
             });
-            List<String> due = List.copyOf(toSpawn);
+            List<Runnable> due = List.copyOf(toSpawn);
             toSpawn.clear();
-            for (String name : due) {
-                if (registry.gizmo(name) instanceof Spawner spawner) {
-                    spawnNow(spawner);
-                }
-            }
+            due.forEach(Runnable::run);
         }
-    }
-
-    private void spawnNow(Spawner spawner) {
-        Vect mouth = spawner.mouth(Arena.BALL_RADIUS);
-        if (registry.balls().size() >= Spawner.MAX_BALLS || !rules.freeForBall(mouth)) {
-            return;
-        }
-        Ball ball = new Ball(registry.freshBallName(), mouth, Vect.ZERO);
-        ball.setVelocity(spawner.velocity());
-        registry.add(ball);
-        events.record(new PlayEvent.Spawned(spawner.name(), ball.name()));
-        double margin = 4 * Arena.BALL_RADIUS;
-        sleepers.wakeWithin(mouth.x() - margin, mouth.y() - margin, mouth.x() + margin, mouth.y() + margin);
     }
 
     /** The ball stops at the sink's centre, out of play, until {@link #removeSunk} takes it off the board. */

@@ -217,7 +217,20 @@ final class Play implements Surroundings {
      */
     @Override
     public void spawn(Spawner spawner) {
-        endOfTick.spawn(spawner);
+        endOfTick.spawn(() -> spawnNow(spawner));
+    }
+
+    private void spawnNow(Spawner spawner) {
+        Vect mouth = spawner.mouth(Arena.BALL_RADIUS);
+        if (registry.balls().size() >= Spawner.MAX_BALLS || !rules.freeForBall(mouth)) {
+            return;
+        }
+        Ball ball = new Ball(registry.freshBallName(), mouth, Vect.ZERO);
+        ball.setVelocity(spawner.velocity());
+        registry.add(ball);
+        events.record(new PlayEvent.Spawned(spawner.name(), ball.name()));
+        double margin = 4 * Arena.BALL_RADIUS;
+        sleepers.wakeWithin(mouth.x() - margin, mouth.y() - margin, mouth.x() + margin, mouth.y() + margin);
     }
 
     /**
