@@ -1,10 +1,7 @@
 package gizmoball.model;
 
-import gizmoball.model.gizmo.DropTarget;
-import gizmoball.model.gizmo.Sink;
 import gizmoball.model.gizmo.SwitchedCell;
 import gizmoball.model.loop.Arena;
-import gizmoball.model.loop.Ball;
 import gizmoball.model.loop.PlayEvent;
 import gizmoball.model.loop.Sleepers;
 import gizmoball.model.loop.Tolerances;
@@ -76,8 +73,8 @@ final class EndOfTick {
     void dropHitTargets(List<PlayEvent> tickEvents) {
         for (PlayEvent event : tickEvents) {
             if (event instanceof PlayEvent.Hit hit && hit.struck() instanceof TriggerSource.OfGizmo struck
-                    && registry.gizmo(struck.gizmo()) instanceof DropTarget target) {
-                cellOrders.put(target.name(), false);
+                    && registry.gizmo(struck.gizmo()) instanceof SwitchedCell cell && cell.fallsWhenHit()) {
+                cellOrders.put(cell.name(), false);
             }
         }
     }
@@ -104,10 +101,9 @@ final class EndOfTick {
         }
     }
 
-    /** The ball stops at the sink's centre, out of play, until {@link #removeSunk} takes it off the board. */
-    void sink(Ball ball, Sink sink) {
-        ball.capture(sink.centre());
-        sunk.add(ball.name());
+    /** A sink took the ball, which leaves the board at the tick's end ({@link #removeSunk}). */
+    void sunk(String ball) {
+        sunk.add(ball);
     }
 
     /** The tick is over: the balls sinks took in it leave the board. */
