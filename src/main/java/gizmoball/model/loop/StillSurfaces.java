@@ -62,7 +62,8 @@ final class StillSurfaces {
      */
     private void enter(Ball ball, Portal portal, Portal.Passage out) {
         Portal exit = (Portal) step.view.gizmo(portal.pair().orElseThrow());
-        step.actions.recordEvent(new PlayEvent.Teleported(portal.name(), exit.name(), ball.name(), ball.position()));
+        step.actions.recordEvent(new PlayEvent.Teleported(portal.name(), exit.name(), ball.name(), ball.position(),
+                out.centre()));
         ContactRef on = new ContactRef.OnBall(ball.name());
         for (Ball other : step.view.balls()) {
             other.contacts().remove(on);
