@@ -4,13 +4,9 @@ import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.game.GameRules;
 import gizmoball.model.game.Tilt;
-import gizmoball.model.gizmo.AbsorberView;
-import gizmoball.model.gizmo.DropTargetView;
-import gizmoball.model.gizmo.FlipperView;
-import gizmoball.model.gizmo.GateView;
 import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.PlayState;
 import gizmoball.model.gizmo.Setting;
-import gizmoball.model.gizmo.SpinnerView;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import java.util.ArrayList;
@@ -54,10 +50,24 @@ final class BoardWriter {
         throw new IllegalArgumentException("no board-file line says " + setting);
     }
 
+    /** The line that puts back what play changed of a gizmo: one per {@link PlayState} record but as built. */
+    private static Command playStateLine(String name, PlayState state) {
+        if (state instanceof PlayState.Swung s) {
+            return new Command.FlipperState(name, s.degrees(), s.up());
+        }
+        if (state instanceof PlayState.Opened) {
+            return new Command.CellOpen(name);
+        }
+        if (state instanceof PlayState.Turned t) {
+            return new Command.SpinnerState(name, t.radians(), t.running());
+        }
+        throw new IllegalArgumentException("no board-file line says " + state);
+    }
+
     static List<Command> commands(Board board) {
         List<Command> commands = new ArrayList<>();
         for (Gizmo gizmo : board.gizmos()) {
-            commands.add(gizmo instanceof AbsorberView
+            commands.add(gizmo.kind().sizedByCorners()
                     ? new Command.AddAbsorber(gizmo.name(), gizmo.x(), gizmo.y(),
                             gizmo.x() + gizmo.width(), gizmo.y() + gizmo.height())
                     : new Command.AddGizmo(gizmo.kind(), gizmo.name(), gizmo.x(), gizmo.y()));
@@ -85,14 +95,9 @@ final class BoardWriter {
         }
         for (Gizmo gizmo : board.gizmos()) {
             // Only where play moved it: a board as built is written as before, and other implementations skip it.
-            if (gizmo instanceof FlipperView flipper && (flipper.angleFromRest() != 0 || flipper.isActive())) {
-                commands.add(new Command.FlipperState(flipper.name(), flipper.angleFromRest(), flipper.isActive()));
-            }
-            if (gizmo instanceof DropTargetView target && target.isDown() || gizmo instanceof GateView gate && gate.isOpen()) {
-                commands.add(new Command.CellOpen(gizmo.name()));
-            }
-            if (gizmo instanceof SpinnerView spinner && (spinner.angle() != 0 || !spinner.isRunning())) {
-                commands.add(new Command.SpinnerState(spinner.name(), spinner.angle(), spinner.isRunning()));
+            PlayState state = gizmo.playState();
+            if (!(state instanceof PlayState.AsBuilt)) {
+                commands.add(playStateLine(gizmo.name(), state));
             }
         }
         for (BallView ball : board.balls()) {

@@ -33,7 +33,7 @@ public final class KeyForwarder {
     public KeyForwarder(Window window, Board board, BooleanSupplier active) {
         this.window = window;
         this.active = active;
-        this.filter = new KeyRepeatFilter(new KeyRepeatFilter.Sink() {
+        this.filter = new KeyRepeatFilter(new KeyRepeatFilter.Edges() {
             @Override
             public void down(int keyCode) {
                 board.keyDown(keyCode);

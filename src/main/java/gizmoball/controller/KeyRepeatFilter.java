@@ -18,25 +18,25 @@ import java.util.Set;
  */
 public final class KeyRepeatFilter {
     /** Receives the filtered edges. */
-    public interface Sink {
+    public interface Edges {
         void down(int keyCode);
 
         void up(int keyCode);
     }
 
-    private final Sink sink;
+    private final Edges edges;
     private final long pairWindowMillis;
     private final Set<Integer> held = new HashSet<>();
     private final Map<Integer, Long> pendingReleases = new HashMap<>();
 
-    public KeyRepeatFilter(Sink sink, long pairWindowMillis) {
-        this.sink = sink;
+    public KeyRepeatFilter(Edges edges, long pairWindowMillis) {
+        this.edges = edges;
         this.pairWindowMillis = pairWindowMillis;
     }
 
     public void pressed(int keyCode) {
         if (pendingReleases.remove(keyCode) == null && held.add(keyCode)) {
-            sink.down(keyCode);
+            edges.down(keyCode);
         }
     }
 
@@ -72,6 +72,6 @@ public final class KeyRepeatFilter {
 
     private void up(int keyCode) {
         held.remove(keyCode);
-        sink.up(keyCode);
+        edges.up(keyCode);
     }
 }

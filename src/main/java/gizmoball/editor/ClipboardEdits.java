@@ -33,7 +33,7 @@ public final class ClipboardEdits {
     /** Copies the selection and deletes it (one undo step); the text for the clipboard, empty if nothing. */
     public Optional<String> cutSelected() {
         Optional<String> text = copySelected();
-        if (text.isPresent() && !editor.deleteAll("Cut ", editor.selection())) {
+        if (text.isPresent() && !editor.selectionEdits().deleteAll("Cut ", editor.selection())) {
             return Optional.empty();
         }
         return text;

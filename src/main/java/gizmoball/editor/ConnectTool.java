@@ -24,8 +24,8 @@ final class ConnectTool implements ToolHandler {
 
     /** The gizmo under the point, else the outer walls outside the board or on its rim. */
     private Optional<TriggerSource> end(double x, double y) {
-        return editor.gizmoAt(x, y).map(g -> TriggerSource.gizmo(g.name()))
-                .or(() -> editor.isWall(x, y) ? Optional.of(TriggerSource.OUTER_WALLS) : Optional.empty());
+        return editor.picking().gizmoAt(x, y).map(g -> TriggerSource.gizmo(g.name()))
+                .or(() -> editor.picking().isWall(x, y) ? Optional.of(TriggerSource.OUTER_WALLS) : Optional.empty());
     }
 
     @Override

@@ -12,11 +12,11 @@ final class DeleteTool implements ToolHandler {
 
     @Override
     public Optional<String> target(double x, double y) {
-        return editor.ballOrGizmoAt(x, y);
+        return editor.picking().ballOrGizmoAt(x, y);
     }
 
     @Override
     public void press(double x, double y) {
-        target(x, y).ifPresentOrElse(editor::delete, () -> editor.say("Nothing here to delete"));
+        target(x, y).ifPresentOrElse(editor.selectionEdits()::delete, () -> editor.say("Nothing here to delete"));
     }
 }

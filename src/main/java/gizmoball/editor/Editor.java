@@ -6,13 +6,12 @@ import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.TriggerSource;
-import java.awt.event.KeyEvent;
 import java.util.ArrayList;
-import java.util.Comparator;
 import java.util.EnumMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.function.BooleanSupplier;
 import java.util.function.Consumer;
 import physics.Vect;
 
@@ -23,24 +22,16 @@ import physics.Vect;
  * the file loader uses) inside the {@link EditHistory}, so the editor can build only boards the loader accepts,
  * and every edit can be undone. A refusal never escapes as an exception: its message goes to the status line.
  * <p>
- * Longer than 400 lines because it is the one facade of build mode: the state the views read, the commands of
- * the menus, and the services the handlers share (editing inside the history, previews, picking). What each tool
- * does is in its handler, what the properties panel changes in {@link PropertyEdits}, copy and paste in
- * {@link ClipboardEdits}, the answers that complete Connect and Key Connect in {@link LinkSteps}.
+ * Longer than 400 lines because it is the one facade of build mode (the state the views read, the menus' commands,
+ * the services the handlers share); the work is in its parts: each tool's handler, the {@link Selection} and
+ * {@link SelectionEdits}, {@link Picking}, {@link BuildKeys}, {@link PropertyEdits}, {@link ClipboardEdits} and
+ * {@link LinkSteps}.
  */
 public final class Editor {
-    /** Ball centres snap to quarter cells: positions stay readable in saved files and easy to hit again. */
-    static final double BALL_SNAP = 0.25;
-    /** Pixels are coarse: a ball (radius 0.25 L) is picked within this distance of its centre. */
-    static final double BALL_PICK_DISTANCE = 0.4;
-    /** Clicks this close to the board's edge, on an empty cell, mean the outer walls (Connect tools). */
-    static final double WALL_BAND = 0.25;
     /** Dragging 1 L while placing a ball gives it 10 L/s: a board-wide drag is about the launch speed. */
     public static final double VELOCITY_PER_DRAG = 10;
     /** Names listed in a message before the rest are counted ("S1, S2, S3 and 5 more"). */
     private static final int LISTED = 4;
-    /** A press that moves less than this is a click, not a drag. */
-    static final double DRAG_THRESHOLD = 0.1;
 
     private final Board board;
     private final EditHistory history;
@@ -48,6 +39,9 @@ public final class Editor {
     private final PropertyEdits properties = new PropertyEdits(this);
     private final ClipboardEdits clipboard = new ClipboardEdits(this);
     private final LinkSteps links = new LinkSteps(this);
+    private final Selection selection;
+    private final SelectionEdits selectionEdits;
+    private final Picking picking;
     private final Map<Tool, ToolHandler> handlers = new EnumMap<>(Tool.class);
     private final List<Runnable> stateListeners = new ArrayList<>();
     private final List<Runnable> editListeners = new ArrayList<>();
@@ -55,8 +49,6 @@ public final class Editor {
     private Consumer<String> messages = message -> { };
 
     private Tool tool = Tool.SELECT;
-    /** What is selected, in the order it was selected: the last is the one the panels show (see {@link #selected}). */
-    private final List<String> selection = new ArrayList<>();
     private PendingStep step = PendingStep.NONE;
     private Preview preview;
     private Vect pointer;
@@ -65,6 +57,9 @@ public final class Editor {
         this.board = board;
         this.history = new EditHistory(board);
         this.names = new NameGenerator(board);
+        this.selection = new Selection(board);
+        this.selectionEdits = new SelectionEdits(this, selection);
+        this.picking = new Picking(board);
     }
 
     /** An editor of {@code board}, with nothing selected and the Select tool. */
@@ -152,17 +147,12 @@ public final class Editor {
      * selected, the one selected last: the one whose connections and properties are shown.
      */
     public Optional<String> selected() {
-        for (int i = selection.size() - 1; i >= 0; i--) {
-            if (exists(selection.get(i))) {
-                return Optional.of(selection.get(i));
-            }
-        }
-        return Optional.empty();
+        return selection.last();
     }
 
     /** Every selected gizmo and ball that (still) exists, in the order selected; the outer walls are not among them. */
     public List<String> selection() {
-        return selection.stream().filter(n -> !isWalls(n) && exists(n)).toList();
+        return selection.things();
     }
 
     /** Whether more than one gizmo or ball is selected. */
@@ -170,17 +160,9 @@ public final class Editor {
         return selection().size() > 1;
     }
 
-    private boolean exists(String name) {
-        return isWalls(name) || board.gizmo(name).isPresent() || board.ball(name).isPresent();
-    }
-
     /** Whether the outer walls are selected (Select's click outside the board, or Connect's source there). */
     public boolean wallsSelected() {
-        return selected().filter(Editor::isWalls).isPresent();
-    }
-
-    private static boolean isWalls(String name) {
-        return TriggerSource.named(name) instanceof TriggerSource.OuterWalls;
+        return selected().filter(Selection::isWalls).isPresent();
     }
 
     public Optional<Gizmo> selectedGizmo() {
@@ -200,7 +182,7 @@ public final class Editor {
         if (tool != Tool.SELECT || step.isGesture() || severalSelected()) {
             return List.of();
         }
-        return selectedGizmo().filter(g -> g.kind() == GizmoKind.ABSORBER).map(Handle::of).orElse(List.of());
+        return selectedGizmo().filter(g -> g.kind().sizedByCorners()).map(Handle::of).orElse(List.of());
     }
 
     /** The source chosen by the first click of Connect or Disconnect, waiting for the target. */
@@ -264,45 +246,33 @@ public final class Editor {
 
     /** Shift+click: adds the gizmo or ball to the selection, or takes it out if it is in it. */
     public void toggleSelected(String name) {
-        selection.removeIf(Editor::isWalls);
-        boolean added = !selection.remove(name);
-        if (added) {
-            selection.add(name);
-        }
+        boolean added = selection.toggle(name);
         say((added ? "Added " + name : "Took out " + name) + ": " + selection.size() + " selected");
         stateChanged();
     }
 
     /** Selects these gizmos and balls (a rubber band, a paste), after what is selected if {@code adding}. */
     public void selectAll(List<String> names, boolean adding) {
-        if (!adding) {
-            selection.clear();
-        }
-        selection.removeIf(Editor::isWalls);
-        names.stream().filter(n -> !selection.contains(n)).forEach(selection::add);
+        selection.addAll(names, adding);
         stateChanged();
     }
 
     public boolean undo() {
-        cancelQuietly();
-        Optional<String> what = history.undoable();
-        if (!history.undo()) {
-            say("Nothing to undo");
-            return false;
-        }
-        say("Undone: " + what.orElseThrow());
-        edited();
-        return true;
+        return travel(history.undoable(), history::undo, "undo", "Undone: ");
     }
 
     public boolean redo() {
+        return travel(history.redoable(), history::redo, "redo", "Redone: ");
+    }
+
+    /** Undo or redo: the step {@code what} names, taken by {@code take}, or a message that there is none. */
+    private boolean travel(Optional<String> what, BooleanSupplier take, String verb, String done) {
         cancelQuietly();
-        Optional<String> what = history.redoable();
-        if (!history.redo()) {
-            say("Nothing to redo");
+        if (!take.getAsBoolean()) {
+            say("Nothing to " + verb);
             return false;
         }
-        say("Redone: " + what.orElseThrow());
+        say(done + what.orElseThrow());
         edited();
         return true;
     }
@@ -316,12 +286,7 @@ public final class Editor {
 
     /** Deletes everything selected (one undo step). */
     public boolean deleteSelected() {
-        List<String> names = selection();
-        if (names.isEmpty()) {
-            say("Nothing selected to delete");
-            return false;
-        }
-        return names.size() == 1 ? delete(names.get(0)) : deleteAll("Deleted ", names);
+        return selectionEdits.deleteSelected();
     }
 
     /**
@@ -329,19 +294,7 @@ public final class Editor {
      * step; circles and absorbers look the same turned and stay).
      */
     public boolean rotateSelected() {
-        List<Gizmo> gizmos = selection().stream().flatMap(n -> board.gizmo(n).stream()).toList();
-        if (gizmos.isEmpty()) {
-            say("Select a gizmo to rotate");
-            return false;
-        }
-        if (gizmos.size() == 1) {
-            return rotate(gizmos.get(0));
-        }
-        List<String> turning = gizmos.stream().filter(g -> g.kind().rotates()).map(Gizmo::name).toList();
-        if (turning.isEmpty()) {
-            return refuse("Circles and absorbers look the same turned: none of the selection can be rotated");
-        }
-        return edit("Rotated " + listed(turning), b -> turning.forEach(b::rotate));
+        return selectionEdits.rotateSelected();
     }
 
     // ---- pointer, in board coordinates ----
@@ -391,42 +344,22 @@ public final class Editor {
         }
     }
 
-    // ---- keys ----
-
     /**
-     * A key pressed over the board in build mode. A step waiting for a key (Key Connect, Key Disconnect) takes
-     * any key but Escape (which cancels) and Ctrl/Alt/Meta combinations (which belong to the menus, e.g. Ctrl+Z
-     * while waiting). Otherwise Delete removes the selection, the arrow keys nudge it and the tool shortcuts
-     * switch tools.
+     * A key pressed over the board in build mode ({@link BuildKeys} says which do what).
      *
      * @return whether the key was used
      */
     public boolean keyPressed(int keyCode, boolean commandModifier) {
-        if (keyCode == KeyEvent.VK_ESCAPE) {
-            cancel();
-            say("Cancelled");
-            return true;
-        }
-        if (commandModifier) {
-            return false;
-        }
+        return BuildKeys.pressed(this, keyCode, commandModifier);
+    }
+
+    /** The current tool took the key (a step waiting for one); false if it did not. */
+    boolean keyToTool(int keyCode) {
         if (handler().key(keyCode)) {
             stateChanged();
             return true;
         }
-        switch (keyCode) {
-            case KeyEvent.VK_DELETE, KeyEvent.VK_BACK_SPACE -> deleteSelected();
-            case KeyEvent.VK_LEFT -> nudgeSelected(-1, 0);
-            case KeyEvent.VK_RIGHT -> nudgeSelected(1, 0);
-            case KeyEvent.VK_UP -> nudgeSelected(0, -1);
-            case KeyEvent.VK_DOWN -> nudgeSelected(0, 1);
-            default -> {
-                Optional<Tool> shortcut = Tool.forShortcut(keyCode);
-                shortcut.ifPresent(this::setTool);
-                return shortcut.isPresent();
-            }
-        }
-        return true;
+        return false;
     }
 
     /**
@@ -434,27 +367,7 @@ public final class Editor {
      * selected move together (one undo step), by a cell, or a quarter cell if they are all balls.
      */
     public boolean nudgeSelected(int dx, int dy) {
-        List<String> group = selection();
-        if (group.size() > 1) {
-            double step = group.stream().anyMatch(n -> board.gizmo(n).isPresent()) ? 1 : BALL_SNAP;
-            return moveGroup(group, dx * step, dy * step);
-        }
-        Optional<Gizmo> gizmo = selectedGizmo();
-        Optional<BallView> ball = selectedBall();
-        if (gizmo.isPresent()) {
-            Gizmo g = gizmo.get();
-            int x = g.x() + dx;
-            int y = g.y() + dy;
-            return edit("Moved " + g.name() + " to (" + x + "," + y + ")", b -> b.moveGizmo(g.name(), x, y));
-        }
-        if (ball.isPresent()) {
-            BallView b0 = ball.get();
-            double x = b0.position().x() + dx * BALL_SNAP;
-            double y = b0.position().y() + dy * BALL_SNAP;
-            return edit("Moved " + b0.name() + " to (" + x + ", " + y + ")", b -> b.moveBall(b0.name(), x, y));
-        }
-        say("Select a gizmo or ball to move it with the arrow keys");
-        return false;
+        return selectionEdits.nudgeSelected(dx, dy);
     }
 
     /**
@@ -462,10 +375,9 @@ public final class Editor {
      * selected keeps them all selected, for the menu to act on them all.
      */
     public boolean selectAt(double x, double y) {
-        Optional<String> there = ballOrGizmoAt(x, y);
+        Optional<String> there = picking.ballOrGizmoAt(x, y);
         if (there.isPresent() && selection().contains(there.get())) {
-            selection.remove(there.get());
-            selection.add(there.get());
+            selection.bringToFront(there.get());
             stateChanged();
         } else {
             select(there.orElse(null));
@@ -475,30 +387,7 @@ public final class Editor {
 
     /** Connect from here: the Connect tool with the selection as the source; the next click picks the target. */
     public void connectFromSelected() {
-        Optional<String> source = selectedGizmo().map(Gizmo::name).or(() -> selected().filter(Editor::isWalls));
-        if (source.isEmpty()) {
-            say("Select a gizmo to connect from it");
-            return;
-        }
-        setTool(Tool.CONNECT);
-        step = new PendingStep.ConnectingFrom(TriggerSource.named(source.get()));
-        say("Connect from " + source.get() + ": click the gizmo it triggers (Esc cancels)");
-        stateChanged();
-    }
-
-    /**
-     * Deletes the named gizmos and balls as one undo step: the balls first, since an absorber takes the balls it
-     * holds with it.
-     */
-    boolean deleteAll(String verb, List<String> names) {
-        List<String> ordered = new ArrayList<>(names);
-        ordered.sort(Comparator.comparing((String n) -> board.ball(n).isEmpty()));
-        boolean done = edit(verb + listed(names), b -> ordered.forEach(b::delete));
-        if (done) {
-            selection.clear();
-            stateChanged();
-        }
-        return done;
+        links.startFromSelected();
     }
 
     /** "S1, C2 and T1", or for many "S1, C2, T1 and 5 more": the status line and the Edit menu stay short. */
@@ -512,15 +401,19 @@ public final class Editor {
         return String.join(", ", head) + " and " + rest;
     }
 
-    /** A distance as a message shows it: 2, not 2.0; 0.25 as it is. */
-    private static String brief(double v) {
-        return v == Math.rint(v) ? Long.toString((long) v) : Double.toString(v);
-    }
-
     // ---- for the tool handlers ----
 
     NameGenerator names() {
         return names;
+    }
+
+    Picking picking() {
+        return picking;
+    }
+
+    /** Delete, rotate and move of the selection and of what a gesture grabbed. */
+    SelectionEdits selectionEdits() {
+        return selectionEdits;
     }
 
     void setStep(PendingStep next) {
@@ -535,39 +428,7 @@ public final class Editor {
 
     /** Selects without telling the listeners yet (the handler's caller does, once the step is done). */
     void selectQuietly(String name) {
-        selection.clear();
-        if (name != null) {
-            selection.add(name);
-        }
-    }
-
-    /** Moves the named gizmos and balls together by (dx, dy) L (one undo step); no move is no edit. */
-    boolean moveGroup(List<String> names, double dx, double dy) {
-        if (dx == 0 && dy == 0) {
-            return true;
-        }
-        return edit("Moved " + listed(names) + " by (" + brief(dx) + "," + brief(dy) + ")",
-                b -> b.moveGroup(names, dx, dy));
-    }
-
-    /**
-     * Turns a gizmo 90 degrees clockwise. A kind that looks the same turned (a circle, an absorber:
-     * {@link GizmoKind#rotates}) is refused with a message and leaves no undo step, rather than "rotating" with
-     * nothing to see.
-     */
-    boolean rotate(Gizmo gizmo) {
-        if (!gizmo.kind().rotates()) {
-            say(gizmo.name() + " is " + gizmo.kind().withArticle()
-                    + ": it looks the same turned, so it cannot be rotated");
-            stateChanged();
-            return false;
-        }
-        return edit("Rotated " + gizmo.name(), b -> b.rotate(gizmo.name()));
-    }
-
-    boolean delete(String name) {
-        selection.remove(name);
-        return edit("Deleted " + name, b -> b.delete(name));
+        selection.only(name);
     }
 
     boolean edit(String success, Consumer<Board> operation) {
@@ -606,59 +467,14 @@ public final class Editor {
         stateChanged();
     }
 
-    Optional<Gizmo> gizmoAt(double x, double y) {
-        return board.gizmoAt(cell(x), cell(y));
-    }
-
-    Optional<BallView> ballNear(double x, double y) {
-        return board.balls().stream()
-                .filter(b -> Math.hypot(b.position().x() - x, b.position().y() - y) <= BALL_PICK_DISTANCE)
-                .min(Comparator.comparingDouble(b -> Math.hypot(b.position().x() - x, b.position().y() - y)));
-    }
-
-    /** The name of the ball or else the gizmo under the point: a ball first, as it may sit on a gizmo's cell. */
-    Optional<String> ballOrGizmoAt(double x, double y) {
-        return ballNear(x, y).map(BallView::name).or(() -> gizmoAt(x, y).map(Gizmo::name));
-    }
-
-    boolean isWall(double x, double y) {
-        boolean outside = x < 0 || y < 0 || x >= Board.SIZE || y >= Board.SIZE;
-        boolean nearEdge = x < WALL_BAND || y < WALL_BAND || x > Board.SIZE - WALL_BAND || y > Board.SIZE - WALL_BAND;
-        return outside || (nearEdge && gizmoAt(x, y).isEmpty());
-    }
-
     void say(String message) {
         messages.accept(message);
-    }
-
-    static int cell(double v) {
-        return (int) Math.floor(v);
-    }
-
-    static double snap(double v) {
-        return Math.round(v / BALL_SNAP) * BALL_SNAP;
     }
 
     // ---- internals ----
 
     private ToolHandler handler() {
-        return handlers.computeIfAbsent(tool, this::newHandler);
-    }
-
-    private ToolHandler newHandler(Tool t) {
-        return switch (t) {
-            case ABSORBER -> new PlaceAbsorberTool(this);
-            case BALL -> new PlaceBallTool(this);
-            case SELECT -> new SelectTool(this);
-            case ROTATE -> new RotateTool(this);
-            case DELETE -> new DeleteTool(this);
-            case CONNECT -> new ConnectTool(this, true);
-            case DISCONNECT -> new ConnectTool(this, false);
-            case KEY_CONNECT -> new KeyConnectTool(this, true);
-            case KEY_DISCONNECT -> new KeyConnectTool(this, false);
-            // Every other tool places a gizmo of its kind on one cell.
-            default -> new PlaceGizmoTool(this, t.kind().orElseThrow());
-        };
+        return handlers.computeIfAbsent(tool, t -> ToolHandler.of(t, this));
     }
 
     private void cancelQuietly() {

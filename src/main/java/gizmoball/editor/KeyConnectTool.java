@@ -22,12 +22,12 @@ final class KeyConnectTool implements ToolHandler {
 
     @Override
     public Optional<String> target(double x, double y) {
-        return editor.gizmoAt(x, y).map(Gizmo::name);
+        return editor.picking().gizmoAt(x, y).map(Gizmo::name);
     }
 
     @Override
     public void press(double x, double y) {
-        editor.gizmoAt(x, y).ifPresentOrElse(g -> {
+        editor.picking().gizmoAt(x, y).ifPresentOrElse(g -> {
             editor.selectQuietly(g.name());
             editor.setStep(new PendingStep.AwaitingKey(g.name()));
             editor.say(editor.tool().label() + ": now press the key for " + g.name());

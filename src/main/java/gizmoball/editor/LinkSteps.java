@@ -7,6 +7,7 @@ import gizmoball.model.KeyEdge;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Order;
+import gizmoball.model.loop.TriggerSource;
 import java.util.List;
 import java.util.Optional;
 
@@ -86,5 +87,19 @@ public final class LinkSteps {
             return editor.board().gizmo(pending.target()).map(Gizmo::kind);
         }
         return Optional.empty();
+    }
+
+    /** Connect from the selection (a gizmo or the outer walls): the Connect tool, waiting for the target. */
+    void startFromSelected() {
+        Optional<String> source = editor.selectedGizmo().map(Gizmo::name)
+                .or(() -> editor.selected().filter(Selection::isWalls));
+        if (source.isEmpty()) {
+            editor.say("Select a gizmo to connect from it");
+            return;
+        }
+        editor.setTool(Tool.CONNECT);
+        editor.setStep(new PendingStep.ConnectingFrom(TriggerSource.named(source.get())));
+        editor.say("Connect from " + source.get() + ": click the gizmo it triggers (Esc cancels)");
+        editor.stateChanged();
     }
 }

@@ -17,29 +17,11 @@ public final class NameGenerator {
     }
 
     public String nextGizmoName(GizmoKind kind) {
-        return next(prefix(kind));
+        return next(kind.namePrefix());
     }
 
     public String nextBallName() {
         return next(BALL_PREFIX);
-    }
-
-    static String prefix(GizmoKind kind) {
-        return switch (kind) {
-            case SQUARE -> "S";
-            case CIRCLE -> "C";
-            case TRIANGLE -> "T";
-            case LEFT_FLIPPER -> "LF";
-            case RIGHT_FLIPPER -> "RF";
-            case ABSORBER -> "A";
-            case SINK -> "SK";
-            case ACCELERATOR -> "AC";
-            case SPAWNER -> "SP";
-            case GATE -> "G";
-            case DROP_TARGET -> "DT";
-            case PORTAL -> "P";
-            case SPINNER -> "SN";
-        };
     }
 
     private String next(String prefix) {

@@ -12,19 +12,19 @@ final class PlaceAbsorberTool implements ToolHandler {
 
     @Override
     public Preview hover(double x, double y) {
-        return footprint(Editor.cell(x), Editor.cell(y), Editor.cell(x), Editor.cell(y));
+        return footprint(Picking.cell(x), Picking.cell(y), Picking.cell(x), Picking.cell(y));
     }
 
     @Override
     public void press(double x, double y) {
-        editor.setStep(new PendingStep.DraggingAbsorber(Editor.cell(x), Editor.cell(y)));
+        editor.setStep(new PendingStep.DraggingAbsorber(Picking.cell(x), Picking.cell(y)));
         drag(x, y);
     }
 
     @Override
     public void drag(double x, double y) {
         if (editor.step() instanceof PendingStep.DraggingAbsorber a) {
-            editor.setPreview(footprint(a.x0(), a.y0(), Editor.cell(x), Editor.cell(y)), true);
+            editor.setPreview(footprint(a.x0(), a.y0(), Picking.cell(x), Picking.cell(y)), true);
         }
     }
 
@@ -33,7 +33,7 @@ final class PlaceAbsorberTool implements ToolHandler {
         if (!(editor.step() instanceof PendingStep.DraggingAbsorber a)) {
             return;
         }
-        Preview.Footprint f = footprint(a.x0(), a.y0(), Editor.cell(x), Editor.cell(y));
+        Preview.Footprint f = footprint(a.x0(), a.y0(), Picking.cell(x), Picking.cell(y));
         editor.finishGesture();
         if (f.problem().isPresent()) {
             // In the preview's words, as the drag showed it (see PlaceGizmoTool).

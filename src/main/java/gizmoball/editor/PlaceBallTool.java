@@ -13,12 +13,12 @@ final class PlaceBallTool implements ToolHandler {
 
     @Override
     public Preview hover(double x, double y) {
-        return placement(Editor.snap(x), Editor.snap(y), 0, 0);
+        return placement(Picking.snap(x), Picking.snap(y), 0, 0);
     }
 
     @Override
     public void press(double x, double y) {
-        editor.setStep(new PendingStep.PlacingBall(Editor.snap(x), Editor.snap(y), x, y));
+        editor.setStep(new PendingStep.PlacingBall(Picking.snap(x), Picking.snap(y), x, y));
         drag(x, y);
     }
 
@@ -45,7 +45,7 @@ final class PlaceBallTool implements ToolHandler {
 
     /** Measured from where the button went down, not from the snapped centre: a click is no velocity. */
     private Preview.BallPlacement placement(PendingStep.PlacingBall b, double x, double y) {
-        boolean still = Math.hypot(x - b.pressX(), y - b.pressY()) < Editor.DRAG_THRESHOLD;
+        boolean still = Math.hypot(x - b.pressX(), y - b.pressY()) < Picking.DRAG_THRESHOLD;
         return still ? placement(b.x(), b.y(), 0, 0)
                 : placement(b.x(), b.y(), velocity(x - b.pressX()), velocity(y - b.pressY()));
     }

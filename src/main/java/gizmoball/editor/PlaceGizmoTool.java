@@ -21,12 +21,12 @@ final class PlaceGizmoTool implements ToolHandler {
 
     @Override
     public Preview hover(double x, double y) {
-        return editor.footprint(kind, Editor.cell(x), Editor.cell(y), kind.width(), kind.height());
+        return editor.footprint(kind, Picking.cell(x), Picking.cell(y), kind.width(), kind.height());
     }
 
     @Override
     public void press(double x, double y) {
-        editor.setStep(new PendingStep.Filling(Editor.cell(x), Editor.cell(y)));
+        editor.setStep(new PendingStep.Filling(Picking.cell(x), Picking.cell(y)));
         // Hovering has said already whether the cell is free.
         editor.setPreview(hover(x, y), false);
     }
@@ -44,7 +44,7 @@ final class PlaceGizmoTool implements ToolHandler {
             return;
         }
         editor.finishGesture();
-        if (Editor.cell(x) == f.x0() && Editor.cell(y) == f.y0()) {
+        if (Picking.cell(x) == f.x0() && Picking.cell(y) == f.y0()) {
             placeOne(x, y);
         } else {
             placeAll(fill(f, x, y));
@@ -57,8 +57,8 @@ final class PlaceGizmoTool implements ToolHandler {
      * clicking say the same thing, and no message names the gizmo that was never made.
      */
     private void placeOne(double x, double y) {
-        int cx = Editor.cell(x);
-        int cy = Editor.cell(y);
+        int cx = Picking.cell(x);
+        int cy = Picking.cell(y);
         Preview footprint = hover(x, y);
         if (footprint.problem().isPresent()) {
             editor.say(footprint.problem().get());
@@ -101,10 +101,10 @@ final class PlaceGizmoTool implements ToolHandler {
     private Preview.Group fill(PendingStep.Filling from, double x, double y) {
         int w = kind.width();
         int h = kind.height();
-        int columns = Math.abs(Editor.cell(x) - from.x0()) / w + 1;
-        int rows = Math.abs(Editor.cell(y) - from.y0()) / h + 1;
-        int sx = Editor.cell(x) < from.x0() ? -w : w;
-        int sy = Editor.cell(y) < from.y0() ? -h : h;
+        int columns = Math.abs(Picking.cell(x) - from.x0()) / w + 1;
+        int rows = Math.abs(Picking.cell(y) - from.y0()) / h + 1;
+        int sx = Picking.cell(x) < from.x0() ? -w : w;
+        int sy = Picking.cell(y) < from.y0() ? -h : h;
         List<Preview> fits = new ArrayList<>();
         for (int row = 0; row < rows; row++) {
             for (int column = 0; column < columns; column++) {

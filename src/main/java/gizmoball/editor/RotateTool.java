@@ -13,14 +13,14 @@ final class RotateTool implements ToolHandler {
 
     @Override
     public Optional<String> target(double x, double y) {
-        return editor.gizmoAt(x, y).map(Gizmo::name);
+        return editor.picking().gizmoAt(x, y).map(Gizmo::name);
     }
 
     @Override
     public void press(double x, double y) {
-        editor.gizmoAt(x, y).ifPresentOrElse(g -> {
+        editor.picking().gizmoAt(x, y).ifPresentOrElse(g -> {
             editor.selectQuietly(g.name());
-            editor.rotate(g);
+            editor.selectionEdits().rotate(g);
         }, () -> editor.say("No gizmo here to rotate"));
     }
 }

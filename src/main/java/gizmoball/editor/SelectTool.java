@@ -2,7 +2,6 @@ package gizmoball.editor;
 
 import gizmoball.model.Board;
 import gizmoball.model.gizmo.Gizmo;
-import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.TriggerSource;
 import java.util.ArrayList;
@@ -23,15 +22,15 @@ final class SelectTool implements ToolHandler {
 
     @Override
     public Optional<String> target(double x, double y) {
-        return editor.ballOrGizmoAt(x, y);
+        return editor.picking().ballOrGizmoAt(x, y);
     }
 
     @Override
     public void press(double x, double y) {
         Optional<Handle> handle = editor.handles().stream().filter(h -> h.grabbedAt(x, y)).findFirst();
-        Optional<BallView> ball = editor.ballNear(x, y);
-        Optional<Gizmo> gizmo = editor.gizmoAt(x, y);
-        Optional<String> grabbed = editor.ballOrGizmoAt(x, y);
+        Optional<BallView> ball = editor.picking().ballNear(x, y);
+        Optional<Gizmo> gizmo = editor.picking().gizmoAt(x, y);
+        Optional<String> grabbed = editor.picking().ballOrGizmoAt(x, y);
         if (handle.isPresent()) {
             Handle h = handle.get();
             editor.setStep(new PendingStep.ResizingAbsorber(editor.selectedGizmo().orElseThrow(), h.left(), h.top(),
@@ -44,7 +43,7 @@ final class SelectTool implements ToolHandler {
         } else if (gizmo.isPresent()) {
             Gizmo g = gizmo.get();
             editor.selectQuietly(g.name());
-            editor.setStep(new PendingStep.MovingGizmo(g, Editor.cell(x) - g.x(), Editor.cell(y) - g.y()));
+            editor.setStep(new PendingStep.MovingGizmo(g, Picking.cell(x) - g.x(), Picking.cell(y) - g.y()));
         } else {
             editor.setStep(new PendingStep.Banding(x, y, x, y, false));
         }
@@ -53,7 +52,7 @@ final class SelectTool implements ToolHandler {
     /** Shift+press: a gizmo or ball goes into the selection or out of it; from empty space a band adds. */
     @Override
     public void pressExtending(double x, double y) {
-        Optional<String> there = editor.ballOrGizmoAt(x, y);
+        Optional<String> there = editor.picking().ballOrGizmoAt(x, y);
         if (there.isPresent()) {
             editor.toggleSelected(there.get());
         } else {
@@ -88,7 +87,7 @@ final class SelectTool implements ToolHandler {
             editor.edit("Moved " + m.ball().name() + " to (" + p.x() + ", " + p.y() + ")",
                     b -> b.moveBall(m.ball().name(), p.x(), p.y()));
         } else if (step instanceof PendingStep.MovingGroup m && target instanceof Preview.Group group) {
-            editor.moveGroup(m.names(), group.dx(), group.dy());
+            editor.selectionEdits().moveGroup(m.names(), group.dx(), group.dy());
         } else if (step instanceof PendingStep.ResizingAbsorber r && target instanceof Preview.Footprint f) {
             resize(r.absorber(), f);
         }
@@ -111,9 +110,9 @@ final class SelectTool implements ToolHandler {
      * nothing. Otherwise the gizmos it touches and the balls whose centres it holds are selected.
      */
     private void selectBanded(PendingStep.Banding band, double x, double y) {
-        if (Math.hypot(x - band.x0(), y - band.y0()) < Editor.DRAG_THRESHOLD) {
+        if (Math.hypot(x - band.x0(), y - band.y0()) < Picking.DRAG_THRESHOLD) {
             if (!band.adding()) {
-                editor.select(editor.isWall(x, y) ? TriggerSource.OUTER_WALLS.name() : null);
+                editor.select(editor.picking().isWall(x, y) ? TriggerSource.OUTER_WALLS.name() : null);
             }
             return;
         }
@@ -142,16 +141,16 @@ final class SelectTool implements ToolHandler {
     private Preview moveTo(double x, double y) {
         if (editor.step() instanceof PendingStep.MovingGizmo m) {
             Gizmo g = m.gizmo();
-            int tx = Editor.cell(x) - m.grabDx();
-            int ty = Editor.cell(y) - m.grabDy();
+            int tx = Picking.cell(x) - m.grabDx();
+            int ty = Picking.cell(y) - m.grabDy();
             return new Preview.Footprint(tx, ty, g.width(), g.height(),
                     editor.board().placementProblem(g.kind(), tx, ty, g.width(), g.height(), g.name()));
         }
         if (editor.step() instanceof PendingStep.MovingBall m
-                && Math.hypot(x - m.pressX(), y - m.pressY()) >= Editor.DRAG_THRESHOLD) {
+                && Math.hypot(x - m.pressX(), y - m.pressY()) >= Picking.DRAG_THRESHOLD) {
             BallView ball = m.ball();
-            double tx = Editor.snap(ball.position().x() + x - m.pressX());
-            double ty = Editor.snap(ball.position().y() + y - m.pressY());
+            double tx = Picking.snap(ball.position().x() + x - m.pressX());
+            double ty = Picking.snap(ball.position().y() + y - m.pressY());
             return new Preview.BallPlacement(tx, ty, ball.velocity().x(), ball.velocity().y(),
                     editor.dryRun(b -> b.moveBall(ball.name(), tx, ty)));
         }
@@ -168,8 +167,8 @@ final class SelectTool implements ToolHandler {
     private Preview.Group groupMove(PendingStep.MovingGroup m, double x, double y) {
         Board board = editor.board();
         boolean cells = m.names().stream().anyMatch(n -> board.gizmo(n).isPresent());
-        double dx = cells ? Editor.cell(x) - Editor.cell(m.pressX()) : Editor.snap(x - m.pressX());
-        double dy = cells ? Editor.cell(y) - Editor.cell(m.pressY()) : Editor.snap(y - m.pressY());
+        double dx = cells ? Picking.cell(x) - Picking.cell(m.pressX()) : Picking.snap(x - m.pressX());
+        double dy = cells ? Picking.cell(y) - Picking.cell(m.pressY()) : Picking.snap(y - m.pressY());
         List<Preview> parts = new ArrayList<>();
         for (String name : m.names()) {
             board.gizmo(name).ifPresent(g -> parts.add(new Preview.Footprint(g.x() + (int) dx, g.y() + (int) dy,
@@ -190,6 +189,6 @@ final class SelectTool implements ToolHandler {
         int top = r.top() ? (int) Math.round(y) : a.y();
         int bottom = r.bottom() ? (int) Math.round(y) : a.y() + a.height();
         return new Preview.Footprint(left, top, right - left, bottom - top, editor.board().placementProblem(
-                GizmoKind.ABSORBER, left, top, right - left, bottom - top, a.name()));
+                a.kind(), left, top, right - left, bottom - top, a.name()));
     }
 }

@@ -7,6 +7,23 @@ import java.util.Optional;
  * is the editor's {@link PendingStep}, so switching tools or cancelling needs nothing from them.
  */
 interface ToolHandler {
+    /** The handler of tool {@code t} in {@code editor}. */
+    static ToolHandler of(Tool t, Editor editor) {
+        return switch (t) {
+            case ABSORBER -> new PlaceAbsorberTool(editor);
+            case BALL -> new PlaceBallTool(editor);
+            case SELECT -> new SelectTool(editor);
+            case ROTATE -> new RotateTool(editor);
+            case DELETE -> new DeleteTool(editor);
+            case CONNECT -> new ConnectTool(editor, true);
+            case DISCONNECT -> new ConnectTool(editor, false);
+            case KEY_CONNECT -> new KeyConnectTool(editor, true);
+            case KEY_DISCONNECT -> new KeyConnectTool(editor, false);
+            // Every other tool places a gizmo of its kind on one cell.
+            default -> new PlaceGizmoTool(editor, t.kind().orElseThrow());
+        };
+    }
+
     /** The preview under the pointer with no button down, or null for none. */
     default Preview hover(double x, double y) {
         return null;

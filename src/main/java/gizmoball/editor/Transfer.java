@@ -6,7 +6,6 @@ import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.gizmo.Gizmo;
-import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.Connection;
 import gizmoball.model.loop.TriggerSource;
@@ -129,7 +128,7 @@ final class Transfer {
 
     /** A gizmo like {@code g} of {@code from}, named {@code name}, moved by (dx, dy): kind, turns, colour, setting, rules. */
     private static void addGizmo(Board to, Board from, Gizmo g, String name, int dx, int dy) {
-        if (g.kind() == GizmoKind.ABSORBER) {
+        if (g.kind().sizedByCorners()) {
             to.addAbsorber(name, g.x() + dx, g.y() + dy, g.x() + dx + g.width(), g.y() + dy + g.height());
         } else {
             to.addGizmo(g.kind(), name, g.x() + dx, g.y() + dy);

@@ -24,19 +24,28 @@ import physics.Vect;
 
 /**
  * The board as the loop sees it and acts on it: the one way in for a {@link TickRun}, which may not use the model's
- * package. Each member hands the loop one of the board's parts or one of its numbers; the board keeps them.
+ * package. Each member hands the loop one of the board's parts or one of its numbers; the board keeps them. It also
+ * keeps the loop's own switches, which only tests and the benchmark turn (through the board), and what the last
+ * redraw cost, for the tick's report.
  */
 final class BoardLoop implements LoopView, LoopActions {
-    private final Board board;
+    private final PhysicsConstants constants;
+    private final Clock clock;
     private final Registry registry;
     private final Wiring wiring;
     private final Play play;
     private final Sleepers sleepers;
     /** Reused by every tick: the broad phase for ball pairs. */
     private final BallGrid ballGrid = new BallGrid();
+    private boolean spatialIndexEnabled = true;
+    private LoopMode loopMode = LoopMode.CONTINUOUS;
+    private double nextCollisionLookAhead;
+    private long lastRedrawNanos;
 
-    BoardLoop(Board board, Registry registry, Wiring wiring, Play play, Sleepers sleepers) {
-        this.board = board;
+    BoardLoop(PhysicsConstants constants, Clock clock, Registry registry, Wiring wiring, Play play,
+            Sleepers sleepers) {
+        this.constants = constants;
+        this.clock = clock;
         this.registry = registry;
         this.wiring = wiring;
         this.play = play;
@@ -80,32 +89,43 @@ final class BoardLoop implements LoopView, LoopActions {
 
     @Override
     public boolean spatialIndexEnabled() {
-        return board.spatialIndexEnabled();
+        return spatialIndexEnabled;
+    }
+
+    void setSpatialIndexEnabled(boolean enabled) {
+        spatialIndexEnabled = enabled;
     }
 
     @Override
     public Vect gravity() {
-        return new Vect(0, board.gravity());   // the board's gravity pulls down the board, along +y
+        return new Vect(0, constants.gravity());   // the board's gravity pulls down the board, along +y
     }
 
     @Override
     public double mu() {
-        return board.mu();
+        return constants.mu();
     }
 
     @Override
     public double mu2() {
-        return board.mu2();
+        return constants.mu2();
     }
 
     @Override
     public double time() {
-        return board.time();
+        return clock.time();
     }
 
     @Override
     public LoopMode loopMode() {
-        return board.loopMode();
+        return loopMode;
+    }
+
+    void setLoopMode(LoopMode mode) {
+        if (mode == null) {
+            throw new IllegalArgumentException("loop mode must not be null");
+        }
+        loopMode = mode;
     }
 
     @Override
@@ -115,12 +135,23 @@ final class BoardLoop implements LoopView, LoopActions {
 
     @Override
     public double nextCollisionLookAhead() {
-        return board.nextCollisionLookAhead();
+        return nextCollisionLookAhead;
+    }
+
+    void setNextCollisionLookAhead(double seconds) {
+        if (!(seconds >= 0) || Double.isInfinite(seconds)) {
+            throw new IllegalArgumentException("look-ahead must be finite and not negative, got " + seconds);
+        }
+        nextCollisionLookAhead = seconds;
     }
 
     @Override
     public long lastRedrawNanos() {
-        return board.lastRedrawNanos();
+        return lastRedrawNanos;
+    }
+
+    void setLastRedrawNanos(long nanos) {
+        lastRedrawNanos = nanos;
     }
 
     @Override
@@ -170,6 +201,13 @@ final class BoardLoop implements LoopView, LoopActions {
 
     @Override
     public void advanceTime(double dt) {
-        board.advanceTime(dt);
+        clock.advance(dt);
+        play.clockMoved();
+    }
+
+    /** The switches of {@code source}'s loop (a copy of a board plays as its original does). */
+    void copySwitchesFrom(BoardLoop source) {
+        loopMode = source.loopMode;
+        spatialIndexEnabled = source.spatialIndexEnabled;
     }
 }

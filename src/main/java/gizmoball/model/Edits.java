@@ -44,7 +44,7 @@ final class Edits {
     }
 
     void addGizmo(GizmoKind kind, String name, int x, int y) {
-        if (kind == null || kind == GizmoKind.ABSORBER) {
+        if (kind == null || kind.sizedByCorners()) {
             throw new BoardEditException("cannot add " + name + ": addGizmo takes a bumper or flipper kind, not "
                     + kind + " (absorbers are added with their corners)");
         }

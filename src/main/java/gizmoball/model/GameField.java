@@ -16,24 +16,26 @@ import physics.Vect;
  * serve into the launcher.
  */
 final class GameField implements Playfield {
-    private final Board board;
+    private final GameSettings settings;
+    private final Clock clock;
     private final Registry registry;
     private final Play play;
 
-    GameField(Board board, Registry registry, Play play) {
-        this.board = board;
+    GameField(GameSettings settings, Clock clock, Registry registry, Play play) {
+        this.settings = settings;
+        this.clock = clock;
         this.registry = registry;
         this.play = play;
     }
 
     @Override
     public GameRules rules() {
-        return board.gameRules();
+        return settings.rules();
     }
 
     @Override
     public double time() {
-        return board.time();
+        return clock.time();
     }
 
     @Override
@@ -48,7 +50,7 @@ final class GameField implements Playfield {
 
     @Override
     public boolean isLauncher(String absorber) {
-        return board.gameRules().isDrain(absorber)
+        return settings.rules().isDrain(absorber)
                 || registry.gizmo(absorber) instanceof Absorber a && a.plunger().isPresent();
     }
 
@@ -63,7 +65,7 @@ final class GameField implements Playfield {
                 .findFirst());
         Optional<Absorber> launcher = absorbers().filter(a -> a.plunger().isPresent()).findFirst()
                 .or(() -> holder)
-                .or(() -> absorbers().filter(a -> board.gameRules().isDrain(a.name())).findFirst());
+                .or(() -> absorbers().filter(a -> settings.rules().isDrain(a.name())).findFirst());
         if (launcher.isEmpty()) {
             return false;
         }

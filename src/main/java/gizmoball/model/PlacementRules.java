@@ -33,7 +33,7 @@ final class PlacementRules {
         if (kind == null) {
             return Optional.of("no gizmo kind given");
         }
-        if (kind == GizmoKind.ABSORBER) {
+        if (kind.sizedByCorners()) {
             if (width < 1 || height < 1) {
                 return Optional.of("an absorber must be at least one cell wide and high, not " + width + "x" + height);
             }

@@ -4,6 +4,7 @@ import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.SwitchedCell;
 import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Ball;
 import gizmoball.model.loop.Sleepers;
 import gizmoball.model.loop.SpatialIndex;
@@ -15,6 +16,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+
+import physics.Vect;
 
 /**
  * The gizmos and balls of a board by name, in board order, with the grid of cells the gizmos occupy, the moving
@@ -184,5 +187,17 @@ final class Registry {
             return two.contains(null) || two.get(0).isCaptured() || two.get(1).isCaptured()
                     || !Overlaps.balls(two.get(0).position(), two.get(1).position());
         });
+    }
+
+    /** Sum over free balls of |v|^2/2 + gravity * (SIZE - y), unit mass. */
+    double energy(double gravity) {
+        double total = 0;
+        for (Ball ball : balls.values()) {
+            if (!ball.isCaptured()) {
+                Vect v = ball.velocity();
+                total += v.dot(v) / 2 + gravity * (Arena.SIZE - ball.position().y());
+            }
+        }
+        return total;
     }
 }

@@ -38,7 +38,7 @@ public record AimScenario(Board board, String ball) {
                     }
                 } else if (p instanceof Preview.Footprint f) {
                     Optional<GizmoKind> kind = tool.kind();
-                    if (kind.filter(k -> k == GizmoKind.ABSORBER).isPresent()) {
+                    if (kind.filter(GizmoKind::sizedByCorners).isPresent()) {
                         board.addAbsorber(unusedName(board), f.x(), f.y(), f.x() + f.width(), f.y() + f.height());
                     } else if (kind.isPresent()) {
                         board.addGizmo(kind.get(), unusedName(board), f.x(), f.y());

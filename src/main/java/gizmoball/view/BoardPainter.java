@@ -62,22 +62,9 @@ public final class BoardPainter {
     private BoardPainter() {
     }
 
-    /** The fill colour of a gizmo kind at rest. */
+    /** The fill colour of a gizmo kind at rest ({@link GizmoArt#colourOf}). */
     public static Color colourOf(GizmoKind kind) {
-        return switch (kind) {
-            case SQUARE -> new Color(0xe0483e);
-            case CIRCLE -> new Color(0x3fbf5a);
-            case TRIANGLE -> new Color(0x3d86f0);
-            case LEFT_FLIPPER, RIGHT_FLIPPER -> new Color(0xf2b705);
-            case ABSORBER -> new Color(0xb24fd6);
-            case SINK -> new Color(0x5a6478);
-            case ACCELERATOR -> new Color(0xff8a1f);
-            case SPAWNER -> new Color(0x2bb3a6);
-            case GATE -> new Color(0xc9a46b);
-            case DROP_TARGET -> new Color(0xe8467c);
-            case PORTAL -> new Color(0x6a5cff);
-            case SPINNER -> new Color(0xb8d432);
-        };
+        return GizmoArt.colourOf(kind);
     }
 
     /** The fill colour of a gizmo at rest: its own colour if it has one, otherwise its kind's. */

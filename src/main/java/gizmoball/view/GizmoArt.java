@@ -227,6 +227,24 @@ enum GizmoArt {
         };
     }
 
+    /** The fill colour of a gizmo kind at rest. */
+    static Color colourOf(GizmoKind kind) {
+        return switch (kind) {
+            case SQUARE -> new Color(0xe0483e);
+            case CIRCLE -> new Color(0x3fbf5a);
+            case TRIANGLE -> new Color(0x3d86f0);
+            case LEFT_FLIPPER, RIGHT_FLIPPER -> new Color(0xf2b705);
+            case ABSORBER -> new Color(0xb24fd6);
+            case SINK -> new Color(0x5a6478);
+            case ACCELERATOR -> new Color(0xff8a1f);
+            case SPAWNER -> new Color(0x2bb3a6);
+            case GATE -> new Color(0xc9a46b);
+            case DROP_TARGET -> new Color(0xe8467c);
+            case PORTAL -> new Color(0x6a5cff);
+            case SPINNER -> new Color(0xb8d432);
+        };
+    }
+
     /**
      * Whether play changes how it looks: then it is painted with the moving part of the board, every frame; otherwise
      * with the fixed part, which only an edit changes (and again over it while it flashes).

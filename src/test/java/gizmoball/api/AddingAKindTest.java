@@ -40,7 +40,9 @@ class AddingAKindTest {
                 perKind.add(MAIN.relativize(file).toString().replace('\\', '/'));
             }
         }
-        assertThat(perKind).as("files naming every extension kind (not vacuous)").hasSizeGreaterThanOrEqualTo(8);
+        // Not vacuous: the kinds' own home and their views' sealed list name each of them, however few others do.
+        assertThat(perKind).as("files naming every extension kind").contains("model/gizmo/GizmoKind.java",
+                "model/gizmo/Gizmo.java");
         assertThat(listed).as("design.md, \"Adding a gizmo kind\"").containsAll(perKind);
         listed.stream().filter(f -> !f.contains("<Kind>"))
                 .forEach(f -> assertThat(MAIN.resolve(f)).as("listed file").isRegularFile());

@@ -12,7 +12,7 @@ class KeyRepeatFilterTest {
     private static final int Z = 90;
 
     private final List<String> edges = new ArrayList<>();
-    private final KeyRepeatFilter filter = new KeyRepeatFilter(new KeyRepeatFilter.Sink() {
+    private final KeyRepeatFilter filter = new KeyRepeatFilter(new KeyRepeatFilter.Edges() {
         @Override
         public void down(int keyCode) {
             edges.add("down " + keyCode);

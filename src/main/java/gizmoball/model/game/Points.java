@@ -10,21 +10,8 @@ public final class Points {
     private Points() {
     }
 
-    /**
-     * The bumpers score, the more the harder they are to hit (an accelerator a little: it is easy to hit again; a
-     * drop target most, hit once until it is raised again);
-     * flippers, absorbers and sinks, like the walls, score nothing unless the board says (a sink scores when it
-     * takes a ball).
-     */
+    /** What a real hit on a gizmo of the kind scores unless the board gives the gizmo its own. */
     public static int defaultFor(GizmoKind kind) {
-        return switch (kind) {
-            case SQUARE -> 10;
-            case TRIANGLE -> 25;
-            case CIRCLE -> 50;
-            case ACCELERATOR -> 20;
-            case DROP_TARGET -> 100;
-            case SPINNER -> 5;
-            case LEFT_FLIPPER, RIGHT_FLIPPER, ABSORBER, SINK, SPAWNER, GATE, PORTAL -> 0;
-        };
+        return kind.defaultPoints();
     }
 }

@@ -89,6 +89,12 @@ public final class Flipper extends GizmoBase implements FlipperView, MovingShape
         return active;
     }
 
+    /** Swung where play moved it from rest (away from it, or on its way up); at rest and down, as built. */
+    @Override
+    public PlayState playState() {
+        return angle != 0 || active ? new PlayState.Swung(angle, active) : new PlayState.AsBuilt();
+    }
+
     @Override
     public boolean isMoving() {
         return !blocked && (active ? angle < MAX_ANGLE : angle > 0);

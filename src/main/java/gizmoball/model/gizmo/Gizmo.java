@@ -34,4 +34,7 @@ public sealed interface Gizmo permits BumperView, FlipperView, AbsorberView, Sin
 
     /** The value its author set on it beyond its place, turn and colour; {@link Setting.None} for most kinds. */
     Setting setting();
+
+    /** What play has changed of it, for a save during play; {@link PlayState.AsBuilt} for most kinds and at rest. */
+    PlayState playState();
 }

@@ -86,6 +86,11 @@ public abstract sealed class GizmoBase permits Bumper, Flipper, PolygonGizmo, Ac
         return this instanceof Absorber || this instanceof Sink;
     }
 
+    /** Play changes nothing of most kinds that a save must write; a kind it changes says what. */
+    public PlayState playState() {
+        return new PlayState.AsBuilt();
+    }
+
     /** Most kinds hold nothing beyond their place, turn and colour; a kind that does says what. */
     public Setting setting() {
         return new Setting.None();

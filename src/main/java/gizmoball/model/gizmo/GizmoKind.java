@@ -4,17 +4,41 @@ import java.util.List;
 import java.util.Locale;
 
 /**
- * The kinds of gizmo a board can hold, with the footprint each occupies (an absorber's size is per gizmo), the class
- * that plays each and the name the player sees.
+ * The kinds of gizmo a board can hold, and the one home of what each kind is beyond its class: the footprint it
+ * occupies (an absorber's size is per gizmo), the prefix of the names the editor gives it, what a hit on it scores
+ * unless the board says, the class that plays it and the name the player sees.
  */
 public enum GizmoKind {
-    SQUARE(1), CIRCLE(1), TRIANGLE(1), LEFT_FLIPPER(2), RIGHT_FLIPPER(2), ABSORBER(1), SINK(1), ACCELERATOR(1), SPAWNER(1), GATE(1),
-    DROP_TARGET(1), PORTAL(1), SPINNER(2);
+    // The bumpers score, the more the harder they are to hit (an accelerator a little: it is easy to hit again; a
+    // drop target most, hit once until it is raised again); flippers, absorbers and sinks, like the walls, score
+    // nothing unless the board says (a sink scores when it takes a ball).
+    SQUARE(1, "S", 10), CIRCLE(1, "C", 50), TRIANGLE(1, "T", 25), LEFT_FLIPPER(2, "LF", 0), RIGHT_FLIPPER(2, "RF", 0),
+    ABSORBER(1, "A", 0), SINK(1, "SK", 0), ACCELERATOR(1, "AC", 20), SPAWNER(1, "SP", 0), GATE(1, "G", 0),
+    DROP_TARGET(1, "DT", 100), PORTAL(1, "P", 0), SPINNER(2, "SN", 5);
 
     private final int side;
+    private final String namePrefix;
+    private final int defaultPoints;
 
-    GizmoKind(int side) {
+    /**
+     * @param side          its footprint's side in cells
+     * @param namePrefix    what the names the editor gives it start with (S1, LF2), one of its own
+     * @param defaultPoints what a real hit on it scores unless the board gives the gizmo its own
+     */
+    GizmoKind(int side, String namePrefix, int defaultPoints) {
         this.side = side;
+        this.namePrefix = namePrefix;
+        this.defaultPoints = defaultPoints;
+    }
+
+    /** What the names the editor gives gizmos of this kind start with, before a number: S1, C2, LF1. */
+    public String namePrefix() {
+        return namePrefix;
+    }
+
+    /** What a real hit on it scores unless the board gives the gizmo a value of its own. */
+    public int defaultPoints() {
+        return defaultPoints;
     }
 
     public int width() {
@@ -86,6 +110,19 @@ public enum GizmoKind {
      * kind, so that a new kind says).
      */
     public boolean canDrain() {
+        return switch (this) {
+            case ABSORBER -> true;
+            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER, GATE, DROP_TARGET,
+                    PORTAL, SPINNER -> false;
+        };
+    }
+
+    /**
+     * Whether each gizmo of this kind has a size of its own, given by its corners (an absorber's; the board's
+     * {@code addAbsorber}) and changed by dragging its edges, rather than the kind's {@link #width} and {@link #height}.
+     * A switch over every kind, so that a new kind says.
+     */
+    public boolean sizedByCorners() {
         return switch (this) {
             case ABSORBER -> true;
             case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER, GATE, DROP_TARGET,

@@ -92,6 +92,12 @@ public final class Spinner extends GizmoBase implements SpinnerView, MovingShape
         return running;
     }
 
+    /** Turned where play moved it from its start or stopped it; at its start and running, as built. */
+    @Override
+    public PlayState playState() {
+        return angle != 0 || !running ? new PlayState.Turned(angle, running) : new PlayState.AsBuilt();
+    }
+
     @Override
     public Vect pivot() {
         return new Vect(x() + 1, y() + 1);

@@ -37,6 +37,12 @@ public abstract sealed class SwitchedCell extends GizmoBase permits Gate, DropTa
         return solid;
     }
 
+    /** Opened while nothing (a gate open, a drop target down), waiting or not: loaded again, it is nothing. */
+    @Override
+    public final PlayState playState() {
+        return solid ? new PlayState.AsBuilt() : new PlayState.Opened();
+    }
+
     /** Whether it is nothing now only because a ball lies in its cell: it becomes solid once the cell is clear. */
     public boolean isWaiting() {
         return waiting;

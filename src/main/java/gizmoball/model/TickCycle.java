@@ -1,0 +1,55 @@
+package gizmoball.model;
+
+import gizmoball.model.game.Game;
+import gizmoball.model.loop.GuardCounts;
+import gizmoball.model.loop.TickReport;
+import gizmoball.model.loop.TickRun;
+
+/**
+ * One tick of play around the loop (docs/design.md, "The tick"): the delayed actions due first, then the loop,
+ * then what waits for the tick's end (hit drop targets, gates, spawns, sunk balls, plunger pulls), the clock, the
+ * game, and the redraw, whose cost the next tick's report states. It keeps the last report and the guards' counts.
+ */
+final class TickCycle {
+    private final Play play;
+    private final Clock clock;
+    private final Game game;
+    private final BoardLoop loop;
+    /** The loop, kept with its books from tick to tick. */
+    private final TickRun tickRun;
+    private TickReport lastTick = TickReport.NONE;
+    private GuardCounts guardsFired = GuardCounts.NONE;
+
+    TickCycle(Play play, Clock clock, Game game, BoardLoop loop) {
+        this.play = play;
+        this.clock = clock;
+        this.game = game;
+        this.loop = loop;
+        this.tickRun = new TickRun(loop, loop);
+    }
+
+    /** Runs a tick of {@code dt} seconds (finite, not negative: the board checks), then {@code redraw}. */
+    void run(double dt, Runnable redraw) {
+        play.performDue(clock.time());
+        play.ticking(true);
+        lastTick = tickRun.run(dt);
+        play.dropHitTargets(lastTick.events());
+        play.ticking(false);
+        play.removeSunk();
+        play.holdPulls(dt);
+        clock.tickDone();
+        game.afterTick(clock.ticks(), lastTick.events());
+        guardsFired = guardsFired.plus(lastTick.guards());
+        long start = System.nanoTime();
+        redraw.run();
+        loop.setLastRedrawNanos(System.nanoTime() - start);
+    }
+
+    TickReport lastTick() {
+        return lastTick;
+    }
+
+    GuardCounts guardsFired() {
+        return guardsFired;
+    }
+}
