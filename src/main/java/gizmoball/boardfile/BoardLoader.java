@@ -2,7 +2,8 @@ package gizmoball.boardfile;
 
 import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
-import gizmoball.model.gizmo.PortalView;
+import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.Setting;
 import gizmoball.model.loop.TriggerSource;
 import java.util.ArrayList;
 import java.util.Comparator;
@@ -174,8 +175,10 @@ final class BoardLoader {
                     && portal(c.target()) != null ? c : null;
         }
 
-        private PortalView portal(String name) {
-            return board.gizmo(name).filter(PortalView.class::isInstance).map(PortalView.class::cast).orElse(null);
+        /** The pair of the gizmo of that name if it is one that is paired (a portal), or null. */
+        private Setting.Pair portal(String name) {
+            return board.gizmo(name).map(Gizmo::setting).filter(Setting.Pair.class::isInstance)
+                    .map(Setting.Pair.class::cast).orElse(null);
         }
 
         /**
@@ -185,11 +188,11 @@ final class BoardLoader {
         private void pairLinked(ParsedFile.Line line, Command.Connect link) {
             String from = ((TriggerSource.OfGizmo) link.source()).gizmo();
             String to = link.target();
-            if (portal(from).pair().equals(Optional.of(to))) {
+            if (portal(from).portal().equals(Optional.of(to))) {
                 throw new BoardEditException(from + " and " + to + " are paired already");
             }
             for (String name : List.of(from, to)) {
-                Optional<String> pair = portal(name).pair();
+                Optional<String> pair = portal(name).portal();
                 if (pair.isPresent()) {
                     throw new BoardEditException("portal " + name + " is paired with " + pair.get() + " already: a"
                             + " portal of this game has one pair, a ball going through it both ways");

@@ -4,11 +4,10 @@ import gizmoball.model.Board;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.game.Nudge;
 import gizmoball.model.game.Tilt;
-import gizmoball.model.gizmo.Accelerator;
 import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Plunger;
 import gizmoball.model.gizmo.Rgb;
-import gizmoball.model.gizmo.Spinner;
+import gizmoball.model.gizmo.Setting;
 import gizmoball.model.loop.TriggerSource;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -63,15 +62,15 @@ final class CommandParser {
             "sink", new PeerGizmo(CommandWord.SINK, "a ball that touches it leaves the board, as in the game that"
                     + " wrote it"),
             "accelerator", new PeerGizmo(CommandWord.ACCELERATOR, "a round bumper that speeds the ball up "
-                    + Decimals.format(Accelerator.DEFAULT_FACTOR) + " times a hit (1.4 times in the game that wrote it:"
+                    + Decimals.format(Setting.Factor.DEFAULT) + " times a hit (1.4 times in the game that wrote it:"
                     + " #@Factor sets it)"),
             "spawner", new PeerGizmo(CommandWord.SPAWNER, "adds a ball at rest above it when triggered, as the game"
                     + " that wrote it adds one (#@SpawnVelocity gives it a velocity)"),
             "booster", new PeerGizmo(CommandWord.ACCELERATOR, "a round bumper that speeds the ball up "
-                    + Decimals.format(Accelerator.DEFAULT_FACTOR) + " times a hit (2 times in the game that wrote it:"
+                    + Decimals.format(Setting.Factor.DEFAULT) + " times a hit (2 times in the game that wrote it:"
                     + " #@Factor sets it)"),
             "spinner", new PeerGizmo(CommandWord.SPINNER, "a bar turning without end about the centre of its 2x2"
-                    + " box, " + Decimals.format(Spinner.DEFAULT_TURNS_PER_SECOND) + " turn a second clockwise, that a"
+                    + " box, " + Decimals.format(Setting.Speed.DEFAULT) + " turn a second clockwise, that a"
                     + " trigger reverses (the games that wrote them turn theirs half a turn to 3 turns a second:"
                     + " #@SpinnerSpeed sets it)"));
 

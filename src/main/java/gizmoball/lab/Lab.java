@@ -2,7 +2,7 @@ package gizmoball.lab;
 
 import gizmoball.model.Board;
 import gizmoball.model.gizmo.Gizmo;
-import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.BallTaking;
 import java.util.ArrayList;
 import java.util.EnumMap;
 import java.util.LinkedHashMap;
@@ -120,7 +120,7 @@ public final class Lab {
     private static Map<String, Integer> drainLengths(Board board) {
         Map<String, Integer> lengths = new LinkedHashMap<>();
         for (Gizmo gizmo : board.gizmos()) {
-            if (gizmo.kind() == GizmoKind.SINK || board.gameRules().isDrain(gizmo.name())) {
+            if (gizmo.kind().ballTaking() == BallTaking.REMOVES || board.gameRules().isDrain(gizmo.name())) {
                 lengths.put(gizmo.name(), Math.max(gizmo.width(), gizmo.height()));
             }
         }

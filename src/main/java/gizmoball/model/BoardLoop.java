@@ -1,10 +1,8 @@
 package gizmoball.model;
 
-import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Order;
-import gizmoball.model.gizmo.Sink;
 import gizmoball.model.loop.Ball;
 import gizmoball.model.loop.BallGrid;
 import gizmoball.model.loop.Connection;
@@ -180,13 +178,8 @@ final class BoardLoop implements LoopView, LoopActions {
     }
 
     @Override
-    public void capture(Ball ball, Absorber absorber) {
-        play.capture(ball, absorber);
-    }
-
-    @Override
-    public void sink(Ball ball, Sink sink) {
-        play.sink(ball, sink);
+    public void take(Ball ball, GizmoBase gizmo) {
+        play.take(ball, gizmo);
     }
 
     @Override

@@ -7,7 +7,6 @@ import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.gizmo.Setting;
-import gizmoball.model.gizmo.Portal;
 import gizmoball.model.gizmo.Spinner;
 import gizmoball.model.gizmo.SwitchedCell;
 import gizmoball.model.loop.Arena;
@@ -92,7 +91,7 @@ final class Edits {
         ball.setVelocity(new Vect(vx, vy));
         registry.add(ball);
         if (captor != null) {
-            play.capture(ball, captor);
+            play.take(ball, captor);
         }
         return ball;
     }
@@ -127,7 +126,7 @@ final class Edits {
         GizmoBase gizmo = registry.gizmo(name);
         Ball ball = registry.ball(name);
         if (gizmo != null) {
-            if (gizmo instanceof Portal) {   // its pair is left without one
+            if (gizmo.setting() instanceof Setting.Pair) {   // a portal: its pair is left without one
                 gizmo.hold(new Setting.Pair(Optional.empty()), registry::gizmo);
             }
             registry.remove(gizmo);
@@ -219,7 +218,7 @@ final class Edits {
                         .capture(absorber.holdingPosition(Arena.BALL_RADIUS)));
             }
         }
-        captors.forEach(play::capture);
+        captors.forEach(play::take);
         gizmos.stream().filter(g -> g instanceof Absorber).forEach(a -> play.captureFreeBallsIn((Absorber) a));
     }
 
@@ -252,7 +251,7 @@ final class Edits {
             target.moveTo(position);
         }
         if (captor != null) {
-            play.capture(target, captor);
+            play.take(target, captor);
         }
     }
 

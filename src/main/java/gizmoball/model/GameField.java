@@ -78,7 +78,7 @@ final class GameField implements Playfield {
             holder.get().letGo(ball.name());
         }
         if (holder.isEmpty() || holder.get() != launcher.get()) {
-            play.capture(ball, launcher.get());
+            play.take(ball, launcher.get());
         }
         return true;
     }

@@ -1,13 +1,12 @@
 package gizmoball.model;
 
 import gizmoball.model.gizmo.Absorber;
+import gizmoball.model.gizmo.BallTaking;
 import gizmoball.model.gizmo.Action;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Plunger;
-import gizmoball.model.gizmo.DropTarget;
 import gizmoball.model.gizmo.GizmoBase;
-import gizmoball.model.gizmo.Sink;
 import gizmoball.model.gizmo.Spawner;
 import gizmoball.model.gizmo.Spinner;
 import gizmoball.model.gizmo.Surroundings;
@@ -86,7 +85,7 @@ final class Play implements Surroundings {
             if (binding.keyCode() == keyCode
                     && (binding.edge() == edge || binding.edge() == KeyEdge.CHANGE && edge == KeyEdge.DOWN)) {
                 GizmoBase gizmo = registry.gizmo(binding.gizmo());
-                if (tilted && deadInTilt(gizmo)) {
+                if (tilted && gizmo.workedByPlayer()) {
                     continue;
                 }
                 Action action = binding.order().action().orElse(binding.edge().actionOf(gizmo.kind()));
@@ -124,19 +123,13 @@ final class Play implements Surroundings {
         }
     }
 
-    /** What a tilt kills: the flippers and the plungers do not answer their keys. */
-    private static boolean deadInTilt(GizmoBase gizmo) {
-        return gizmo instanceof Flipper || gizmo instanceof Absorber absorber && absorber.plunger().isPresent();
-    }
-
-    /** The game tilted: every flipper falls back to rest and every plunger lets go of its pull without firing. */
+    /**
+     * The game tilted: what the player works gives up (every flipper falls back to rest and every plunger lets go of
+     * its pull without firing), and a tilted game's keys leave it dead ({@link GizmoBase#workedByPlayer}).
+     */
     void tilt() {
         for (GizmoBase gizmo : registry.gizmos()) {
-            if (gizmo instanceof Flipper flipper) {
-                flipper.perform(Action.LOWER, this);
-            } else if (gizmo instanceof Absorber absorber) {
-                absorber.letGoOfPull();
-            }
+            gizmo.tilt(this);
         }
     }
 
@@ -256,10 +249,15 @@ final class Play implements Surroundings {
         }
     }
 
-    /** Holds the ball at the absorber's bottom-right corner, at rest, behind any it already holds. */
-    void capture(Ball ball, Absorber absorber) {
-        ball.capture(absorber.holdingPosition(Arena.BALL_RADIUS));
-        absorber.hold(ball.name());
+    /**
+     * The gizmo takes the ball, at rest where it says: an absorber holds it at its bottom-right corner, behind any it
+     * already holds; a sink stops it at its centre, out of play, until {@link #removeSunk} takes it off the board.
+     */
+    void take(Ball ball, GizmoBase gizmo) {
+        ball.capture(gizmo.take(ball.name(), Arena.BALL_RADIUS));
+        if (gizmo.ballTaking() == BallTaking.REMOVES) {
+            sunk.add(ball.name());
+        }
     }
 
     /**
@@ -311,8 +309,8 @@ final class Play implements Surroundings {
     void dropHitTargets(List<PlayEvent> events) {
         for (PlayEvent event : events) {
             if (event instanceof PlayEvent.Hit hit && hit.struck() instanceof TriggerSource.OfGizmo struck
-                    && registry.gizmo(struck.gizmo()) instanceof DropTarget target) {
-                cellOrders.put(target.name(), false);
+                    && registry.gizmo(struck.gizmo()) instanceof SwitchedCell cell && cell.fallsWhenHit()) {
+                cellOrders.put(cell.name(), false);
             }
         }
     }
@@ -366,12 +364,6 @@ final class Play implements Surroundings {
         }
     }
 
-    /** The ball stops at the sink's centre, out of play, until {@link #removeSunk} takes it off the board. */
-    void sink(Ball ball, Sink sink) {
-        ball.capture(sink.centre());
-        sunk.add(ball.name());
-    }
-
     /** The tick is over: the balls sinks took in it leave the board. */
     void removeSunk() {
         for (String ball : sunk) {
@@ -384,7 +376,7 @@ final class Play implements Surroundings {
     void captureFreeBallsIn(Absorber absorber) {
         for (Ball ball : registry.balls()) {
             if (!ball.isCaptured() && Overlaps.ballInGizmo(absorber, ball.position())) {
-                capture(ball, absorber);
+                take(ball, absorber);
             }
         }
     }

@@ -94,6 +94,14 @@ public final class Absorber extends PolygonGizmo implements AbsorberView {
         return new Vect(x() + width - ballRadius, y() - ballRadius);
     }
 
+    /** It holds the ball behind those it already holds, at its bottom-right corner. For the board. */
+    @Override
+    public Vect take(String ball, double ballRadius) {
+        Vect at = holdingPosition(ballRadius);
+        hold(ball);
+        return at;
+    }
+
     /** The names of the balls it holds, longest-held first (a copy: {@link #hold} and {@link #letGo} change them). */
     public List<String> held() {
         return List.copyOf(held);
@@ -165,6 +173,18 @@ public final class Absorber extends PolygonGizmo implements AbsorberView {
     public void letGoOfPull() {
         pullingKey = OptionalInt.empty();
         heldSeconds = 0;
+    }
+
+    /** The player's own when it is a plunger: a tilt leaves it dead. */
+    @Override
+    public boolean workedByPlayer() {
+        return plunger.isPresent();
+    }
+
+    /** A tilt drops its pull, if it is being pulled, without firing. */
+    @Override
+    public void tilt(Surroundings around) {
+        letGoOfPull();
     }
 
     /** Fires the longest-held ball, if the spot above is free. */

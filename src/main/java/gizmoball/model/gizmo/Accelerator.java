@@ -10,12 +10,8 @@ import physics.Vect;
  * multiplied by its factor, never beyond the board's speed limit (the loop applies both, {@link #boost}).
  */
 public final class Accelerator extends GizmoBase implements AcceleratorView {
-    /** The factor of an accelerator the author has not given one. */
-    public static final double DEFAULT_FACTOR = 1.5;
-    /** The largest factor: a ball at 10 L/s leaves at the speed limit after two hits. */
-    public static final double MAX_FACTOR = 5;
     static final double RADIUS = 0.5;
-    private double factor = DEFAULT_FACTOR;
+    private double factor = Setting.Factor.DEFAULT;
 
     Accelerator(String name, int x, int y) {
         super(name, GizmoKind.ACCELERATOR, x, y);
@@ -49,8 +45,14 @@ public final class Accelerator extends GizmoBase implements AcceleratorView {
 
     /**
      * The velocity of a ball leaving it: {@code bounced} (the elastic bounce) times the factor, at most
-     * {@code maxSpeed} fast. For the board and its loop, not for views.
+     * {@code maxSpeed} fast. For the loop, not for views.
      */
+    @Override
+    public boolean boosts() {
+        return true;
+    }
+
+    @Override
     public Vect boost(Vect bounced, double maxSpeed) {
         double speed = bounced.length();
         if (speed == 0) {

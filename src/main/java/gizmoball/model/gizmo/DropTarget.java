@@ -16,6 +16,12 @@ public final class DropTarget extends SwitchedCell implements DropTargetView {
         super(other);
     }
 
+    /** Hit, it goes down. */
+    @Override
+    public boolean fallsWhenHit() {
+        return true;
+    }
+
     @Override
     public boolean isDown() {
         return !isSolid();

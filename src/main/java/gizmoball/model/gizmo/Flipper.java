@@ -140,6 +140,18 @@ public final class Flipper extends GizmoBase implements FlipperView, MovingShape
         around.swung(this, wasMoving);
     }
 
+    /** The player's own: a tilt leaves it dead. */
+    @Override
+    public boolean workedByPlayer() {
+        return true;
+    }
+
+    /** A tilt lowers it, as its release does. */
+    @Override
+    public void tilt(Surroundings around) {
+        perform(Action.LOWER, around);
+    }
+
     /** Back down when the held key goes up, whichever way it was going. */
     @Override
     public void keyUp(Surroundings around) {

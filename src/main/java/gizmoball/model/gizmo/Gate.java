@@ -14,6 +14,12 @@ public final class Gate extends SwitchedCell implements GateView {
         super(other);
     }
 
+    /** Hit, it stays as it is: only an order opens it. */
+    @Override
+    public boolean fallsWhenHit() {
+        return false;
+    }
+
     @Override
     public boolean isOpen() {
         return !isSolid();

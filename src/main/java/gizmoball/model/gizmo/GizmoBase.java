@@ -15,6 +15,8 @@ import physics.Vect;
 public abstract sealed class GizmoBase permits Bumper, Flipper, PolygonGizmo, Accelerator, SwitchedCell, Spinner {
     private final String name;
     private final GizmoKind kind;
+    /** Its kind's, kept here: the loop's hot paths ask it of every gizmo near a ball. */
+    private final BallTaking ballTaking;
     private int x;
     private int y;
     private int rotation;
@@ -25,6 +27,7 @@ public abstract sealed class GizmoBase permits Bumper, Flipper, PolygonGizmo, Ac
     GizmoBase(String name, GizmoKind kind, int x, int y) {
         this.name = name;
         this.kind = kind;
+        this.ballTaking = kind.ballTaking();
         this.x = x;
         this.y = y;
     }
@@ -77,13 +80,43 @@ public abstract sealed class GizmoBase permits Bumper, Flipper, PolygonGizmo, Ac
     }
 
     /** Its own colour, or empty for the kind's. For the board and its loop, not for views. */
+    /** What it does with a ball that touches it ({@link GizmoKind#ballTaking}). For the board and its loop. */
+    public final BallTaking ballTaking() {
+        return ballTaking;
+    }
+
     /**
-     * Whether a ball that touches it is taken (captured, sunk) rather than bounced or held: what touches it is never
-     * a contact. The loop asks this, not which kinds take balls. Final and answered here, where the kinds are known,
-     * so that the hot loops that ask it pay two class checks, not a call through every kind.
+     * Whether a ball that touches it is taken (captured, sunk) rather than bounced: what touches it is never a
+     * contact. The loop asks this, not which kinds take balls. Final and a field's read, so that the hot loops that
+     * ask it pay no call through every kind.
      */
     public final boolean takesBalls() {
-        return this instanceof Absorber || this instanceof Sink;
+        return ballTaking != BallTaking.NONE;
+    }
+
+    /**
+     * Takes the ball named {@code ball}, of radius {@code ballRadius}, that touched it, if it {@link #takesBalls}:
+     * where the ball stops (an absorber holds it at its corner behind those it already holds, a sink at its centre).
+     * For the board, not for views.
+     */
+    public Vect take(String ball, double ballRadius) {
+        throw new IllegalStateException(this + " takes no balls");
+    }
+
+    /**
+     * Whether a ball that bounces off it leaves at another speed than the bounce's own ({@link #boost}): an
+     * accelerator's. For the loop.
+     */
+    public boolean boosts() {
+        return false;
+    }
+
+    /**
+     * The velocity of a ball leaving it after bouncing at {@code bounced}, at most {@code maxSpeed} fast: the bounce's
+     * own but where it {@link #boosts}. For the loop.
+     */
+    public Vect boost(Vect bounced, double maxSpeed) {
+        return bounced;
     }
 
     /** Play changes nothing of most kinds that a save must write; a kind it changes says what. */
@@ -186,6 +219,21 @@ public abstract sealed class GizmoBase permits Bumper, Flipper, PolygonGizmo, Ac
      * For the board and its loop, not for views.
      */
     public void act(Surroundings around) {
+    }
+
+    /**
+     * Whether the player works it by a key (a flipper, a plunger): a tilted game makes it dead to its keys. For the
+     * board, not for views.
+     */
+    public boolean workedByPlayer() {
+        return false;
+    }
+
+    /**
+     * The game tilted: it gives up what the player was doing with it (a flipper falls back to rest, a plunger lets go
+     * of its pull without firing); most kinds do nothing. For the board, not for views.
+     */
+    public void tilt(Surroundings around) {
     }
 
     /** A key bound to its press went down: by default its action. For the board and its loop, not for views. */

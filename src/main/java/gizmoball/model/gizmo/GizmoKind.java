@@ -118,6 +118,19 @@ public enum GizmoKind {
     }
 
     /**
+     * What a gizmo of this kind does with a ball that touches it: an absorber holds it, a sink takes it out of play.
+     * A switch over every kind, so that a new kind says.
+     */
+    public BallTaking ballTaking() {
+        return switch (this) {
+            case ABSORBER -> BallTaking.HOLDS;
+            case SINK -> BallTaking.REMOVES;
+            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, ACCELERATOR, SPAWNER, GATE, DROP_TARGET, PORTAL,
+                    SPINNER -> BallTaking.NONE;
+        };
+    }
+
+    /**
      * Whether each gizmo of this kind has a size of its own, given by its corners (an absorber's; the board's
      * {@code addAbsorber}) and changed by dragging its edges, rather than the kind's {@link #width} and {@link #height}.
      * A switch over every kind, so that a new kind says.

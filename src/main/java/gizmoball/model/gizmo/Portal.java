@@ -85,12 +85,8 @@ public final class Portal extends PolygonGizmo implements PortalView {
     public Passage passage(Vect centre, Vect velocity, Portal exit, double radius) {
         int quarterTurns = Math.floorMod(exit.rotation() + 2 - rotation(), 4);
         Vect offset = turn(centre.minus(mouthCentre()), quarterTurns);
-        return new Passage(exit.mouthCentre().plus(offset).plus(exit.facing().times(2 * radius)),
+        return new Passage(name(), exit.name(), exit.mouthCentre().plus(offset).plus(exit.facing().times(2 * radius)),
                 turn(velocity, quarterTurns));
-    }
-
-    /** A ball's centre and velocity as it leaves a portal's pair. */
-    public record Passage(Vect centre, Vect velocity) {
     }
 
     /** The vector turned clockwise on the screen (y down) by {@code quarterTurns}: (x, y) to (-y, x) each. */

@@ -63,19 +63,24 @@ public sealed interface Setting {
         }
     }
 
-    /** An accelerator's: how many times faster it sends a ball away, 1 to {@link Accelerator#MAX_FACTOR}. */
+    /** An accelerator's: how many times faster it sends a ball away, 1 to {@link #MAX}. */
     record Factor(double factor) implements Setting {
+        /** The factor of an accelerator the author has not given one. */
+        public static final double DEFAULT = 1.5;
+        /** The largest factor: a ball at 10 L/s leaves at the speed limit after two hits. */
+        public static final double MAX = 5;
+
         public String onlyFor() {
             return "only an accelerator has a factor";
         }
 
         public Optional<String> problem(String name, Board board) {
-            return factor >= 1 && factor <= Accelerator.MAX_FACTOR ? Optional.empty()
-                    : Optional.of("an accelerator's factor is 1 to " + (int) Accelerator.MAX_FACTOR + ", not " + factor);
+            return factor >= 1 && factor <= MAX ? Optional.empty()
+                    : Optional.of("an accelerator's factor is 1 to " + (int) MAX + ", not " + factor);
         }
 
         public boolean isDefault() {
-            return factor == Accelerator.DEFAULT_FACTOR;
+            return factor == DEFAULT;
         }
 
         public String said(String name) {
@@ -140,21 +145,26 @@ public sealed interface Setting {
 
     /**
      * A spinner's: its speed and way in turns per second, positive clockwise on the screen, nonzero and at most
-     * {@link Spinner#MAX_TURNS_PER_SECOND} either way.
+     * {@link #MAX} either way.
      */
     record Speed(double turnsPerSecond) implements Setting {
+        /** The speed of a spinner its author has not given one, in turns per second (clockwise on the screen). */
+        public static final double DEFAULT = 1;
+        /** The fastest either way, in turns per second: a flipper's 1080 deg/s. */
+        public static final double MAX = 3;
+
         public String onlyFor() {
             return "only a spinner has a speed of its own";
         }
 
         public Optional<String> problem(String name, Board board) {
-            return turnsPerSecond != 0 && Math.abs(turnsPerSecond) <= Spinner.MAX_TURNS_PER_SECOND ? Optional.empty()
-                    : Optional.of("a spinner turns up to " + (int) Spinner.MAX_TURNS_PER_SECOND
+            return turnsPerSecond != 0 && Math.abs(turnsPerSecond) <= MAX ? Optional.empty()
+                    : Optional.of("a spinner turns up to " + (int) MAX
                             + " times a second either way (not 0: stop it instead), not " + turnsPerSecond);
         }
 
         public boolean isDefault() {
-            return turnsPerSecond == Spinner.DEFAULT_TURNS_PER_SECOND;
+            return turnsPerSecond == DEFAULT;
         }
 
         public String said(String name) {
@@ -182,7 +192,7 @@ public sealed interface Setting {
                 return Optional.empty();
             }
             Gizmo other = board.gizmo(portal.get());
-            if (!(other instanceof PortalView)) {
+            if (!(other.setting() instanceof Pair)) {   // what can be paired holds a pair: a portal
                 return Optional.of(onlyFor() + ": " + other.name() + " is " + other.kind().withArticle());
             }
             return other.name().equals(name) ? Optional.of("a portal cannot be paired with itself: " + name)

@@ -24,8 +24,9 @@ public final class Sink extends PolygonGizmo implements SinkView {
         return 0;
     }
 
-    /** Where a ball it takes stops until the board removes it: its centre. For the board and its loop. */
-    public Vect centre() {
+    /** A ball it takes stops at its centre, until the board removes it. For the board. */
+    @Override
+    public Vect take(String ball, double ballRadius) {
         return new Vect(x() + 0.5, y() + 0.5);
     }
 

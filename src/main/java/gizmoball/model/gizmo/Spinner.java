@@ -20,14 +20,10 @@ public final class Spinner extends GizmoBase implements SpinnerView, MovingShape
     static final double ARM = 1 - RADIUS;
     /** Its {@link #reflectionCoefficient()}, as a flipper's. */
     private static final double REFLECTION = 0.95;
-    /** The speed of a spinner its author has not given one, in turns per second (clockwise on the screen). */
-    public static final double DEFAULT_TURNS_PER_SECOND = 1;
-    /** The fastest either way, in turns per second: a flipper's 1080 deg/s. */
-    public static final double MAX_TURNS_PER_SECOND = 3;
     private static final double TWO_PI = 2 * Math.PI;
 
     /** Signed, turns per second: positive turns +x toward +y (clockwise on the screen, y down). */
-    private double turnsPerSecond = DEFAULT_TURNS_PER_SECOND;
+    private double turnsPerSecond = Setting.Speed.DEFAULT;
     /** The bar's direction from +x toward +y, in [0, 2 pi). */
     private double angle;
     /** Turning unless told to stop; stopped, it holds its angle. */

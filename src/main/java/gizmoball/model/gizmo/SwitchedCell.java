@@ -43,6 +43,12 @@ public abstract sealed class SwitchedCell extends GizmoBase permits Gate, DropTa
         return solid ? new PlayState.AsBuilt() : new PlayState.Opened();
     }
 
+    /**
+     * Whether a ball's hit makes it nothing at the end of the tick (a drop target; a gate only opens when told). For
+     * the board, not for views.
+     */
+    public abstract boolean fallsWhenHit();
+
     /** Whether it is nothing now only because a ball lies in its cell: it becomes solid once the cell is clear. */
     public boolean isWaiting() {
         return waiting;

@@ -2,9 +2,7 @@ package gizmoball.model.loop;
 
 import java.util.List;
 
-import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.GizmoBase;
-import gizmoball.model.gizmo.Sink;
 import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.MovingShape;
 
@@ -22,11 +20,11 @@ public interface LoopActions {
     /** The gizmo does what its connection orders (stage 5), {@code now} seconds into play. */
     void trigger(GizmoBase gizmo, Order order, double now);
 
-    /** The absorber holds the ball. */
-    void capture(Ball ball, Absorber absorber);
-
-    /** The sink takes the ball out of play: it stops at once and leaves the board when the tick is over. */
-    void sink(Ball ball, Sink sink);
+    /**
+     * The gizmo takes the ball ({@link GizmoBase#ballTaking}): an absorber holds it; a sink takes it out of play, and
+     * it stops at once and leaves the board when the tick is over.
+     */
+    void take(Ball ball, GizmoBase gizmo);
 
     /** Wakes every ball where the moving shape's sweep can reach, and what rests on them. */
     void wakeSweep(MovingShape moving);

@@ -1,6 +1,7 @@
 package gizmoball.model.loop;
 
 import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.Passage;
 import gizmoball.model.gizmo.Portal;
 
 /**
@@ -14,17 +15,17 @@ final class Passages {
     }
 
     /** The passage the ball takes through segment {@code segment} of the gizmo, or null if it is a wall to the ball. */
-    static Portal.Passage through(LoopView view, Ball ball, GizmoBase gizmo, int segment) {
+    static Passage through(LoopView view, Ball ball, GizmoBase gizmo, int segment) {
         if (!(gizmo instanceof Portal portal) || !portal.opensAt(segment)
                 || !(view.gizmo(portal.pair().orElseThrow()) instanceof Portal exit)) {
             return null;
         }
-        Portal.Passage out = portal.passage(ball.position(), ball.velocity(), exit, Arena.BALL_RADIUS);
+        Passage out = portal.passage(ball.position(), ball.velocity(), exit, Arena.BALL_RADIUS);
         return Contacts.clearAt(view, ball, out.centre()) ? out : null;
     }
 
     /** The passage the ball takes through what it meets, or null: it is no open mouth with room beyond. */
-    static Portal.Passage of(LoopView view, Ball ball, Contact contact) {
+    static Passage of(LoopView view, Ball ball, Contact contact) {
         return contact instanceof Contact.Face face ? through(view, ball, face.gizmo(), face.index()) : null;
     }
 }

@@ -1,10 +1,8 @@
 package gizmoball.model.loop;
 
-import gizmoball.model.gizmo.Absorber;
-import gizmoball.model.gizmo.Accelerator;
+import gizmoball.model.gizmo.BallTaking;
 import gizmoball.model.gizmo.GizmoBase;
-import gizmoball.model.gizmo.Portal;
-import gizmoball.model.gizmo.Sink;
+import gizmoball.model.gizmo.Passage;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -31,38 +29,37 @@ final class StillSurfaces {
         if (gizmo != null) {
             gizmo.markTriggered(step.now());
         }
-        Portal.Passage passage = Passages.of(step.view, ball, surface);
-        if (gizmo instanceof Absorber absorber) {
-            step.actions.recordEvent(new PlayEvent.Captured(absorber.name(), ball.name(), ball.position()));
-            step.actions.capture(ball, absorber);
-            step.energy.lost(ball);
-            step.ballLeft(ball);
-        } else if (gizmo instanceof Sink sink) {
-            takeIntoSink(ball, sink);
+        Passage passage = Passages.of(step.view, ball, surface);
+        if (gizmo != null && gizmo.takesBalls()) {
+            take(ball, gizmo);
         } else if (passage != null) {
-            enter(ball, (Portal) gizmo, passage);
+            enter(ball, passage);
         } else if (bounceOff(ball, surface, surface.normal(ball.position()))) {
             bounceAmongContacts(ball, surface.ref());
         }
         return surface.struck();
     }
 
-    /** The sink takes the ball out of play (met in a collision, or touched when the tick begins: TickRun). */
-    void takeIntoSink(Ball ball, Sink sink) {
-        step.actions.recordEvent(new PlayEvent.Sunk(sink.name(), ball.name(), ball.position()));
-        step.actions.sink(ball, sink);
+    /**
+     * The gizmo takes the ball (met in a collision, or touched when the tick begins by one that takes it out of play:
+     * TickRun): an absorber captures it, a sink takes it out of play ({@link BallTaking}).
+     */
+    void take(Ball ball, GizmoBase gizmo) {
+        step.actions.recordEvent(gizmo.ballTaking() == BallTaking.HOLDS
+                ? new PlayEvent.Captured(gizmo.name(), ball.name(), ball.position())
+                : new PlayEvent.Sunk(gizmo.name(), ball.name(), ball.position()));
+        step.actions.take(ball, gizmo);
         step.energy.lost(ball);
         step.ballLeft(ball);
     }
 
     /**
      * The ball meets the open mouth of a portal with room beyond, at any speed: it leaves by the mouth of the pair,
-     * touching it from outside ({@link Portal#passage}); it forgets its contacts, the balls that lay on it theirs on it,
-     * and what is near where it comes out wakes. (Where the room is taken, the mouth is a wall: {@link #resolve}.)
+     * touching it from outside ({@link Passage}); it forgets its contacts, the balls that lay on it theirs on it, and
+     * what is near where it comes out wakes. (Where the room is taken, the mouth is a wall: {@link #resolve}.)
      */
-    private void enter(Ball ball, Portal portal, Portal.Passage out) {
-        Portal exit = (Portal) step.view.gizmo(portal.pair().orElseThrow());
-        step.actions.recordEvent(new PlayEvent.Teleported(portal.name(), exit.name(), ball.name(), ball.position(),
+    private void enter(Ball ball, Passage out) {
+        step.actions.recordEvent(new PlayEvent.Teleported(out.entry(), out.exit(), ball.name(), ball.position(),
                 out.centre()));
         ContactRef on = new ContactRef.OnBall(ball.name());
         for (Ball other : step.view.balls()) {
@@ -93,13 +90,13 @@ final class StillSurfaces {
             step.comeToRest(ball, ref);
             return false;
         }
+        GizmoBase gizmo = surface.gizmo();
         if (step.reported.add(ref)) {   // a bounce, not a rest: one hit per surface and collision
-            GizmoBase gizmo = surface.gizmo();
             step.actions.recordEvent(new PlayEvent.Hit(surface.struck(), gizmo == null ? null : gizmo.kind(),
                     approach, ball.name(), ball.position()));
         }
-        if (surface.gizmo() instanceof Accelerator accelerator) {
-            ball.setVelocity(accelerator.boost(bounced, Arena.MAX_SPEED));
+        if (gizmo != null && gizmo.boosts()) {
+            ball.setVelocity(gizmo.boost(bounced, Arena.MAX_SPEED));
             step.energy.lost(ball);   // it gained energy: the shadow energy leaves it alone
             return true;
         }

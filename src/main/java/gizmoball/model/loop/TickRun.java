@@ -1,8 +1,8 @@
 package gizmoball.model.loop;
 
+import gizmoball.model.gizmo.BallTaking;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.MovingShape;
-import gizmoball.model.gizmo.Sink;
 
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -132,9 +132,9 @@ public final class TickRun {
         LoopView view = step.view;
         double dt = step.dt;
         Vect kick = step.gravity.times(dt);
-        List<Sink> took = new ArrayList<>();
+        List<GizmoBase> took = new ArrayList<>();
         for (Ball ball : view.balls()) {
-            if (ball.isCaptured() || ball.isAsleep() || takenByATouchedSink(ball, took)) {
+            if (ball.isCaptured() || ball.isAsleep() || takenOnTouch(ball, took)) {
                 continue;
             }
             List<Vect> normals = step.contacts.refresh(ball);
@@ -152,21 +152,22 @@ public final class TickRun {
             countStillness(ball, normals);
         }
         // Once every ball has its velocity: a trigger may add balls (a spawner) or wake them.
-        took.forEach(sink -> stage5Triggering(TriggerSource.gizmo(sink.name())));
+        took.forEach(taker -> stage5Triggering(TriggerSource.gizmo(taker.name())));
     }
 
     /**
-     * A ball that touches a sink when the tick begins is taken, as one that meets it during the tick is: a ball moving
-     * along a sink's side or lying beside it never moves into it, so no collision would ever take it.
+     * A ball that touches a gizmo that takes balls out of play (a sink) when the tick begins is taken, as one that
+     * meets it during the tick is: a ball moving along its side or lying beside it never moves into it, so no
+     * collision would ever take it.
      */
-    private boolean takenByATouchedSink(Ball ball, List<Sink> took) {
+    private boolean takenOnTouch(Ball ball, List<GizmoBase> took) {
         Vect p = ball.position();
         double reach = Arena.BALL_RADIUS + Tolerances.CONTACT;
         for (GizmoBase gizmo : step.view.index().within(p.x() - reach, p.y() - reach, p.x() + reach, p.y() + reach)) {
-            if (gizmo instanceof Sink sink && sink.signedDistance(p) <= reach) {
-                sink.markTriggered(step.now());
-                still.takeIntoSink(ball, sink);
-                took.add(sink);
+            if (gizmo.ballTaking() == BallTaking.REMOVES && gizmo.signedDistance(p) <= reach) {
+                gizmo.markTriggered(step.now());
+                still.take(ball, gizmo);
+                took.add(gizmo);
                 return true;
             }
         }
