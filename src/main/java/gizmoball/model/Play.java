@@ -3,12 +3,10 @@ package gizmoball.model;
 import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.BallTaking;
 import gizmoball.model.gizmo.Action;
-import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Plunger;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.Spawner;
-import gizmoball.model.gizmo.Spinner;
 import gizmoball.model.gizmo.Surroundings;
 import gizmoball.model.gizmo.SwitchedCell;
 import gizmoball.model.loop.Arena;
@@ -189,23 +187,19 @@ final class Play implements Surroundings {
         gizmo.perform(action, this);
     }
 
-    /**
-     * A flipper that starts to swing wakes every ball in its box (its whole sweep lies there) and what rests on them.
-     */
+    /** A flipper that starts to swing is heard (its swing event). */
     @Override
-    public void swung(Flipper flipper, boolean wasMoving) {
-        if (flipper.isMoving() && !wasMoving) {
-            recordEvent(new PlayEvent.Swing(flipper.name(), flipper.isActive()));
-            wakeSweep(flipper);
-        }
+    public void swingStarted(String gizmo, boolean up) {
+        recordEvent(new PlayEvent.Swing(gizmo, up));
     }
 
-    /** A spinner that starts to turn wakes every ball in its box and what rests on them. */
+    /**
+     * A moving shape that starts to move wakes every ball in its box (its whole sweep lies there) and what rests on
+     * them.
+     */
     @Override
-    public void spun(Spinner spinner, boolean wasMoving) {
-        if (spinner.isMoving() && !wasMoving) {
-            wakeSweep(spinner);
-        }
+    public void startedMoving(MovingShape shape) {
+        wakeSweep(shape);
     }
 
     /** Wakes every ball in the moving shape's box, where all of its sweep lies, and what rests on them. */

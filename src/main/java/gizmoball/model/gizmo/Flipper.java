@@ -129,7 +129,7 @@ public final class Flipper extends GizmoBase implements FlipperView, MovingShape
     public void act(Surroundings around) {
         boolean wasMoving = isMoving();
         toggle();
-        around.swung(this, wasMoving);
+        swung(wasMoving, around);
     }
 
     /** A key swings it up while held: up when the key goes down, whichever way it was going. */
@@ -137,7 +137,15 @@ public final class Flipper extends GizmoBase implements FlipperView, MovingShape
     public void keyDown(Surroundings around) {
         boolean wasMoving = isMoving();
         activate();
-        around.swung(this, wasMoving);
+        swung(wasMoving, around);
+    }
+
+    /** Driven ({@code wasMoving}: whether it was swinging before): one that starts to swing is heard and wakes its box. */
+    private void swung(boolean wasMoving, Surroundings around) {
+        if (isMoving() && !wasMoving) {
+            around.swingStarted(name(), active);
+            around.startedMoving(this);
+        }
     }
 
     /** The player's own: a tilt leaves it dead. */
@@ -157,7 +165,7 @@ public final class Flipper extends GizmoBase implements FlipperView, MovingShape
     public void keyUp(Surroundings around) {
         boolean wasMoving = isMoving();
         deactivate();
-        around.swung(this, wasMoving);
+        swung(wasMoving, around);
     }
 
     /**

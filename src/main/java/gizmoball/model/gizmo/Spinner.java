@@ -188,7 +188,9 @@ public final class Spinner extends GizmoBase implements SpinnerView, MovingShape
             default -> {
             }
         }
-        around.spun(this, wasMoving);
+        if (isMoving() && !wasMoving) {
+            around.startedMoving(this);
+        }
     }
 
     @Override

@@ -20,14 +20,14 @@ public interface Surroundings {
     void spawn(Spawner spawner);
 
     /**
-     * The flipper was driven ({@code wasMoving}: whether it was swinging before): one that starts to swing wakes
-     * the balls in its box, where all of its sweep lies.
+     * The gizmo started to swing ({@code up}: towards its raised stop), as a flipper does when driven: it is heard.
+     * Told before it {@link #startedMoving}.
      */
-    void swung(Flipper flipper, boolean wasMoving);
+    void swingStarted(String gizmo, boolean up);
 
     /**
-     * The spinner was driven ({@code wasMoving}: whether it was turning before): one that starts to turn wakes the
+     * The moving shape was driven from still to moving (a flipper starts to swing, a spinner to turn): it wakes the
      * balls in its box, where all of its sweep lies.
      */
-    void spun(Spinner spinner, boolean wasMoving);
+    void startedMoving(MovingShape shape);
 }
