@@ -127,20 +127,20 @@ final class BoardWriter {
         GameRules rules = board.gameRules();
         List<Command> commands = new ArrayList<>();
         if (rules.isGame() || rules.ballsPerGame() != GameRules.DEFAULT_BALLS) {
-            commands.add(new Command.BallsPerGame(rules.ballsPerGame()));
+            commands.add(new GameLine.BallsPerGame(rules.ballsPerGame()));
         }
-        rules.extraBallAt().ifPresent(score -> commands.add(new Command.ExtraBall(score)));
-        rules.nudge().ifPresent(nudge -> commands.add(new Command.NudgeLine(nudge)));
+        rules.extraBallAt().ifPresent(score -> commands.add(new GameLine.ExtraBall(score)));
+        rules.nudge().ifPresent(nudge -> commands.add(new GameLine.NudgeLine(nudge)));
         if (!rules.tilt().equals(Tilt.DEFAULT)) {
-            commands.add(new Command.TiltLine(rules.tilt()));
+            commands.add(new GameLine.TiltLine(rules.tilt()));
         }
         if (rules.ballSaveSeconds() > 0) {
-            commands.add(new Command.BallSave(rules.ballSaveSeconds()));
+            commands.add(new GameLine.BallSave(rules.ballSaveSeconds()));
         }
         board.gizmos().stream().filter(g -> rules.isDrain(g.name()))
-                .forEach(g -> commands.add(new Command.Drain(g.name())));
+                .forEach(g -> commands.add(new GameLine.Drain(g.name())));
         board.gizmos().stream().filter(g -> rules.ownPoints().containsKey(g.name()))
-                .forEach(g -> commands.add(new Command.Points(g.name(), rules.ownPoints().get(g.name()))));
+                .forEach(g -> commands.add(new GameLine.Points(g.name(), rules.ownPoints().get(g.name()))));
         return commands;
     }
 }

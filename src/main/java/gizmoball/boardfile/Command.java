@@ -5,8 +5,6 @@ import static gizmoball.boardfile.Decimals.format;
 import gizmoball.model.Board;
 import gizmoball.model.BoardEditException;
 import gizmoball.model.KeyEdge;
-import gizmoball.model.game.Nudge;
-import gizmoball.model.game.Tilt;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Plunger;
@@ -16,13 +14,16 @@ import gizmoball.model.loop.TriggerSource;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
-import java.util.OptionalLong;
 
 /**
  * One parsed board-file command: {@link #applyTo} performs it on a board through the board's own editing
- * operations (so every rule of the model applies), {@link #toLine()} writes it back in canonical form.
+ * operations (so every rule of the model applies), {@link #toLine()} writes it back in canonical form. What several
+ * commands share is said once, by the kind of command they are ({@link Adds}, {@link OfOne}, {@link AboutOne}); the
+ * lines of the board's game are {@link GameLine}s. Over 400 lines because it is one sealed family, a record for
+ * each of the format's words, so that reading and writing have one list of what a line can say.
  */
-public sealed interface Command {
+public sealed interface Command permits Command.Adds, Command.OfOne, Command.AboutOne, Command.Marked,
+        Command.Connect, Command.KeyConnect, Command.Pair, Command.Gravity, Command.Friction, GameLine {
 
     /** Performs the command, or throws the board's refusal leaving the board as it was. */
     void applyTo(Board board);
@@ -46,6 +47,31 @@ public sealed interface Command {
      */
     default Subject subject() {
         return Subject.line(toLine());
+    }
+
+    /** A command that adds a gizmo or ball: it defines the name, and the thing is its subject. */
+    sealed interface Adds extends Command {
+        String name();
+
+        @Override
+        default Optional<String> defines() {
+            return Optional.of(name());
+        }
+
+        @Override
+        default Subject subject() {
+            return Subject.thing(name());
+        }
+    }
+
+    /** A command that acts on one named gizmo or ball, which must exist, and is its own subject. */
+    sealed interface OfOne extends Command {
+        String name();
+
+        @Override
+        default List<String> references() {
+            return List.of(name());
+        }
     }
 
     /**
@@ -97,64 +123,39 @@ public sealed interface Command {
     }
 
     /** Square, Circle, Triangle, LeftFlipper or RightFlipper with the top-left cell of its footprint. */
-    record AddGizmo(GizmoKind kind, String name, int x, int y) implements Command {
+    record AddGizmo(GizmoKind kind, String name, int x, int y) implements Adds {
         public void applyTo(Board board) {
             board.addGizmo(kind, name, x, y);
         }
 
         public String toLine() {
-            return CommandWord.of(kind).written() + " " + name + " " + x + " " + y;
-        }
-
-        public Optional<String> defines() {
-            return Optional.of(name);
-        }
-
-        public Subject subject() {
-            return Subject.thing(name);
+            return CommandWord.of(kind).line(name, x, y);
         }
     }
 
     /** (x2, y2) is the exclusive bottom-right corner. */
-    record AddAbsorber(String name, int x1, int y1, int x2, int y2) implements Command {
+    record AddAbsorber(String name, int x1, int y1, int x2, int y2) implements Adds {
         public void applyTo(Board board) {
             board.addAbsorber(name, x1, y1, x2, y2);
         }
 
         public String toLine() {
-            return CommandWord.ABSORBER.written() + " " + name + " " + x1 + " " + y1 + " " + x2 + " " + y2;
-        }
-
-        public Optional<String> defines() {
-            return Optional.of(name);
-        }
-
-        public Subject subject() {
-            return Subject.thing(name);
+            return CommandWord.ABSORBER.line(name, x1, y1, x2, y2);
         }
     }
 
-    record AddBall(String name, double x, double y, double vx, double vy) implements Command {
+    record AddBall(String name, double x, double y, double vx, double vy) implements Adds {
         public void applyTo(Board board) {
             board.addBall(name, x, y, vx, vy);
         }
 
         public String toLine() {
-            return CommandWord.BALL.written() + " " + name + " " + format(x) + " " + format(y)
-                    + " " + format(vx) + " " + format(vy);
-        }
-
-        public Optional<String> defines() {
-            return Optional.of(name);
+            return CommandWord.BALL.line(name, format(x), format(y), format(vx), format(vy));
         }
 
         /** The same ball under another name (for a name another ball of the file already has). */
         AddBall named(String newName) {
             return new AddBall(newName, x, y, vx, vy);
-        }
-
-        public Subject subject() {
-            return Subject.thing(name);
         }
     }
 
@@ -164,7 +165,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.ROTATE.written() + " " + name;
+            return CommandWord.ROTATE.line(name);
         }
 
         public String fact() {
@@ -172,22 +173,18 @@ public sealed interface Command {
         }
     }
 
-    record Delete(String name) implements Command {
+    record Delete(String name) implements OfOne {
         public void applyTo(Board board) {
             board.delete(name);
         }
 
         public String toLine() {
-            return CommandWord.DELETE.written() + " " + name;
-        }
-
-        public List<String> references() {
-            return List.of(name);
+            return CommandWord.DELETE.line(name);
         }
     }
 
     /** A gizmo to a whole cell or a ball centre anywhere: which one is known only once the name is resolved. */
-    record Move(String name, double x, double y) implements Command {
+    record Move(String name, double x, double y) implements OfOne {
         public void applyTo(Board board) {
             if (board.gizmo(name).isPresent()) {
                 if (x != Math.rint(x) || y != Math.rint(y)) {
@@ -204,11 +201,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.MOVE.written() + " " + name + " " + format(x) + " " + format(y);
-        }
-
-        public List<String> references() {
-            return List.of(name);
+            return CommandWord.MOVE.line(name, format(x), format(y));
         }
     }
 
@@ -268,8 +261,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.COLOUR.written() + " " + name + " " + colour.red() + " " + colour.green() + " "
-                    + colour.blue();
+            return CommandWord.COLOUR.line(name, colour.red(), colour.green(), colour.blue());
         }
 
         public String fact() {
@@ -284,7 +276,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.FACTOR.written() + " " + name + " " + format(factor);
+            return CommandWord.FACTOR.line(name, format(factor));
         }
 
         public String fact() {
@@ -299,8 +291,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.PLUNGER.written() + " " + name + " " + format(plunger.fullSpeed()) + " "
-                    + format(plunger.pullSeconds());
+            return CommandWord.PLUNGER.line(name, format(plunger.fullSpeed()), format(plunger.pullSeconds()));
         }
 
         public String fact() {
@@ -315,7 +306,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.PAIR.written() + " " + first + " " + second;
+            return CommandWord.PAIR.line(first, second);
         }
 
         public List<String> references() {
@@ -330,7 +321,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.SPINNER_SPEED.written() + " " + name + " " + format(turnsPerSecond);
+            return CommandWord.SPINNER_SPEED.line(name, format(turnsPerSecond));
         }
 
         public String fact() {
@@ -345,8 +336,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.SPINNER_STATE.written() + " " + name + " " + format(radians) + " "
-                    + (running ? "running" : "stopped");
+            return CommandWord.SPINNER_STATE.line(name, format(radians), running ? "running" : "stopped");
         }
 
         public String fact() {
@@ -361,7 +351,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.SPAWN_VELOCITY.written() + " " + name + " " + format(vx) + " " + format(vy);
+            return CommandWord.SPAWN_VELOCITY.line(name, format(vx), format(vy));
         }
 
         public String fact() {
@@ -379,8 +369,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.FLIPPER_STATE.written() + " " + name + " " + format(degrees) + " "
-                    + (active ? "up" : "down");
+            return CommandWord.FLIPPER_STATE.line(name, format(degrees), active ? "up" : "down");
         }
 
         public String fact() {
@@ -398,7 +387,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.CELL_OPEN.written() + " " + name;
+            return CommandWord.CELL_OPEN.line(name);
         }
 
         public String fact() {
@@ -412,7 +401,7 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.GRAVITY.written() + " " + format(g);
+            return CommandWord.GRAVITY.line(format(g));
         }
 
         public Subject subject() {
@@ -426,121 +415,11 @@ public sealed interface Command {
         }
 
         public String toLine() {
-            return CommandWord.FRICTION.written() + " " + format(mu) + " " + format(mu2);
+            return CommandWord.FRICTION.line(format(mu), format(mu2));
         }
 
         public Subject subject() {
             return new Subject("friction", "");
-        }
-    }
-
-    /** {@code #@Balls <n>}: how many balls a game on the board has. */
-    record BallsPerGame(int balls) implements Command {
-        public void applyTo(Board board) {
-            board.setBallsPerGame(balls);
-        }
-
-        public String toLine() {
-            return CommandWord.BALLS.written() + " " + balls;
-        }
-
-        public Subject subject() {
-            return new Subject("balls per game", "");
-        }
-    }
-
-    /** {@code #@ExtraBall <score>}: reaching that score gives one more ball, once a game. */
-    record ExtraBall(long score) implements Command {
-        public void applyTo(Board board) {
-            board.setExtraBallAt(OptionalLong.of(score));
-        }
-
-        public String toLine() {
-            return CommandWord.EXTRA_BALL.written() + " " + score;
-        }
-
-        public Subject subject() {
-            return new Subject("extra ball", "");
-        }
-    }
-
-    /** {@code #@Drain <absorber>}: a ball the absorber captures is lost. */
-    record Drain(String absorber) implements Command {
-        public void applyTo(Board board) {
-            board.setDrain(absorber, true);
-        }
-
-        public String toLine() {
-            return CommandWord.DRAIN.written() + " " + absorber;
-        }
-
-        public List<String> references() {
-            return List.of(absorber);
-        }
-    }
-
-    /** {@code #@Nudge <speed> <left-key> <right-key> <up-key>}: the board can be nudged with those keys. */
-    record NudgeLine(Nudge nudge) implements Command {
-        public void applyTo(Board board) {
-            board.setNudge(Optional.of(nudge));
-        }
-
-        public String toLine() {
-            return CommandWord.NUDGE.written() + " " + format(nudge.speed()) + " " + nudge.leftKey() + " "
-                    + nudge.rightKey() + " " + nudge.upKey();
-        }
-
-        public Subject subject() {
-            return new Subject("nudge", "");
-        }
-    }
-
-    /** {@code #@Tilt <nudges> <seconds>}: that many nudges within that time tilt the game. */
-    record TiltLine(Tilt tilt) implements Command {
-        public void applyTo(Board board) {
-            board.setTilt(tilt);
-        }
-
-        public String toLine() {
-            return CommandWord.TILT.written() + " " + tilt.nudges() + " " + format(tilt.seconds());
-        }
-
-        public Subject subject() {
-            return new Subject("tilt", "");
-        }
-    }
-
-    /** {@code #@BallSave <seconds>}: a ball drained that soon after its launch is given back, once. */
-    record BallSave(double seconds) implements Command {
-        public void applyTo(Board board) {
-            board.setBallSave(seconds);
-        }
-
-        public String toLine() {
-            return CommandWord.BALL_SAVE.written() + " " + format(seconds);
-        }
-
-        public Subject subject() {
-            return new Subject("ball save", "");
-        }
-    }
-
-    /** {@code #@Points <gizmo> <points>}: what a real hit on the gizmo scores. */
-    record Points(String gizmo, int points) implements Command {
-        public void applyTo(Board board) {
-            board.setPoints(gizmo, points);
-        }
-
-        public String toLine() {
-            return CommandWord.POINTS.written() + " " + gizmo + " " + points;
-        }
-
-        public List<String> references() {
-            return List.of(gizmo);
-        }
-
-        public Subject subject() {
-            return new Subject("points", gizmo);
         }
     }
 }

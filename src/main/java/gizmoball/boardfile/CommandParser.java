@@ -1,85 +1,44 @@
 package gizmoball.boardfile;
 
-import gizmoball.model.Board;
+import static gizmoball.boardfile.ArgumentWords.ballCoordinate;
+import static gizmoball.boardfile.ArgumentWords.cell;
+import static gizmoball.boardfile.ArgumentWords.channel;
+import static gizmoball.boardfile.ArgumentWords.direction;
+import static gizmoball.boardfile.ArgumentWords.keyCode;
+import static gizmoball.boardfile.ArgumentWords.number;
+import static gizmoball.boardfile.ArgumentWords.nudge;
+import static gizmoball.boardfile.ArgumentWords.running;
+import static gizmoball.boardfile.ArgumentWords.score;
+import static gizmoball.boardfile.ArgumentWords.tilt;
+import static gizmoball.boardfile.ArgumentWords.wholeNumber;
+import static gizmoball.boardfile.PeerDialects.genericFlipper;
+import static gizmoball.boardfile.PeerDialects.peerArguments;
+import static gizmoball.boardfile.PeerDialects.allNumbers;
+import static gizmoball.boardfile.PeerDialects.mit3d;
+import static gizmoball.boardfile.PeerDialects.unknownCommand;
+
 import gizmoball.model.KeyEdge;
 import gizmoball.model.game.Nudge;
-import gizmoball.model.game.Tilt;
 import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.Plunger;
 import gizmoball.model.gizmo.Rgb;
-import gizmoball.model.gizmo.Setting;
 import gizmoball.model.loop.TriggerSource;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
-import java.util.Map;
-import java.util.OptionalDouble;
-import java.util.OptionalInt;
-import java.util.Set;
+import java.util.Optional;
 import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 
 /**
  * Turns one command line into a {@link Command}, or says precisely why it cannot. Besides the canonical form it
  * reads the spellings other implementations write (two-word and generic flippers, colours, key names, ondown,
- * reversed absorber corners, balls without velocity...), each with a note saying how it was understood.
+ * reversed absorber corners, balls without velocity...), each with a note saying how it was understood. Each argument
+ * word is read by {@link ArgumentWords}; what other implementations write, ours or not, is known to {@link PeerDialects}.
  */
 final class CommandParser {
-    /** Far beyond the board, yet safe to turn into an int: larger whole numbers are refused as outside. */
-    private static final double COORDINATE_LIMIT = 1_000_000;
-    /** A coordinate this far out is no off-by-one: the writer counted pixels, not cells. */
-    private static final double PIXEL_COORDINATES_FROM = 2 * Board.SIZE;
-    private static final String NOT_THE_FORMAT = ", not part of the format";
-    private static final String EXTENSION = "an extension of another implementation" + NOT_THE_FORMAT;
-    /** Gizmos of the MIT 6.170 3-D variant: name, x y z and a size. */
-    private static final Set<String> MIT_3D_GIZMOS = Set.of("trianglea", "cube", "wall");
-    /**
-     * The first words that other implementations' files really use for commands of their own (the peer boards'
-     * extensions: gizmos, connections of the mouse, settings); any other unknown word is simply unknown.
-     */
-    private static final Set<String> PEER_EXTENSIONS = Set.of("booster", "rhombus", "octagon", "multiball", "gate",
-            "deathsquare",
-            "outerwall", "mouseconnect", "timeperupdate");
-    /** How a peer's portal or teleporter is read (the pair comes from a Connect or TeleporterConnect line). */
-    private static final String PORTAL_MEANING = "a portal whose mouth faces up (turned by Rotate); a ball entering"
-            + " it leaves by the portal a Connect or TeleporterConnect line links it to, as in the game that wrote it";
-
-    /**
-     * Other implementations' gizmos that are ours as well, written bare with name, x and y, and how each is read
-     * (their code's behaviour: lheckemann's and d-g-n's sinks remove the ball; tomcurran's accelerator speeds it up
-     * 1.4 times a hit, d-g-n's booster 2 times; the spinners of tomcurran, d-g-n and NiklavsM turn about the centre
-     * of a 2x2 box at 2 pi rad/s, 1080 deg/s and pi rad/s, NiklavsM's reversed by a trigger; tomcurran's portals, d-g-n's
-     * and bartoszl's teleporters send a ball on to the one they are connected to, bartoszl's turned as we turn it). A
-     * bare {@code Connect} between two portals is such a link too: the loader reads it as {@code #@Pair} (ours would be
-     * written {@code #@Connect}).
-     */
-    private static final Map<String, PeerGizmo> PEER_GIZMOS = Map.of(
-            "portal", new PeerGizmo(CommandWord.PORTAL, PORTAL_MEANING),
-            "teleporter", new PeerGizmo(CommandWord.PORTAL, PORTAL_MEANING),
-            "teleporterconnect", new PeerGizmo(CommandWord.PAIR, "a ball entering either teleporter leaves by the"
-                    + " other, turned by their rotations, as in the game that wrote it"),
-            "sink", new PeerGizmo(CommandWord.SINK, "a ball that touches it leaves the board, as in the game that"
-                    + " wrote it"),
-            "accelerator", new PeerGizmo(CommandWord.ACCELERATOR, "a round bumper that speeds the ball up "
-                    + Decimals.format(Setting.Factor.DEFAULT) + " times a hit (1.4 times in the game that wrote it:"
-                    + " #@Factor sets it)"),
-            "spawner", new PeerGizmo(CommandWord.SPAWNER, "adds a ball at rest above it when triggered, as the game"
-                    + " that wrote it adds one (#@SpawnVelocity gives it a velocity)"),
-            "booster", new PeerGizmo(CommandWord.ACCELERATOR, "a round bumper that speeds the ball up "
-                    + Decimals.format(Setting.Factor.DEFAULT) + " times a hit (2 times in the game that wrote it:"
-                    + " #@Factor sets it)"),
-            "spinner", new PeerGizmo(CommandWord.SPINNER, "a bar turning without end about the centre of its 2x2"
-                    + " box, " + Decimals.format(Setting.Speed.DEFAULT) + " turn a second clockwise, that a"
-                    + " trigger reverses (the games that wrote them turn theirs half a turn to 3 turns a second:"
-                    + " #@SpinnerSpeed sets it)"));
-
-    /** A peer's gizmo command read as one of ours: the word it is read as, and what that means here. */
-    private record PeerGizmo(CommandWord word, String meaning) {
-    }
-
     private static final Pattern AXES = Pattern.compile("[XYZ]{2}", Pattern.CASE_INSENSITIVE);
-    private static final Pattern WORD = Pattern.compile("[A-Za-z][A-Za-z0-9_]*");
     private static final Pattern HEX_COLOUR = Pattern.compile("#[0-9a-fA-F]{6}");
 
     private CommandParser() {
@@ -111,11 +70,9 @@ final class CommandParser {
         boolean markedOurs = written.get(0).startsWith(CommandWord.OURS);
         List<String> words = markedOurs ? ours(written) : written;
         String first = words.get(0).toLowerCase(Locale.ROOT);
-        if ((first.equals("left") || first.equals("right")) && words.size() > 1
-                && words.get(1).equalsIgnoreCase("flipper")) {
-            CommandWord word = first.equals("left") ? CommandWord.LEFT_FLIPPER : CommandWord.RIGHT_FLIPPER;
-            notes.add("'" + words.get(0) + " " + words.get(1) + "' read as " + word.spelling());
-            return new Parsed(parse(word, words.subList(2, words.size()), notes), notes);
+        Optional<CommandWord> twoWords = PeerDialects.twoWordFlipper(words, notes);
+        if (twoWords.isPresent()) {
+            return new Parsed(parse(twoWords.get(), words.subList(2, words.size()), notes), notes);
         }
         if (first.equals("flipper")) {
             return new Parsed(parse(genericFlipper(words.subList(1, words.size()), notes),
@@ -124,7 +81,7 @@ final class CommandParser {
         if (first.equals("color") || first.equals("colour")) {
             return new Parsed(colour(words, notes), notes);
         }
-        PeerGizmo peer = markedOurs ? null : PEER_GIZMOS.get(first);
+        PeerDialects.PeerGizmo peer = markedOurs ? null : PeerDialects.gizmo(first).orElse(null);
         if (peer != null && words.size() == 1 + peer.word().argumentCount()) {
             notes.add("'" + words.get(0) + "' of another implementation read as " + peer.word().written() + ": "
                     + peer.meaning());
@@ -133,7 +90,7 @@ final class CommandParser {
         if (peer != null) {
             throw peerArguments(words, peer.word());
         }
-        if (!markedOurs && PEER_EXTENSIONS.contains(first)) {
+        if (!markedOurs && PeerDialects.isExtension(first)) {
             throw unknownCommand(words);   // another's extension, though one of ours has its name (tomcurran's Gate)
         }
         CommandWord word = CommandWord.lookup(words.get(0)).orElseThrow(() -> unknownCommand(words));
@@ -233,54 +190,18 @@ final class CommandParser {
                     number("vy", args.get(2)));
             case GRAVITY -> new Command.Gravity(number("gravity", args.get(0)));
             case FRICTION -> new Command.Friction(number("mu", args.get(0)), number("mu2", args.get(1)));
-            case BALLS -> new Command.BallsPerGame(wholeNumber("balls per game", args.get(0)));
-            case EXTRA_BALL -> new Command.ExtraBall(score(args.get(0)));
-            case DRAIN -> new Command.Drain(args.get(0));
-            case POINTS -> new Command.Points(args.get(0), wholeNumber("points", args.get(1)));
-            case NUDGE -> new Command.NudgeLine(nudge(args, notes));
-            case TILT -> new Command.TiltLine(tilt(args));
-            case BALL_SAVE -> new Command.BallSave(number("ball save seconds", args.get(0)));
+            case BALLS -> new GameLine.BallsPerGame(wholeNumber("balls per game", args.get(0)));
+            case EXTRA_BALL -> new GameLine.ExtraBall(score(args.get(0)));
+            case DRAIN -> new GameLine.Drain(args.get(0));
+            case POINTS -> new GameLine.Points(args.get(0), wholeNumber("points", args.get(1)));
+            case NUDGE -> new GameLine.NudgeLine(nudge(args, notes));
+            case TILT -> new GameLine.TiltLine(tilt(args));
+            case BALL_SAVE -> new GameLine.BallSave(number("ball save seconds", args.get(0)));
             case COLOUR -> throw new IllegalStateException("colours are read by colour(), in any spelling");
             // Every other word adds a gizmo of its kind on one cell (CommandWord.of says which: a word that adds none
             // throws there).
             default -> new Command.AddGizmo(word.kind(), args.get(0), cell("x", args.get(1)), cell("y", args.get(2)));
         };
-    }
-
-    private static boolean direction(String word) throws Refusal {
-        if (word.equalsIgnoreCase("up")) {
-            return true;
-        }
-        if (word.equalsIgnoreCase("down")) {
-            return false;
-        }
-        throw new Refusal("a flipper's direction is up or down, not " + word);
-    }
-
-    private static boolean running(String word) throws Refusal {
-        if (word.equalsIgnoreCase("running")) {
-            return true;
-        }
-        if (word.equalsIgnoreCase("stopped")) {
-            return false;
-        }
-        throw new Refusal("a spinner is running or stopped, not " + word);
-    }
-
-    /** {@code Flipper <name> <x> <y>}: the side is in the name, LF... or RF... */
-    private static CommandWord genericFlipper(List<String> args, List<String> notes) throws Refusal {
-        String name = args.isEmpty() ? "" : args.get(0).toUpperCase(Locale.ROOT);
-        CommandWord word;
-        if (name.startsWith("LF")) {
-            word = CommandWord.LEFT_FLIPPER;
-        } else if (name.startsWith("RF")) {
-            word = CommandWord.RIGHT_FLIPPER;
-        } else {
-            throw new Refusal("a Flipper of no known side: read only when its name starts with LF (left) or RF"
-                    + " (right)");
-        }
-        notes.add("Flipper " + args.get(0) + " read as " + word.spelling() + " (from its name)");
-        return word;
     }
 
     /** The corners in any order: each axis from its smaller to its larger number. */
@@ -325,15 +246,7 @@ final class CommandParser {
         return colour;
     }
 
-    private static int channel(String what, String word) throws Refusal {
-        int value = wholeNumber(what, word);
-        if (value < 0 || value > 255) {
-            throw new Refusal(what + " " + word + " is not a colour channel 0..255");
-        }
-        return value;
-    }
-
-    private static Command keyConnect(List<String> args, List<String> notes) throws Refusal {
+        private static Command keyConnect(List<String> args, List<String> notes) throws Refusal {
         if (!args.get(0).equalsIgnoreCase("key")) {
             throw new Refusal("expected the word 'key' after KeyConnect, found '" + args.get(0) + "'");
         }
@@ -351,26 +264,6 @@ final class CommandParser {
         return new Command.KeyConnect(keyCode, edge, args.get(3));
     }
 
-    /** A KeyEvent code, or a KeyEvent key name (Space, "Left", q), quoted or not. */
-    private static int keyCode(String word, List<String> notes) throws Refusal {
-        String unquoted = word.length() >= 2 && (word.startsWith("\"") && word.endsWith("\"")
-                || word.startsWith("'") && word.endsWith("'")) ? word.substring(1, word.length() - 1) : word;
-        if (Decimals.parse(unquoted).isEmpty()) {
-            OptionalInt named = KeyCodes.named(unquoted);
-            if (named.isEmpty()) {
-                throw new Refusal("unknown key " + word + ": neither a key code nor a java.awt.event.KeyEvent key"
-                        + " name (VK_ without the prefix, such as Space or Q)");
-            }
-            notes.add("key " + word + " read as key code " + named.getAsInt());
-            return named.getAsInt();
-        }
-        int keyCode = wholeNumber("key code", unquoted);
-        if (!KeyCodes.isKnown(keyCode)) {
-            throw new Refusal("unknown key code " + keyCode + " (not a java.awt.event.KeyEvent VK_ code)");
-        }
-        return keyCode;
-    }
-
     /** The MIT 6.170 3-D variant: corners and positions with a z, rotations about two axes, a gravity vector. */
     private static void refuseMit3d(CommandWord word, List<String> args) throws Refusal {
         String form = switch (word) {
@@ -384,114 +277,5 @@ final class CommandParser {
         if (form != null) {
             throw mit3d(form);
         }
-    }
-
-    /** A peer's gizmo line with other arguments than ours takes: a portal with its exit's cell is named as such. */
-    private static Refusal peerArguments(List<String> words, CommandWord word) {
-        int found = words.size() - 1;
-        String why = word == CommandWord.PORTAL && found == 5 && allNumbers(words.subList(2, 6))
-                ? ": a portal and the cell of its exit on one line, another implementation's form whose exit has no name;"
-                        + " this game's portals are two gizmos, each #@Portal <name> <x> <y>, joined by #@Pair"
-                : "";
-        return new Refusal("wrong number of arguments: '" + words.get(0) + "' of another implementation is read as "
-                + word.written() + ", which takes " + word.argumentCount() + " (" + word.usage() + "), found " + found
-                + why);
-    }
-
-    private static Refusal mit3d(String form) {
-        return new Refusal("an MIT 6.170 3-D form (" + form + ")" + NOT_THE_FORMAT);
-    }
-
-    /**
-     * Why a first word is not known: a command of another implementation's extension, an MIT 3-D gizmo, or an
-     * unknown command, with the nearest command of the format when the word is close to one (a misspelling).
-     */
-    private static Refusal unknownCommand(List<String> words) {
-        String word = words.get(0);
-        String lowerCase = word.toLowerCase(Locale.ROOT);
-        List<String> args = words.subList(1, words.size());
-        if (MIT_3D_GIZMOS.contains(lowerCase) && args.size() == 5 && allNumbers(args.subList(1, 5))) {
-            return mit3d("a gizmo with x y z and a size");
-        }
-        if (PEER_EXTENSIONS.contains(lowerCase)) {
-            boolean named = !args.isEmpty() && Decimals.parse(args.get(0)).isEmpty()
-                    && WORD.matcher(word).matches() && !lowerCase.endsWith("connect");
-            return new Refusal((named ? word + " " + args.get(0) : word) + ": " + EXTENSION);
-        }
-        return new Refusal("unknown command '" + word + "'"
-                + NearestWord.among(word, CommandWord.spellings()).map(w -> " (did you mean " + w + "?)").orElse(""));
-    }
-
-    private static boolean allNumbers(List<String> words) {
-        return words.stream().allMatch(w -> Decimals.parse(w).isPresent());
-    }
-
-    /** A gizmo coordinate: a whole number of cells, also when written as a decimal such as 7.0. */
-    private static int cell(String what, String word) throws Refusal {
-        double value = number(what, word);
-        if (value != Math.rint(value)) {
-            throw new Refusal(what + " coordinate " + word + " is not a whole cell: gizmos sit on whole cells, the"
-                    + " format has no fractional cells");
-        }
-        if (Math.abs(value) > COORDINATE_LIMIT) {
-            throw new Refusal(what + " coordinate " + word + " is outside the board");
-        }
-        refusePixels(what, word, value);
-        return (int) value;
-    }
-
-    private static double ballCoordinate(String what, String word) throws Refusal {
-        double value = number(what, word);
-        refusePixels(what, word, value);
-        return value;
-    }
-
-    private static void refusePixels(String what, String word, double value) throws Refusal {
-        if (Math.abs(value) >= PIXEL_COORDINATES_FROM && Math.abs(value) <= COORDINATE_LIMIT) {
-            throw new Refusal(what + " coordinate " + word + " is far outside the " + Board.SIZE + "x" + Board.SIZE
-                    + " board: pixel coordinates, it seems, but the format counts in L (cells)");
-        }
-    }
-
-    /** A score: a whole number, up to far more than any game reaches. */
-    private static Nudge nudge(List<String> args, List<String> notes) throws Refusal {
-        try {
-            return new Nudge(number("nudge speed", args.get(0)), keyCode(args.get(1), notes),
-                    keyCode(args.get(2), notes), keyCode(args.get(3), notes));
-        } catch (IllegalArgumentException refused) {
-            throw new Refusal(refused.getMessage());
-        }
-    }
-
-    private static Tilt tilt(List<String> args) throws Refusal {
-        try {
-            return new Tilt(wholeNumber("nudges", args.get(0)), number("seconds", args.get(1)));
-        } catch (IllegalArgumentException refused) {
-            throw new Refusal(refused.getMessage());
-        }
-    }
-
-    private static long score(String word) throws Refusal {
-        double value = number("score", word);
-        if (value != Math.rint(value) || Math.abs(value) > 1e15) {
-            throw new Refusal("score " + word + " is not a whole number");
-        }
-        return (long) value;
-    }
-
-    private static int wholeNumber(String what, String word) throws Refusal {
-        double value = number(what, word);
-        if (value != Math.rint(value) || Math.abs(value) > Integer.MAX_VALUE) {
-            throw new Refusal(what + " " + word + " is not a whole number");
-        }
-        return (int) value;
-    }
-
-    private static double number(String what, String word) throws Refusal {
-        OptionalDouble value = Decimals.parse(word);
-        if (value.isEmpty()) {
-            throw new Refusal(what + " '" + word + "' is not a number");
-        }
-        return value.getAsDouble();
     }
 }

@@ -156,6 +156,15 @@ enum CommandWord {
         return ours ? OURS + spelling : spelling;
     }
 
+    /** The line of this word with its arguments, each after a space: {@code Gravity 25.0}. */
+    String line(Object... arguments) {
+        StringBuilder line = new StringBuilder(written());
+        for (Object argument : arguments) {
+            line.append(' ').append(argument);
+        }
+        return line.toString();
+    }
+
     /** How the command is written, for error messages. */
     String usage() {
         return usage;

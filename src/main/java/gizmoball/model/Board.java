@@ -62,7 +62,10 @@ public final class Board {
     private final PlacementRules rules = new PlacementRules(registry);
     private final Wiring wiring = new Wiring(registry);
     private final Sleepers sleepers = new Sleepers(registry.balls());
-    private final Play play = new Play(registry, rules, sleepers);
+    private final EventLog events = new EventLog();
+    private final EndOfTick endOfTick = new EndOfTick(registry, sleepers);
+    private final DelayedActions delayed = new DelayedActions(registry);
+    private final Play play = new Play(registry, rules, sleepers, events, endOfTick, delayed);
     private final Edits edits = new Edits(registry, rules, wiring, play);
     private final Observers observers = new Observers();
     private final PhysicsConstants constants = new PhysicsConstants();
@@ -70,10 +73,10 @@ public final class Board {
     private final GameSettings settings = new GameSettings();
     private final Game game = new Game(new GameField(settings, clock, registry, play));
     private final KeyPresses keys = new KeyPresses(registry, wiring, play, sleepers, settings, clock, game);
-    private final BoardLoop loop = new BoardLoop(constants, clock, registry, wiring, play, sleepers);
-    private final TickCycle ticking = new TickCycle(play, clock, game, loop);
-    /** What a tick tells the observers (made once: a tick allocates nothing it need not). */
-    private final Runnable redraw = () -> notifyObservers(BoardChange.TICK);
+    private final BoardLoop loop = new BoardLoop(constants, clock, registry, wiring, play, sleepers, events,
+            endOfTick);
+    private final TickCycle ticking = new TickCycle(play, endOfTick, delayed, clock, game, loop);
+    private final Runnable redraw = () -> notifyObservers(BoardChange.TICK);   // made once, not every tick
 
     /** A deep copy of the contents and play state (not the observers). */
     public Board copy() {
@@ -96,7 +99,7 @@ public final class Board {
         constants.copyFrom(source.constants);
         clock.copyFrom(source.clock);
         play.clockMoved();
-        play.copyDelayedFrom(source.play);
+        delayed.copyFrom(source.delayed);
         settings.copyFrom(source.settings);
         game.copyFrom(source.game);
         loop.copySwitchesFrom(source.loop);
@@ -259,7 +262,7 @@ public final class Board {
         constants.reset();
         clock.reset();
         play.clockMoved();
-        play.forgetDelayed();
+        delayed.clear();
         settings.reset();
         game.reset();
         notifyObservers(BoardChange.REPLACE);
@@ -469,10 +472,6 @@ public final class Board {
         loop.setLoopMode(mode);
     }
 
-    LoopMode loopMode() {
-        return loop.loopMode();
-    }
-
     /** True (default): collision detection asks the grid for reachable gizmos; false: it scans every gizmo. */
     void setSpatialIndexEnabled(boolean enabled) {
         loop.setSpatialIndexEnabled(enabled);
@@ -493,7 +492,7 @@ public final class Board {
         return registry.balls();
     }
 
-    /** The loop's view of this board, for the loop's tests (through their fixture {@code LoopViews}). */
+    /** The loop's view of this board, for the loop's tests (through their fixture {@code LoopViews}) and loop mode. */
     LoopView loopView() {
         return loop;
     }

@@ -33,6 +33,8 @@ final class BoardLoop implements LoopView, LoopActions {
     private final Wiring wiring;
     private final Play play;
     private final Sleepers sleepers;
+    private final EventLog events;
+    private final EndOfTick endOfTick;
     /** Reused by every tick: the broad phase for ball pairs. */
     private final BallGrid ballGrid = new BallGrid();
     private boolean spatialIndexEnabled = true;
@@ -41,13 +43,15 @@ final class BoardLoop implements LoopView, LoopActions {
     private long lastRedrawNanos;
 
     BoardLoop(PhysicsConstants constants, Clock clock, Registry registry, Wiring wiring, Play play,
-            Sleepers sleepers) {
+            Sleepers sleepers, EventLog events, EndOfTick endOfTick) {
         this.constants = constants;
         this.clock = clock;
         this.registry = registry;
         this.wiring = wiring;
         this.play = play;
         this.sleepers = sleepers;
+        this.events = events;
+        this.endOfTick = endOfTick;
     }
 
     @Override
@@ -164,12 +168,12 @@ final class BoardLoop implements LoopView, LoopActions {
 
     @Override
     public void recordEvent(PlayEvent event) {
-        play.recordEvent(event);
+        events.record(event);
     }
 
     @Override
     public List<PlayEvent> drainEvents() {
-        return play.drainEvents();
+        return events.drain();
     }
 
     @Override

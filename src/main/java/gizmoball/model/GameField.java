@@ -70,7 +70,7 @@ final class GameField implements Playfield {
             return false;
         }
         Ball ball = drained.map(registry::ball).orElseGet(() -> {
-            Ball fresh = new Ball(play.freshBallName(), launcher.get().holdingPosition(Arena.BALL_RADIUS), Vect.ZERO);
+            Ball fresh = new Ball(registry.freshBallName(), launcher.get().holdingPosition(Arena.BALL_RADIUS), Vect.ZERO);
             registry.add(fresh);
             return fresh;
         });

@@ -13,15 +13,9 @@ import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Ball;
 import gizmoball.model.loop.PlayEvent;
 import gizmoball.model.loop.Sleepers;
-import gizmoball.model.loop.TriggerSource;
-import gizmoball.model.loop.Tolerances;
 
-import java.util.ArrayList;
-import java.util.Comparator;
 import java.util.HashSet;
-import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.OptionalInt;
 import java.util.Set;
 
@@ -31,42 +25,27 @@ import physics.Vect;
  * The actions of play: keys, triggers and captures. What a gizmo does when driven is its own
  * ({@link GizmoBase#act}, {@link GizmoBase#keyDown}, {@link GizmoBase#keyUp}); this is what those actions do to the
  * board around it, the {@link Surroundings} the gizmo is handed: a flipper that starts to swing wakes the balls in its
- * box, an absorber fires only into a free spot. It also keeps the events of play (for sound and flashes) until the
- * tick reports them.
+ * box, an absorber fires only into a free spot. What waits for the tick's end is {@link EndOfTick}'s, what waits for
+ * a delay {@link DelayedActions}'; the events go to the {@link EventLog}.
  */
 final class Play implements Surroundings {
     private final Registry registry;
     private final PlacementRules rules;
     private final Sleepers sleepers;
-    private final List<PlayEvent> pendingEvents = new ArrayList<>();
+    private final EventLog events;
+    private final EndOfTick endOfTick;
+    private final DelayedActions delayed;
     /** The absorbers that fired a ball since the board's clock last moved (in this tick). */
     private final Set<String> fired = new HashSet<>();
-    /** Whether a tick is running: spawns wait for its end. */
-    private boolean ticking;
-    /** The gates and drop targets told to be solid (true) or nothing during this tick, the last order of each. */
-    private final Map<String, Boolean> cellOrders = new LinkedHashMap<>();
-    /** The spawners told to spawn during this tick, in order. */
-    private final List<String> toSpawn = new ArrayList<>();
-    /** The balls sinks took in this tick, which leave the board when it is over. */
-    private final List<String> sunk = new ArrayList<>();
-    /** Actions ordered with a delay, in the order given. */
-    private final List<Delayed> delayed = new ArrayList<>();
 
-    /**
-     * An action the gizmo named {@code gizmo} performs at the first tick boundary at or after board time {@code due}.
-     */
-    private record Delayed(double due, String gizmo, Action action) {
-        /**
-         * How far short of the due time a tick may end and still count as reaching it: the clock is a sum of ticks,
-         * and 30 ticks of 1/60 s add up to a hair less than 0.5 s.
-         */
-        static final double ROUNDING = 1e-9;
-    }
-
-    Play(Registry registry, PlacementRules rules, Sleepers sleepers) {
+    Play(Registry registry, PlacementRules rules, Sleepers sleepers, EventLog events, EndOfTick endOfTick,
+            DelayedActions delayed) {
         this.registry = registry;
         this.rules = rules;
         this.sleepers = sleepers;
+        this.events = events;
+        this.endOfTick = endOfTick;
+        this.delayed = delayed;
     }
 
     /**
@@ -149,40 +128,11 @@ final class Play implements Surroundings {
         if (delay == 0) {
             perform(gizmo, action, now);
         } else {
-            delayed.add(new Delayed(now + delay, gizmo.name(), action));
+            delayed.add(now + delay, gizmo, action);
         }
     }
 
-    /**
-     * A tick starts at {@code now}: the delayed actions due by then are performed, earliest first (those due together
-     * in the order they were given), each by the gizmo of its name if the board still has one.
-     */
-    void performDue(double now) {
-        if (delayed.isEmpty()) {
-            return;   // most ticks: a stream over nothing still cost a tick a twentieth of its time
-        }
-        List<Delayed> due = delayed.stream().filter(d -> d.due() <= now + Delayed.ROUNDING)
-                .sorted(Comparator.comparingDouble(Delayed::due)).toList();
-        delayed.removeAll(due);
-        for (Delayed d : due) {
-            GizmoBase gizmo = registry.gizmo(d.gizmo());
-            if (gizmo != null) {
-                perform(gizmo, d.action(), now);
-            }
-        }
-    }
-
-    /** The delayed actions of {@code source} become this board's (a copy of a board in play), or none. */
-    void copyDelayedFrom(Play source) {
-        delayed.clear();
-        delayed.addAll(source.delayed);
-    }
-
-    void forgetDelayed() {
-        delayed.clear();
-    }
-
-    private void perform(GizmoBase gizmo, Action action, double now) {
+    void perform(GizmoBase gizmo, Action action, double now) {
         gizmo.markTriggered(now);
         gizmo.perform(action, this);
     }
@@ -190,7 +140,7 @@ final class Play implements Surroundings {
     /** A flipper that starts to swing is heard (its swing event). */
     @Override
     public void swingStarted(String gizmo, boolean up) {
-        recordEvent(new PlayEvent.Swing(gizmo, up));
+        events.record(new PlayEvent.Swing(gizmo, up));
     }
 
     /**
@@ -237,7 +187,7 @@ final class Play implements Surroundings {
             fired.add(absorber.name());
             absorber.letGo(name);
             registry.ball(name).release(launch, new Vect(0, -speed));
-            recordEvent(new PlayEvent.Fired(absorber.name()));
+            events.record(new PlayEvent.Fired(absorber.name()));
             double margin = 4 * Arena.BALL_RADIUS;
             sleepers.wakeWithin(launch.x() - margin, launch.y() - margin, launch.x() + margin, launch.y() + margin);
         }
@@ -245,12 +195,13 @@ final class Play implements Surroundings {
 
     /**
      * The gizmo takes the ball, at rest where it says: an absorber holds it at its bottom-right corner, behind any it
-     * already holds; a sink stops it at its centre, out of play, until {@link #removeSunk} takes it off the board.
+     * already holds; a sink stops it at its centre, out of play, until the tick's end takes it off the board
+     * ({@link EndOfTick#removeSunk}).
      */
     void take(Ball ball, GizmoBase gizmo) {
         ball.capture(gizmo.take(ball.name(), Arena.BALL_RADIUS));
         if (gizmo.ballTaking() == BallTaking.REMOVES) {
-            sunk.add(ball.name());
+            endOfTick.sunk(ball.name());
         }
     }
 
@@ -261,11 +212,20 @@ final class Play implements Surroundings {
      */
     @Override
     public void spawn(Spawner spawner) {
-        if (ticking) {
-            toSpawn.add(spawner.name());
-        } else {
-            spawnNow(spawner);
+        endOfTick.spawn(() -> spawnNow(spawner));
+    }
+
+    private void spawnNow(Spawner spawner) {
+        Vect mouth = spawner.mouth(Arena.BALL_RADIUS);
+        if (registry.balls().size() >= Spawner.MAX_BALLS || !rules.freeForBall(mouth)) {
+            return;
         }
+        Ball ball = new Ball(registry.freshBallName(), mouth, Vect.ZERO);
+        ball.setVelocity(spawner.velocity());
+        registry.add(ball);
+        events.record(new PlayEvent.Spawned(spawner.name(), ball.name()));
+        double margin = 4 * Arena.BALL_RADIUS;
+        sleepers.wakeWithin(mouth.x() - margin, mouth.y() - margin, mouth.x() + margin, mouth.y() + margin);
     }
 
     /**
@@ -275,95 +235,7 @@ final class Play implements Surroundings {
      */
     @Override
     public void switchCell(SwitchedCell cell, boolean solid) {
-        if (ticking) {
-            cellOrders.put(cell.name(), solid);
-        } else {
-            switchNow(cell, solid);
-        }
-    }
-
-    private void switchNow(SwitchedCell cell, boolean solid) {
-        boolean wasSolid = cell.isSolid();
-        if (solid) {
-            boolean blocked = registry.balls().stream()
-                    .anyMatch(b -> cell.solidOver(b.position()) < Arena.BALL_RADIUS - Tolerances.PLACEMENT);
-            cell.set(!blocked, blocked);
-        } else {
-            cell.set(false, false);
-        }
-        if (cell.isSolid() != wasSolid) {
-            sleepers.disturbAll();
-        }
-    }
-
-    /**
-     * The tick that is ending reported these events: every drop target a ball hit in it goes down at its end (after
-     * any order it was given in the tick: the hit is what the ball saw last).
-     */
-    void dropHitTargets(List<PlayEvent> events) {
-        for (PlayEvent event : events) {
-            if (event instanceof PlayEvent.Hit hit && hit.struck() instanceof TriggerSource.OfGizmo struck
-                    && registry.gizmo(struck.gizmo()) instanceof SwitchedCell cell && cell.fallsWhenHit()) {
-                cellOrders.put(cell.name(), false);
-            }
-        }
-    }
-
-    /** A tick starts or ends: spawns, gates and drop targets asked for while it runs wait for its end. */
-    void ticking(boolean inTick) {
-        ticking = inTick;
-        if (!inTick) {
-            Map<String, Boolean> cells = new LinkedHashMap<>(cellOrders);
-            cellOrders.clear();
-            for (SwitchedCell cell : registry.switchedCells()) {
-                if (cell.isWaiting() && !cells.containsKey(cell.name())) {
-                    cells.put(cell.name(), true);   // still waiting to be solid: the cell may be clear now
-                }
-            }
-            cells.forEach((name, solid) -> {
-                if (registry.gizmo(name) instanceof SwitchedCell cell) {
-                    switchNow(cell, solid);
-                }
-            });
-            List<String> due = List.copyOf(toSpawn);
-            toSpawn.clear();
-            for (String name : due) {
-                if (registry.gizmo(name) instanceof Spawner spawner) {
-                    spawnNow(spawner);
-                }
-            }
-        }
-    }
-
-    private void spawnNow(Spawner spawner) {
-        Vect mouth = spawner.mouth(Arena.BALL_RADIUS);
-        if (registry.balls().size() >= Spawner.MAX_BALLS || !rules.freeForBall(mouth)) {
-            return;
-        }
-        Ball ball = new Ball(freshBallName(), mouth, Vect.ZERO);
-        ball.setVelocity(spawner.velocity());
-        registry.add(ball);
-        recordEvent(new PlayEvent.Spawned(spawner.name(), ball.name()));
-        double margin = 4 * Arena.BALL_RADIUS;
-        sleepers.wakeWithin(mouth.x() - margin, mouth.y() - margin, mouth.x() + margin, mouth.y() + margin);
-    }
-
-    /** "Ball1", "Ball2", ...: the first name no gizmo or ball of the board has. */
-    String freshBallName() {
-        for (int n = 1; ; n++) {
-            String name = "Ball" + n;
-            if (registry.gizmo(name) == null && registry.ball(name) == null) {
-                return name;
-            }
-        }
-    }
-
-    /** The tick is over: the balls sinks took in it leave the board. */
-    void removeSunk() {
-        for (String ball : sunk) {
-            registry.remove(registry.ball(ball));
-        }
-        sunk.clear();
+        endOfTick.switchCell(cell, solid);
     }
 
     /** An absorber placed or moved captures the free balls it now covers. */
@@ -373,16 +245,5 @@ final class Play implements Surroundings {
                 take(ball, absorber);
             }
         }
-    }
-
-    void recordEvent(PlayEvent event) {
-        pendingEvents.add(event);
-    }
-
-    /** The events since the last tick's report, for this tick's. */
-    List<PlayEvent> drainEvents() {
-        List<PlayEvent> events = List.copyOf(pendingEvents);
-        pendingEvents.clear();
-        return events;
     }
 }

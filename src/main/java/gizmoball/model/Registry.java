@@ -200,4 +200,14 @@ final class Registry {
         }
         return total;
     }
+
+    /** "Ball1", "Ball2", ...: the first name no gizmo or ball has. */
+    String freshBallName() {
+        for (int n = 1; ; n++) {
+            String name = "Ball" + n;
+            if (gizmo(name) == null && ball(name) == null) {
+                return name;
+            }
+        }
+    }
 }

@@ -12,6 +12,8 @@ import gizmoball.model.loop.TickRun;
  */
 final class TickCycle {
     private final Play play;
+    private final EndOfTick endOfTick;
+    private final DelayedActions delayed;
     private final Clock clock;
     private final Game game;
     private final BoardLoop loop;
@@ -20,8 +22,10 @@ final class TickCycle {
     private TickReport lastTick = TickReport.NONE;
     private GuardCounts guardsFired = GuardCounts.NONE;
 
-    TickCycle(Play play, Clock clock, Game game, BoardLoop loop) {
+    TickCycle(Play play, EndOfTick endOfTick, DelayedActions delayed, Clock clock, Game game, BoardLoop loop) {
         this.play = play;
+        this.endOfTick = endOfTick;
+        this.delayed = delayed;
         this.clock = clock;
         this.game = game;
         this.loop = loop;
@@ -30,12 +34,12 @@ final class TickCycle {
 
     /** Runs a tick of {@code dt} seconds (finite, not negative: the board checks), then {@code redraw}. */
     void run(double dt, Runnable redraw) {
-        play.performDue(clock.time());
-        play.ticking(true);
+        delayed.performDue(clock.time(), play);
+        endOfTick.ticking(true);
         lastTick = tickRun.run(dt);
-        play.dropHitTargets(lastTick.events());
-        play.ticking(false);
-        play.removeSunk();
+        endOfTick.dropHitTargets(lastTick.events());
+        endOfTick.ticking(false);
+        endOfTick.removeSunk();
         play.holdPulls(dt);
         clock.tickDone();
         game.afterTick(clock.ticks(), lastTick.events());

@@ -23,6 +23,6 @@ final class BoardSnapshot {
                 .collect(Collectors.joining("\n"));
         return gizmos + "\n--\n" + balls + "\n--\n" + board.connections() + "\n" + board.keyBindings()
                 + "\ng " + board.gravity() + " mu " + board.mu() + " mu2 " + board.mu2() + " time " + board.time()
-                + " " + board.loopMode();
+                + " " + board.loopView().loopMode();
     }
 }

@@ -16,6 +16,6 @@ public final class LoopModes {
     }
 
     public static LoopMode of(Board board) {
-        return board.loopMode();
+        return board.loopView().loopMode();
     }
 }

@@ -1,0 +1,116 @@
+package gizmoball.model;
+
+import gizmoball.model.gizmo.SwitchedCell;
+import gizmoball.model.loop.Arena;
+import gizmoball.model.loop.PlayEvent;
+import gizmoball.model.loop.Sleepers;
+import gizmoball.model.loop.Tolerances;
+import gizmoball.model.loop.TriggerSource;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * The changes of play that wait for the end of the tick in which they were asked for, so that the loop never meets a
+ * ball it did not start with nor loses a surface it is resolving: spawns, gates and drop targets switched, the balls
+ * sinks took. Between ticks they happen at once.
+ */
+final class EndOfTick {
+    private final Registry registry;
+    private final Sleepers sleepers;
+    /** Whether a tick is running: what is asked for waits for its end. */
+    private boolean ticking;
+    /** The gates and drop targets told to be solid (true) or nothing during this tick, the last order of each. */
+    private final Map<String, Boolean> cellOrders = new LinkedHashMap<>();
+    /** The spawns asked for during this tick, in order. */
+    private final List<Runnable> toSpawn = new ArrayList<>();
+    /** The balls sinks took in this tick, which leave the board when it is over. */
+    private final List<String> sunk = new ArrayList<>();
+
+    EndOfTick(Registry registry, Sleepers sleepers) {
+        this.registry = registry;
+        this.sleepers = sleepers;
+    }
+
+    /** A spawn ({@link Play#spawn}): at once between ticks, at the tick's end during one. */
+    void spawn(Runnable spawn) {
+        if (ticking) {
+            toSpawn.add(spawn);
+        } else {
+            spawn.run();
+        }
+    }
+
+    /** As {@link Play#switchCell}: at once between ticks, at the tick's end during one. */
+    void switchCell(SwitchedCell cell, boolean solid) {
+        if (ticking) {
+            cellOrders.put(cell.name(), solid);
+        } else {
+            switchNow(cell, solid);
+        }
+    }
+
+    private void switchNow(SwitchedCell cell, boolean solid) {
+        boolean wasSolid = cell.isSolid();
+        if (solid) {
+            boolean blocked = registry.balls().stream()
+                    .anyMatch(b -> cell.solidOver(b.position()) < Arena.BALL_RADIUS - Tolerances.PLACEMENT);
+            cell.set(!blocked, blocked);
+        } else {
+            cell.set(false, false);
+        }
+        if (cell.isSolid() != wasSolid) {
+            sleepers.disturbAll();
+        }
+    }
+
+    /**
+     * The tick that is ending reported these events: every drop target a ball hit in it goes down at its end (after
+     * any order it was given in the tick: the hit is what the ball saw last).
+     */
+    void dropHitTargets(List<PlayEvent> tickEvents) {
+        for (PlayEvent event : tickEvents) {
+            if (event instanceof PlayEvent.Hit hit && hit.struck() instanceof TriggerSource.OfGizmo struck
+                    && registry.gizmo(struck.gizmo()) instanceof SwitchedCell cell && cell.fallsWhenHit()) {
+                cellOrders.put(cell.name(), false);
+            }
+        }
+    }
+
+    /** A tick starts or ends: spawns, gates and drop targets asked for while it runs wait for its end. */
+    void ticking(boolean inTick) {
+        ticking = inTick;
+        if (!inTick) {
+            Map<String, Boolean> cells = new LinkedHashMap<>(cellOrders);
+            cellOrders.clear();
+            for (SwitchedCell cell : registry.switchedCells()) {
+                if (cell.isWaiting() && !cells.containsKey(cell.name())) {
+                    cells.put(cell.name(), true);   // still waiting to be solid: the cell may be clear now
+                }
+            }
+            cells.forEach((name, solid) -> {
+                if (registry.gizmo(name) instanceof SwitchedCell cell) {
+                    switchNow(cell, solid);
+                }
+            });
+            List<Runnable> due = List.copyOf(toSpawn);
+            toSpawn.clear();
+            due.forEach(Runnable::run);
+        }
+    }
+
+    /** A sink took the ball, which leaves the board at the tick's end ({@link #removeSunk}). */
+    void sunk(String ball) {
+        sunk.add(ball);
+    }
+
+    /** The tick is over: the balls sinks took in it leave the board. */
+    void removeSunk() {
+        for (String ball : sunk) {
+            registry.remove(registry.ball(ball));
+        }
+        sunk.clear();
+    }
+}
