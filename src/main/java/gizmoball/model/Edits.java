@@ -1,13 +1,12 @@
 package gizmoball.model;
 
 import gizmoball.model.gizmo.Absorber;
-import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
+import gizmoball.model.gizmo.PlayState;
 import gizmoball.model.gizmo.Setting;
-import gizmoball.model.gizmo.Spinner;
 import gizmoball.model.gizmo.SwitchedCell;
 import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Ball;
@@ -97,18 +96,24 @@ final class Edits {
     }
 
     void setFlipperState(String flipper, double degrees, boolean active) {
-        if (!(registry.requireGizmo(flipper) instanceof Flipper target)) {
-            throw new BoardEditException(flipper + " is not a flipper");
+        restore(flipper, new PlayState.Swung(degrees, active), flipper + " is not a flipper",
+                "flipper " + flipper + " at " + degrees + " degrees");
+    }
+
+    /**
+     * Puts the gizmo as play left it, if it {@link GizmoBase#canBe} so ({@code onlyFor} refuses any other) with no
+     * problem, and no free ball is inside it there ({@code at} names it so in the refusal).
+     */
+    private void restore(String name, PlayState state, String onlyFor, String at) {
+        GizmoBase target = registry.requireGizmo(name);
+        if (!target.canBe(state)) {
+            throw new BoardEditException(onlyFor);
         }
-        if (!(degrees >= 0 && degrees <= Flipper.MAX_ANGLE)) {
-            throw new BoardEditException("flipper " + flipper + ": angle " + degrees + " must be from 0 to "
-                    + Flipper.MAX_ANGLE + " degrees");
-        }
-        Flipper candidate = target.copy();
-        candidate.setState(degrees, active);
-        refuseIfPresent(rules.ballOverlap(candidate).map(ball -> PlacementRules.wouldOverlap("flipper " + flipper
-                + " at " + degrees + " degrees", "ball", ball)));
-        target.setState(degrees, active);
+        refuseIfPresent(target.restoreProblem(state));
+        GizmoBase candidate = target.copy();
+        candidate.restore(state);
+        refuseIfPresent(rules.ballOverlap(candidate).map(ball -> PlacementRules.wouldOverlap(at, "ball", ball)));
+        target.restore(state);
     }
 
     void rotate(String gizmo) {
@@ -304,24 +309,8 @@ final class Edits {
     }
 
     void setSpinnerState(String gizmo, double radians, boolean running) {
-        Spinner target = spinner(gizmo, "an angle");
-        if (!Double.isFinite(radians)) {
-            throw new BoardEditException("spinner " + gizmo + ": angle " + radians + " is not a finite number");
-        }
-        Spinner candidate = target.copy();
-        candidate.setAngle(radians);
-        refuseIfPresent(rules.ballOverlap(candidate).map(ball -> PlacementRules.wouldOverlap("spinner " + gizmo
-                + " at " + radians + " radians", "ball", ball)));
-        target.setAngle(radians);
-        target.setRunning(running);
-    }
-
-    private Spinner spinner(String gizmo, String what) {
-        if (!(registry.requireGizmo(gizmo) instanceof Spinner spinner)) {
-            throw new BoardEditException("only a spinner has " + what + ": " + gizmo + " is "
-                    + registry.requireGizmo(gizmo).kind().withArticle());
-        }
-        return spinner;
+        restore(gizmo, new PlayState.Turned(radians, running), "only a spinner has an angle: " + gizmo + " is "
+                + registry.requireGizmo(gizmo).kind().withArticle(), "spinner " + gizmo + " at " + radians + " radians");
     }
 
     void setCellOpen(String name) {

@@ -1,12 +1,12 @@
 package gizmoball.model;
 
 import gizmoball.model.gizmo.Absorber;
-import gizmoball.model.gizmo.BallTaking;
 import gizmoball.model.gizmo.Action;
+import gizmoball.model.gizmo.BallSource;
+import gizmoball.model.gizmo.BallTaking;
+import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Plunger;
-import gizmoball.model.gizmo.GizmoBase;
-import gizmoball.model.gizmo.Spawner;
 import gizmoball.model.gizmo.Surroundings;
 import gizmoball.model.gizmo.SwitchedCell;
 import gizmoball.model.loop.Arena;
@@ -206,24 +206,24 @@ final class Play implements Surroundings {
     }
 
     /**
-     * Adds a ball at the spawner's mouth with its velocity, if the mouth is free and the board holds fewer than
-     * {@link Spawner#MAX_BALLS}; during a tick (a hit triggered it) at the tick's end, so that the loop meets no ball
+     * Adds a ball at the source's mouth with its velocity, if the mouth is free and the board holds fewer than
+     * {@link BallSource#MAX_BALLS}; during a tick (a hit triggered it) at the tick's end, so that the loop meets no ball
      * it did not start with.
      */
     @Override
-    public void spawn(Spawner spawner) {
-        endOfTick.spawn(() -> spawnNow(spawner));
+    public void spawn(BallSource source) {
+        endOfTick.spawn(() -> spawnNow(source));
     }
 
-    private void spawnNow(Spawner spawner) {
-        Vect mouth = spawner.mouth(Arena.BALL_RADIUS);
-        if (registry.balls().size() >= Spawner.MAX_BALLS || !rules.freeForBall(mouth)) {
+    private void spawnNow(BallSource source) {
+        Vect mouth = source.mouth(Arena.BALL_RADIUS);
+        if (registry.balls().size() >= BallSource.MAX_BALLS || !rules.freeForBall(mouth)) {
             return;
         }
         Ball ball = new Ball(registry.freshBallName(), mouth, Vect.ZERO);
-        ball.setVelocity(spawner.velocity());
+        ball.setVelocity(source.velocity());
         registry.add(ball);
-        events.record(new PlayEvent.Spawned(spawner.name(), ball.name()));
+        events.record(new PlayEvent.Spawned(source.name(), ball.name()));
         double margin = 4 * Arena.BALL_RADIUS;
         sleepers.wakeWithin(mouth.x() - margin, mouth.y() - margin, mouth.x() + margin, mouth.y() + margin);
     }

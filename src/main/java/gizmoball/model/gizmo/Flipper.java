@@ -1,6 +1,7 @@
 package gizmoball.model.gizmo;
 
 import java.util.List;
+import java.util.Optional;
 
 import physics.Angle;
 import physics.Circle;
@@ -166,6 +167,25 @@ public final class Flipper extends GizmoBase implements FlipperView, MovingShape
         boolean wasMoving = isMoving();
         deactivate();
         swung(wasMoving, around);
+    }
+
+    /** Play swings it. */
+    @Override
+    public boolean canBe(PlayState state) {
+        return state instanceof PlayState.Swung;
+    }
+
+    @Override
+    public Optional<String> restoreProblem(PlayState state) {
+        double degrees = ((PlayState.Swung) state).degrees();
+        return degrees >= 0 && degrees <= MAX_ANGLE ? Optional.empty()
+                : Optional.of("flipper " + name() + ": angle " + degrees + " must be from 0 to " + MAX_ANGLE + " degrees");
+    }
+
+    @Override
+    public void restore(PlayState state) {
+        PlayState.Swung swung = (PlayState.Swung) state;
+        setState(swung.degrees(), swung.up());
     }
 
     /**

@@ -124,6 +124,23 @@ public abstract sealed class GizmoBase permits Bumper, Flipper, PolygonGizmo, Ac
         return new PlayState.AsBuilt();
     }
 
+    /**
+     * Whether play can leave it as {@code state} says, so that a board saved during play can put it back so: a flipper
+     * swung, a spinner turned. For the board, not for views.
+     */
+    public boolean canBe(PlayState state) {
+        return false;
+    }
+
+    /** Why it cannot be put back as {@code state} says though it {@link #canBe} so (out of its range), or empty. */
+    public Optional<String> restoreProblem(PlayState state) {
+        return Optional.empty();
+    }
+
+    /** Puts it as {@code state} says (it {@link #canBe} so, with no problem): its shape too. For the board. */
+    public void restore(PlayState state) {
+    }
+
     /** Most kinds hold nothing beyond their place, turn and colour; a kind that does says what. */
     public Setting setting() {
         return new Setting.None();

@@ -10,9 +10,7 @@ import physics.Vect;
  * down, left with each quarter turn) with the velocity the author gave it, if the mouth is free and the board holds
  * fewer than {@link #MAX_BALLS} balls.
  */
-public final class Spawner extends PolygonGizmo implements SpawnerView {
-    /** A spawner adds no ball to a board that holds this many. */
-    public static final int MAX_BALLS = 200;
+public final class Spawner extends PolygonGizmo implements SpawnerView, BallSource {
     private Vect velocity = Vect.ZERO;
 
     Spawner(String name, int x, int y) {

@@ -1,6 +1,7 @@
 package gizmoball.model.gizmo;
 
 import java.util.List;
+import java.util.Optional;
 import java.util.function.Function;
 
 import physics.Circle;
@@ -65,6 +66,26 @@ public final class Spinner extends GizmoBase implements SpinnerView, MovingShape
     @Override
     public void hold(Setting setting, Function<String, GizmoBase> gizmos) {
         turnsPerSecond = ((Setting.Speed) setting).turnsPerSecond();
+    }
+
+    /** Play turns it and stops it. */
+    @Override
+    public boolean canBe(PlayState state) {
+        return state instanceof PlayState.Turned;
+    }
+
+    @Override
+    public Optional<String> restoreProblem(PlayState state) {
+        double radians = ((PlayState.Turned) state).radians();
+        return Double.isFinite(radians) ? Optional.empty()
+                : Optional.of("spinner " + name() + ": angle " + radians + " is not a finite number");
+    }
+
+    @Override
+    public void restore(PlayState state) {
+        PlayState.Turned turned = (PlayState.Turned) state;
+        setAngle(turned.radians());
+        setRunning(turned.running());
     }
 
     /** Puts the bar at an angle (reduced to [0, 2 pi)). For the board and its loop, not for views. */

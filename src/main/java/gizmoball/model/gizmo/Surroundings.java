@@ -16,8 +16,8 @@ public interface Surroundings {
      */
     void switchCell(SwitchedCell cell, boolean solid);
 
-    /** The spawner was told to spawn: a ball at its mouth, if it is free and the board has room for one more. */
-    void spawn(Spawner spawner);
+    /** The source (a spawner) was told to spawn: a ball at its mouth, if it is free and the board has room for one more. */
+    void spawn(BallSource source);
 
     /**
      * The gizmo started to swing ({@code up}: towards its raised stop), as a flipper does when driven: it is heard.
