@@ -21,24 +21,25 @@ final class ArgumentWords {
     private ArgumentWords() {
     }
 
+    /** A flipper's direction: up (true) or down. */
     static boolean direction(String word) throws Refusal {
-        if (word.equalsIgnoreCase("up")) {
-            return true;
-        }
-        if (word.equalsIgnoreCase("down")) {
-            return false;
-        }
-        throw new Refusal("a flipper's direction is up or down, not " + word);
+        return either(word, "up", "down", "a flipper's direction is up or down");
     }
 
+    /** A spinner running (true) or stopped. */
     static boolean running(String word) throws Refusal {
-        if (word.equalsIgnoreCase("running")) {
+        return either(word, "running", "stopped", "a spinner is running or stopped");
+    }
+
+    /** True for the word {@code yes}, false for {@code no} (in any case); else refused: "{@code what}, not WORD". */
+    private static boolean either(String word, String yes, String no, String what) throws Refusal {
+        if (word.equalsIgnoreCase(yes)) {
             return true;
         }
-        if (word.equalsIgnoreCase("stopped")) {
+        if (word.equalsIgnoreCase(no)) {
             return false;
         }
-        throw new Refusal("a spinner is running or stopped, not " + word);
+        throw new Refusal(what + ", not " + word);
     }
 
     static int channel(String what, String word) throws Refusal {

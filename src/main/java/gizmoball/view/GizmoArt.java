@@ -51,7 +51,7 @@ enum GizmoArt {
     SINK_HOLE {
         @Override
         Shape outline(Gizmo gizmo, Interpolation between) {
-            return new Rectangle2D.Double(gizmo.x(), gizmo.y(), 1, 1);
+            return cell(gizmo);
         }
 
         @Override
@@ -82,7 +82,7 @@ enum GizmoArt {
     SPAWNER_MOUTH {
         @Override
         Shape outline(Gizmo gizmo, Interpolation between) {
-            return new Rectangle2D.Double(gizmo.x(), gizmo.y(), 1, 1);
+            return cell(gizmo);
         }
 
         @Override
@@ -104,15 +104,10 @@ enum GizmoArt {
         }
     },
     /** A gate: its cell filled while closed, only a dashed outline of it while open. */
-    GATE_CELL {
-        @Override
-        boolean changesInPlay() {
-            return true;
-        }
-
+    GATE_CELL(true) {
         @Override
         Shape outline(Gizmo gizmo, Interpolation between) {
-            return new Rectangle2D.Double(gizmo.x(), gizmo.y(), 1, 1);
+            return cell(gizmo);
         }
 
         @Override
@@ -131,15 +126,10 @@ enum GizmoArt {
      * A drop target: up, its cell filled with a bull's-eye; down, only a flat strip along the bottom of the cell, the
      * target lying in its slot.
      */
-    TARGET_CELL {
-        @Override
-        boolean changesInPlay() {
-            return true;
-        }
-
+    TARGET_CELL(true) {
         @Override
         Shape outline(Gizmo gizmo, Interpolation between) {
-            return new Rectangle2D.Double(gizmo.x(), gizmo.y(), 1, 1);
+            return cell(gizmo);
         }
 
         @Override
@@ -163,7 +153,7 @@ enum GizmoArt {
     PORTAL_CELL {
         @Override
         Shape outline(Gizmo gizmo, Interpolation between) {
-            return new Rectangle2D.Double(gizmo.x(), gizmo.y(), 1, 1);
+            return cell(gizmo);
         }
 
         @Override
@@ -191,13 +181,23 @@ enum GizmoArt {
 
     /** The bar of a drawing that is one (then play changes it), null for every other. */
     private final BarOf barOf;
+    /** See {@link #changesInPlay()}. */
+    private final boolean changesInPlay;
 
     GizmoArt() {
-        this(null);
+        this(false);
     }
 
+    /** A drawing that play changes or not, not a bar. */
+    GizmoArt(boolean changesInPlay) {
+        this.barOf = null;
+        this.changesInPlay = changesInPlay;
+    }
+
+    /** A bar: play turns it. */
     GizmoArt(BarOf barOf) {
         this.barOf = barOf;
+        this.changesInPlay = true;
     }
 
     /** How far (L) a sink's hole stays inside its cell. */
@@ -250,7 +250,7 @@ enum GizmoArt {
      * with the fixed part, which only an edit changes (and again over it while it flashes).
      */
     boolean changesInPlay() {
-        return barOf != null;
+        return changesInPlay;
     }
 
     /**
@@ -309,6 +309,11 @@ enum GizmoArt {
 
     private static BasicStroke roundCapped(double width) {
         return new BasicStroke((float) width, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND);
+    }
+
+    /** The gizmo's one cell. */
+    private static Shape cell(Gizmo gizmo) {
+        return new Rectangle2D.Double(gizmo.x(), gizmo.y(), 1, 1);
     }
 
     static Shape circle(Circle c) {

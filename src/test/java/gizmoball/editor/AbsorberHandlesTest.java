@@ -2,30 +2,21 @@ package gizmoball.editor;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gizmoball.model.Board;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.loop.TriggerSource;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
 /** Issue 23, resizing an absorber by its handles: one undo step; a size the board refuses says why. */
-class AbsorberHandlesTest {
-    private Board board;
-    private Editor editor;
-    private final List<String> messages = new ArrayList<>();
-
+class AbsorberHandlesTest extends EditorFixture {
     @BeforeEach
     void setUp() {
-        board = new Board();
         board.addAbsorber("A", 2, 17, 10, 19);
         board.addGizmo(GizmoKind.SQUARE, "S1", 14, 17);
         board.connect(TriggerSource.gizmo("A"), "A");
-        editor = Editor.of(board);
-        editor.setMessageSink(messages::add);
         editor.setTool(Tool.SELECT);
         editor.select("A");
     }
@@ -71,13 +62,13 @@ class AbsorberHandlesTest {
         Optional<String> undoable = editor.history().undoable();
         editor.press(10, 18);
         editor.drag(15.2, 18);
-        assertThat(messages.get(messages.size() - 1)).contains("would overlap gizmo S1");
+        assertThat(lastMessage()).contains("would overlap gizmo S1");
         editor.release(15.2, 18);
         assertThat(bounds()).containsExactly(0, 17, 10, 2);
 
         editor.press(5, 19);
         editor.drag(5, 16.8);
-        assertThat(messages.get(messages.size() - 1)).contains("at least one cell wide and high");
+        assertThat(lastMessage()).contains("at least one cell wide and high");
         editor.release(5, 16.8);
         assertThat(bounds()).containsExactly(0, 17, 10, 2);
         assertThat(editor.history().undoable()).isEqualTo(undoable);

@@ -2,26 +2,17 @@ package gizmoball.editor;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gizmoball.model.Board;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
 /** Issue 23, drag to fill: a bumper tool dragged fills the rectangle, the taken cells skipped, in one undo step. */
-class DragToFillTest {
-    private Board board;
-    private Editor editor;
-    private final List<String> messages = new ArrayList<>();
-
+class DragToFillTest extends EditorFixture {
     @BeforeEach
     void setUp() {
-        board = new Board();
-        editor = Editor.of(board);
-        editor.setMessageSink(messages::add);
         board.addGizmo(GizmoKind.CIRCLE, "C1", 3, 2);
     }
 
@@ -73,7 +64,7 @@ class DragToFillTest {
         editor.press(8.5, 8.5);
         editor.release(8.5, 8.5);
         assertThat(cellsOf(GizmoKind.CIRCLE)).containsExactly("3,2", "8,8");
-        assertThat(messages.get(messages.size() - 1)).isEqualTo("Placed C2 at (8,8)");
+        assertThat(lastMessage()).isEqualTo("Placed C2 at (8,8)");
 
         board.addGizmo(GizmoKind.SQUARE, "S9", 4, 2);
         Optional<String> undoable = editor.history().undoable();
@@ -82,7 +73,7 @@ class DragToFillTest {
         assertThat(editor.preview().orElseThrow().problem()).contains(
                 "No room here: every place in the rectangle is taken or off the board");
         editor.release(4.5, 2.5);
-        assertThat(messages.get(messages.size() - 1)).startsWith("No room here");
+        assertThat(lastMessage()).startsWith("No room here");
         assertThat(editor.history().undoable()).isEqualTo(undoable);
         assertThat(cellsOf(GizmoKind.CIRCLE)).containsExactly("3,2", "8,8");
     }

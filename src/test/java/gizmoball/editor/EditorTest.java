@@ -20,7 +20,6 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
 import java.awt.event.KeyEvent;
-import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Optional;
@@ -28,17 +27,11 @@ import java.util.Optional;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
-class EditorTest {
-    private Board board;
-    private Editor editor;
-    private final List<String> messages = new ArrayList<>();
+class EditorTest extends EditorFixture {
     private int edits;
 
     @BeforeEach
     void setUp() {
-        board = new Board();
-        editor = Editor.of(board);
-        editor.setMessageSink(messages::add);
         editor.addEditListener(() -> edits++);
     }
 
@@ -57,14 +50,6 @@ class EditorTest {
         editor.press(x0, y0);
         editor.drag((x0 + x1) / 2, (y0 + y1) / 2);
         editor.release(x1, y1);
-    }
-
-    private String lastMessage() {
-        return messages.get(messages.size() - 1);
-    }
-
-    private Gizmo gizmo(String name) {
-        return board.gizmo(name).orElseThrow(() -> new AssertionError("no gizmo " + name + " on " + board.gizmos()));
     }
 
     @ParameterizedTest(name = "{0} placed at ({2},{3}) is named {1}")

@@ -3,7 +3,6 @@ package gizmoball.editor;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.boardfile.BoardContents;
-import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.gizmo.Gizmo;
@@ -11,7 +10,6 @@ import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.loop.Connection;
 import gizmoball.model.loop.TriggerSource;
 import java.awt.event.KeyEvent;
-import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -21,16 +19,9 @@ import physics.Vect;
  * Issue 23, selecting many: a rubber band and Shift+click select; the group moves (drag, arrow keys), turns, is
  * deleted, copied, cut, pasted and duplicated, each one undo step.
  */
-class SelectingManyTest {
-    private Board board;
-    private Editor editor;
-    private final List<String> messages = new ArrayList<>();
-
+class SelectingManyTest extends EditorFixture {
     @BeforeEach
     void setUp() {
-        board = new Board();
-        editor = Editor.of(board);
-        editor.setMessageSink(messages::add);
         board.addGizmo(GizmoKind.SQUARE, "S1", 2, 2);
         board.addGizmo(GizmoKind.SQUARE, "S2", 3, 2);
         board.addGizmo(GizmoKind.TRIANGLE, "T1", 4, 2);
@@ -42,10 +33,6 @@ class SelectingManyTest {
         editor.setTool(Tool.SELECT);
     }
 
-    private Gizmo gizmo(String name) {
-        return board.gizmo(name).orElseThrow(() -> new AssertionError("no gizmo " + name + " on " + board.gizmos()));
-    }
-
     private void drag(double x0, double y0, double x1, double y1, boolean shift) {
         editor.press(x0, y0, shift);
         editor.drag((x0 + x1) / 2, (y0 + y1) / 2);
@@ -55,10 +42,6 @@ class SelectingManyTest {
 
     private void band(double x0, double y0, double x1, double y1) {
         drag(x0, y0, x1, y1, false);
-    }
-
-    private String lastMessage() {
-        return messages.get(messages.size() - 1);
     }
 
     @Test

@@ -12,23 +12,15 @@ import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Rgb;
 import gizmoball.model.loop.Connection;
 import gizmoball.model.loop.TriggerSource;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
 /** Issue 23, the author's actions: type a position, rename, copy, cut, paste, duplicate; each one undo step. */
-class TransferTest {
-    private Board board;
-    private Editor editor;
-    private final List<String> messages = new ArrayList<>();
-
+class TransferTest extends EditorFixture {
     @BeforeEach
     void setUp() {
-        board = new Board();
-        editor = Editor.of(board);
-        editor.setMessageSink(messages::add);
         board.addGizmo(GizmoKind.LEFT_FLIPPER, "LF", 4, 10);
         board.addGizmo(GizmoKind.CIRCLE, "C1", 3, 4);
         board.addGizmo(GizmoKind.TRIANGLE, "T1", 9, 9);
@@ -38,10 +30,6 @@ class TransferTest {
         board.connect(TriggerSource.OUTER_WALLS, "LF");
         board.connect(TriggerSource.gizmo("T1"), "T1");
         board.bindKey(90, KeyEdge.DOWN, "LF");
-    }
-
-    private Gizmo gizmo(String name) {
-        return board.gizmo(name).orElseThrow(() -> new AssertionError("no gizmo " + name + " on " + board.gizmos()));
     }
 
     @Test
@@ -162,7 +150,7 @@ class TransferTest {
 
         assertThat(board.keyBindings()).contains(new KeyBinding(90, KeyEdge.DOWN, "LF1"));
         assertThat(editor.selected()).contains("LF1");
-        assertThat(messages.get(messages.size() - 1)).isEqualTo("Duplicated LF as LF1");
+        assertThat(lastMessage()).isEqualTo("Duplicated LF as LF1");
     }
 
     @Test

@@ -6,8 +6,6 @@ import static gizmoball.view.Gui.onEdt;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.tuple;
 
-import gizmoball.app.Gizmoball;
-import gizmoball.controller.Settings;
 import gizmoball.controller.Speed;
 import gizmoball.highscore.HighScore;
 import gizmoball.highscore.HighScoreTable;
@@ -23,16 +21,12 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.UUID;
-import java.util.prefs.Preferences;
 import javax.imageio.ImageIO;
 import javax.swing.JButton;
 import javax.swing.JLabel;
 import javax.swing.JTable;
 import javax.swing.JTextField;
 import javax.swing.SwingUtilities;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -41,7 +35,7 @@ import org.junit.jupiter.api.io.TempDir;
  * game-over dialog taking a name for the board's table, the table, and Watch replaying that entry's game to its
  * score. Each step leaves a screenshot in build/screenshots for a person to look at.
  */
-class GameGuiTest {
+class GameGuiTest extends GameWindowFixture {
     /**
      * No gravity or friction: Space fires the ball from the drain straight up into the square (15.5 L away, 125
      * points) and straight back down into the drain. One ball a game.
@@ -59,20 +53,6 @@ class GameGuiTest {
             """;
     private static final Path SHOTS = Path.of("build", "screenshots");
 
-    private final Preferences node = Preferences.userRoot().node("/gizmoball-test/" + UUID.randomUUID());
-    private final Settings settings = new Settings(node);
-    private Gizmoball app;
-
-    @BeforeEach
-    void display() {
-        Gui.assumeDisplay();
-    }
-
-    @AfterEach
-    void close() throws Exception {
-        Gui.closeAllWindows();
-        node.removeNode();
-    }
 
     /** The screen as the player sees it, window and dialogs, saved for looking at. */
     private static void screenshot(String name) throws IOException, AWTException {
@@ -88,8 +68,7 @@ class GameGuiTest {
 
     @Test
     void theDefaultBoardShowsScoreBallsAndBestAndSaysWhichKeyLaunches() throws Exception {
-        app = Gizmoball.launch(Path.of("boards", "default.txt"), settings);
-        await("the window", () -> app.window().isShowing());
+        launch(Path.of("boards", "default.txt"));
 
         assertThat(cells()).containsExactly("Score 0", "Balls 3", "Best -");
         assertThat(onEdt(() -> app.gameFeatures().launchHint().current().map(LaunchHint.Hint::text)))
@@ -121,8 +100,7 @@ class GameGuiTest {
     @Test
     void atGameOverNoFlashStaysLit(@TempDir Path dir) throws Exception {
         Path file = Files.writeString(dir.resolve("one-shot.txt"), ONE_SHOT);
-        app = Gizmoball.launch(file, settings);
-        await("the window", () -> app.window().isShowing());
+        launch(file);
         onEdt(() -> app.session().board().keyDown(KeyEvent.VK_SPACE));
         onEdt(() -> app.session().board().keyUp(KeyEvent.VK_SPACE));
         clickMenu(app.window().menus(), "Start");
@@ -139,8 +117,7 @@ class GameGuiTest {
     @Test
     void aGameEndsWithANameForTheTableAndWatchPlaysItAgain(@TempDir Path dir) throws Exception {
         Path file = Files.writeString(dir.resolve("one-shot.txt"), ONE_SHOT);
-        app = Gizmoball.launch(file, settings);
-        await("the window", () -> app.window().isShowing());
+        launch(file);
         assertThat(cells()).containsExactly("Score 0", "Balls 1", "Best -");
 
         onEdt(() -> app.session().board().keyDown(KeyEvent.VK_SPACE));

@@ -6,7 +6,6 @@ import static gizmoball.view.Gui.onEdt;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.app.Gizmoball;
-import gizmoball.controller.Settings;
 import java.awt.Dimension;
 import java.awt.Graphics2D;
 import java.awt.Rectangle;
@@ -14,32 +13,15 @@ import java.awt.Robot;
 import java.awt.geom.Rectangle2D;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.UUID;
-import java.util.prefs.Preferences;
 import javax.imageio.ImageIO;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
 /** Issue 40 item 3: in a large window the physics overlay's panel goes beside the board, covering none of it. */
-class PhysicsOverlayGuiTest {
-    private final Preferences node = Preferences.userRoot().node("/gizmoball-test/" + UUID.randomUUID());
-
-    @BeforeEach
-    void display() {
-        Gui.assumeDisplay();
-    }
-
-    @AfterEach
-    void close() throws Exception {
-        Gui.closeAllWindows();   // and waits for their closing, which writes to the node
-        node.removeNode();
-    }
-
+class PhysicsOverlayGuiTest extends GameWindowFixture {
     /** At the size the window opens in too; the screenshot is docs/playing.md's picture of the overlay. */
     @Test
     void atTheFirstSizeThePanelIsBesideTheBoard() throws Exception {
-        Gizmoball app = Gizmoball.launch(Path.of("boards", "multiball.txt"), new Settings(node));
+        Gizmoball app = Gizmoball.launch(Path.of("boards", "multiball.txt"), settings);
         GameWindow window = app.window();
         await("the window", () -> window.isShowing() && window.boardPanel().getWidth() > 100);
         clickMenu(window.menus(), "Ball trails");
@@ -52,7 +34,7 @@ class PhysicsOverlayGuiTest {
 
     @Test
     void inAWindowAsLargeAsTheScreenThePanelIsBesideTheBoard() throws Exception {
-        Gizmoball app = Gizmoball.launch(Path.of("boards", "multiball.txt"), new Settings(node));
+        Gizmoball app = Gizmoball.launch(Path.of("boards", "multiball.txt"), settings);
         GameWindow window = app.window();
         await("the window", window::isShowing);
         Dimension screen = onEdt(() -> window.getGraphicsConfiguration().getBounds().getSize());

@@ -15,31 +15,12 @@ import gizmoball.preview.Prediction;
 import java.awt.Rectangle;
 import java.awt.event.WindowEvent;
 import java.nio.file.Path;
-import java.util.UUID;
-import java.util.prefs.Preferences;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
 /** Game > Speed, View > Ball trails and the settings that a second window (the next run) finds again. */
-class PlayFeaturesGuiTest {
-    private final Preferences node = Preferences.userRoot().node("/gizmoball-test/" + UUID.randomUUID());
-    private final Settings settings = new Settings(node);
-
-    @BeforeEach
-    void display() {
-        Gui.assumeDisplay();
-    }
-
-    @AfterEach
-    void close() throws Exception {
-        Gui.closeAllWindows();
-        node.removeNode();
-    }
-
+class PlayFeaturesGuiTest extends GameWindowFixture {
     private PlayFeatures features;
 
-    private Gizmoball app;
 
     private GameWindow open() {
         app = Gizmoball.launch(null, settings);

@@ -4,8 +4,6 @@ import static gizmoball.view.Gui.await;
 import static gizmoball.view.Gui.onEdt;
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gizmoball.app.Gizmoball;
-import gizmoball.controller.Settings;
 import gizmoball.model.game.KeyPress;
 import gizmoball.model.gizmo.AbsorberView;
 import java.awt.Component;
@@ -19,11 +17,7 @@ import java.awt.event.KeyEvent;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.UUID;
-import java.util.prefs.Preferences;
 import javax.imageio.ImageIO;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import physics.Vect;
@@ -33,7 +27,7 @@ import physics.Vect;
  * in build/screenshots to look at), and the release launches at the pull's speed, also when the real keyboard holds
  * the key through X11's auto-repeat.
  */
-class PlungerGuiTest {
+class PlungerGuiTest extends GameWindowFixture {
     private static final String LANE = """
             Square S 18 2
             Absorber P 19 19 20 20
@@ -48,25 +42,11 @@ class PlungerGuiTest {
             """;
     private static final Path SHOTS = Path.of("build", "screenshots");
 
-    private final Preferences node = Preferences.userRoot().node("/gizmoball-test/" + UUID.randomUUID());
-    private Gizmoball app;
-
-    @BeforeEach
-    void display() {
-        Gui.assumeDisplay();
-    }
-
-    @AfterEach
-    void close() throws Exception {
-        Gui.closeAllWindows();
-        node.removeNode();
-    }
 
     /** Holding the real key through the window (X11's auto-repeat pairs and all) pulls for exactly the ticks held. */
     @Test
     void theKeyboardsHoldIsOnePullOfTheTicksItLasted(@TempDir Path dir) throws Exception {
-        app = Gizmoball.launch(Files.writeString(dir.resolve("lane.txt"), LANE), new Settings(node));
-        await("the window", () -> app.window().isShowing());
+        launch(dir.resolve("lane.txt"), LANE);
         Robot robot = new Robot();
         Point centre = onEdt(() -> {
             Point p = app.window().boardPanel().getLocationOnScreen();
@@ -113,8 +93,7 @@ class PlungerGuiTest {
 
     @Test
     void holdingTheKeyPullsThePlungerOnScreenAndTheReleaseLaunches(@TempDir Path dir) throws Exception {
-        app = Gizmoball.launch(Files.writeString(dir.resolve("lane.txt"), LANE), new Settings(node));
-        await("the window", () -> app.window().isShowing());
+        launch(dir.resolve("lane.txt"), LANE);
         assertThat(onEdt(() -> app.gameFeatures().launchHint().current().map(LaunchHint.Hint::text)))
                 .hasValue("Hold Space to pull, release to launch");
 

@@ -1,27 +1,20 @@
 package gizmoball.view;
 
-import static gizmoball.view.Gui.await;
 import static gizmoball.view.Gui.onEdt;
 import static org.assertj.core.api.Assertions.assertThat;
 
-import gizmoball.app.Gizmoball;
-import gizmoball.controller.Settings;
 import java.awt.Rectangle;
 import java.awt.Robot;
 import java.awt.Toolkit;
 import java.awt.event.KeyEvent;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.UUID;
-import java.util.prefs.Preferences;
 import javax.imageio.ImageIO;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /** A tilt in the window: the warning, then TILT in the score strip and the status line (a screenshot to look at). */
-class TiltGuiTest {
+class TiltGuiTest extends GameWindowFixture {
     /** No gravity: the ball flies up and down the right column for a while, free to be nudged. */
     private static final String NUDGEABLE = """
             Absorber A 0 19 20 20
@@ -36,19 +29,6 @@ class TiltGuiTest {
             """;
     private static final Path SHOTS = Path.of("build", "screenshots");
 
-    private final Preferences node = Preferences.userRoot().node("/gizmoball-test/" + UUID.randomUUID());
-    private Gizmoball app;
-
-    @BeforeEach
-    void display() {
-        Gui.assumeDisplay();
-    }
-
-    @AfterEach
-    void close() throws Exception {
-        Gui.closeAllWindows();   // and waits for their closing, which writes to the node
-        node.removeNode();
-    }
 
     private void nudgeUp() {
         onEdt(() -> {
@@ -60,8 +40,7 @@ class TiltGuiTest {
 
     @Test
     void nudgingTooOftenWarnsThenTilts(@TempDir Path dir) throws Exception {
-        app = Gizmoball.launch(Files.writeString(dir.resolve("nudge.txt"), NUDGEABLE), new Settings(node));
-        await("the window", () -> app.window().isShowing());
+        launch(dir.resolve("nudge.txt"), NUDGEABLE);
         onEdt(() -> {
             app.session().board().keyDown(KeyEvent.VK_SPACE);
             app.session().board().keyUp(KeyEvent.VK_SPACE);

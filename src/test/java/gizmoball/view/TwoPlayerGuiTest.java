@@ -6,9 +6,7 @@ import static gizmoball.view.Gui.onEdt;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.tuple;
 
-import gizmoball.app.Gizmoball;
 import gizmoball.boardfile.BoardFiles;
-import gizmoball.controller.Settings;
 import gizmoball.controller.Speed;
 import gizmoball.highscore.HighScore;
 import gizmoball.highscore.HighScoreTable;
@@ -20,14 +18,10 @@ import java.awt.event.KeyEvent;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.UUID;
-import java.util.prefs.Preferences;
 import javax.imageio.ImageIO;
 import javax.swing.JButton;
 import javax.swing.JLabel;
 import javax.swing.JTextField;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -36,7 +30,7 @@ import org.junit.jupiter.api.io.TempDir;
  * over asks each player's name in turn, both enter the table, and watching a player's entry replays the two-player
  * game to its score. Screenshots in build/screenshots.
  */
-class TwoPlayerGuiTest {
+class TwoPlayerGuiTest extends GameWindowFixture {
     /**
      * No gravity or friction: Space fires the ball from the drain straight up into the square (125 points) and it comes
      * straight back; Up nudges it 4 L/s faster on its way.
@@ -55,20 +49,6 @@ class TwoPlayerGuiTest {
             """;
     private static final Path SHOTS = Path.of("build", "screenshots");
 
-    private final Preferences node = Preferences.userRoot().node("/gizmoball-test/" + UUID.randomUUID());
-    private final Settings settings = new Settings(node);
-    private Gizmoball app;
-
-    @BeforeEach
-    void display() {
-        Gui.assumeDisplay();
-    }
-
-    @AfterEach
-    void close() throws Exception {
-        Gui.closeAllWindows();   // and waits for their closing, which writes to the node
-        node.removeNode();
-    }
 
     private static void screenshot(String name) throws Exception {
         Gui.sleep(300);
@@ -98,8 +78,7 @@ class TwoPlayerGuiTest {
 
     @Test
     void twoPlayersTakeTurnsToGameOverAndEachNameEntersTheTable(@TempDir Path dir) throws Exception {
-        app = Gizmoball.launch(Files.writeString(dir.resolve("one-shot.txt"), ONE_SHOT), settings);
-        await("the window", () -> app.window().isShowing());
+        launch(dir.resolve("one-shot.txt"), ONE_SHOT);
         clickMenu(app.window().menus(), "2 players");
         onEdt(() -> app.loop().setSpeed(Speed.HALF));
         assertThat(cells()).containsExactly("> P1 0", "P2 0", "Balls 1", "Best -");

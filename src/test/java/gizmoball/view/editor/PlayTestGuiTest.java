@@ -4,18 +4,15 @@ import static gizmoball.view.Gui.onEdt;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.fail;
 
-import gizmoball.app.Gizmoball;
-import gizmoball.controller.Settings;
 import gizmoball.session.Mode;
+import gizmoball.view.GameWindowFixture;
 import gizmoball.view.Gui;
 import java.awt.Rectangle;
 import java.awt.Robot;
 import java.awt.Window;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.UUID;
 import java.util.function.BooleanSupplier;
-import java.util.prefs.Preferences;
 import javax.imageio.ImageIO;
 import javax.swing.JButton;
 import javax.swing.JDialog;
@@ -23,8 +20,6 @@ import javax.swing.JLabel;
 import javax.swing.JMenuItem;
 import javax.swing.JProgressBar;
 import javax.swing.JTextArea;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -33,7 +28,7 @@ import org.junit.jupiter.api.io.TempDir;
  * answers, Cancel stops its games, and a finished run shows the heat map and the figures (a screenshot in
  * build/screenshots to look at).
  */
-class PlayTestGuiTest {
+class PlayTestGuiTest extends GameWindowFixture {
     /** A sandbox (no drain): every game plays to the cap, so the lab is still busy when it is cancelled. */
     private static final String SANDBOX = """
             Circle C 10 10
@@ -66,23 +61,9 @@ class PlayTestGuiTest {
     private static final Path SHOTS = Path.of("build", "screenshots");
     private static final long LAB_PATIENCE_MILLIS = 120_000;
 
-    private final Preferences node = Preferences.userRoot().node("/gizmoball-test/" + UUID.randomUUID());
-    private Gizmoball app;
-
-    @BeforeEach
-    void display() {
-        Gui.assumeDisplay();
-    }
-
-    @AfterEach
-    void close() throws Exception {
-        Gui.closeAllWindows();
-        node.removeNode();
-    }
 
     private JDialog startPlayTest(Path dir, String board) throws Exception {
-        app = Gizmoball.launch(Files.writeString(dir.resolve("board.txt"), board), new Settings(node));
-        Gui.await("the window", () -> app.window().isShowing());
+        launch(dir.resolve("board.txt"), board);
         JMenuItem item = onEdt(() -> Gui.menuItem(app.window().menus(), "Play-test\u2026"));
         assertThat(onEdt(() -> app.build().testMenu().isEnabled())).as("the Test menu in play mode").isFalse();
         onEdt(() -> app.session().setMode(Mode.BUILD));
