@@ -19,19 +19,22 @@ final class FuzzReport {
         FuzzSurvey.Totals t = FuzzSurvey.Totals.of(runs);
         StringBuilder md = new StringBuilder();
         md.append("| run | boards | clean | guards fired (wedged, pinched, cap) | jams | balls inside a gizmo "
-                + "| balls inside a ball | escapes | NaN | energy gained | frozen | slowest tick (CPU) "
+                + "| balls inside a ball | escapes | NaN | energy gained | frozen | appeared, vanished, jumped astray "
+                + "| slowest tick (CPU) "
                 + "| ticks over " + Targets.ms(Targets.FUZZ_TICK_NANOS) + " ms | played again: of those, over; the slowest "
                 + "tick | hovering (noted) |\n");
-        md.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+        md.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
         md.append(String.format(Locale.ROOT, "| seeds %d-%d, %,d ticks | %,d | %,d | %,d on %d boards (%,d, %,d, %,d) "
-                        + "| %,d on %d boards | %s | %s | %s | %s | %s of %d boards checked | %s | %.2f ms%s | %,d | %,d; %.2f ms "
+                        + "| %,d on %d boards | %s | %s | %s | %s | %s of %d boards checked | %s | %s, %s, %s | %.2f ms%s | %,d "
+                        + "| %,d; %.2f ms "
                         + "| %s |\n",
                 effort.firstSeed(), effort.firstSeed() + effort.boards() - 1, effort.ticks(), t.boards(), t.clean(),
                 t.guards().total(), t.guardBoards(), t.guards().wedged(), t.guards().pinched(),
                 t.guards().collisionCap(), t.jams(), t.jamBoards(), count(t, Violation.Kind.INSIDE_GIZMO),
                 count(t, Violation.Kind.INSIDE_BALL), count(t, Violation.Kind.ESCAPED),
                 count(t, Violation.Kind.NOT_A_NUMBER), t.boardsWith()[Violation.Kind.ENERGY_GAINED.ordinal()],
-                t.energyBoards(), count(t, Violation.Kind.FROZEN), t.slowestNanos() / 1e6,
+                t.energyBoards(), count(t, Violation.Kind.FROZEN), count(t, Violation.Kind.APPEARED),
+                count(t, Violation.Kind.VANISHED), count(t, Violation.Kind.JUMPED), t.slowestNanos() / 1e6,
                 t.slowest() == null ? "" : String.format(Locale.ROOT, " (seed %d, tick %d)",
                         t.slowest().fuzzCase().seed(), t.slowest().slowestTick()), t.ticksOver(), t.ticksOverAgain(),
                 t.slowestReplayedNanos() / 1e6, count(t, Violation.Kind.HOVERING)));

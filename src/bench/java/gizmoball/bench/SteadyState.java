@@ -5,6 +5,8 @@ import gizmoball.boardfile.BoardFiles;
 import gizmoball.boardfile.LoadResult;
 import gizmoball.model.Board;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Setting;
+import gizmoball.model.loop.TriggerSource;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.GuardCounts;
 import gizmoball.model.loop.PlayEvent;
@@ -203,11 +205,16 @@ final class SteadyState {
         return boards;
     }
 
-    /** The boards the benchmark builds: {@link #ONE_BALL} and {@link #MANY_IN_PLAY} (in its own, earlier window). */
+    /**
+     * The boards the benchmark builds: {@link #ONE_BALL}, {@link #MANY_IN_PLAY} and {@link #SPAWNED} (these two in
+     * their own, earlier windows).
+     */
     static List<NamedBoard> builtBoards(Windows w) {
+        boolean full = w.equals(Windows.FULL);
         return List.of(new NamedBoard(ONE_BALL, oneBallAmongFiveBumpers()),
                 new NamedBoard(MANY_IN_PLAY, RandomBoards.generate(Scaling.SEED, Scaling.GIZMOS_WHILE_BALLS_GROW, 200),
-                        Optional.of(w.equals(Windows.FULL) ? IN_PLAY : IN_PLAY_QUICK)));
+                        Optional.of(full ? IN_PLAY : IN_PLAY_QUICK)),
+                new NamedBoard(SPAWNED, spawnerBoard(), Optional.of(full ? SPAWNING : SPAWNING_QUICK)));
     }
 
     /**
@@ -234,6 +241,42 @@ final class SteadyState {
      */
     static final Windows IN_PLAY = new Windows(60, 1_260, 0, 0, 0);
     static final Windows IN_PLAY_QUICK = new Windows(60, 660, 0, 0, 0);
+
+    /** The board of 200 balls that spawners keep filling while sinks take them (issue 39). */
+    static final String SPAWNED = "200 balls from spawners";
+    /** Ticks of {@link #SPAWNED}: from when it holds 200 balls (by tick 600), for 20 s. */
+    static final Windows SPAWNING = new Windows(600, 1_800, 0, 0, 0);
+    static final Windows SPAWNING_QUICK = new Windows(600, 1_200, 0, 0, 0);
+
+    /**
+     * {@link #MANY_IN_PLAY}'s 100 bumpers under gravity with 10 balls, four spawners along the free top row launching
+     * balls sideways at 10 L/s, each spawning at every hit on the outer walls and on itself, and two sinks in the
+     * bottom row: it fills to the 200 balls a spawner stops at, and the sinks take balls that the spawners put back,
+     * so balls come and go in every second of it.
+     */
+    static Board spawnerBoard() {
+        Board board = RandomBoards.generate(Scaling.SEED, Scaling.GIZMOS_WHILE_BALLS_GROW, 0);
+        for (int x : new int[] {3, 4, 5, 8, 9, 10, 13, 14, 15, 19}) {
+            board.addBall("B" + x, x + 0.5, 0.5, x % 2 == 0 ? 5 : -5, 3);
+        }
+        for (int i = 0; i < 4; i++) {
+            String name = "SP" + i;
+            board.addGizmo(GizmoKind.SPAWNER, name, 1 + 5 * i, 0);
+            board.rotate(name);   // its mouth faces right, along the free top row
+            board.set(name, new Setting.Launch(10, 2));
+            board.connect(TriggerSource.OUTER_WALLS, name);
+            board.connect(TriggerSource.gizmo(name), name);
+        }
+        // The first free cells of the bottom row from x = 4 and from x = 14 (the balls start in the top row).
+        for (int x : new int[] {4, 14}) {
+            int cell = x;
+            while (board.gizmoAt(cell, Board.SIZE - 1).isPresent()) {
+                cell++;
+            }
+            board.addGizmo(GizmoKind.SINK, "SK" + x, cell, Board.SIZE - 1);
+        }
+        return board;
+    }
 
     /**
      * One ball at 15.8 L/s (13, -9) among two circles, two squares and a triangle, with no gravity or friction: it

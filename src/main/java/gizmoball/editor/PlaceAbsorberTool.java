@@ -2,12 +2,16 @@ package gizmoball.editor;
 
 import gizmoball.model.gizmo.GizmoKind;
 
-/** Absorber: press on one corner cell, drag to the opposite one, release to place it. */
+/**
+ * A kind sized by its corners (an absorber): press on one corner cell, drag to the opposite one, release to place it.
+ */
 final class PlaceAbsorberTool implements ToolHandler {
     private final Editor editor;
+    private final GizmoKind kind;
 
-    PlaceAbsorberTool(Editor editor) {
+    PlaceAbsorberTool(Editor editor, GizmoKind kind) {
         this.editor = editor;
+        this.kind = kind;
     }
 
     @Override
@@ -40,7 +44,7 @@ final class PlaceAbsorberTool implements ToolHandler {
             editor.say(f.problem().get());
             return;
         }
-        String name = editor.names().nextGizmoName(GizmoKind.ABSORBER);
+        String name = editor.names().nextGizmoName(kind);
         if (editor.edit("Placed absorber " + name, b -> b.addAbsorber(name, f.x(), f.y(),
                 f.x() + f.width(), f.y() + f.height()))) {
             editor.selectQuietly(name);
@@ -48,7 +52,7 @@ final class PlaceAbsorberTool implements ToolHandler {
     }
 
     private Preview.Footprint footprint(int x0, int y0, int x1, int y1) {
-        return editor.footprint(GizmoKind.ABSORBER, Math.min(x0, x1), Math.min(y0, y1), Math.abs(x1 - x0) + 1,
+        return editor.footprint(kind, Math.min(x0, x1), Math.min(y0, y1), Math.abs(x1 - x0) + 1,
                 Math.abs(y1 - y0) + 1);
     }
 }

@@ -1,5 +1,6 @@
 package gizmoball.editor;
 
+import gizmoball.model.gizmo.GizmoKind;
 import java.util.Optional;
 
 /**
@@ -10,7 +11,6 @@ interface ToolHandler {
     /** The handler of tool {@code t} in {@code editor}. */
     static ToolHandler of(Tool t, Editor editor) {
         return switch (t) {
-            case ABSORBER -> new PlaceAbsorberTool(editor);
             case BALL -> new PlaceBallTool(editor);
             case SELECT -> new SelectTool(editor);
             case ROTATE -> new RotateTool(editor);
@@ -19,9 +19,13 @@ interface ToolHandler {
             case DISCONNECT -> new ConnectTool(editor, false);
             case KEY_CONNECT -> new KeyConnectTool(editor, true);
             case KEY_DISCONNECT -> new KeyConnectTool(editor, false);
-            // Every other tool places a gizmo of its kind on one cell.
-            default -> new PlaceGizmoTool(editor, t.kind().orElseThrow());
+            default -> placing(t.kind().orElseThrow(), editor);
         };
+    }
+
+    /** Every other tool places a gizmo of its kind: dragged out by its corners if it is sized so, else on one cell. */
+    private static ToolHandler placing(GizmoKind kind, Editor editor) {
+        return kind.sizedByCorners() ? new PlaceAbsorberTool(editor, kind) : new PlaceGizmoTool(editor, kind);
     }
 
     /** The preview under the pointer with no button down, or null for none. */

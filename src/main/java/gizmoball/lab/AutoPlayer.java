@@ -4,12 +4,12 @@ import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.gizmo.Action;
-import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.loop.BallView;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.SplittableRandom;
 import physics.Vect;
 
@@ -58,10 +58,12 @@ public final class AutoPlayer implements Player {
         List<String> taken = new ArrayList<>();
         for (KeyBinding binding : board.keyBindings()) {
             if (binding.edge() == KeyEdge.DOWN && !taken.contains(binding.gizmo())
-                    && board.gizmo(binding.gizmo()).orElse(null) instanceof FlipperView flipper
                     && binding.order().action().orElse(Action.RAISE) == Action.RAISE) {
-                taken.add(flipper.name());
-                reachesByKey.computeIfAbsent(binding.keyCode(), k -> new ArrayList<>()).add(new FlipperReach(flipper));
+                Optional<FlipperReach> reach = board.gizmo(binding.gizmo()).flatMap(FlipperReach::of);
+                if (reach.isPresent()) {
+                    taken.add(binding.gizmo());
+                    reachesByKey.computeIfAbsent(binding.keyCode(), k -> new ArrayList<>()).add(reach.get());
+                }
             }
         }
         reachesByKey.forEach((code, reaches) -> keys.add(new FlipperKey(code, reaches.toArray(FlipperReach[]::new))));

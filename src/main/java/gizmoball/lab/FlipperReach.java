@@ -2,7 +2,9 @@ package gizmoball.lab;
 
 import gizmoball.model.Board;
 import gizmoball.model.gizmo.FlipperView;
+import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
+import java.util.Optional;
 import physics.Vect;
 
 /**
@@ -23,7 +25,12 @@ final class FlipperReach {
     private final double upY;
     private final double reachSquared;
 
-    FlipperReach(FlipperView flipper) {
+    /** The reach of the gizmo if it is a flipper; empty for any other. */
+    static Optional<FlipperReach> of(Gizmo gizmo) {
+        return gizmo instanceof FlipperView flipper ? Optional.of(new FlipperReach(flipper)) : Optional.empty();
+    }
+
+    private FlipperReach(FlipperView flipper) {
         Vect pivot = flipper.pivot();
         pivotX = pivot.x();
         pivotY = pivot.y();

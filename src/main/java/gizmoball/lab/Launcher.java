@@ -2,7 +2,8 @@ package gizmoball.lab;
 
 import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
-import gizmoball.model.gizmo.AbsorberView;
+import gizmoball.model.gizmo.BallTaking;
+import gizmoball.model.gizmo.Gizmo;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.SplittableRandom;
@@ -20,8 +21,8 @@ final class Launcher {
     static final double MIN_HOLD = 0.1;
     static final double MAX_HOLD = 1.5;
 
-    /** An absorber and the key that fires it. */
-    private record LaunchKey(int keyCode, AbsorberView absorber) {
+    /** A gizmo that holds balls (an absorber) and the key that fires it. */
+    private record LaunchKey(int keyCode, Gizmo absorber) {
     }
 
     private final List<LaunchKey> keys = new ArrayList<>();
@@ -37,9 +38,10 @@ final class Launcher {
         this.dt = dt;
         this.random = random;
         for (KeyBinding binding : board.keyBindings()) {
-            if (board.gizmo(binding.gizmo()).orElse(null) instanceof AbsorberView absorber
-                    && keys.stream().noneMatch(k -> k.absorber() == absorber)) {
-                keys.add(new LaunchKey(binding.keyCode(), absorber));
+            Gizmo gizmo = board.gizmo(binding.gizmo()).orElse(null);
+            if (gizmo != null && gizmo.kind().ballTaking() == BallTaking.HOLDS
+                    && keys.stream().noneMatch(k -> k.absorber() == gizmo)) {
+                keys.add(new LaunchKey(binding.keyCode(), gizmo));
             }
         }
     }

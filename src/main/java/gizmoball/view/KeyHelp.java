@@ -6,7 +6,6 @@ import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
 import gizmoball.model.gizmo.Action;
-import gizmoball.model.gizmo.AbsorberView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import java.util.ArrayList;
@@ -52,8 +51,7 @@ final class KeyHelp {
         List<String> lines = new ArrayList<>(bindings.entrySet().stream().map(e -> {
             KeyAndGizmo k = e.getKey();
             GizmoKind kind = board.gizmo(k.gizmo()).map(Gizmo::kind).orElse(null);
-            boolean plunger = board.gizmo(k.gizmo()).filter(g -> g instanceof AbsorberView a
-                    && a.plunger().isPresent()).isPresent();
+            boolean plunger = board.gizmo(k.gizmo()).filter(g -> g.plunger().isPresent()).isPresent();
             return KeyCodes.name(k.keyCode()) + ": " + (plunger ? "plunger " : kindName(kind)) + k.gizmo()
                     + " (" + (plunger ? "hold to pull, release to launch" : use(kind, e.getValue())) + ")";
         }).toList());

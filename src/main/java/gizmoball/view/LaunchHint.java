@@ -4,7 +4,6 @@ import gizmoball.boardfile.KeyCodes;
 import gizmoball.model.Board;
 import gizmoball.model.KeyBinding;
 import gizmoball.model.KeyEdge;
-import gizmoball.model.gizmo.AbsorberView;
 import gizmoball.model.gizmo.Gizmo;
 import java.awt.Color;
 import java.awt.Font;
@@ -41,12 +40,12 @@ public final class LaunchHint implements BoardOverlay {
             return Optional.empty();
         }
         for (Gizmo gizmo : board.gizmos()) {
-            if (gizmo instanceof AbsorberView absorber && !absorber.held().isEmpty()) {
+            if (!gizmo.held().isEmpty()) {
                 Optional<KeyBinding> key = board.keyBindings().stream()
                         .filter(k -> k.gizmo().equals(gizmo.name())).min((a, b) -> rank(a) - rank(b));
                 if (key.isPresent()) {
                     String keyName = KeyCodes.name(key.get().keyCode());
-                    if (absorber.plunger().isPresent() && key.get().edge() != KeyEdge.UP) {
+                    if (gizmo.plunger().isPresent() && key.get().edge() != KeyEdge.UP) {
                         return Optional.of(new Hint(gizmo, "Hold " + keyName + " to pull, release to launch"));
                     }
                     String verb = key.get().edge() == KeyEdge.UP ? "Press and release " : "Press ";

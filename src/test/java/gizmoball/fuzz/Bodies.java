@@ -10,6 +10,7 @@ import gizmoball.model.gizmo.PortalView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Sink;
+import gizmoball.model.gizmo.SpawnerView;
 import gizmoball.model.gizmo.Spinner;
 
 import java.util.List;
@@ -38,7 +39,7 @@ final class Bodies {
         if (gizmo instanceof Spinner spinner) {
             return spinner(spinner);
         }
-        if (gizmo instanceof Sink || gizmo instanceof PortalView || switches(gizmo)) {
+        if (gizmo instanceof Sink || gizmo instanceof PortalView || gizmo instanceof SpawnerView || switches(gizmo)) {
             return rectangle(gizmo.x(), gizmo.y(), 1, 1);   // a gate's or drop target's cell, when it is there
         }
         if (gizmo instanceof Accelerator accelerator) {

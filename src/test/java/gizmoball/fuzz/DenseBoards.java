@@ -23,7 +23,9 @@ import java.util.SplittableRandom;
  * checkerboards and scattered; flippers in pockets of bumpers, in facing pairs (tongs) and in clumps, some starting
  * part-way through a swing; absorbers along the floor and elsewhere, many firing themselves; 5-40 balls placed free,
  * touching gizmos, flippers (their pivot ends too) and each other, at up to 100 L/s, and on one board in three a walled
- * pocket packed with touching balls; keys bound to the flippers and absorbers and a script pressing them. Gravity and
+ * pocket packed with touching balls; on one board in three with extension gizmos, spawners (issue 39) fed by keys, hits
+ * on themselves and on bumpers, and on some by every hit on the outer walls, which fills the board to its 200 balls;
+ * keys bound to the flippers and absorbers and a script pressing them. Gravity and
  * friction vary, zero included; about one board in seven has neither, nor flippers nor absorbers, so that its kinetic
  * energy must be kept.
  *
@@ -56,6 +58,9 @@ public final class DenseBoards {
      */
     private final SplittableRandom pocketRandom;
     private static final long POCKET_STREAM = 0x90c_20L;
+    /** The spawners' chance: a stream of their own, drawn last, so that a board with spawners is its old board plus them. */
+    private final SplittableRandom spawnerRandom;
+    private static final long SPAWNER_STREAM = 0x5fa_39L;
     /** The most balls a board has: a packed pocket fills up to it. */
     private static final int MOST_BALLS = 40;
     private final Board board = new Board();
@@ -73,6 +78,7 @@ public final class DenseBoards {
         random = new SplittableRandom(seed);
         spinnerRandom = new SplittableRandom(seed ^ SPINNER_STREAM);
         pocketRandom = new SplittableRandom(seed ^ POCKET_STREAM);
+        spawnerRandom = new SplittableRandom(seed ^ SPAWNER_STREAM);
     }
 
     /** The board of {@code seed} with a key script for {@code ticks} ticks of play. */
@@ -106,6 +112,9 @@ public final class DenseBoards {
         }
         if (pocketRandom.nextInt(3) == 0) {
             packedPocket(MOST_BALLS - balls);
+        }
+        if (extensions) {
+            spawners();
         }
         return board;
     }
@@ -301,6 +310,52 @@ public final class DenseBoards {
             }
         }
         recipe.add(spinners.size() + " spinners");
+    }
+
+    // ------------------------------------------------------------------------------------------------ spawners
+
+    /**
+     * On one board in three, one to three spawners (issue 39) in free cells, facing any way, each launching its balls
+     * at rest or at up to 60 L/s in any direction; each spawns at a key already bound (never a new one: the script
+     * stays the board's old one), at a hit on itself or on a bumper; on one such board in two a spawner also spawns at
+     * every hit on the outer walls, a flood that fills the board to its 200 balls (the slowest boards of issue 39).
+     */
+    private void spawners() {
+        SplittableRandom r = spawnerRandom;
+        if (r.nextInt(3) > 0) {
+            return;
+        }
+        int count = 1 + r.nextInt(3);
+        boolean flood = r.nextBoolean();
+        List<String> spawners = new ArrayList<>();
+        for (int i = 0; i < count * 20 && spawners.size() < count; i++) {
+            String name = gizmo(GizmoKind.SPAWNER, "SP", r.nextInt(SIZE), r.nextInt(SIZE), r.nextInt(4));
+            if (name == null) {
+                continue;
+            }
+            spawners.add(name);
+            double speed = r.nextInt(4) == 0 ? 0 : round(r.nextDouble(1, 60));
+            double angle = r.nextDouble(0, 2 * Math.PI);
+            board.set(name, new Setting.Launch(round(speed * StrictMath.cos(angle)), round(speed * StrictMath.sin(angle))));
+            if (!keysUsed.isEmpty() && r.nextBoolean()) {
+                try {
+                    board.bindKey(keysUsed.get(r.nextInt(keysUsed.size())), r.nextBoolean() ? KeyEdge.DOWN
+                            : KeyEdge.CHANGE, name);
+                } catch (BoardEditException duplicate) {
+                    // the key already spawns here: one binding fewer
+                }
+            }
+            if (r.nextBoolean()) {
+                board.connect(TriggerSource.gizmo(name), name);
+            }
+            if (!bumpers.isEmpty() && r.nextBoolean()) {
+                board.connect(TriggerSource.gizmo(bumpers.get(r.nextInt(bumpers.size()))), name);
+            }
+        }
+        if (flood && !spawners.isEmpty()) {
+            board.connect(TriggerSource.OUTER_WALLS, spawners.get(0));
+        }
+        recipe.add(spawners.size() + " spawners" + (flood && !spawners.isEmpty() ? ", one fed by the walls" : ""));
     }
 
     /**

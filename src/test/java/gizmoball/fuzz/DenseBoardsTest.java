@@ -86,6 +86,7 @@ class DenseBoardsTest {
         int heavy = 0;
         int upsideDown = 0;
         int spinners = 0;
+        int wallFed = 0;
         for (FuzzCase c : CASES) {
             Board board = c.board();
             for (Gizmo g : board.gizmos()) {
@@ -98,6 +99,8 @@ class DenseBoardsTest {
             }
             for (Connection connection : board.connections()) {
                 selfFiring += connection.source().equals(TriggerSource.gizmo(connection.target())) ? 1 : 0;
+                wallFed += connection.source().equals(TriggerSource.OUTER_WALLS)
+                        && connection.target().startsWith("SP") ? 1 : 0;
             }
             energyKept += new TickChecker(board).checksEnergy() ? 1 : 0;
             weightless += board.gravity() == 0 ? 1 : 0;
@@ -111,7 +114,14 @@ class DenseBoardsTest {
                 assertThat(kindsAndTurns).contains(kind + " " + turns);
             }
         }
-        assertThat(kindsAndTurns).contains("CIRCLE 0", "ABSORBER 0", "SINK 0", "ACCELERATOR 0", "SPINNER 0");
+        assertThat(kindsAndTurns).contains("CIRCLE 0", "ABSORBER 0", "SINK 0", "ACCELERATOR 0", "SPINNER 0", "GATE 0",
+                "DROP_TARGET 0");
+        for (GizmoKind kind : List.of(GizmoKind.SPAWNER, GizmoKind.PORTAL)) {
+            for (int turns = 0; turns < 4; turns++) {
+                assertThat(kindsAndTurns).contains(kind + " " + turns);
+            }
+        }
+        assertThat(wallFed).as("spawners fed by the outer walls").isGreaterThan(5);
         assertThat(spinners).as("spinners").isGreaterThan(20);
         assertThat(flipperNeighbours).as("flippers next to other gizmos").isGreaterThan(100);
         assertThat(selfFiring).as("absorbers firing themselves").isGreaterThan(30);

@@ -92,6 +92,7 @@ public final class FuzzPlay {
         int played = 0;
         for (int tick = 1; tick <= ticks; tick++) {
             player.beforeTick(board, tick);
+            record(checker.keysPressed(board, tick), balls, examples, examplesOf);
             try {
                 ticker.tick(board, tick);
             } catch (RuntimeException e) {

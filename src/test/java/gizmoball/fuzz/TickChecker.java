@@ -7,14 +7,20 @@ import gizmoball.model.gizmo.Sink;
 import gizmoball.model.gizmo.Spinner;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.Gizmo;
+import gizmoball.model.gizmo.PortalView;
+import gizmoball.model.gizmo.SpawnerView;
 import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.PlayEvent;
 
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
 
 /**
  * Checks a board in play after every tick with geometry of its own ({@link Bodies}, {@link Solid}): no NaN, no free
@@ -23,6 +29,12 @@ import java.util.Map;
  * rounding; and no ball frozen in free flight (free, awake, with nothing within its reach in the tick, moving, yet
  * exactly where it was a tick before). It also notes balls hovering: kept still though moving or falling, near things
  * but touching none (not a rule of issue 20; see {@link Violation.Kind#HOVERING}). It checks play at 1/60 s.
+ *
+ * <p>It follows the balls that come and go (issue 39): a ball appears only by a spawner, at its mouth with its velocity
+ * (where the spawn was asked for in the tick, at the tick's end: exactly there; by a key between ticks, exactly there
+ * when {@link #keysPressed} looks), and the report after it appeared says so; a ball leaves only by a sink that it
+ * touched, in a tick whose report says so; and a ball that went through a portal came out where its pair's frame says
+ * (docs/design.md, "Portals"), reckoned here from the portals' cells and rotations.
  *
  * <p>Play moves no gizmo but a flipper's bar, so the other gizmos are read once, when the checker is made, and filed
  * by cell; the flippers and the balls are read after every tick. Balls are read through {@link Board#balls()}, gizmos
@@ -43,6 +55,12 @@ public final class TickChecker {
     private static final double R = Board.BALL_RADIUS;
     /** L/s: the speed an absorber fires a ball at (docs/rules.md, "Gizmos"), stated here again on purpose. */
     private static final double LAUNCH_SPEED = 50;
+    /** L/s: no ball is faster (docs/rules.md, "Gizmos"), stated here again on purpose. */
+    private static final double MAX_SPEED = 200;
+    /** The most balls a spawner fills a board to (docs/board-files.md, "Board files"), stated here again on purpose. */
+    static final int MOST_BALLS = 200;
+    /** L: where the spawner puts a ball and where a portal's pair sends it are reckoned exactly; rounding only. */
+    static final double PLACE_ROUNDING = 1e-9;
     private static final int SIZE = Board.SIZE;
 
     private record Body(String name, Solid solid) {
@@ -66,6 +84,14 @@ public final class TickChecker {
     private final double mu;
     private final double mu2;
     private final Map<String, BallAt> before = new HashMap<>();
+    private final Map<String, Gizmo> byName = new HashMap<>();
+    /** The balls on the board when it was last seen (at the last check, or since by {@link #keysPressed}). */
+    private final Set<String> known = new HashSet<>();
+    /**
+     * Balls seen appearing whose spawn no report has named yet, with the tick after which they were seen: the report
+     * of the next tick must (a spawn asked for in a tick happens at its end, after its report).
+     */
+    private final Map<String, Integer> unreported = new LinkedHashMap<>();
     /** The absorbers that fired in the tick being checked. */
     private List<Gizmo> fired = List.of();
     private double kineticBefore;
@@ -82,6 +108,7 @@ public final class TickChecker {
         }
         boolean movers = false;
         for (Gizmo gizmo : gizmos) {
+            byName.put(gizmo.name(), gizmo);
             if (gizmo instanceof Flipper flipper) {
                 flippers.add(flipper);
                 flipperBoxes.add(new Body(flipper.name(), Bodies.box(flipper)));
@@ -99,7 +126,8 @@ public final class TickChecker {
                 continue;
             }
             // What changes the balls' energy other than the contract's loss: capture, removal, a boost.
-            movers |= gizmo instanceof Absorber || gizmo instanceof Sink || gizmo instanceof Accelerator;
+            movers |= gizmo instanceof Absorber || gizmo instanceof Sink || gizmo instanceof Accelerator
+                    || gizmo instanceof SpawnerView;
             Body body = new Body(gizmo.name(), Bodies.of(gizmo));
             still.add(body);
             file(body);
@@ -110,6 +138,7 @@ public final class TickChecker {
         energyKept = !movers && gravity == 0 && mu == 0 && mu2 == 0;
         // No positions yet: a ball can only be seen frozen over a tick it was checked before.
         kineticBefore = kinetic(balls.stream().filter(b -> !b.isCaptured()).toList());
+        balls.forEach(ball -> known.add(ball.name()));
     }
 
     /** True when the board keeps kinetic energy (no gravity, friction, flippers or absorbers): it is checked. */
@@ -137,29 +166,47 @@ public final class TickChecker {
 
     /** The violations of the board as it is now, after tick {@code tick}; the board is then remembered for the next. */
     public List<Violation> check(Board board, int tick) {
-        List<Gizmo> fired = new ArrayList<>();
-        if (board.lastTick() != null) {
-            for (PlayEvent event : board.lastTick().events()) {
-                if (event instanceof PlayEvent.Fired shot) {
-                    board.gizmos().stream().filter(g -> g.name().equals(shot.absorber())).forEach(fired::add);
-                }
-            }
-        }
-        return check(board.balls(), tick, fired);
+        return check(board.balls(), tick, board.lastTick() == null ? List.of() : board.lastTick().events());
     }
 
-    /** As {@link #check(Board, int)} for the board's balls as they are now, no absorber having fired. */
+    /** As {@link #check(Board, int)} for the board's balls as they are now, after a tick that reported nothing. */
     List<Violation> check(List<BallView> balls, int tick) {
         return check(balls, tick, List.of());
     }
 
     /**
-     * As {@link #check(Board, int)}; {@code fired}: the absorbers that fired a ball in the tick. A fired ball may be
-     * caught again in the same tick, held at both ends of it, and its way out and back is seen nowhere else.
+     * The keys due before tick {@code tick} have been pressed: a ball a spawner added must be at its mouth with its
+     * velocity, and the tick's report must say so; it is then followed as if it had been there after the last tick.
+     * (Other effects of keys, a flipper starting to swing or an absorber firing, show in the tick itself.)
      */
-    List<Violation> check(List<BallView> balls, int tick, List<Gizmo> fired) {
-        this.fired = fired;
+    public List<Violation> keysPressed(Board board, int tick) {
         List<Violation> found = new ArrayList<>();
+        for (BallView ball : board.balls()) {
+            if (known.add(ball.name())) {
+                checkAtAMouth(ball, tick, found);
+                unreported.put(ball.name(), tick - 1);
+                before.put(ball.name(), new BallAt(ball.position().x(), ball.position().y(), ball.velocity().x(),
+                        ball.velocity().y(), false, 0));   // it touches its spawner
+            }
+        }
+        kineticBefore = kinetic(board.balls().stream().filter(b -> !b.isCaptured()).toList());
+        return found;
+    }
+
+    /**
+     * As {@link #check(Board, int)}; {@code events}: what the tick reported (absorbers that fired, balls spawned, sunk
+     * and sent through portals). A fired ball may be caught again in the same tick, held at both ends of it, and its
+     * way out and back is seen nowhere else.
+     */
+    List<Violation> check(List<BallView> balls, int tick, List<PlayEvent> events) {
+        fired = new ArrayList<>();
+        for (PlayEvent event : events) {
+            if (event instanceof PlayEvent.Fired shot && byName.get(shot.absorber()) != null) {
+                fired.add(byName.get(shot.absorber()));
+            }
+        }
+        List<Violation> found = new ArrayList<>();
+        checkComingAndGoing(balls, tick, events, found);
         List<BallView> free = new ArrayList<>();
         for (BallView ball : balls) {
             if (!finite(ball)) {
@@ -178,6 +225,11 @@ public final class TickChecker {
         for (Gizmo cell : switching) {
             if (Bodies.present(cell)) {
                 moving.add(new Body(cell.name(), Bodies.of(cell)));
+            }
+        }
+        for (PlayEvent event : events) {
+            if (event instanceof PlayEvent.Teleported jump) {
+                checkJump(jump, tick, found);
             }
         }
         double[] gaps = new double[free.size()];
@@ -202,6 +254,179 @@ public final class TickChecker {
         }
         remember(balls, gapOf);
         return found;
+    }
+
+    /**
+     * Balls that appeared since the last check were spawned: at the tick's end (exactly at a spawner's mouth with its
+     * velocity, named by the next report), or before it began (named by this tick's report; by a key,
+     * {@link #keysPressed} saw it, or by an order that waited, no farther from a mouth than a ball goes in a tick).
+     * Balls that left were taken by a sink they touched, in this tick. The board never holds more than
+     * {@link #MOST_BALLS} once a spawner has added one.
+     */
+    private void checkComingAndGoing(List<BallView> balls, int tick, List<PlayEvent> events, List<Violation> found) {
+        Set<String> present = new HashSet<>();
+        for (BallView ball : balls) {
+            present.add(ball.name());
+        }
+        Set<String> sunk = new HashSet<>();
+        for (PlayEvent event : events) {
+            if (event instanceof PlayEvent.Spawned spawned) {
+                String ball = spawned.ball();
+                if (!(byName.get(spawned.spawner()) instanceof SpawnerView spawner)) {
+                    found.add(new Violation(Violation.Kind.APPEARED, tick, ball, Double.NaN,
+                            "spawned by " + spawned.spawner() + ", which is no spawner of the board"));
+                } else if (unreported.remove(ball) == null) {
+                    BallView now = balls.stream().filter(b -> b.name().equals(ball)).findFirst().orElse(null);
+                    if (now == null && !known.contains(ball)) {
+                        found.add(new Violation(Violation.Kind.APPEARED, tick, ball, Double.NaN,
+                                "reported spawned by " + spawner.name() + " but never seen"));
+                    } else if (now != null && known.add(ball)) {
+                        // spawned when the tick began (an order that waited): at most a tick's way from the mouth
+                        double[] mouth = mouth(spawner);
+                        double off = Math.hypot(now.position().x() - mouth[0], now.position().y() - mouth[1]);
+                        if (off > MAX_SPEED * DT + TOLERANCE) {
+                            found.add(new Violation(Violation.Kind.APPEARED, tick, ball, off,
+                                    "spawned by " + spawner.name() + " as the tick began, yet farther from its mouth"));
+                        }
+                        before.put(ball, new BallAt(now.position().x(), now.position().y(), now.velocity().x(),
+                                now.velocity().y(), false, 0));
+                    } else {
+                        found.add(new Violation(Violation.Kind.APPEARED, tick, ball, Double.NaN,
+                                "reported spawned by " + spawner.name() + " though it was there before"));
+                    }
+                }
+            } else if (event instanceof PlayEvent.Sunk taken) {
+                sunk.add(taken.ball());
+                checkSunk(taken, present, tick, found);
+            }
+        }
+        for (Map.Entry<String, Integer> waiting : unreported.entrySet()) {
+            found.add(new Violation(Violation.Kind.APPEARED, tick, waiting.getKey(), Double.NaN,
+                    "appeared after tick " + waiting.getValue() + " and the next report did not name its spawn"));
+        }
+        unreported.clear();
+        for (BallView ball : balls) {
+            if (!known.contains(ball.name())) {
+                checkAtAMouth(ball, tick, found);
+                unreported.put(ball.name(), tick);
+            }
+        }
+        for (String name : known) {
+            if (!present.contains(name) && !sunk.contains(name)) {
+                found.add(new Violation(Violation.Kind.VANISHED, tick, name, Double.NaN, "left the board, no sink took it"));
+            }
+        }
+        if (balls.size() > MOST_BALLS && balls.size() > known.size()) {
+            found.add(new Violation(Violation.Kind.APPEARED, tick, "all", balls.size(),
+                    balls.size() + " balls, more than a spawner fills a board to"));
+        }
+    }
+
+    /** A ball just spawned: exactly at the mouth of some spawner, with that spawner's velocity. */
+    private void checkAtAMouth(BallView ball, int tick, List<Violation> found) {
+        double nearest = Double.POSITIVE_INFINITY;
+        for (Gizmo gizmo : byName.values()) {
+            if (gizmo instanceof SpawnerView spawner) {
+                double[] mouth = mouth(spawner);
+                double off = Math.hypot(ball.position().x() - mouth[0], ball.position().y() - mouth[1]);
+                boolean itsVelocity = ball.velocity().x() == spawner.velocity().x()
+                        && ball.velocity().y() == spawner.velocity().y();
+                if (off <= PLACE_ROUNDING && itsVelocity) {
+                    return;
+                }
+                nearest = Math.min(nearest, off);
+            }
+        }
+        found.add(new Violation(Violation.Kind.APPEARED, tick, ball.name(), nearest, String.format(Locale.ROOT,
+                "appeared at (%s, %s) with (%s, %s), at no spawner's mouth with its velocity", ball.position().x(),
+                ball.position().y(), ball.velocity().x(), ball.velocity().y())));
+    }
+
+    /**
+     * A spawner's mouth (docs/board-files.md, "Board files"): a ball's centre touching the middle of the side it faces,
+     * up unturned, then right, down, left with each quarter turn.
+     */
+    private static double[] mouth(Gizmo spawner) {
+        double[] n = facing(spawner.rotation());
+        double out = 0.5 + R;
+        return new double[] {spawner.x() + 0.5 + n[0] * out, spawner.y() + 0.5 + n[1] * out};
+    }
+
+    /** The outward normal of the side a spawner or a portal faces after {@code quarterTurns} clockwise. */
+    private static double[] facing(int quarterTurns) {
+        return switch (Math.floorMod(quarterTurns, 4)) {
+            case 0 -> new double[] {0, -1};
+            case 1 -> new double[] {1, 0};
+            case 2 -> new double[] {0, 1};
+            default -> new double[] {-1, 0};
+        };
+    }
+
+    /** The ball was taken by the sink: it has left the board, and it touched the sink when it was taken. */
+    private void checkSunk(PlayEvent.Sunk taken, Set<String> present, int tick, List<Violation> found) {
+        if (present.contains(taken.ball())) {
+            found.add(new Violation(Violation.Kind.VANISHED, tick, taken.ball(), Double.NaN,
+                    "reported taken by " + taken.sink() + " yet still on the board"));
+        }
+        Gizmo sink = byName.get(taken.sink());
+        if (!(sink instanceof Sink)) {
+            found.add(new Violation(Violation.Kind.VANISHED, tick, taken.ball(), Double.NaN,
+                    "taken by " + taken.sink() + ", which is no sink of the board"));
+            return;
+        }
+        double gap = Bodies.of(sink).signedDistance(taken.at().x(), taken.at().y()) - R;
+        if (Math.abs(gap) > TOLERANCE) {
+            found.add(new Violation(Violation.Kind.VANISHED, tick, taken.ball(), gap,
+                    "taken by " + taken.sink() + " from (" + taken.at().x() + ", " + taken.at().y() + "), not touching it"));
+        }
+    }
+
+    /**
+     * A ball went through a portal: the portal has the exit as its pair; the ball touched its mouth from outside
+     * (r out along its facing n, at most half the mouth along it); and it came out where the pair's frame puts it
+     * (docs/design.md, "Portals": meeting A's mouth at r n_A + t e_A, it leaves at r n_B - t e_B, e the facing turned a
+     * quarter clockwise), on a spot clear of the walls and of every gizmo that stays where it is (the loop looked at
+     * the spot when the ball met the mouth; gates, flippers and spinners may have moved since).
+     */
+    private void checkJump(PlayEvent.Teleported jump, int tick, List<Violation> found) {
+        Gizmo entry = byName.get(jump.portal());
+        Gizmo exit = byName.get(jump.exit());
+        if (!(entry instanceof PortalView a) || !(exit instanceof PortalView b) || !a.pair().equals(Optional.of(b.name()))) {
+            found.add(new Violation(Violation.Kind.JUMPED, tick, jump.ball(), Double.NaN,
+                    "through " + jump.portal() + " to " + jump.exit() + ", which are no pair of portals"));
+            return;
+        }
+        double[] nA = facing(a.rotation());
+        double[] nB = facing(b.rotation());
+        double dx = jump.at().x() - (a.x() + 0.5 + nA[0] / 2);
+        double dy = jump.at().y() - (a.y() + 0.5 + nA[1] / 2);
+        double out = dx * nA[0] + dy * nA[1];
+        double along = -dx * nA[1] + dy * nA[0];   // e = (-n_y, n_x)
+        if (Math.abs(out - R) > TOLERANCE || Math.abs(along) > 0.5 + TOLERANCE) {
+            found.add(new Violation(Violation.Kind.JUMPED, tick, jump.ball(), Math.abs(out - R), String.format(
+                    Locale.ROOT, "entered %s from (%s, %s), %s out from its mouth and %s along it, not touching it",
+                    a.name(), jump.at().x(), jump.at().y(), out, along)));
+        }
+        double x = b.x() + 0.5 + nB[0] * (0.5 + R) + along * nB[1];
+        double y = b.y() + 0.5 + nB[1] * (0.5 + R) - along * nB[0];
+        double off = Math.hypot(jump.out().x() - x, jump.out().y() - y);
+        if (off > PLACE_ROUNDING + Math.abs(out - R)) {
+            found.add(new Violation(Violation.Kind.JUMPED, tick, jump.ball(), off, String.format(Locale.ROOT,
+                    "left %s at (%s, %s), where its frame says (%s, %s)", b.name(), jump.out().x(), jump.out().y(), x, y)));
+        }
+        double gap = Math.min(Math.min(x - R, SIZE - R - x), Math.min(y - R, SIZE - R - y));
+        String in = "the walls";
+        for (Body body : cells.get(clampCell(y) * SIZE + clampCell(x))) {
+            double g = body.solid().signedDistance(x, y) - R;
+            if (g < gap) {
+                gap = g;
+                in = body.name();
+            }
+        }
+        if (gap < -TOLERANCE) {
+            found.add(new Violation(Violation.Kind.JUMPED, tick, jump.ball(), -gap, "came out of " + b.name()
+                    + " into " + in));
+        }
     }
 
     private static boolean finite(BallView ball) {
@@ -340,8 +565,10 @@ public final class TickChecker {
 
     private void remember(List<BallView> balls, Map<String, Double> gapOf) {
         before.clear();
+        known.clear();
         List<BallView> free = new ArrayList<>();
         for (BallView ball : balls) {
+            known.add(ball.name());
             before.put(ball.name(), new BallAt(ball.position().x(), ball.position().y(), ball.velocity().x(),
                     ball.velocity().y(), ball.isCaptured(), gapOf.getOrDefault(ball.name(), Double.NaN)));
             if (!ball.isCaptured()) {

@@ -9,7 +9,12 @@ import gizmoball.model.gizmo.Bumper;
 import gizmoball.model.gizmo.Flipper;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Portal;
+import gizmoball.model.gizmo.Setting;
+import gizmoball.model.gizmo.Spawner;
 import gizmoball.model.loop.Ball;
+import gizmoball.model.loop.BallView;
+import gizmoball.model.loop.PlayEvent;
 
 import java.util.List;
 
@@ -188,9 +193,112 @@ class TickCheckerTest {
         Ball still = ball("A", 2.5, 3.5, 0, 50);
         TickChecker checker = new TickChecker(List.of(absorber), 25, 0, 0, List.of(still));
         checker.check(List.of(still), 0);
-        assertThat(kinds(checker.check(List.of(still), 1, List.of(absorber))))
+        assertThat(kinds(checker.check(List.of(still), 1, List.of(new PlayEvent.Fired(absorber.name())))))
                 .containsExactly(Violation.Kind.HOVERING);
         assertThat(kinds(checker.check(List.of(still), 2))).containsExactly(Violation.Kind.FROZEN);
+    }
+
+    /** A spawner at (5, 5) facing up: its mouth is (5.5, 5 - R); its balls start at (3, -4). */
+    private static Spawner spawner() {
+        Spawner spawner = (Spawner) GizmoKind.SPAWNER.create("SP", 5, 5);
+        spawner.hold(new Setting.Launch(3, -4), name -> null);
+        return spawner;
+    }
+
+    @Test
+    void aBallAppearsOnlyAtASpawnersMouthWithItsVelocityAndTheNextReportNamesItsSpawn() {
+        Ball there = ball("A", 15, 15, 0, 0);
+        TickChecker checker = new TickChecker(List.of(spawner()), 0, 0, 0, List.of(there));
+        assertThat(checker.check(List.of(there), 0)).isEmpty();
+        Ball spawned = ball("N", 5.5, 5 - R, 3, -4);
+        assertThat(checker.check(List.of(there, spawned), 1)).as("spawned at the tick's end").isEmpty();
+        spawned.moveTo(new Vect(7.5, 3));
+        spawned.setVelocity(Vect.ZERO);   // and stops there, so that it is no frozen ball below
+        assertThat(checker.check(List.of(there, spawned), 2, List.of(new PlayEvent.Spawned("SP", "N")))).isEmpty();
+        Ball unnamed = ball("M", 5.5, 5 - R, 3, -4);
+        assertThat(checker.check(List.of(there, spawned, unnamed), 3)).isEmpty();
+        assertThat(kinds(checker.check(List.of(there, spawned, unnamed), 4))).as("no report named it")
+                .containsExactly(Violation.Kind.APPEARED);
+
+        List<BallView> elsewhere = List.of(there, ball("N", 10, 10, 3, -4));
+        TickChecker nowhere = new TickChecker(List.of(spawner()), 0, 0, 0, List.of(there));
+        nowhere.check(List.of(there), 0);
+        assertThat(kinds(nowhere.check(elsewhere, 1))).containsExactly(Violation.Kind.APPEARED);
+        TickChecker tooFast = new TickChecker(List.of(spawner()), 0, 0, 0, List.of(there));
+        tooFast.check(List.of(there), 0);
+        assertThat(kinds(tooFast.check(List.of(there, ball("N", 5.5, 5 - R, 3, -4.001)), 1)))
+                .containsExactly(Violation.Kind.APPEARED);
+        TickChecker off = new TickChecker(List.of(spawner()), 0, 0, 0, List.of(there));
+        off.check(List.of(there), 0);
+        assertThat(kinds(off.check(List.of(there, ball("N", 5.5, 5 - R - 1e-6, 3, -4)), 1)))
+                .containsExactly(Violation.Kind.APPEARED);
+        TickChecker ghost = new TickChecker(List.of(spawner()), 0, 0, 0, List.of(there));
+        ghost.check(List.of(there), 0);
+        assertThat(kinds(ghost.check(List.of(there), 1, List.of(new PlayEvent.Spawned("SP", "N")))))
+                .as("a spawn reported of a ball never seen").containsExactly(Violation.Kind.APPEARED);
+    }
+
+    @Test
+    void aBallLeavesOnlyIntoASinkItTouchedInTheTickThatSaysSo() {
+        Gizmo sink = gizmo(GizmoKind.SINK, 5, 5);
+        Ball onTop = ball("B", 5.5, 5 - R, 0, 1);
+        Vect touching = new Vect(5.5, 5 - R);
+        TickChecker taken = new TickChecker(List.of(sink), 25, 0, 0, List.of(onTop));
+        taken.check(List.of(onTop), 0);
+        assertThat(taken.check(List.of(), 1, List.of(new PlayEvent.Sunk("SINK", "B", touching)))).isEmpty();
+
+        TickChecker gone = new TickChecker(List.of(sink), 25, 0, 0, List.of(onTop));
+        gone.check(List.of(onTop), 0);
+        assertThat(kinds(gone.check(List.of(), 1))).containsExactly(Violation.Kind.VANISHED);
+        TickChecker far = new TickChecker(List.of(sink), 25, 0, 0, List.of(onTop));
+        far.check(List.of(onTop), 0);
+        assertThat(kinds(far.check(List.of(), 1, List.of(new PlayEvent.Sunk("SINK", "B", new Vect(5.5, 5 - R - 2e-6))))))
+                .as("taken from beyond touching").containsExactly(Violation.Kind.VANISHED);
+        TickChecker stays = new TickChecker(List.of(sink), 25, 0, 0, List.of(onTop));
+        stays.check(List.of(onTop), 0);
+        assertThat(kinds(stays.check(List.of(onTop), 1, List.of(new PlayEvent.Sunk("SINK", "B", touching)))))
+                .as("taken, yet still there").containsExactly(Violation.Kind.VANISHED);
+    }
+
+    /**
+     * Every pair of rotations: the game's own passage (Portal.passage) is where the checker's frame puts the ball, and
+     * a way out 2e-9 L from it, or through portals that are no pair, or from off the mouth, is found.
+     */
+    @Test
+    void aBallThroughAPortalLeavesWhereItsPairsFrameSays() {
+        Ball elsewhere = ball("C", 10, 2, 0, 0);
+        for (int a = 0; a < 4; a++) {
+            for (int b = 0; b < 4; b++) {
+                Board board = new Board();
+                board.addGizmo(GizmoKind.PORTAL, "A", 4, 10);
+                board.addGizmo(GizmoKind.PORTAL, "Z", 14, 10);
+                board.addGizmo(GizmoKind.PORTAL, "Y", 10, 15);
+                for (int t = 0; t < a; t++) {
+                    board.rotate("A");
+                }
+                for (int t = 0; t < b; t++) {
+                    board.rotate("Z");
+                }
+                board.set("A", Setting.Pair.with("Z"));
+                Portal entry = (Portal) board.gizmos().stream().filter(g -> g.name().equals("A")).findFirst().orElseThrow();
+                Portal exit = (Portal) board.gizmos().stream().filter(g -> g.name().equals("Z")).findFirst().orElseThrow();
+                Vect n = entry.facing();
+                Vect at = entry.mouthCentre().plus(n.times(R)).plus(new Vect(-n.y(), n.x()).times(0.3));
+                Vect out = entry.passage(at, new Vect(0, 1), exit, R).centre();
+                String as = "entry turned " + a + ", exit turned " + b;
+                TickChecker checker = new TickChecker(board.gizmos(), 0, 0, 0, List.of(elsewhere));
+                assertThat(checker.check(List.of(elsewhere), 1,
+                        List.of(new PlayEvent.Teleported("A", "Z", "B", at, out)))).as(as).isEmpty();
+                assertThat(kinds(checker.check(List.of(elsewhere), 2, List.of(new PlayEvent.Teleported("A", "Z", "B",
+                        at, out.plus(new Vect(2e-9, 0))))))).as(as).containsExactly(Violation.Kind.JUMPED);
+                assertThat(kinds(checker.check(List.of(elsewhere), 3, List.of(new PlayEvent.Teleported("A", "Y", "B",
+                        at, out))))).as(as).containsExactly(Violation.Kind.JUMPED);
+                Vect beside = at.plus(new Vect(-n.y(), n.x()).times(0.3));   // 0.6 along: beyond the mouth's half
+                assertThat(kinds(checker.check(List.of(elsewhere), 4, List.of(new PlayEvent.Teleported("A", "Z", "B",
+                        beside, entry.passage(beside, new Vect(0, 1), exit, R).centre())))))
+                        .as(as).containsExactly(Violation.Kind.JUMPED);
+            }
+        }
     }
 
     @Test

@@ -20,6 +20,12 @@ public record Violation(Kind kind, int tick, String ball, double amount, String 
         INSIDE_BALL("inside a ball"),
         ENERGY_GAINED("energy gained"),
         FROZEN("frozen"),
+        /** A ball that appeared other than at a spawner's mouth with its velocity, or whose spawn no report named. */
+        APPEARED("appeared"),
+        /** A ball that left the board other than into a sink it touched, as the tick's report says. */
+        VANISHED("vanished"),
+        /** A ball that went through a portal not paired with the exit, or came out other than where the pair sends it. */
+        JUMPED("jumped astray"),
         /**
          * A ball that does not move over a tick though its velocity (after friction and gravity) would move it, touching
          * nothing by more than the tolerance at either end of the tick, but near enough to something to have met it:

@@ -114,9 +114,12 @@ class PortalTest {
         assertThat(ball(board).velocity()).isEqualTo(out);   // exact: a quarter turn swaps and negates
         assertThat(ball(board).position().x()).isCloseTo(expected.x(), within(1e-12));
         assertThat(ball(board).position().y()).isCloseTo(expected.y(), within(1e-12));
+        PlayEvent.Teleported through = (PlayEvent.Teleported) events.stream()
+                .filter(PlayEvent.Teleported.class::isInstance).findFirst().orElseThrow();
         assertThat(events).filteredOn(PlayEvent.Teleported.class::isInstance).singleElement()
-                .isEqualTo(new PlayEvent.Teleported("A", "Z", "B", ((PlayEvent.Teleported) events.stream()
-                        .filter(PlayEvent.Teleported.class::isInstance).findFirst().orElseThrow()).at()));
+                .isEqualTo(new PlayEvent.Teleported("A", "Z", "B", through.at(), through.out()));
+        assertThat(through.out().x()).isCloseTo(at.x(), within(1e-12));   // where it left: touching Z's mouth
+        assertThat(through.out().y()).isCloseTo(at.y(), within(1e-12));
         assertThat(events).as("no bounce").noneMatch(PlayEvent.Hit.class::isInstance);
     }
 

@@ -1,5 +1,6 @@
 package gizmoball.model.gizmo;
 
+import java.util.List;
 import java.util.Optional;
 
 /**
@@ -34,6 +35,21 @@ public sealed interface Gizmo permits BumperView, FlipperView, AbsorberView, Sin
 
     /** The value its author set on it beyond its place, turn and colour; {@link Setting.None} for most kinds. */
     Setting setting();
+
+    /**
+     * The names of the balls it holds, longest-held first: an absorber's ({@link GizmoKind#ballTaking} {@code HOLDS});
+     * none for every other kind.
+     */
+    default List<String> held() {
+        return List.of();
+    }
+
+    /**
+     * How it launches when it is a plunger (an absorber whose {@link Setting.Pull} has one); empty for every other.
+     */
+    default Optional<Plunger> plunger() {
+        return setting() instanceof Setting.Pull pull ? pull.plunger() : Optional.empty();
+    }
 
     /** What play has changed of it, for a save during play; {@link PlayState.AsBuilt} for most kinds and at rest. */
     PlayState playState();

@@ -27,6 +27,9 @@ public final class Ball implements BallView {
     private double x;
     private double y;
     private Vect position;
+    /** Its circle at {@link #position}, made when first asked for there. */
+    private Circle circle;
+    private Contact.OtherBall asContact;
     private Vect velocity;
     private boolean captured;
     private final List<ContactRef> contacts = new ArrayList<>();
@@ -128,12 +131,48 @@ public final class Ball implements BallView {
         wake();
     }
 
+    /** Its circle where it is, made once per place (detection asks for it against every shape in reach). */
     Circle circle() {
-        return new Circle(position(), Arena.BALL_RADIUS);
+        if (circle == null) {
+            circle = new Circle(position(), Arena.BALL_RADIUS);
+        }
+        return circle;
+    }
+
+    /** This ball as what another ball is about to meet, made once (a contact is a value). */
+    Contact.OtherBall asContact() {
+        if (asContact == null) {
+            asContact = new Contact.OtherBall(this);
+        }
+        return asContact;
+    }
+
+    /**
+     * What the loop's {@link ShadowEnergy} noted of this ball, each note stamped with the tick it was made in (a stamp
+     * of another tick: nothing noted). Kept on the ball, as a physics engine keeps a body's solver data on the body,
+     * so that the books allocate nothing tick after tick. A copy of the ball starts with none.
+     */
+    static final class EnergyMarks {
+        long startedIn;
+        /** The shadow energy after stage 1, when {@link #startedIn} is this tick. */
+        double atStart;
+        long lostIn;
+        long bouncedIn;
+        /** The normal of the last elastic bounce, when {@link #bouncedIn} is this tick. */
+        Vect normal;
+        /** Its group's index while the tick's groups are formed. */
+        int group;
+    }
+
+    private final EnergyMarks energyMarks = new EnergyMarks();
+
+    EnergyMarks energyMarks() {
+        return energyMarks;
     }
 
     /** The centre moves there, the velocity kept. For the board and its loop, not for views. */
     public void moveTo(Vect newPosition) {
+        circle = null;
         position = newPosition;
         x = newPosition.x();
         y = newPosition.y();
@@ -150,7 +189,10 @@ public final class Ball implements BallView {
     public void setVelocity(Vect newVelocity) {
         double speed = newVelocity.length();
         Vect clamped = speed > Arena.MAX_SPEED * (1 + 1e-12) ? newVelocity.times(Arena.MAX_SPEED / speed) : newVelocity;
-        velocity = new Vect(negligibleToZero(clamped.x()), negligibleToZero(clamped.y()));
+        double vx = negligibleToZero(clamped.x());
+        double vy = negligibleToZero(clamped.y());
+        // A vector is a value: where nothing was clamped or zeroed, the one given is the one to keep.
+        velocity = vx == clamped.x() && vy == clamped.y() ? clamped : new Vect(vx, vy);
     }
 
     private static double negligibleToZero(double component) {
@@ -162,6 +204,7 @@ public final class Ball implements BallView {
         x = x + velocity.x() * dt + 0.0;
         y = y + velocity.y() * dt + 0.0;
         position = null;
+        circle = null;
     }
 
     /** An absorber holds it there, at rest, its contacts forgotten. For the board, not for views. */

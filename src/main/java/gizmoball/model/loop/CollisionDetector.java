@@ -4,6 +4,7 @@ import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Shape;
 
+import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
 import java.util.Set;
@@ -40,9 +41,17 @@ final class CollisionDetector {
             new LineSegment(Arena.SIZE, 0, Arena.SIZE, Arena.SIZE),
             new LineSegment(Arena.SIZE, Arena.SIZE, 0, Arena.SIZE),
             new LineSegment(0, Arena.SIZE, 0, 0));
+    /** The outer walls as contacts, made once (a contact is a value: the same wall is the same contact). */
+    private static final List<Contact.OuterWall> WALL_CONTACTS = List.of(new Contact.OuterWall(0, OUTER_WALLS.get(0)),
+            new Contact.OuterWall(1, OUTER_WALLS.get(1)), new Contact.OuterWall(2, OUTER_WALLS.get(2)),
+            new Contact.OuterWall(3, OUTER_WALLS.get(3)));
 
     private final LoopView view;
     private final Set<Ball> finishedBalls;
+    /** The search of {@link #againstScene}, kept from ask to ask. */
+    private final Earliest scene = new Earliest(0);
+    /** The gizmos a ball can reach, found again for every ask. */
+    private final List<GizmoBase> reached = new ArrayList<>();
 
     /** @param finishedBalls balls that move no more this tick (SEED), treated as at rest */
     CollisionDetector(LoopView view, Set<Ball> finishedBalls) {
@@ -64,9 +73,13 @@ final class CollisionDetector {
         return Math.sqrt(velocity.x() * velocity.x() + velocity.y() * velocity.y());
     }
 
-    /** The ball's earliest collision with the outer walls or a gizmo within the window. */
+    /**
+     * The ball's earliest collision with the outer walls or a gizmo within the window: a search the detector keeps, so
+     * read it before asking again.
+     */
     Earliest againstScene(Ball ball, double window) {
-        Earliest earliest = new Earliest(window);
+        Earliest earliest = scene;
+        earliest.reset(window);
         Circle circle = ball.circle();
         Vect velocity = motion(ball);
         boolean still = velocity.x() == 0 && velocity.y() == 0;
@@ -74,8 +87,8 @@ final class CollisionDetector {
             for (int side = 0; side < OUTER_WALLS.size(); side++) {
                 LineSegment wall = OUTER_WALLS.get(side);
                 double time = Geometry.timeUntilWallCollision(wall, circle, velocity);
-                if (closesOnSegment(wall, ball, velocity, time)) {
-                    earliest.offer(time, ball, new Contact.OuterWall(side, wall), false);
+                if (time <= earliest.limit() && closesOnSegment(wall, ball, velocity, time)) {
+                    earliest.offer(time, ball, WALL_CONTACTS.get(side), false);
                 }
             }
         }
@@ -107,7 +120,7 @@ final class CollisionDetector {
         if (time <= window) {
             Vect normal = ball.position().plus(mine.times(time)).minus(other.position().plus(theirs.times(time)));
             if (closingOnCircle(normal, relative)) {
-                earliest.offer(time, ball, new Contact.OtherBall(other), true);
+                earliest.offer(time, ball, other.asContact(), true);
             }
         }
     }
@@ -117,11 +130,15 @@ final class CollisionDetector {
         if (!view.spatialIndexEnabled()) {
             return view.gizmos();
         }
-        Vect from = ball.position();
-        Vect to = from.plus(velocity.times(window));
+        // The box from the centre to where it is after the window: the doubles centre + velocity * window gives.
+        double fromX = ball.x();
+        double fromY = ball.y();
+        double toX = fromX + velocity.x() * window;
+        double toY = fromY + velocity.y() * window;
         double reach = Arena.BALL_RADIUS + REACH_MARGIN;
-        return view.index().within(Math.min(from.x(), to.x()) - reach, Math.min(from.y(), to.y()) - reach,
-                Math.max(from.x(), to.x()) + reach, Math.max(from.y(), to.y()) + reach);
+        view.index().within(Math.min(fromX, toX) - reach, Math.min(fromY, toY) - reach, Math.max(fromX, toX) + reach,
+                Math.max(fromY, toY) + reach, reached);
+        return reached;
     }
 
     /** A shape that does not move; {@code delay}: the ball's circle is where the ball will be after that time. */

@@ -16,17 +16,18 @@ import java.util.List;
  * <p>Over 400 lines because the schedule and its forgetting are one job whose parts share its arrays, every tick.
  */
 final class CollisionSchedule {
-    /** A ball's earliest known collision: {@code at} seconds since the tick began; none when collision is null. */
-    private record Known(double at, Collision collision, boolean circle) {
-    }
-
     private final CollisionDetector detector;
-    /** Each free ball's known collisions, by its slot ({@link Ball#slot()}); null: not known, ask again. */
-    private Known[] withScene = new Known[0];
-    private Known[] withBalls = new Known[0];
     /**
-     * The same collisions' times and kinds side by side, so finding the earliest reads two arrays instead of a
-     * Known per ball: {@code at} (positive infinity: none) and whether it is with a circle.
+     * Each free ball's known collisions, by its slot ({@link Ball#slot()}): whether it is known (not: ask again), and
+     * the collision (null: none), as it was found, its time counted from when it was asked.
+     */
+    private boolean[] sceneKnown = new boolean[0];
+    private boolean[] ballsKnown = new boolean[0];
+    private Collision[] withScene = new Collision[0];
+    private Collision[] withBalls = new Collision[0];
+    /**
+     * When each known collision comes and what it meets, side by side: {@code at} in seconds since the tick began
+     * (positive infinity: none) and whether it is with a circle.
      */
     private double[] sceneAt = new double[0];
     private boolean[] sceneCircle = new boolean[0];
@@ -66,6 +67,8 @@ final class CollisionSchedule {
     private final List<Ball> nearby = new ArrayList<>();
     /** One pair's search, asked again for every ball near the one asking (its collision is made only when found). */
     private final Earliest pair = new Earliest(0);
+    /** The search of one asking ball against the balls near it. */
+    private final Earliest againstBalls = new Earliest(0);
     /** When the grid was filled, and the highest speed of any ball since: how stale its positions can be. */
     private double filedAt;
     private double fastest;
@@ -108,8 +111,10 @@ final class CollisionSchedule {
 
     /** Books for {@code n} balls. */
     private void grow(int n) {
-        withScene = new Known[n];
-        withBalls = new Known[n];
+        sceneKnown = new boolean[n];
+        ballsKnown = new boolean[n];
+        withScene = new Collision[n];
+        withBalls = new Collision[n];
         sceneAt = new double[n];
         sceneCircle = new boolean[n];
         ballsAt = new double[n];
@@ -178,7 +183,7 @@ final class CollisionSchedule {
         if (best.slot < 0) {
             return null;
         }
-        Collision found = (best.withScene ? withScene[best.slot] : withBalls[best.slot]).collision();
+        Collision found = best.withScene ? withScene[best.slot] : withBalls[best.slot];
         return new Collision(best.time, found.ball(), found.contact());
     }
 
@@ -269,10 +274,11 @@ final class CollisionSchedule {
                 continue;
             }
             Ball ball = bySlot[slot];
-            if (withScene[slot] == null) {
-                knowWithScene(slot, known(detector.againstScene(ball, window), elapsed));
+            if (!sceneKnown[slot]) {
+                Earliest earliest = detector.againstScene(ball, window);
+                knowWithScene(slot, elapsed, earliest.collision(), earliest.isCircle());
             }
-            if (withBalls[slot] == null) {
+            if (!ballsKnown[slot]) {
                 askAgainstBalls(ball, elapsed, window);
             }
             isUnknown[slot] = false;
@@ -287,10 +293,12 @@ final class CollisionSchedule {
         }
     }
 
-    private void knowWithScene(int slot, Known known) {
-        withScene[slot] = known;
-        sceneAt[slot] = known.at();
-        sceneCircle[slot] = known.circle();
+    /** Files the ball's earliest collision with the scene, found {@code elapsed} seconds into the tick (null: none). */
+    private void knowWithScene(int slot, double elapsed, Collision collision, boolean circle) {
+        sceneKnown[slot] = true;
+        withScene[slot] = collision;
+        sceneAt[slot] = collision == null ? Double.POSITIVE_INFINITY : elapsed + collision.time();
+        sceneCircle[slot] = collision != null && circle;
         changedAt(slot);
     }
 
@@ -303,15 +311,15 @@ final class CollisionSchedule {
         // A ball just captured or sunk is forgotten too: what was to meet it where it was must not meet it in the
         // absorber (a ball fired from an absorber, knocked back into it by the next ball, bounced that one off where
         // it had been).
-        withScene[slot] = null;
-        withBalls[slot] = null;
+        sceneKnown[slot] = false;
+        ballsKnown[slot] = false;
         markUnknown(slot);
         int[] pointing = pointedAtBy[slot];
         for (int k = 0; k < pointedAtCount[slot]; k++) {
-            Known known = withBalls[pointing[k]];
-            if (known != null && known.collision() != null && partner(known) == ball) {
-                withBalls[pointing[k]] = null;
-                markUnknown(pointing[k]);
+            int other = pointing[k];
+            if (ballsKnown[other] && withBalls[other] != null && partner(withBalls[other]) == ball) {
+                ballsKnown[other] = false;
+                markUnknown(other);
             }
         }
         pointedAtCount[slot] = 0;
@@ -327,15 +335,15 @@ final class CollisionSchedule {
             double reach = Arena.BALL_RADIUS + CollisionDetector.speedBound(detector.motion(ball)) * window
                     + CollisionDetector.REACH_MARGIN;
             if (ball.x() + reach >= x0 && ball.x() - reach <= x1 && ball.y() + reach >= y0 && ball.y() - reach <= y1) {
-                withScene[slot] = null;
+                sceneKnown[slot] = false;
                 markUnknown(slot);
             }
         }
     }
 
     void forgetAll() {
-        Arrays.fill(withScene, null);
-        Arrays.fill(withBalls, null);
+        Arrays.fill(sceneKnown, false);
+        Arrays.fill(ballsKnown, false);
         Arrays.fill(pointedAtCount, 0);
         Arrays.fill(isUnknown, true);
         for (int slot = 0; slot < filed; slot++) {
@@ -344,20 +352,24 @@ final class CollisionSchedule {
         unknownCount = filed;
     }
 
-    private static Ball partner(Known known) {
-        return ((Contact.OtherBall) known.collision().contact()).other();
+    private static Ball partner(Collision collision) {
+        return ((Contact.OtherBall) collision.contact()).other();
     }
 
-    /** Files a ball's earliest known ball collision, noting it with its partner. */
-    private void knowWithBalls(int slot, Known known) {
-        withBalls[slot] = known;
-        ballsAt[slot] = known.at();
-        ballsCircle[slot] = known.circle();
+    /**
+     * Files a ball's earliest known ball collision, found {@code elapsed} seconds into the tick (null: none), noting
+     * it with its partner.
+     */
+    private void knowWithBalls(int slot, double elapsed, Collision collision, boolean circle) {
+        ballsKnown[slot] = true;
+        withBalls[slot] = collision;
+        ballsAt[slot] = collision == null ? Double.POSITIVE_INFINITY : elapsed + collision.time();
+        ballsCircle[slot] = collision != null && circle;
         changedAt(slot);
-        if (known.collision() == null) {
+        if (collision == null) {
             return;
         }
-        int partner = partner(known).slot();
+        int partner = partner(collision).slot();
         int[] pointing = pointedAtBy[partner];
         if (pointing == null || pointing.length == pointedAtCount[partner]) {
             int grown = Math.max(4, 2 * pointedAtCount[partner]);
@@ -372,7 +384,8 @@ final class CollisionSchedule {
      * the other's too. A sleeping ball is a still target; it never asks.
      */
     private void askAgainstBalls(Ball ball, double elapsed, double window) {
-        Earliest earliest = new Earliest(window);
+        Earliest earliest = againstBalls;
+        earliest.reset(window);
         double speed = CollisionDetector.speedBound(detector.motion(ball));
         // No ball farther now than this can meet this one within the window (the pair test's own bound, wider).
         double near = 2 * Arena.BALL_RADIUS + (speed + fastest) * window + CollisionDetector.REACH_MARGIN;
@@ -381,7 +394,8 @@ final class CollisionSchedule {
         double alone = 2 * Arena.BALL_RADIUS + speed * window + 2 * CollisionDetector.REACH_MARGIN;
         nearby.clear();
         grid.near(ball.x(), ball.y(), reach, near, alone, window, elapsed - filedAt, nearby);
-        for (Ball other : nearby) {
+        for (int i = 0; i < nearby.size(); i++) {
+            Ball other = nearby.get(i);
             if (other == ball || other.isCaptured()) {
                 continue;
             }
@@ -391,19 +405,13 @@ final class CollisionSchedule {
             if (found == null) {
                 continue;
             }
-            earliest.offer(found.time(), ball, new Contact.OtherBall(other), true);
-            Known theirs = withBalls[other.slot()];
-            if (theirs != null && (theirs.collision() == null || elapsed + found.time() < theirs.at())) {
-                knowWithBalls(other.slot(), new Known(elapsed + found.time(), found, true));
+            earliest.offer(found.time(), ball, other.asContact(), true);
+            int theirs = other.slot();
+            if (ballsKnown[theirs] && (withBalls[theirs] == null || elapsed + found.time() < ballsAt[theirs])) {
+                knowWithBalls(theirs, elapsed, found, true);
             }
         }
-        knowWithBalls(ball.slot(), known(earliest, elapsed));
-    }
-
-    private static Known known(Earliest earliest, double elapsed) {
-        Collision collision = earliest.collision();
-        return collision == null ? new Known(Double.POSITIVE_INFINITY, null, false)
-                : new Known(elapsed + collision.time(), collision, earliest.isCircle());
+        knowWithBalls(ball.slot(), elapsed, earliest.collision(), earliest.isCircle());
     }
 
 }

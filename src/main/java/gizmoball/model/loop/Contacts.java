@@ -30,6 +30,8 @@ final class Contacts {
     private final double holdGap;
     private final double holdSpeed;
     private final Vect gravity;
+    /** Which of a ball's contacts still hold, by place ({@link #keepHolding}), kept from ball to ball. */
+    private boolean[] holds = new boolean[4];
 
     /**
      * A ball lying on something and nudged off it by a rounding of a wedge's projections, or rolling over a curve
@@ -50,24 +52,55 @@ final class Contacts {
      * now become its contacts.
      */
     List<Vect> refresh(Ball ball) {
+        List<Vect> normals = new ArrayList<>();
+        refresh(ball, normals);
+        return normals;
+    }
+
+    /** As {@link #refresh(Ball)}, into {@code normals}, emptied first (stage 1's list, kept from ball to ball). */
+    void refresh(Ball ball, List<Vect> normals) {
         if (onACorner(ball)) {
             // the face a corner may be the end of is found and takes over, before the corner's hold can act
             discover(ball, new ArrayList<>());
             List<ContactRef> refs = ball.contacts();
             refs.removeIf(ref -> isFlushCorner(refs, ref));
         }
-        List<Vect> normals = new ArrayList<>();
-        boolean lost = ball.contacts().removeIf(ref -> normalOf(ball, ref, normals, Look.HOLD) == null);
-        if (lost) {
+        normals.clear();
+        if (keepHolding(ball, normals)) {
             discover(ball, normals);
             dropFlushCorners(ball, normals);
         }
-        return normals;
+    }
+
+    /**
+     * Keeps the ball's contacts that still hold, their normals added in order (each looked at once, the list as it
+     * was, then the rest removed: as {@code removeIf} would, without making its lambda); true if one ended.
+     */
+    private boolean keepHolding(Ball ball, List<Vect> normals) {
+        List<ContactRef> refs = ball.contacts();
+        int n = refs.size();
+        if (holds.length < n) {
+            holds = new boolean[Math.max(n, 2 * holds.length)];
+        }
+        for (int i = 0; i < n; i++) {
+            holds[i] = normalOf(ball, refs.get(i), normals, Look.HOLD) != null;
+        }
+        int kept = 0;
+        for (int i = 0; i < n; i++) {
+            if (holds[i]) {
+                refs.set(kept++, refs.get(i));
+            }
+        }
+        for (int i = n - 1; i >= kept; i--) {
+            refs.remove(i);
+        }
+        return kept < n;
     }
 
     private boolean onACorner(Ball ball) {
-        for (ContactRef ref : ball.contacts()) {
-            if (cornerOf(ref) != null) {
+        List<ContactRef> refs = ball.contacts();
+        for (int i = 0; i < refs.size(); i++) {
+            if (cornerOf(refs.get(i)) != null) {
                 return true;
             }
         }
@@ -216,7 +249,8 @@ final class Contacts {
         Vect best = v;
         double bestChange = Double.POSITIVE_INFINITY;
         boolean closes = false;
-        for (Vect n : normals) {
+        for (int i = 0; i < normals.size(); i++) {
+            Vect n = normals.get(i);
             double along = v.dot(n);
             if (along >= 0) {
                 continue;
@@ -246,8 +280,8 @@ final class Contacts {
                 return false;
             }
         }
-        for (Vect n : normals) {
-            if (v.dot(n) < -Tolerances.ROUNDING_SPEED) {
+        for (int i = 0; i < normals.size(); i++) {
+            if (v.dot(normals.get(i)) < -Tolerances.ROUNDING_SPEED) {
                 return false;
             }
         }
@@ -256,8 +290,8 @@ final class Contacts {
 
     private static boolean closesOnNone(Vect v, List<Vect> normals) {
         double rounding = 1e-12 * v.length();
-        for (Vect n : normals) {
-            if (v.dot(n) < -rounding) {
+        for (int i = 0; i < normals.size(); i++) {
+            if (v.dot(normals.get(i)) < -rounding) {
                 return false;
             }
         }

@@ -38,9 +38,9 @@ public sealed interface PlayEvent {
 
     /**
      * {@code ball} entered the mouth of the portal {@code portal}, its centre at {@code at}, and left by the mouth of
-     * its pair {@code exit}.
+     * its pair {@code exit}, its centre at {@code out}.
      */
-    record Teleported(String portal, String exit, String ball, Vect at) implements PlayEvent {
+    record Teleported(String portal, String exit, String ball, Vect at, Vect out) implements PlayEvent {
     }
 
     /** A spawner added the ball {@code ball} at its mouth. */

@@ -1,13 +1,8 @@
 package gizmoball.model.loop;
 
 import java.util.ArrayList;
-import java.util.HashMap;
-import java.util.HashSet;
-import java.util.LinkedHashMap;
-import java.util.LinkedHashSet;
 import java.util.List;
-import java.util.Map;
-import java.util.Set;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Function;
 
 import physics.Vect;
@@ -21,15 +16,26 @@ import physics.Vect;
  * end of the tick to keep it; their tangential velocity is never touched. One per tick. A ball that slid on still
  * contacts through the tick keeps the shadow energy as well ({@link Contacts#slidesOnStill}) and is corrected along
  * them.
+ *
+ * <p>Its books allocate nothing in the steady state (issue 39): what it notes of a ball in a tick is kept on the ball
+ * ({@link Ball.EnergyMarks}), stamped with the tick's number, so a stamp of another tick means "nothing noted"; the
+ * lists are kept from tick to tick.
  */
 final class ShadowEnergy {
+    /** Tick numbers, unique across every loop of the process, so that no ball's stamp is ever taken for another's. */
+    private static final AtomicLong TICKS = new AtomicLong();
+    private long tick;
     private Vect gravity;
     private double dt;
-    private final Map<Ball, Double> atStart = new HashMap<>();
-    /** The normal of each ball's last elastic bounce, in order of first bounce (runs stay bit-identical). */
-    private final Map<Ball, Vect> elasticNormals = new LinkedHashMap<>();
-    private final Set<Ball> lost = new HashSet<>();
-    private final List<List<Ball>> pairs = new ArrayList<>();
+    /** The balls with an elastic bounce this tick, in order of first bounce (runs stay bit-identical). */
+    private final List<Ball> bouncers = new ArrayList<>();
+    /** The balls that met each other, two by two. */
+    private final List<Ball> pairs = new ArrayList<>();
+    /** The groups of {@link #restore()}, by index: lists kept from tick to tick. */
+    private final List<List<Ball>> groups = new ArrayList<>();
+    /** The balls of a group that take a correction, and the direction each takes, side by side. */
+    private final List<Ball> correctable = new ArrayList<>();
+    private final List<Vect> directions = new ArrayList<>();
     /** A correction's direction along a ball's contacts may close on one by no more than rounding. */
     private static final double TANGENT_ROUNDING = 1e-12;
     /** The least part of a bounce's normal along a sliding ball's contacts that carries a correction. */
@@ -37,37 +43,55 @@ final class ShadowEnergy {
 
     /** A tick of {@code seconds} under this gravity starts: the books are emptied (kept at the size they grew to). */
     void begin(Vect boardGravity, double seconds) {
+        tick = TICKS.incrementAndGet();
         gravity = boardGravity;
         dt = seconds;
-        atStart.clear();
-        elasticNormals.clear();
-        lost.clear();
+        bouncers.clear();
         pairs.clear();
     }
 
-    /** After stage 1: right after the gravity kick, u = v - g dt/2. */
+    /**
+     * After stage 1: right after the gravity kick, u = v - g dt/2. (The arithmetic of {@code Vect}'s minus, times and
+     * dot on the components, in the same order: the same doubles.)
+     */
     void start(Ball ball) {
-        Vect u = ball.velocity().minus(gravity.times(dt / 2));
-        atStart.put(ball, u.dot(u) / 2 - gravity.dot(ball.position()));
+        double half = dt / 2;
+        double ux = ball.velocity().x() - (gravity.x() * half + 0.0);
+        double uy = ball.velocity().y() - (gravity.y() * half + 0.0);
+        Ball.EnergyMarks marks = ball.energyMarks();
+        marks.atStart = (ux * ux + uy * uy) / 2 - (gravity.x() * ball.x() + gravity.y() * ball.y());
+        marks.startedIn = tick;
     }
 
     /** The ball lost energy this tick (a lossy surface, a rest, a capture, a flipper): it is left alone. */
     void lost(Ball ball) {
-        lost.add(ball);
+        ball.energyMarks().lostIn = tick;
     }
 
     /** A bounce with the given normal (from the surface to the ball). */
     void bounced(Ball ball, Vect normal, boolean elastic) {
-        if (elastic) {
-            elasticNormals.put(ball, normal);
-        } else {
-            lost.add(ball);
+        Ball.EnergyMarks marks = ball.energyMarks();
+        if (!elastic) {
+            marks.lostIn = tick;
+            return;
         }
+        if (marks.bouncedIn != tick) {
+            marks.bouncedIn = tick;
+            bouncers.add(ball);
+        }
+        marks.normal = normal;
     }
 
     /** Two balls bounced off each other: their energy is kept together, not each one's. */
     void met(Ball ball, Ball other) {
-        pairs.add(List.of(ball, other));
+        pairs.add(ball);
+        pairs.add(other);
+    }
+
+    /** The normal of the ball's last elastic bounce this tick, or null. */
+    private Vect elasticNormal(Ball ball) {
+        Ball.EnergyMarks marks = ball.energyMarks();
+        return marks.bouncedIn == tick ? marks.normal : null;
     }
 
     /**
@@ -77,20 +101,35 @@ final class ShadowEnergy {
      * and sum |w_i + lambda n_i|^2 = sum 2 (S_i + g . p_i).
      */
     void restore(Function<Ball, List<Vect>> contactNormals) {
-        Map<Ball, List<Ball>> groups = new LinkedHashMap<>();
-        for (Ball ball : elasticNormals.keySet()) {
-            groups.put(ball, new ArrayList<>(List.of(ball)));
+        // Each bouncer starts a group of its own; a pair joins the second's group to the end of the first's. The
+        // groups are then corrected in the order of their earliest bouncer, each in the order its balls joined.
+        for (int i = 0; i < bouncers.size(); i++) {
+            if (groups.size() == i) {
+                groups.add(new ArrayList<>());
+            }
+            List<Ball> group = groups.get(i);
+            group.clear();
+            group.add(bouncers.get(i));
+            bouncers.get(i).energyMarks().group = i;
         }
-        for (List<Ball> pair : pairs) {
-            List<Ball> first = groups.get(pair.get(0));
-            List<Ball> second = groups.get(pair.get(1));
+        for (int k = 0; k < pairs.size(); k += 2) {
+            int first = pairs.get(k).energyMarks().group;
+            int second = pairs.get(k + 1).energyMarks().group;
             if (first != second) {
-                first.addAll(second);
-                second.forEach(ball -> groups.put(ball, first));
+                List<Ball> joining = groups.get(second);
+                for (int j = 0; j < joining.size(); j++) {
+                    groups.get(first).add(joining.get(j));
+                    joining.get(j).energyMarks().group = first;
+                }
+                joining.clear();
             }
         }
-        for (List<Ball> group : new LinkedHashSet<>(groups.values())) {
-            restore(group, contactNormals);
+        for (Ball ball : bouncers) {
+            List<Ball> group = groups.get(ball.energyMarks().group);
+            if (!group.isEmpty()) {
+                restore(group, contactNormals);
+                group.clear();   // corrected: its other balls pass it over
+            }
         }
     }
 
@@ -101,7 +140,7 @@ final class ShadowEnergy {
      * hold it in the plane (a ball lying in a notch, met by another), and it takes no correction.
      */
     private Vect direction(Ball ball, Function<Ball, List<Vect>> contactNormals) {
-        Vect normal = elasticNormals.get(ball);
+        Vect normal = elasticNormal(ball);
         List<Vect> contacts = contactNormals.apply(ball);
         if (normal == null || contacts.isEmpty()) {
             return normal;
@@ -148,17 +187,20 @@ final class ShadowEnergy {
         double squares = 0;
         double along = 0;
         double target = 0;
-        Map<Ball, Vect> directions = new LinkedHashMap<>();
+        correctable.clear();
+        directions.clear();
         for (Ball ball : group) {
-            if (lost.contains(ball) || ball.isCaptured() || !atStart.containsKey(ball)) {
+            Ball.EnergyMarks marks = ball.energyMarks();
+            if (marks.lostIn == tick || ball.isCaptured() || marks.startedIn != tick) {
                 return;
             }
             Vect w = ball.velocity().plus(h);
             squares += w.dot(w);
-            target += 2 * (atStart.get(ball) + gravity.dot(ball.position()));
+            target += 2 * (marks.atStart + gravity.dot(ball.position()));
             Vect direction = direction(ball, contactNormals);
             if (direction != null) {
-                directions.put(ball, direction);
+                correctable.add(ball);
+                directions.add(direction);
                 along += w.dot(direction);
             }
         }
@@ -177,14 +219,15 @@ final class ShadowEnergy {
         }
         double root = Math.sqrt(discriminant);
         double lambda = Math.abs(-along + root) <= Math.abs(-along - root) ? (-along + root) / n : (-along - root) / n;
-        for (Ball ball : directions.keySet()) {
-            double normalSpeed = ball.velocity().dot(directions.get(ball));
+        for (int i = 0; i < n; i++) {
+            double normalSpeed = correctable.get(i).velocity().dot(directions.get(i));
             if (normalSpeed + lambda < 0 || Math.abs(lambda) > Math.max(normalSpeed / 2, timingSpeed)) {
                 return;   // not a rounding of the bounce timing: leave the group alone
             }
         }
-        for (Ball ball : directions.keySet()) {
-            ball.setVelocity(ball.velocity().plus(directions.get(ball).times(lambda)));
+        for (int i = 0; i < n; i++) {
+            Ball ball = correctable.get(i);
+            ball.setVelocity(ball.velocity().plus(directions.get(i).times(lambda)));
         }
     }
 }

@@ -56,8 +56,15 @@ public final class SpatialIndex {
      */
     public List<GizmoBase> within(double minX, double minY, double maxX, double maxY) {
         List<GizmoBase> found = new ArrayList<>(4);
+        within(minX, minY, maxX, maxY, found);
+        return found;
+    }
+
+    /** As {@link #within(double, double, double, double)}, into {@code found}, emptied first: the loop's, kept. */
+    void within(double minX, double minY, double maxX, double maxY, List<GizmoBase> found) {
+        found.clear();
         if (covered == 0) {
-            return found;
+            return;
         }
         int x0 = clampCell(minX);
         int x1 = clampCell(maxX);
@@ -74,7 +81,6 @@ public final class SpatialIndex {
                 }
             }
         }
-        return found;
     }
 
     private static int clampCell(double coordinate) {

@@ -59,7 +59,8 @@ final class StillSurfaces {
      * what is near where it comes out wakes. (Where the room is taken, the mouth is a wall: {@link #resolve}.)
      */
     private void enter(Ball ball, Passage out) {
-        step.actions.recordEvent(new PlayEvent.Teleported(out.entry(), out.exit(), ball.name(), ball.position()));
+        step.actions.recordEvent(new PlayEvent.Teleported(out.entry(), out.exit(), ball.name(), ball.position(),
+                out.centre()));
         ContactRef on = new ContactRef.OnBall(ball.name());
         for (Ball other : step.view.balls()) {
             other.contacts().remove(on);

@@ -43,6 +43,13 @@ public final class TickRun {
     private final Map<Ball, Integer> zeroTimeHits = new HashMap<>();
     /** Nanoseconds of each stage in this tick, by {@link Stage#ordinal()}. */
     private final long[] nanos = new long[Stage.values().length];
+    /**
+     * Stage 1's books, kept from tick to tick: the gizmos that took a ball touching them, the gizmos near a ball, a
+     * ball's contact normals.
+     */
+    private final List<GizmoBase> tookOnTouch = new ArrayList<>();
+    private final List<GizmoBase> touched = new ArrayList<>();
+    private final List<Vect> contactNormals = new ArrayList<>();
     private static final Stage[] STAGES = Stage.values();
 
     /**
@@ -132,15 +139,18 @@ public final class TickRun {
         LoopView view = step.view;
         double dt = step.dt;
         Vect kick = step.gravity.times(dt);
-        List<GizmoBase> took = new ArrayList<>();
+        List<GizmoBase> took = tookOnTouch;
+        took.clear();
         for (Ball ball : view.balls()) {
             if (ball.isCaptured() || ball.isAsleep() || takenOnTouch(ball, took)) {
                 continue;
             }
-            List<Vect> normals = step.contacts.refresh(ball);
+            List<Vect> normals = contactNormals;
+            step.contacts.refresh(ball, normals);
             Vect v = ball.velocity();
             double factor = Math.max(0, 1 - view.mu() * dt - view.mu2() * v.length() * dt);
-            Vect free = v.times(factor).plus(kick);
+            // v.times(factor).plus(kick), one vector made instead of two: the same doubles
+            Vect free = new Vect(v.x() * factor + 0.0 + kick.x(), v.y() * factor + 0.0 + kick.y());
             Vect next = Contacts.project(free, normals);
             ball.setVelocity(next);
             // project gives back its argument when nothing presses; a ball that only slides loses only the kick
@@ -161,10 +171,13 @@ public final class TickRun {
      * collision would ever take it.
      */
     private boolean takenOnTouch(Ball ball, List<GizmoBase> took) {
-        Vect p = ball.position();
+        double x = ball.x();
+        double y = ball.y();
         double reach = Arena.BALL_RADIUS + Tolerances.CONTACT;
-        for (GizmoBase gizmo : step.view.index().within(p.x() - reach, p.y() - reach, p.x() + reach, p.y() + reach)) {
-            if (gizmo.ballTaking() == BallTaking.REMOVES && gizmo.signedDistance(p) <= reach) {
+        step.view.index().within(x - reach, y - reach, x + reach, y + reach, touched);
+        for (int i = 0; i < touched.size(); i++) {
+            GizmoBase gizmo = touched.get(i);
+            if (gizmo.ballTaking() == BallTaking.REMOVES && gizmo.signedDistance(ball.position()) <= reach) {
                 gizmo.markTriggered(step.now());
                 still.take(ball, gizmo);
                 took.add(gizmo);
@@ -235,7 +248,7 @@ public final class TickRun {
             hit = strikes.resolve(ball, part);
         } else if (contact instanceof Contact.OtherBall other) {
             strikes.met(ball, contact);
-            strikes.met(other.other(), new Contact.OtherBall(ball));
+            strikes.met(other.other(), ball.asContact());
             hit = pairs.resolve(ball, other.other());
         } else {
             strikes.met(ball, contact);

@@ -30,6 +30,8 @@ final class LinksSection {
         }
     }
 
+    private static final int ROWS = 5;
+
     private final Editor controller;
     private final DefaultListModel<Link> links = new DefaultListModel<>();
     private final JList<Link> linkList = new JList<>(links);
@@ -65,9 +67,12 @@ final class LinksSection {
         p.add(new JLabel("Connections and keys"), l);
         linkList.setName("links");
         linkList.setSelectionMode(ListSelectionModel.SINGLE_SELECTION);
-        linkList.setVisibleRowCount(6);
+        // Rows as tall empty as full, so that the list is the same height whatever is selected (a flipper's two keys
+        // and a connection or three fit); more scroll within it, so that the tab fits the window as it opens.
+        linkList.setFixedCellHeight(linkList.getFontMetrics(linkList.getFont()).getHeight() + 2);   // + its border
+        linkList.setVisibleRowCount(ROWS);
         JScrollPane scroll = new JScrollPane(linkList);
-        scroll.setPreferredSize(new Dimension(200, 150));
+        scroll.setPreferredSize(new Dimension(200, scroll.getPreferredSize().height));
         // Never squeezed to a row: the panel scrolls instead (see gizmoball.app.BuildModeInstaller).
         scroll.setMinimumSize(scroll.getPreferredSize());
         GridBagConstraints s = constraints(0, first + 1);

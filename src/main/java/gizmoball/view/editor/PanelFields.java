@@ -13,7 +13,6 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.OptionalDouble;
 import javax.swing.AbstractAction;
-import javax.swing.BorderFactory;
 import javax.swing.JComponent;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
@@ -114,12 +113,6 @@ final class PanelFields {
             }
         }
         return typed;
-    }
-
-    static JComponent section(String title, JComponent content) {
-        content.setBorder(BorderFactory.createTitledBorder(title));
-        content.setAlignmentX(Component.LEFT_ALIGNMENT);
-        return content;
     }
 
     static void row(JPanel p, int y, String label, JComponent field) {

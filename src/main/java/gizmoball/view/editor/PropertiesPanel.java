@@ -3,7 +3,6 @@ package gizmoball.view.editor;
 import static gizmoball.view.editor.PanelFields.constraints;
 import static gizmoball.view.editor.PanelFields.enableAll;
 import static gizmoball.view.editor.PanelFields.row;
-import static gizmoball.view.editor.PanelFields.section;
 import static gizmoball.view.editor.PanelFields.wide;
 
 import gizmoball.editor.Editor;
@@ -16,8 +15,6 @@ import gizmoball.model.loop.BallView;
 import gizmoball.model.loop.TriggerSource;
 
 import javax.swing.BorderFactory;
-import javax.swing.Box;
-import javax.swing.BoxLayout;
 import javax.swing.JCheckBox;
 import javax.swing.JComponent;
 import javax.swing.JLabel;
@@ -42,7 +39,8 @@ import java.util.Optional;
  * colour's #rrggbb itself. Enter or Apply applies a group of fields, Esc puts back the board's values; both hand
  * the keyboard back to the board, so the next key is a tool key again, not more text.
  * <p>
- * Each section that stands alone is a class of its own: the {@link BoardSection}, the {@link BallRows}, the
+ * The board's section and the selection's are two {@link PanelTabs}, the selection's brought forward by a new
+ * selection. Each section that stands alone is a class of its own: the {@link BoardSection}, the {@link BallRows}, the
  * {@link ColourRows}, an absorber's {@link PlungerRow}, the {@link LinksSection}; what they do alike with fields is
  * {@link PanelFields}'. Just over 400 lines because the selection's own rows (its description, name and cell,
  * points and a kind's setting) share one grid and one refresh here.
@@ -71,6 +69,7 @@ public final class PropertiesPanel extends JPanel {
     private final BallRows ballRows;
     private final ColourRows colourRows;
     private final LinksSection linksSection;
+    private final PanelTabs tabs;
     private String shownSelection;
     private List<String> shownGroup = List.of();
 
@@ -85,13 +84,9 @@ public final class PropertiesPanel extends JPanel {
         colourRows = new ColourRows(controller, fields);
         setLayout(new BorderLayout());
         setBorder(BorderFactory.createEmptyBorder(6, 6, 6, 6));
-        // Stacked at the top at their natural heights, however tall the window is.
-        JPanel stack = new JPanel();
-        stack.setLayout(new BoxLayout(stack, BoxLayout.Y_AXIS));
-        stack.add(section("Board", boardSection.component()));
-        stack.add(Box.createVerticalStrut(8));
-        stack.add(section("Selection", selectionSection()));
-        add(stack, BorderLayout.NORTH);
+        // At the top at its natural height, however tall the window is; the tab follows the selection (refresh).
+        tabs = new PanelTabs(boardSection.component(), selectionSection());
+        add(tabs, BorderLayout.NORTH);
 
         refresh();
     }
@@ -128,8 +123,14 @@ public final class PropertiesPanel extends JPanel {
         Board board = controller.board();
         boardSection.show(board);
 
+        String selectedBefore = shownSelection;
+        List<String> groupBefore = shownGroup;
         shownSelection = controller.selected().orElse(null);
         shownGroup = controller.selection();
+        // What was just clicked is what one means to edit; an edit (the same selection) leaves the tab one chose.
+        if (!Objects.equals(shownSelection, selectedBefore) || !shownGroup.equals(groupBefore)) {
+            tabs.showSelection(shownSelection != null || !shownGroup.isEmpty());
+        }
         // Of several selected, nothing one of them alone has is shown: an edit here would seem to apply to all.
         boolean several = shownGroup.size() > 1;
         Optional<Gizmo> gizmo = several ? Optional.empty() : controller.selectedGizmo();
@@ -243,6 +244,7 @@ public final class PropertiesPanel extends JPanel {
 
     /** The keyboard to the selection's name field, all of it selected, to rename or read on from there. */
     public void focusName() {
+        tabs.showSelection(true);
         name.requestFocusInWindow();
         name.selectAll();
     }

@@ -18,6 +18,7 @@ import java.util.UUID;
 import java.util.prefs.Preferences;
 import javax.imageio.ImageIO;
 import javax.swing.JScrollPane;
+import javax.swing.JTabbedPane;
 import javax.swing.JToggleButton;
 import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.AfterEach;
@@ -27,7 +28,9 @@ import org.junit.jupiter.api.Test;
 /**
  * Issue 40, item 1: build mode fits the window it opens in. At the first size (the window as it opens on the
  * screen, with no size remembered) and at the minimum size every tool of the palette is in sight without
- * scrolling. Each size leaves a screenshot of both modes in build/screenshots.
+ * scrolling. At the first size the properties panel too fits, without a scroll bar, for the common selections: nothing
+ * (the Board tab), a flipper with its keys, an absorber with its plunger, a ball (the Selection tab). Each size leaves
+ * a screenshot of both modes in build/screenshots.
  */
 class BuildModeFitsGuiTest {
     private static final Path SHOTS = Path.of("build", "screenshots");
@@ -61,6 +64,29 @@ class BuildModeFitsGuiTest {
     }
 
     @Test
+    void thePropertiesFitAtTheFirstSizeForTheCommonSelections() throws Exception {
+        onEdt(() -> app.session().setMode(Mode.BUILD));
+        settle();
+        for (String selected : new String[] {null, "LF", "Plunger", "B"}) {
+            onEdt(() -> app.build().controller().select(selected));
+            settle();
+            shoot("fits-first-properties-" + selected);
+            JTabbedPane tabs = onEdt(() -> EditorGui.find(app.build().properties(), JTabbedPane.class,
+                    "properties.tabs"));
+            assertThat(onEdt(() -> tabs.getTitleAt(tabs.getSelectedIndex())))
+                    .as("the tab with " + selected + " selected")
+                    .isEqualTo(selected == null ? "Board" : "Selection");
+            JScrollPane east = scrollPane(app.build().properties());
+            int needed = onEdt(() -> app.build().properties().getPreferredSize().height);
+            int room = onEdt(() -> east.getViewport().getHeight());
+            assertThat(needed).as("the properties panel's height with " + selected + " selected")
+                    .isLessThanOrEqualTo(room);
+            assertThat(onEdt(() -> east.getVerticalScrollBar().isVisible()))
+                    .as("the properties' scroll bar with " + selected + " selected").isFalse();
+        }
+    }
+
+    @Test
     void everyToolIsInSightAtTheMinimumSize() throws Exception {
         Dimension smallest = onEdt(() -> app.window().getMinimumSize());
         onEdt(() -> app.window().setSize(smallest));
@@ -71,6 +97,9 @@ class BuildModeFitsGuiTest {
         settle();
         shoot("fits-minimum-build");
         assertEverythingInSight();
+        onEdt(() -> app.build().controller().select("LF"));
+        settle();
+        shoot("fits-minimum-build-lf");
     }
 
     private void assertEverythingInSight() {

@@ -27,6 +27,7 @@ import javax.swing.JLabel;
 import javax.swing.JList;
 import javax.swing.JMenuBar;
 import javax.swing.JMenuItem;
+import javax.swing.JTabbedPane;
 import javax.swing.JTextField;
 import javax.swing.KeyStroke;
 import java.awt.Color;
@@ -356,6 +357,16 @@ class BuildModeGuiTest {
         controls.add(onEdt(() -> EditorGui.find(w.build.properties(), JButton.class, "board.apply")));
         controls.add(onEdt(() -> EditorGui.find(w.build.properties(), JButton.class, "links.remove")));
         for (JComponent c : controls) {
+            // The Board and Selection tabs: the one holding the control brought forward, as a click on it would.
+            onEdt(() -> {
+                JTabbedPane tabs = EditorGui.find(w.build.properties(), JTabbedPane.class, "properties.tabs");
+                for (int i = 0; i < tabs.getTabCount(); i++) {
+                    if (javax.swing.SwingUtilities.isDescendingFrom(c, tabs.getComponentAt(i))) {
+                        tabs.setSelectedIndex(i);
+                    }
+                }
+                w.window.validate();
+            });
             onEdt(() -> c.scrollRectToVisible(new Rectangle(c.getSize())));
             assertThat(onEdt(() -> c.getVisibleRect().getSize())).as(c.getName() + " scrolled into view")
                     .isEqualTo(onEdt(() -> c.getSize()));

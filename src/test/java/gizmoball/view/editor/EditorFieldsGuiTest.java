@@ -220,6 +220,9 @@ class EditorFieldsGuiTest {
         java.util.List<java.awt.Rectangle> placed = new java.util.ArrayList<>();
         for (String name : new String[] {null, "S1", "B1", TriggerSource.OuterWalls.NAME}) {
             onEdt(() -> w.build.controller().select(name));
+            // Selecting nothing brings the Board tab forward: the Selection tab is then one click away.
+            onEdt(() -> EditorGui.find(w.build.properties(), javax.swing.JTabbedPane.class, "properties.tabs")
+                    .setSelectedIndex(1));
             onEdt(() -> w.build.properties().validate());
             placed.add(onEdt(() -> javax.swing.SwingUtilities.convertRectangle(links.getParent(),
                     links.getParent().getBounds(), w.build.properties())));
