@@ -1,6 +1,5 @@
 package gizmoball.model;
 
-import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.SwitchedCell;
 import gizmoball.model.gizmo.GizmoBase;
@@ -97,13 +96,11 @@ final class Registry {
         kindsChanged();
     }
 
-    /** Removes the gizmo, and the balls an absorber holds with it. */
+    /** Removes the gizmo, and the balls it holds (an absorber's) with it. */
     void remove(GizmoBase gizmo) {
         index.remove(gizmo);
         gizmos.remove(gizmo.name());
-        if (gizmo instanceof Absorber absorber) {
-            absorber.held().forEach(balls::remove);
-        }
+        gizmo.held().forEach(balls::remove);
         kindsChanged();
     }
 
@@ -133,9 +130,7 @@ final class Registry {
 
     /** The ball leaves whichever absorber holds it. */
     void releaseFromAbsorber(Ball ball) {
-        gizmos.values().stream()
-                .filter(g -> g instanceof Absorber)
-                .forEach(g -> ((Absorber) g).letGo(ball.name()));
+        gizmos.values().forEach(g -> g.letGo(ball.name()));
     }
 
     private void kindsChanged() {

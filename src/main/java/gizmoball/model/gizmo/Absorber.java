@@ -103,6 +103,7 @@ public final class Absorber extends PolygonGizmo implements AbsorberView {
     }
 
     /** The names of the balls it holds, longest-held first (a copy: {@link #hold} and {@link #letGo} change them). */
+    @Override
     public List<String> held() {
         return List.copyOf(held);
     }
@@ -115,10 +116,7 @@ public final class Absorber extends PolygonGizmo implements AbsorberView {
         held.addLast(ball);
     }
 
-    /**
-     * It no longer holds the ball named {@code ball} (fired, moved or deleted), if it did. For the board and its loop,
-     * not for views.
-     */
+    @Override
     public void letGo(String ball) {
         held.remove(ball);
     }

@@ -40,16 +40,13 @@ public sealed interface Gizmo permits BumperView, FlipperView, AbsorberView, Sin
      * The names of the balls it holds, longest-held first: an absorber's ({@link GizmoKind#ballTaking} {@code HOLDS});
      * none for every other kind.
      */
-    default List<String> held() {
-        return List.of();
-    }
+    List<String> held();
 
     /**
-     * How it launches when it is a plunger (an absorber whose {@link Setting.Pull} has one); empty for every other.
+     * How it launches when it is a plunger (an absorber whose {@link Setting.Pull} has one); empty for an absorber that
+     * fires at once and for every other kind.
      */
-    default Optional<Plunger> plunger() {
-        return setting() instanceof Setting.Pull pull ? pull.plunger() : Optional.empty();
-    }
+    Optional<Plunger> plunger();
 
     /** What play has changed of it, for a save during play; {@link PlayState.AsBuilt} for most kinds and at rest. */
     PlayState playState();

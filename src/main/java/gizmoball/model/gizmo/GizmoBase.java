@@ -119,6 +119,23 @@ public abstract sealed class GizmoBase permits Bumper, Flipper, PolygonGizmo, Ac
         return bounced;
     }
 
+    /** Most kinds hold no balls; one that {@link BallTaking#HOLDS} them says which. */
+    public List<String> held() {
+        return List.of();
+    }
+
+    /**
+     * It no longer holds the ball named {@code ball} (fired, moved or deleted), if it did. For the board and its loop,
+     * not for views.
+     */
+    public void letGo(String ball) {
+    }
+
+    /** Most kinds are no plunger; an absorber may be one ({@link Setting.Pull}). */
+    public Optional<Plunger> plunger() {
+        return Optional.empty();
+    }
+
     /** Play changes nothing of most kinds that a save must write; a kind it changes says what. */
     public PlayState playState() {
         return new PlayState.AsBuilt();
