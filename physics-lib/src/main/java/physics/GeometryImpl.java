@@ -145,16 +145,27 @@ public class GeometryImpl implements GeometryInterface {
      */
     @Override
     public double timeUntilWallCollision(LineSegment line, Circle ball, Vect velocity) {
-        Vect dir = line.p2().minus(line.p1());
-        Vect normal = new Vect(-dir.y(), dir.x()).unitSize();
+        // On the components, making no vector (an engine asks this for every face in reach of every ball): each
+        // step is the Vect arithmetic it stands for, in the same order, so the doubles are the same. A component
+        // of a vector made from a sum or product gets + 0.0, as Vect's constructor adds (no -0.0 in a Vect).
+        Vect p1 = line.p1();
+        Vect p2 = line.p2();
+        double dirX = p2.x() - p1.x() + 0.0;
+        double dirY = p2.y() - p1.y() + 0.0;
+        // normal = new Vect(-dir.y, dir.x).unitSize()
+        double perpX = -dirY + 0.0;
+        double perpY = dirX + 0.0;
+        double perpLength = length(perpX, perpY);
+        double normalX = perpLength == 0 ? 0 : perpX / perpLength + 0.0;
+        double normalY = perpLength == 0 ? 0 : perpY / perpLength + 0.0;
         Vect center = ball.getCenter();
-        double offset = center.minus(line.p1()).dot(normal);
-        double normalSpeed = velocity.dot(normal);
+        double offset = (center.x() - p1.x() + 0.0) * normalX + (center.y() - p1.y() + 0.0) * normalY;
+        double normalSpeed = velocity.x() * normalX + velocity.y() * normalY;
         // Rate of change of |offset|; a centre exactly on the line moves away from it whichever way it goes.
         double closingRate = offset == 0 ? Math.abs(normalSpeed) : Math.signum(offset) * normalSpeed;
         double gap = Math.abs(offset) - ball.getRadius();
         if (gap <= 0) {
-            return closingRate < 0 && footOnFace(line, center) ? 0 : Double.POSITIVE_INFINITY;
+            return closingRate < 0 && footOnFace(line, center.x(), center.y()) ? 0 : Double.POSITIVE_INFINITY;
         }
         if (closingRate >= 0) {
             return Double.POSITIVE_INFINITY;
@@ -165,14 +176,31 @@ public class GeometryImpl implements GeometryInterface {
             // by an infinite time would turn its zero components into NaN.
             return time;
         }
-        Vect centerAtContact = center.plus(velocity.times(time));
-        return footOnFace(line, centerAtContact) ? time : Double.POSITIVE_INFINITY;
+        // the centre at contact: center.plus(velocity.times(time))
+        double atX = center.x() + (velocity.x() * time + 0.0) + 0.0;
+        double atY = center.y() + (velocity.y() * time + 0.0) + 0.0;
+        return footOnFace(line, atX, atY) ? time : Double.POSITIVE_INFINITY;
     }
 
-    /** Whether the foot of the perpendicular from the point lies on the half-open face [p1, p2). */
-    private static boolean footOnFace(LineSegment line, Vect point) {
-        Vect dir = line.p2().minus(line.p1());
-        return point.minus(line.p1()).dot(dir) >= 0 && line.p2().minus(point).dot(dir) > 0;
+    /** {@link Vect#length()} of (x, y), made of no vector. */
+    private static double length(double x, double y) {
+        if (x == 0) {
+            return Math.abs(y);
+        }
+        if (y == 0) {
+            return Math.abs(x);
+        }
+        return Math.hypot(x, y);
+    }
+
+    /** Whether the foot of the perpendicular from the point (px, py) lies on the half-open face [p1, p2). */
+    private static boolean footOnFace(LineSegment line, double px, double py) {
+        Vect p1 = line.p1();
+        Vect p2 = line.p2();
+        double dirX = p2.x() - p1.x() + 0.0;
+        double dirY = p2.y() - p1.y() + 0.0;
+        return (px - p1.x() + 0.0) * dirX + (py - p1.y() + 0.0) * dirY >= 0
+                && (p2.x() - px + 0.0) * dirX + (p2.y() - py + 0.0) * dirY > 0;
     }
 
     /** The velocity reflected off the segment's line, its normal part multiplied by the coefficient. */

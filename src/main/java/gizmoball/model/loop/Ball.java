@@ -30,6 +30,7 @@ public final class Ball implements BallView {
     /** Its circle at {@link #position}, made when first asked for there. */
     private Circle circle;
     private Contact.OtherBall asContact;
+    private ContactRef.OnBall asSupported;
     private Vect velocity;
     private boolean captured;
     private final List<ContactRef> contacts = new ArrayList<>();
@@ -139,6 +140,14 @@ public final class Ball implements BallView {
         return circle;
     }
 
+    /** A reference to this ball as what another lies on, made once (a reference is a value). */
+    ContactRef.OnBall asSupported() {
+        if (asSupported == null) {
+            asSupported = new ContactRef.OnBall(name);
+        }
+        return asSupported;
+    }
+
     /** This ball as what another ball is about to meet, made once (a contact is a value). */
     Contact.OtherBall asContact() {
         if (asContact == null) {
@@ -168,6 +177,34 @@ public final class Ball implements BallView {
 
     EnergyMarks energyMarks() {
         return energyMarks;
+    }
+
+    /**
+     * What the loop counted of this ball in a tick ({@link StepContext}): kept on the ball as {@link EnergyMarks} are,
+     * valid while {@link #tick} is the tick's number.
+     */
+    static final class CollisionMarks {
+        long tick;
+        /** Seconds since the tick began when its last collision was resolved. */
+        double lastAt;
+        /** Its collisions, and those at zero time, in the tick. */
+        int collisions;
+        int zeroTimeHits;
+        /** Whether it has had a collision in the tick. */
+        boolean collided;
+    }
+
+    private final CollisionMarks collisionMarks = new CollisionMarks();
+
+    /** Its marks of tick {@code tick}: emptied when they were another tick's. */
+    CollisionMarks collisionMarks(long tick) {
+        if (collisionMarks.tick != tick) {
+            collisionMarks.tick = tick;
+            collisionMarks.collisions = 0;
+            collisionMarks.zeroTimeHits = 0;
+            collisionMarks.collided = false;
+        }
+        return collisionMarks;
     }
 
     /** The centre moves there, the velocity kept. For the board and its loop, not for views. */

@@ -51,7 +51,7 @@ final class ClusterSolve {
             reach = ContactCluster.TOUCHING;
         } else if (rattling(ball)) {
             reach = Math.min(step.settings.rattleReach(),
-                    2 * ball.velocity().length() * (step.elapsed - step.lastCollisionAt.get(ball)));
+                    2 * ball.velocity().length() * (step.elapsed - step.lastCollisionAt(ball)));
         } else {
             return null;
         }
@@ -60,14 +60,14 @@ final class ClusterSolve {
     }
 
     private boolean rattling(Ball ball) {
-        Double last = step.lastCollisionAt.get(ball);
-        return last != null && step.elapsed - last <= step.settings.rattleTime()
-                && step.collisionsOf.getOrDefault(ball, 0) >= step.settings.rattleCollisions();
+        double last = step.lastCollisionAt(ball);
+        return !Double.isNaN(last) && step.elapsed - last <= step.settings.rattleTime()
+                && step.collisionsOf(ball) >= step.settings.rattleCollisions();
     }
 
     private boolean again(Ball ball) {
-        Double last = step.lastCollisionAt.get(ball);
-        return last != null && step.elapsed - last <= step.settings.zeroTime();
+        double last = step.lastCollisionAt(ball);
+        return !Double.isNaN(last) && step.elapsed - last <= step.settings.zeroTime();
     }
 
     /**

@@ -5,7 +5,6 @@ import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Shape;
 
 import java.util.ArrayList;
-import java.util.Collection;
 import java.util.List;
 import java.util.Set;
 
@@ -92,7 +91,9 @@ final class CollisionDetector {
                 }
             }
         }
-        for (GizmoBase gizmo : reachable(ball, velocity, window)) {
+        List<GizmoBase> reachable = reachable(ball, velocity, window);
+        for (int i = 0; i < reachable.size(); i++) {
+            GizmoBase gizmo = reachable.get(i);
             if (gizmo instanceof MovingShape moving && moving.isMoving()) {
                 againstMovingShape(ball, gizmo, moving, window, earliest);
             } else if (!still) {
@@ -126,9 +127,11 @@ final class CollisionDetector {
     }
 
     /** The gizmos whose cells meet the box the ball sweeps in the window (all gizmos without the index). */
-    private Collection<GizmoBase> reachable(Ball ball, Vect velocity, double window) {
+    private List<GizmoBase> reachable(Ball ball, Vect velocity, double window) {
         if (!view.spatialIndexEnabled()) {
-            return view.gizmos();
+            reached.clear();
+            reached.addAll(view.gizmos());
+            return reached;
         }
         // The box from the centre to where it is after the window: the doubles centre + velocity * window gives.
         double fromX = ball.x();
@@ -220,12 +223,34 @@ final class CollisionDetector {
         return new Vect(-omega * (point.y() - pivot.y()), omega * (point.x() - pivot.x()));
     }
 
-    private static boolean closesOnSegment(LineSegment segment, Ball ball, Vect velocity, double time) {
+    /**
+     * Whether the ball, at the segment's line after {@code time}, closes on it faster than rounding: {@link #closing}
+     * of its centre then less the foot of the perpendicular on the whole line, reckoned on the components so that
+     * asking every face in reach makes no vector, each step the Vect arithmetic of
+     * {@code Geometry.perpendicularPointWholeLine} and of {@code closing}, in the same order, each component of a made
+     * vector with Vect's + 0.0 (the same doubles; {@code CollisionDetectorTest} holds the two to it).
+     */
+    static boolean closesOnSegment(LineSegment segment, Ball ball, Vect velocity, double time) {
         if (!(time < Double.POSITIVE_INFINITY)) {
             return false;
         }
-        Vect centre = ball.position().plus(velocity.times(time));
-        return closing(centre.minus(Geometry.perpendicularPointWholeLine(segment, centre)), velocity);
+        double cx = ball.x() + (velocity.x() * time + 0.0) + 0.0;
+        double cy = ball.y() + (velocity.y() * time + 0.0) + 0.0;
+        Vect p1 = segment.p1();
+        Vect p2 = segment.p2();
+        double dirX = p2.x() - p1.x() + 0.0;
+        double dirY = p2.y() - p1.y() + 0.0;
+        double footX = p1.x();
+        double footY = p1.y();
+        if (dirX != 0 || dirY != 0) {
+            double along = ((cx - p1.x() + 0.0) * dirX + (cy - p1.y() + 0.0) * dirY) / (dirX * dirX + dirY * dirY);
+            footX = p1.x() + (dirX * along + 0.0) + 0.0;
+            footY = p1.y() + (dirY * along + 0.0) + 0.0;
+        }
+        double awayX = cx - footX + 0.0;
+        double awayY = cy - footY + 0.0;
+        double length = awayX == 0 ? Math.abs(awayY) : awayY == 0 ? Math.abs(awayX) : Math.hypot(awayX, awayY);
+        return length > 0 && -(velocity.x() * awayX + velocity.y() * awayY) / length > Tolerances.ROUNDING_SPEED;
     }
 
     /**

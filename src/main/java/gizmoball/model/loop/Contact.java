@@ -78,7 +78,7 @@ sealed interface Contact {
 
         @Override
         public ContactRef ref() {
-            return new ContactRef.Wall(side);
+            return ContactRef.Wall.of(side);
         }
     }
 

@@ -195,7 +195,7 @@ final class ContactCluster {
     private void surfaces(LoopView view, int index, Ball ball, Function<Ball, Vect> motion) {
         Vect p = ball.position();
         for (int side = 0; side < CollisionDetector.OUTER_WALLS.size(); side++) {
-            still(index, p, CollisionDetector.OUTER_WALLS.get(side), new ContactRef.Wall(side), null);
+            still(index, p, CollisionDetector.OUTER_WALLS.get(side), ContactRef.Wall.of(side), null);
         }
         double reach = Arena.BALL_RADIUS + touching;
         for (GizmoBase gizmo : view.index().within(p.x() - reach, p.y() - reach, p.x() + reach, p.y() + reach)) {

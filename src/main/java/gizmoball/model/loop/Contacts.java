@@ -275,8 +275,9 @@ final class Contacts {
      * the kick is gravity's part along them, and the straight move never leaves them.
      */
     static boolean slidesOnStill(Ball ball, Vect v, List<Vect> normals) {
-        for (ContactRef ref : ball.contacts()) {
-            if (ref instanceof ContactRef.OnBall) {
+        List<ContactRef> refs = ball.contacts();
+        for (int i = 0; i < refs.size(); i++) {
+            if (refs.get(i) instanceof ContactRef.OnBall) {
                 return false;
             }
         }
@@ -357,9 +358,10 @@ final class Contacts {
         if (support.isAsleep()) {
             return true;
         }
-        ContactRef back = new ContactRef.OnBall(ball.name());
-        for (ContactRef ref : support.contacts()) {
-            if (!ref.equals(back)) {
+        ContactRef back = ball.asSupported();
+        List<ContactRef> refs = support.contacts();
+        for (int i = 0; i < refs.size(); i++) {
+            if (!refs.get(i).equals(back)) {
                 return true;
             }
         }
@@ -439,7 +441,7 @@ final class Contacts {
     /** Every still surface the ball touches now becomes a contact of it. */
     private void discover(Ball ball, List<Vect> normals) {
         for (int side = 0; side < CollisionDetector.OUTER_WALLS.size(); side++) {
-            consider(ball, new ContactRef.Wall(side), normals);
+            consider(ball, ContactRef.Wall.of(side), normals);
         }
         Vect p = ball.position();
         double reach = Arena.BALL_RADIUS + Tolerances.CONTACT;

@@ -14,6 +14,9 @@ public record GuardCounts(long wedged, long pinched, long collisionCap) {
     public static final GuardCounts NONE = new GuardCounts(0, 0, 0);
 
     public GuardCounts plus(GuardCounts other) {
+        if (other.total() == 0) {
+            return this;   // a value: nothing added is this one (a tick fires none, and is added to the total)
+        }
         return new GuardCounts(wedged + other.wedged, pinched + other.pinched, collisionCap + other.collisionCap);
     }
 

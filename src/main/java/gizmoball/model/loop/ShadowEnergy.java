@@ -2,7 +2,6 @@ package gizmoball.model.loop;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Function;
 
 import physics.Vect;
@@ -22,8 +21,6 @@ import physics.Vect;
  * lists are kept from tick to tick.
  */
 final class ShadowEnergy {
-    /** Tick numbers, unique across every loop of the process, so that no ball's stamp is ever taken for another's. */
-    private static final AtomicLong TICKS = new AtomicLong();
     private long tick;
     private Vect gravity;
     private double dt;
@@ -41,9 +38,12 @@ final class ShadowEnergy {
     /** The least part of a bounce's normal along a sliding ball's contacts that carries a correction. */
     private static final double SLIDING_PART = 1e-3;
 
-    /** A tick of {@code seconds} under this gravity starts: the books are emptied (kept at the size they grew to). */
-    void begin(Vect boardGravity, double seconds) {
-        tick = TICKS.incrementAndGet();
+    /**
+     * Tick {@code number} ({@link StepContext#tick}), of {@code seconds} under this gravity, starts: the books are
+     * emptied (kept at the size they grew to).
+     */
+    void begin(Vect boardGravity, double seconds, long number) {
+        tick = number;
         gravity = boardGravity;
         dt = seconds;
         bouncers.clear();

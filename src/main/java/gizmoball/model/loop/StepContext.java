@@ -3,10 +3,9 @@ package gizmoball.model.loop;
 import gizmoball.model.gizmo.MovingShape;
 
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
-import java.util.Map;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.Set;
 
 import physics.Vect;
@@ -37,10 +36,13 @@ final class StepContext {
     final CollisionSchedule schedule;
     /** The balls that move in this tick: neither captured nor asleep. */
     final List<Ball> awake = new ArrayList<>();
-    /** When, in seconds since the tick began, each ball's last collision of this tick was resolved. */
-    final Map<Ball, Double> lastCollisionAt = new HashMap<>();
-    /** Collisions each ball has had in this tick, for the local collision cap. */
-    final Map<Ball, Integer> collisionsOf = new HashMap<>();
+    /** Tick numbers, unique across every loop of the process, so that no ball's marks are taken for another tick's. */
+    private static final AtomicLong TICKS = new AtomicLong();
+    /**
+     * This tick's number: what a ball's marks of the tick are stamped with ({@link Ball#collisionMarks}, and the shadow
+     * energy's), so that nothing is emptied tick after tick.
+     */
+    long tick;
     /** Surfaces hit besides the collision's own within the collision just resolved, for stage 5. */
     final List<TriggerSource> alsoHit = new ArrayList<>();
     /**
@@ -77,12 +79,11 @@ final class StepContext {
         dt = seconds;
         startTime = view.time();
         gravity = boardGravity;
-        energy.begin(gravity, dt);
+        tick = TICKS.incrementAndGet();
+        energy.begin(gravity, dt, tick);
         schedule.begin();
         finished.clear();
         awake.clear();
-        lastCollisionAt.clear();
-        collisionsOf.clear();
         alsoHit.clear();
         reported.clear();
         elapsed = 0;
@@ -203,7 +204,7 @@ final class StepContext {
     }
 
     GuardCounts guards() {
-        return new GuardCounts(wedged, pinched, capped);
+        return wedged + pinched + capped == 0 ? GuardCounts.NONE : new GuardCounts(wedged, pinched, capped);
     }
 
     /**
@@ -212,12 +213,41 @@ final class StepContext {
      * chain: each is the first of its own.
      */
     boolean chained(Collision collision) {
-        return collision.balls().stream().anyMatch(this::recentlyCollided);
+        Ball other = collision.otherBall();
+        return recentlyCollided(collision.ball()) || other != null && recentlyCollided(other);
     }
 
     private boolean recentlyCollided(Ball ball) {
-        Double last = lastCollisionAt.get(ball);
-        return last != null && elapsed - last <= settings.zeroTime();
+        Ball.CollisionMarks marks = ball.collisionMarks(tick);
+        return marks.collided && elapsed - marks.lastAt <= settings.zeroTime();
+    }
+
+    /** The ball's collision was resolved now. */
+    void noteCollision(Ball ball) {
+        Ball.CollisionMarks marks = ball.collisionMarks(tick);
+        marks.collided = true;
+        marks.lastAt = elapsed;
+    }
+
+    /** When its last collision of the tick was resolved, in seconds since the tick began; NaN: none yet. */
+    double lastCollisionAt(Ball ball) {
+        Ball.CollisionMarks marks = ball.collisionMarks(tick);
+        return marks.collided ? marks.lastAt : Double.NaN;
+    }
+
+    /** The ball's collisions in this tick so far. */
+    int collisionsOf(Ball ball) {
+        return ball.collisionMarks(tick).collisions;
+    }
+
+    /** Counts one more collision of the ball in this tick; returns how many it has had. */
+    int countCollision(Ball ball) {
+        return ++ball.collisionMarks(tick).collisions;
+    }
+
+    /** Counts one more collision of the ball at zero time in this tick; returns how many it has had. */
+    int countZeroTimeHit(Ball ball) {
+        return ++ball.collisionMarks(tick).zeroTimeHits;
     }
 
     /** Counts a collision, found {@code after} seconds past the one before it, as chained, simultaneous or neither. */

@@ -7,9 +7,7 @@ import gizmoball.model.gizmo.MovingShape;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.EnumMap;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 
 import physics.Vect;
 
@@ -40,7 +38,6 @@ public final class TickRun {
     private final BallPairs pairs;
     private final ClusterSolve clusters;
     private final MovingStrikes strikes;
-    private final Map<Ball, Integer> zeroTimeHits = new HashMap<>();
     /** Nanoseconds of each stage in this tick, by {@link Stage#ordinal()}. */
     private final long[] nanos = new long[Stage.values().length];
     /**
@@ -70,7 +67,6 @@ public final class TickRun {
         long start = System.nanoTime();
         step.begin(dt);
         strikes.begin();
-        zeroTimeHits.clear();
         Arrays.fill(nanos, 0);
         strikes.releaseStalled();
         stage1FrictionAndGravity();
@@ -115,8 +111,8 @@ public final class TickRun {
             if (hit instanceof TriggerSource source) {
                 stage5Triggering(source);
             }
-            for (TriggerSource source : step.alsoHit) {
-                stage5Triggering(source);
+            for (int i = 0; i < step.alsoHit.size(); i++) {
+                stage5Triggering(step.alsoHit.get(i));
             }
             step.alsoHit.clear();
             mark = lap(Stage.TRIGGERING, mark);
@@ -127,7 +123,10 @@ public final class TickRun {
                 step.capped++;   // guard of last resort: per-ball caps end every run of collisions before it
                 break;
             }
-            collision.balls().forEach(this::capBall);
+            capBall(collision.ball());
+            if (collision.otherBall() != null) {
+                capBall(collision.otherBall());
+            }
         }
     }
 
@@ -256,7 +255,7 @@ public final class TickRun {
         }
         forgetWhatChanged(collision);
         if (chained) {
-            if (zeroTimeHits.merge(ball, 1, Integer::sum) > step.settings.zeroTimeHitsBeforeWedged()
+            if (step.countZeroTimeHit(ball) > step.settings.zeroTimeHitsBeforeWedged()
                     && !(contact instanceof Contact.MovingPart)) {
                 step.wedged++;   // guard (counted): at rest for the rest of this tick
                 ball.setVelocity(Vect.ZERO);
@@ -339,14 +338,15 @@ public final class TickRun {
     }
 
     private void noteCollision(Collision collision) {
-        for (Ball ball : collision.balls()) {
-            step.lastCollisionAt.put(ball, step.elapsed);
+        step.noteCollision(collision.ball());
+        if (collision.otherBall() != null) {
+            step.noteCollision(collision.otherBall());
         }
     }
 
     /** A ball over its own collision cap moves no more in this tick: the guard acts on it alone. */
     private void capBall(Ball ball) {
-        if (step.collisionsOf.merge(ball, 1, Integer::sum) == step.settings.maxCollisionsOfABall()) {
+        if (step.countCollision(ball) == step.settings.maxCollisionsOfABall()) {
             step.capped++;
             step.finished.add(ball);
             step.energy.lost(ball);
@@ -356,7 +356,10 @@ public final class TickRun {
 
     /** The balls of a resolved collision move differently now: stage 3 asks about them again. */
     private void forgetWhatChanged(Collision collision) {
-        collision.balls().forEach(step::changed);
+        step.changed(collision.ball());
+        if (collision.otherBall() != null) {
+            step.changed(collision.otherBall());
+        }
     }
 
     /**
