@@ -79,7 +79,6 @@ public abstract sealed class GizmoBase permits Bumper, Flipper, PolygonGizmo, Ac
         return Optional.ofNullable(colour);
     }
 
-    /** Its own colour, or empty for the kind's. For the board and its loop, not for views. */
     /** What it does with a ball that touches it ({@link GizmoKind#ballTaking}). For the board and its loop. */
     public final BallTaking ballTaking() {
         return ballTaking;
@@ -175,6 +174,7 @@ public abstract sealed class GizmoBase permits Bumper, Flipper, PolygonGizmo, Ac
     public void hold(Setting setting, Function<String, GizmoBase> gizmos) {
     }
 
+    /** Its own colour, or empty for the kind's. For the board and its loop, not for views. */
     public void setColour(Optional<Rgb> newColour) {
         colour = newColour.orElse(null);
     }
