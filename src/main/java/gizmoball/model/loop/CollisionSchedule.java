@@ -13,6 +13,7 @@ import java.util.List;
  * moving shape a trigger turned round; everything when another trigger, a capture, a launch, a wake-up or a held
  * flipper changes the scene. Ball pairs come from a
  * {@link BallGrid}, so a ball is asked only about the balls it can reach.
+ * <p>Over 400 lines because the schedule and its forgetting are one job whose parts share its arrays, every tick.
  */
 final class CollisionSchedule {
     private final CollisionDetector detector;
