@@ -85,7 +85,7 @@ final class Edits {
             throw new BoardEditException("ball " + name + ": velocity (" + vx + "," + vy + ") must be finite");
         }
         Vect position = new Vect(requireFinite(x, name), requireFinite(y, name));
-        Absorber captor = rules.captorOfPlacedBall(name, position, Set.of(), ballsMayOverlap);
+        GizmoBase captor = rules.captorOfPlacedBall(name, position, Set.of(), ballsMayOverlap);
         Ball ball = new Ball(name, position, Vect.ZERO);
         ball.setVelocity(new Vect(vx, vy));
         registry.add(ball);
@@ -183,7 +183,7 @@ final class Edits {
         Set<String> heldInGroup = new HashSet<>();
         gizmos.stream().filter(g -> g instanceof Absorber).forEach(a -> heldInGroup.addAll(((Absorber) a).held()));
         List<Ball> loose = balls.stream().filter(b -> !heldInGroup.contains(b.name())).toList();
-        Map<Ball, Absorber> captors = new HashMap<>();
+        Map<Ball, GizmoBase> captors = new HashMap<>();
         // The group moves as one: checked with its own gizmos out of the grid, so that none is in another's way.
         gizmos.forEach(registry.index()::remove);
         try {
@@ -195,7 +195,7 @@ final class Edits {
             for (Ball ball : loose) {
                 Vect position = new Vect(requireFinite(ball.position().x() + dx, ball.name()),
                         requireFinite(ball.position().y() + dy, ball.name()));
-                Absorber captor = rules.captorOfPlacedBall(ball.name(), position, group, false);
+                GizmoBase captor = rules.captorOfPlacedBall(ball.name(), position, group, false);
                 if (captor != null) {
                     captors.put(ball, captor);
                 }
@@ -248,7 +248,7 @@ final class Edits {
             throw new BoardEditException("cannot move " + ball + ": no ball named " + ball);
         }
         Vect position = new Vect(requireFinite(x, ball), requireFinite(y, ball));
-        Absorber captor = rules.captorOfPlacedBall(ball, position, ball, false);
+        GizmoBase captor = rules.captorOfPlacedBall(ball, position, ball, false);
         if (target.isCaptured()) {
             registry.releaseFromAbsorber(target);
             target.release(position, Vect.ZERO);

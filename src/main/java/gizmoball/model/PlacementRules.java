@@ -1,6 +1,6 @@
 package gizmoball.model;
 
-import gizmoball.model.gizmo.Absorber;
+import gizmoball.model.gizmo.BallTaking;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.loop.Arena;
@@ -37,7 +37,7 @@ final class PlacementRules {
             if (width < 1 || height < 1) {
                 return Optional.of("an absorber must be at least one cell wide and high, not " + width + "x" + height);
             }
-            return problemFor(new Absorber("", x, y, width, height), ignoring);
+            return problemFor(kind.createSized("", x, y, width, height), ignoring);
         }
         if (width != kind.width() || height != kind.height()) {
             return Optional.of(kind.withArticle() + " is " + kind.width() + "x" + kind.height()
@@ -77,7 +77,7 @@ final class PlacementRules {
                 }
             }
         }
-        if (candidate instanceof Absorber) {
+        if (candidate.ballTaking() == BallTaking.HOLDS) {
             return Optional.empty();   // free balls under a new absorber are captured, not in the way
         }
         return ballOverlap(candidate, ballsIgnored).map(ball -> wouldOverlap(what, "ball", ball));
@@ -99,23 +99,23 @@ final class PlacementRules {
 
     /**
      * Checks a ball position (for the ball named {@code name}, ignoring ball {@code ignoring}) and returns the
-     * absorber that would capture it there, or null.
+     * absorber that would capture it there (the gizmo that {@link BallTaking#HOLDS} balls there), or null.
      */
-    Absorber captorOfPlacedBall(String name, Vect position, String ignoring, boolean ballsMayOverlap) {
+    GizmoBase captorOfPlacedBall(String name, Vect position, String ignoring, boolean ballsMayOverlap) {
         return captorOfPlacedBall(name, position, ignoring == null ? Set.of() : Set.of(ignoring), ballsMayOverlap);
     }
 
     /** {@link #captorOfPlacedBall(String, Vect, String, boolean)} ignoring every ball named in {@code ignoring}. */
-    Absorber captorOfPlacedBall(String name, Vect position, Set<String> ignoring, boolean ballsMayOverlap) {
+    GizmoBase captorOfPlacedBall(String name, Vect position, Set<String> ignoring, boolean ballsMayOverlap) {
         String what = "ball " + name + " at (" + position.x() + "," + position.y() + ")";
         if (!insideBoard(position)) {
             throw new BoardEditException(what + " is outside the board (its centre must be at least "
                     + Arena.BALL_RADIUS + " L inside each wall)");
         }
-        Absorber captor = null;
+        GizmoBase captor = null;
         for (GizmoBase gizmo : gizmosUnder(position)) {
-            if (gizmo instanceof Absorber absorber) {
-                captor = absorber;
+            if (gizmo.ballTaking() == BallTaking.HOLDS) {
+                captor = gizmo;
             } else {
                 throw new BoardEditException(wouldOverlap(what, "gizmo", gizmo.name()));
             }

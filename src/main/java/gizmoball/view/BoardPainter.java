@@ -1,7 +1,6 @@
 package gizmoball.view;
 
 import gizmoball.model.Board;
-import gizmoball.model.gizmo.AbsorberView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.loop.BallView;
@@ -135,10 +134,10 @@ public final class BoardPainter {
      */
     private static void paintPlungers(Graphics2D g, Board board, float pixel) {
         for (Gizmo gizmo : board.gizmos()) {
-            if (gizmo instanceof AbsorberView absorber && absorber.plunger().isPresent()) {
+            if (gizmo.plunger().isPresent()) {
                 double left = gizmo.x() + gizmo.width() - 1;
                 double bottom = gizmo.y() + gizmo.height();
-                double pull = absorber.pull();
+                double pull = gizmo.pull();
                 if (pull > 0) {
                     double h = pull * gizmo.height();
                     g.setColor(new Color(255, (int) Math.round(220 * (1 - pull)), 40, 200));

@@ -48,6 +48,9 @@ public sealed interface Gizmo permits BumperView, FlipperView, AbsorberView, Sin
      */
     Optional<Plunger> plunger();
 
+    /** How far it is pulled as a plunger, 0 (at rest, or no plunger) to 1 (a full pull). */
+    double pull();
+
     /** What play has changed of it, for a save during play; {@link PlayState.AsBuilt} for most kinds and at rest. */
     PlayState playState();
 }

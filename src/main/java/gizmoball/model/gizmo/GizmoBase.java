@@ -136,6 +136,11 @@ public abstract sealed class GizmoBase permits Bumper, Flipper, PolygonGizmo, Ac
         return Optional.empty();
     }
 
+    /** No plunger, never pulled. */
+    public double pull() {
+        return 0;
+    }
+
     /** Play changes nothing of most kinds that a save must write; a kind it changes says what. */
     public PlayState playState() {
         return new PlayState.AsBuilt();

@@ -143,6 +143,18 @@ public enum GizmoKind {
         };
     }
 
+    /**
+     * A new gizmo of a kind {@link #sizedByCorners} with its top-left cell at (x, y), {@code width} by {@code height}
+     * cells. For the board, not for views.
+     */
+    public GizmoBase createSized(String name, int x, int y, int width, int height) {
+        return switch (this) {
+            case ABSORBER -> new Absorber(name, x, y, width, height);
+            case SQUARE, CIRCLE, TRIANGLE, LEFT_FLIPPER, RIGHT_FLIPPER, SINK, ACCELERATOR, SPAWNER, GATE, DROP_TARGET,
+                    PORTAL, SPINNER -> throw new IllegalArgumentException(withArticle() + " has its kind's size");
+        };
+    }
+
     /** How every message and help text names the kind: "square", "left flipper". */
     public String displayName() {
         return name().toLowerCase(Locale.ROOT).replace('_', ' ');
