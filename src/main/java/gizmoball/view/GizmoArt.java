@@ -30,30 +30,15 @@ import physics.Vect;
  */
 enum GizmoArt {
     /** A square or triangle bumper: its outline polygon. */
-    POLYGON {
-        @Override
-        Shape outline(Gizmo gizmo, Interpolation between) {
-            return polygon(((BumperView) gizmo).outline());
-        }
-    },
+    POLYGON(gizmo -> polygon(((BumperView) gizmo).outline())),
     /** A circle bumper. */
-    DISC {
-        @Override
-        Shape outline(Gizmo gizmo, Interpolation between) {
-            return circle(((BumperView) gizmo).circle());
-        }
-    },
+    DISC(gizmo -> circle(((BumperView) gizmo).circle())),
     /** A flipper: its bar with round ends, at the angle play has turned it to, and a hub at the pivot. */
     FLIPPER_BAR(GizmoArt::flipperBar),
     /** A spinner: its bar with round ends across the pivot, at the angle play has turned it to, and a hub. */
     SPINNER_BAR(GizmoArt::spinnerBar),
     /** A sink: its cell, with the hole the balls go into. */
-    SINK_HOLE {
-        @Override
-        Shape outline(Gizmo gizmo, Interpolation between) {
-            return cell(gizmo);
-        }
-
+    SINK_HOLE(GizmoArt::cell) {
         @Override
         void paint(Graphics2D g, Gizmo gizmo, Interpolation between, Color fill, float pixel) {
             super.paint(g, gizmo, between, fill, pixel);
@@ -63,12 +48,7 @@ enum GizmoArt {
         }
     },
     /** An accelerator: a disc with a ring, so that it is not taken for a circle bumper. */
-    RINGED_DISC {
-        @Override
-        Shape outline(Gizmo gizmo, Interpolation between) {
-            return circle(((AcceleratorView) gizmo).circle());
-        }
-
+    RINGED_DISC(gizmo -> circle(((AcceleratorView) gizmo).circle())) {
         @Override
         void paint(Graphics2D g, Gizmo gizmo, Interpolation between, Color fill, float pixel) {
             super.paint(g, gizmo, between, fill, pixel);
@@ -79,12 +59,7 @@ enum GizmoArt {
         }
     },
     /** A spawner: its cell, with an arrow to the mouth its balls come out of. */
-    SPAWNER_MOUTH {
-        @Override
-        Shape outline(Gizmo gizmo, Interpolation between) {
-            return cell(gizmo);
-        }
-
+    SPAWNER_MOUTH(GizmoArt::cell) {
         @Override
         void paint(Graphics2D g, Gizmo gizmo, Interpolation between, Color fill, float pixel) {
             super.paint(g, gizmo, between, fill, pixel);
@@ -104,12 +79,7 @@ enum GizmoArt {
         }
     },
     /** A gate: its cell filled while closed, only a dashed outline of it while open. */
-    GATE_CELL(true) {
-        @Override
-        Shape outline(Gizmo gizmo, Interpolation between) {
-            return cell(gizmo);
-        }
-
+    GATE_CELL(GizmoArt::cell, true) {
         @Override
         void paint(Graphics2D g, Gizmo gizmo, Interpolation between, Color fill, float pixel) {
             if (!((GateView) gizmo).isOpen()) {
@@ -126,12 +96,7 @@ enum GizmoArt {
      * A drop target: up, its cell filled with a bull's-eye; down, only a flat strip along the bottom of the cell, the
      * target lying in its slot.
      */
-    TARGET_CELL(true) {
-        @Override
-        Shape outline(Gizmo gizmo, Interpolation between) {
-            return cell(gizmo);
-        }
-
+    TARGET_CELL(GizmoArt::cell, true) {
         @Override
         void paint(Graphics2D g, Gizmo gizmo, Interpolation between, Color fill, float pixel) {
             if (((DropTargetView) gizmo).isDown()) {
@@ -150,12 +115,7 @@ enum GizmoArt {
      * A portal: its cell, with a glowing band along the side its mouth faces while it has a pair (a portal without one
      * is a wall: its band is the cell's own colour, darker) and a dot toward the mouth.
      */
-    PORTAL_CELL {
-        @Override
-        Shape outline(Gizmo gizmo, Interpolation between) {
-            return cell(gizmo);
-        }
-
+    PORTAL_CELL(GizmoArt::cell) {
         @Override
         void paint(Graphics2D g, Gizmo gizmo, Interpolation between, Color fill, float pixel) {
             super.paint(g, gizmo, between, fill, pixel);
@@ -172,31 +132,31 @@ enum GizmoArt {
         }
     },
     /** An absorber: its whole footprint, whose size is the author's. */
-    FOOTPRINT {
-        @Override
-        Shape outline(Gizmo gizmo, Interpolation between) {
-            return new Rectangle2D.Double(gizmo.x(), gizmo.y(), gizmo.width(), gizmo.height());
-        }
-    };
+    FOOTPRINT(gizmo -> new Rectangle2D.Double(gizmo.x(), gizmo.y(), gizmo.width(), gizmo.height()));
 
     /** The bar of a drawing that is one (then play changes it), null for every other. */
     private final BarOf barOf;
+    /** The outline of a drawing that is no bar, null for a bar. */
+    private final Outline outline;
     /** See {@link #changesInPlay()}. */
     private final boolean changesInPlay;
 
-    GizmoArt() {
-        this(false);
+    /** A drawing with that outline, which play does not change. */
+    GizmoArt(Outline outline) {
+        this(outline, false);
     }
 
-    /** A drawing that play changes or not, not a bar. */
-    GizmoArt(boolean changesInPlay) {
+    /** A drawing with that outline, which play changes or not; not a bar. */
+    GizmoArt(Outline outline, boolean changesInPlay) {
         this.barOf = null;
+        this.outline = outline;
         this.changesInPlay = changesInPlay;
     }
 
     /** A bar: play turns it. */
     GizmoArt(BarOf barOf) {
         this.barOf = barOf;
+        this.outline = null;
         this.changesInPlay = true;
     }
 
@@ -258,6 +218,9 @@ enum GizmoArt {
      * stroked round-capped, else each drawing's own.
      */
     Shape outline(Gizmo gizmo, Interpolation between) {
+        if (barOf == null) {
+            return outline.of(gizmo);
+        }
         Bar bar = barOf.at(gizmo, between);
         return roundCapped(2 * bar.radius()).createStrokedShape(bar.line());
     }
@@ -269,6 +232,11 @@ enum GizmoArt {
         } else {
             BoardPainter.paintShape(g, outline(gizmo, between), fill, pixel);
         }
+    }
+
+    /** The outline of a drawing that play does not turn. */
+    private interface Outline {
+        Shape of(Gizmo gizmo);
     }
 
     /** A bar that turns (a flipper's, a spinner's) as drawn between two ticks. */

@@ -2,15 +2,12 @@ package gizmoball.api;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.io.IOException;
-import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Test;
 
@@ -21,7 +18,7 @@ import org.junit.jupiter.api.Test;
  * file, which is not here (docs/rules.md restates the rules the code cites).
  */
 class CitationsTest {
-    private static final List<Path> SOURCES = List.of(Path.of("src"), Path.of("physics-lib", "src"));
+    private static final List<Path> SOURCES = SourceTexts.SOURCES;
     /** A document under docs/, and the section that follows it in quotes, if any. */
     private static final Pattern CITATION = Pattern.compile("docs/([\\w-]+\\.(?:md|txt))(?:, \"([^\"]+)\")?");
     private static final Pattern PRODUCT_FILE = Pattern.compile("\\bSPEC(\\.md)?\\b");
@@ -74,23 +71,12 @@ class CitationsTest {
     }
 
     private static List<Path> sourceFiles() {
-        List<Path> files = new ArrayList<>();
-        for (Path root : SOURCES) {
-            try (Stream<Path> walk = Files.walk(root)) {
-                walk.filter(p -> p.toString().endsWith(".java")).forEach(files::add);
-            } catch (IOException e) {
-                throw new UncheckedIOException(e);
-            }
-        }
+        List<Path> files = SourceTexts.javaFiles(SOURCES);
         assertThat(files).as("source files found").hasSizeGreaterThan(100);
         return files;
     }
 
     private static String read(Path file) {
-        try {
-            return Files.readString(file);
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
+        return SourceTexts.read(file);
     }
 }

@@ -2,9 +2,6 @@ package gizmoball.api;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.io.IOException;
-import java.io.UncheckedIOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -15,7 +12,6 @@ import java.util.TreeSet;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Collectors;
-import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Test;
 
@@ -26,7 +22,7 @@ import org.junit.jupiter.api.Test;
  */
 class DesignGuideTest {
     private static final Path DESIGN = Path.of("docs", "design.md");
-    private static final List<Path> SOURCES = List.of(Path.of("src"), Path.of("physics-lib", "src"));
+    private static final List<Path> SOURCES = SourceTexts.SOURCES;
     private static final Path MODEL = Path.of("src", "main", "java", "gizmoball", "model");
     /** Lines of a page: a section longer than this belongs in a focused page of docs/ of its own. */
     private static final int PAGE = 60;
@@ -139,22 +135,10 @@ class DesignGuideTest {
     }
 
     private static List<Path> javaFiles(List<Path> roots) {
-        List<Path> files = new ArrayList<>();
-        for (Path root : roots) {
-            try (Stream<Path> walk = Files.walk(root)) {
-                walk.filter(p -> p.toString().endsWith(".java")).forEach(files::add);
-            } catch (IOException e) {
-                throw new UncheckedIOException(e);
-            }
-        }
-        return files;
+        return SourceTexts.javaFiles(roots);
     }
 
     private static String read(Path file) {
-        try {
-            return Files.readString(file);
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
+        return SourceTexts.read(file);
     }
 }
