@@ -1,5 +1,13 @@
 package physics;
 
+import static physics.ClosedForms.excessSquared;
+import static physics.ClosedForms.footOnFace;
+import static physics.ClosedForms.length;
+import static physics.ClosedForms.quarterDiscriminant;
+import static physics.ClosedForms.reflectAlong;
+import static physics.ClosedForms.reflectOffMovingSurface;
+import static physics.ClosedForms.timeUntilCentresAt;
+
 import physics.Geometry.DoublePair;
 import physics.Geometry.VectPair;
 
@@ -20,9 +28,9 @@ import physics.Geometry.VectPair;
  * The static methods are closed forms in numerically stable forms. The rotating methods search the foresight
  * window {@code [0, maximumForesight]} and report only contacts inside it; see {@link RotatingContactSearch}.
  * <p>
- * At about 490 lines it is over the project's 400: it is the API's one implementation of the whole
- * {@link GeometryInterface}, each method a closed form with its degenerate cases, which the API fixes in one
- * class; the search of the rotating methods has a class of its own.
+ * Over 400 lines because it is the API's one implementation of the whole {@link GeometryInterface}, which the API
+ * fixes in one class; the closed forms its methods share are {@link ClosedForms}', the rotating search
+ * {@link RotatingContactSearch}'s.
  */
 public class GeometryImpl implements GeometryInterface {
     /** Default foresight of the rotating methods, in seconds. */
@@ -180,27 +188,6 @@ public class GeometryImpl implements GeometryInterface {
         double atX = center.x() + (velocity.x() * time + 0.0) + 0.0;
         double atY = center.y() + (velocity.y() * time + 0.0) + 0.0;
         return footOnFace(line, atX, atY) ? time : Double.POSITIVE_INFINITY;
-    }
-
-    /** {@link Vect#length()} of (x, y), made of no vector. */
-    private static double length(double x, double y) {
-        if (x == 0) {
-            return Math.abs(y);
-        }
-        if (y == 0) {
-            return Math.abs(x);
-        }
-        return Math.hypot(x, y);
-    }
-
-    /** Whether the foot of the perpendicular from the point (px, py) lies on the half-open face [p1, p2). */
-    private static boolean footOnFace(LineSegment line, double px, double py) {
-        Vect p1 = line.p1();
-        Vect p2 = line.p2();
-        double dirX = p2.x() - p1.x() + 0.0;
-        double dirY = p2.y() - p1.y() + 0.0;
-        return (px - p1.x() + 0.0) * dirX + (py - p1.y() + 0.0) * dirY >= 0
-                && (p2.x() - px + 0.0) * dirX + (p2.y() - py + 0.0) * dirY > 0;
     }
 
     /** The velocity reflected off the segment's line, its normal part multiplied by the coefficient. */
@@ -414,14 +401,6 @@ public class GeometryImpl implements GeometryInterface {
         return reflectOffMovingSurface(normal, contact, center, angularVelocity, velocity, reflectionCoeff);
     }
 
-    /** Reflects the velocity relative to the surface point turning with the obstacle, then adds its velocity back. */
-    private static Vect reflectOffMovingSurface(Vect unitNormal, Vect contact, Vect pivot, double angularVelocity,
-                                                Vect velocity, double reflectionCoeff) {
-        Vect arm = contact.minus(pivot);
-        Vect surfaceVelocity = new Vect(-arm.y(), arm.x()).times(angularVelocity);
-        return reflectAlong(unitNormal, velocity.minus(surfaceVelocity), reflectionCoeff).plus(surfaceVelocity);
-    }
-
     /**
      * Time until two moving balls touch. Touching or overlapping and closing gives 0; separating or equal
      * velocities give infinity.
@@ -464,57 +443,5 @@ public class GeometryImpl implements GeometryInterface {
         }
         return new VectPair(new Vect(velocity1.x() - dx * change1, velocity1.y() - dy * change1),
                 new Vect(velocity2.x() + dx * change2, velocity2.y() + dy * change2));
-    }
-
-    /**
-     * Time until |d + u t| first equals distance, for the closest-approach problems (circle-ball, ball-ball), on
-     * the components of the offset d and the velocity u so that nothing is allocated. Uses (|d| - S)(|d| + S) for
-     * |d|&sup2; - S&sup2; and Lagrange's identity for the discriminant, and picks the root form without
-     * cancellation, so far-away contacts keep their digits.
-     */
-    private static double timeUntilCentresAt(double dx, double dy, double ux, double uy, double distance) {
-        double along = dx * ux + dy * uy;
-        if (!(along < 0)) {
-            return Double.POSITIVE_INFINITY; // not closing: never, whether apart, touching or overlapping
-        }
-        double excess = excessSquared(dx, dy, distance);
-        if (excess <= 0) {
-            return 0;
-        }
-        double discriminant = quarterDiscriminant(dx, dy, ux, uy, distance);
-        if (discriminant < 0) {
-            return Double.POSITIVE_INFINITY;
-        }
-        return excess / (-along + Math.sqrt(discriminant));
-    }
-
-    /** |d|&sup2; - radius&sup2;, as a product of sum and difference. */
-    private static double excessSquared(double dx, double dy, double radius) {
-        double length = norm(dx, dy);
-        return (length - radius) * (length + radius);
-    }
-
-    /** (d.u)&sup2; - |u|&sup2;(|d|&sup2; - r&sup2;) = |u|&sup2;r&sup2; - (d x u)&sup2;, factored. */
-    private static double quarterDiscriminant(double dx, double dy, double ux, double uy, double radius) {
-        double cross = Math.abs(dx * uy - dy * ux);
-        double reach = norm(ux, uy) * radius;
-        return (reach - cross) * (reach + cross);
-    }
-
-    /**
-     * |(x, y)|: the square root of the sum of squares, within an ulp like {@link Math#hypot} at a fraction of its
-     * cost; hypot only where the squares would underflow or overflow.
-     */
-    private static double norm(double x, double y) {
-        double sumOfSquares = x * x + y * y;
-        if (sumOfSquares < Double.MIN_NORMAL || sumOfSquares == Double.POSITIVE_INFINITY) {
-            return Math.hypot(x, y);
-        }
-        return Math.sqrt(sumOfSquares);
-    }
-
-    /** v with its part along the unit normal replaced by -coeff times that part. */
-    private static Vect reflectAlong(Vect unitNormal, Vect velocity, double reflectionCoeff) {
-        return velocity.minus(unitNormal.times((1 + reflectionCoeff) * velocity.dot(unitNormal)));
     }
 }
