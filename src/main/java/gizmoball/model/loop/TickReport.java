@@ -1,6 +1,5 @@
 package gizmoball.model.loop;
 
-import java.util.Collections;
 import java.util.EnumMap;
 import java.util.List;
 import java.util.Map;
@@ -21,17 +20,11 @@ public record TickReport(double time, Map<Stage, Long> stageNanos, int collision
                          int simultaneousCollisions,
                          int ballsAwake, int ballsAsleep, GuardCounts guards, List<PlayEvent> events,
                          List<BallReport> balls) {
-    /** Before {@link #NONE}, which the constructor makes with it. */
-    private static final Stage[] STAGES = Stage.values();
     public static final TickReport NONE = new TickReport(0, new EnumMap<>(Stage.class), 0, 0, 0, 0, 0,
             GuardCounts.NONE, List.of(), List.of());
 
     public TickReport {
-        EnumMap<Stage, Long> times = new EnumMap<>(Stage.class);
-        for (Stage stage : STAGES) {
-            times.put(stage, stageNanos.getOrDefault(stage, 0L));
-        }
-        stageNanos = Collections.unmodifiableMap(times);
+        stageNanos = StageTimes.of(stageNanos);   // every stage, read-only
         events = List.copyOf(events);
         balls = List.copyOf(balls);
     }

@@ -6,7 +6,6 @@ import gizmoball.model.gizmo.MovingShape;
 
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.EnumMap;
 import java.util.List;
 
 import physics.Vect;
@@ -47,7 +46,6 @@ public final class TickRun {
     private final List<GizmoBase> tookOnTouch = new ArrayList<>();
     private final List<GizmoBase> touched = new ArrayList<>();
     private final List<Vect> contactNormals = new ArrayList<>();
-    private static final Stage[] STAGES = Stage.values();
 
     /**
      * The loop of the board that {@code view} shows and {@code actions} act on, which keeps it and runs it once per
@@ -302,11 +300,7 @@ public final class TickRun {
             }
         }
         nanos[Stage.REDRAWING.ordinal()] = view.lastRedrawNanos();
-        EnumMap<Stage, Long> stageNanos = new EnumMap<>(Stage.class);
-        for (Stage stage : STAGES) {
-            stageNanos.put(stage, nanos[stage.ordinal()]);
-        }
-        return new TickReport(view.time(), stageNanos, step.collisions, step.zeroTimeCollisions,
+        return new TickReport(view.time(), StageTimes.of(nanos), step.collisions, step.zeroTimeCollisions,
                 step.simultaneousCollisions, step.awake.size(), asleep,
                 step.guards(), step.actions.drainEvents(), balls);
     }
