@@ -30,7 +30,6 @@ import java.util.List;
 import java.util.Optional;
 import java.util.OptionalLong;
 
-
 /**
  * The game board: gizmos, balls, connections, key bindings and the physics constants, with the editing operations
  * (each succeeds completely or throws {@link BoardEditException} and changes nothing), queries, and play
@@ -341,15 +340,15 @@ public final class Board {
     // ---------------------------------------------------------------- queries
 
     public List<Gizmo> gizmos() {
-        return registry.gizmos().stream().map(Board::asGizmo).toList();
+        return registry.gizmos().stream().map(Gizmo.class::cast).toList();
     }
 
     public Optional<Gizmo> gizmo(String name) {
-        return Optional.ofNullable(registry.gizmo(name)).map(Board::asGizmo);
+        return Optional.ofNullable(registry.gizmo(name)).map(Gizmo.class::cast);
     }
 
     public Optional<Gizmo> gizmoAt(int cx, int cy) {
-        return Optional.ofNullable(registry.index().at(cx, cy)).map(Board::asGizmo);
+        return Optional.ofNullable(registry.index().at(cx, cy)).map(Gizmo.class::cast);
     }
 
     /** The balls in board order, read only: the board and its loop change them. */
@@ -384,10 +383,6 @@ public final class Board {
     /** Simulated seconds since construction or {@link #clear()}. */
     public double time() {
         return clock.time();
-    }
-
-    private static Gizmo asGizmo(GizmoBase gizmo) {
-        return (Gizmo) gizmo;
     }
 
     // ---------------------------------------------------------------- play
@@ -433,11 +428,7 @@ public final class Board {
 
     /** The gizmo performs its action: a flipper toggles, an absorber fires, a bumper only records the time. */
     public void trigger(String gizmo) {
-        GizmoBase target = registry.gizmo(gizmo);
-        if (target == null) {
-            throw new IllegalArgumentException("cannot trigger " + gizmo + ": no gizmo named " + gizmo);
-        }
-        play.performAction(target, clock.time());
+        play.trigger(gizmo, clock.time());
     }
 
     public void addObserver(BoardObserver observer) {

@@ -115,8 +115,12 @@ final class Play implements Surroundings {
         fired.clear();
     }
 
-    /** The gizmo performs its kind's default action: a flipper toggles, an absorber fires, a bumper flashes. */
-    void performAction(GizmoBase gizmo, double now) {
+    /** The gizmo named performs its kind's default action: a flipper toggles, an absorber fires, a bumper flashes. */
+    void trigger(String name, double now) {
+        GizmoBase gizmo = registry.gizmo(name);
+        if (gizmo == null) {
+            throw new IllegalArgumentException("cannot trigger " + name + ": no gizmo named " + name);
+        }
         perform(gizmo, gizmo.kind().defaultAction(), now);
     }
 
