@@ -19,6 +19,7 @@ import gizmoball.model.loop.Connection;
 import gizmoball.model.loop.GuardCounts;
 import gizmoball.model.loop.LoopActions;
 import gizmoball.model.loop.LoopMode;
+import gizmoball.model.loop.LoopSettings;
 import gizmoball.model.loop.LoopView;
 import gizmoball.model.loop.Sleepers;
 import gizmoball.model.loop.TickReport;
@@ -74,7 +75,9 @@ public final class Board {
     private final KeyPresses keys = new KeyPresses(registry, wiring, play, sleepers, settings, clock, game);
     private final BoardLoop loop = new BoardLoop(constants, clock, registry, wiring, play, sleepers, events,
             endOfTick);
-    private final TickCycle ticking = new TickCycle(play, endOfTick, delayed, clock, game, loop);
+    /** Every board's loop runs with the standard tuning, handed to it here. */
+    private final TickCycle ticking = new TickCycle(play, endOfTick, delayed, clock, game, loop,
+            LoopSettings.STANDARD);
     private final Runnable redraw = () -> notifyObservers(BoardChange.TICK);   // made once, not every tick
 
     /** A deep copy of the contents and play state (not the observers). */

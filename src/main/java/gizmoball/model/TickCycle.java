@@ -2,6 +2,7 @@ package gizmoball.model;
 
 import gizmoball.model.game.Game;
 import gizmoball.model.loop.GuardCounts;
+import gizmoball.model.loop.LoopSettings;
 import gizmoball.model.loop.TickReport;
 import gizmoball.model.loop.TickRun;
 
@@ -22,14 +23,15 @@ final class TickCycle {
     private TickReport lastTick = TickReport.NONE;
     private GuardCounts guardsFired = GuardCounts.NONE;
 
-    TickCycle(Play play, EndOfTick endOfTick, DelayedActions delayed, Clock clock, Game game, BoardLoop loop) {
+    TickCycle(Play play, EndOfTick endOfTick, DelayedActions delayed, Clock clock, Game game, BoardLoop loop,
+              LoopSettings settings) {
         this.play = play;
         this.endOfTick = endOfTick;
         this.delayed = delayed;
         this.clock = clock;
         this.game = game;
         this.loop = loop;
-        this.tickRun = new TickRun(loop, loop);
+        this.tickRun = new TickRun(loop, loop, settings);
     }
 
     /** Runs a tick of {@code dt} seconds (finite, not negative: the board checks), then {@code redraw}. */

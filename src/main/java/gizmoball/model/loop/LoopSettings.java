@@ -3,7 +3,7 @@ package gizmoball.model.loop;
 /**
  * The loop's tuning, each value with its unit in its name's comment (docs/design.md, "The tick" and
  * "Guards"). Lengths and speeds shared with the editor and the loader are {@link Tolerances}; the cluster solver's own
- * limits are {@link NormalImpulses}'. The loop runs with {@link #STANDARD}; tests read the values from there.
+ * limits are {@link NormalImpulses}'. The board hands the loop {@link #STANDARD}; tests read the values from there.
  *
  * @param zeroTime                 s: a collision sooner than this after the previous one counts as zero-time
  * @param restTicksOfGravity       ticks: a normal approach slower than this many ticks' worth of the gravity pressing
@@ -34,9 +34,24 @@ public record LoopSettings(double zeroTime, double restTicksOfGravity, double sl
                            int maxCollisionsPerBall, int maxCollisionsOfABall, int rattleCollisions, double rattleTime,
                            double rattleReach) {
 
-    /** The settings of every board. */
-    public static final LoopSettings STANDARD = new LoopSettings(1e-12, 2, 1e-3, 0.5, 32, 2, 3, 16, 360, 64, 500,
-            100, 400, 8, 1e-3, 1e-3);
+    /** The settings of every board, each default named by the component it sets. */
+    public static final LoopSettings STANDARD = new LoopSettings(
+            /* zeroTime */ 1e-12,
+            /* restTicksOfGravity */ 2,
+            /* sleepSpeed */ 1e-3,
+            /* sleepTime */ 0.5,
+            /* zeroTimeHitsBeforeWedged */ 32,
+            /* strikesOfASqueeze */ 2,
+            /* strikesOfAPush */ 3,
+            /* squeezesBeforePinched */ 16,
+            /* bouncesAmongContacts */ 360,
+            /* pressSteps */ 64,
+            /* maxCollisionsBase */ 500,
+            /* maxCollisionsPerBall */ 100,
+            /* maxCollisionsOfABall */ 400,
+            /* rattleCollisions */ 8,
+            /* rattleTime */ 1e-3,
+            /* rattleReach */ 1e-3);
 
     /**
      * Whether a ball still for {@code stillTime} seconds, summed a tick of {@code dt} at a time, has lain still for

@@ -48,12 +48,12 @@ public final class TickRun {
     private final List<Vect> contactNormals = new ArrayList<>();
 
     /**
-     * The loop of the board that {@code view} shows and {@code actions} act on, which keeps it and runs it once per
-     * {@code Board.tick}; not for views. Its books last from tick to tick (each tick starts them empty), so a tick in
+     * The loop of the board that {@code view} shows and {@code actions} act on, tuned by {@code settings}, which the
+     * board keeps and runs once per {@code Board.tick}; not for views. Its books last from tick to tick (each tick starts them empty), so a tick in
      * the steady state allocates little beyond its report.
      */
-    public TickRun(LoopView view, LoopActions actions) {
-        this.step = new StepContext(view, actions, LoopSettings.STANDARD);
+    public TickRun(LoopView view, LoopActions actions, LoopSettings settings) {
+        this.step = new StepContext(view, actions, settings);
         this.still = new StillSurfaces(step);
         this.pairs = new BallPairs(step);
         this.clusters = new ClusterSolve(step);
