@@ -56,7 +56,8 @@ final class ClusterSolve {
             return null;
         }
         return ContactCluster.around(step.view, collision.balls(),
-                step.detector::motion, candidate -> !step.finished.contains(candidate), reach);
+                step.detector::motion, candidate -> !step.finished.contains(candidate), reach,
+                step.settings.clusterBalls());
     }
 
     private boolean rattling(Ball ball) {
@@ -256,7 +257,7 @@ final class ClusterSolve {
             vx[k] = v.x();
             vy[k] = v.y();
         }
-        return new NormalImpulses(balls.size(), a, b, nx, ny, speed, restitution).solve(vx, vy, impact,
+        return new NormalImpulses(step.settings, balls.size(), a, b, nx, ny, speed, restitution).solve(vx, vy, impact,
                 Arena.MAX_SPEED);
     }
 

@@ -27,8 +27,6 @@ final class ContactCluster {
     static final double TOUCHING = Tolerances.PLACEMENT;
     /** Seconds a ball leaving a moving part keeps ahead of it (see {@link #leavingFace}). */
     static final double LEAD_TIME = 1e-3;
-    /** More balls than this in one cluster: the ones beyond are taken as surfaces moving as they move now. */
-    static final int MAX_BALLS = 32;
 
     /** What a row of the cluster is a contact with. */
     sealed interface Other {
@@ -113,7 +111,7 @@ final class ContactCluster {
      * surface. Surfaces and balls within {@code reach} of a ball count as touching it: at least {@link #TOUCHING}.
      */
     static ContactCluster around(LoopView view, List<Ball> seeds, Function<Ball, Vect> motion,
-                                 Predicate<Ball> movable, double reach) {
+                                 Predicate<Ball> movable, double reach, int maxBalls) {
         ContactCluster cluster = new ContactCluster();
         cluster.touching = Math.max(TOUCHING, reach);
         Map<Ball, Integer> indexOf = new IdentityHashMap<>();
@@ -140,7 +138,7 @@ final class ContactCluster {
                 Vect normal = ball.position().minus(other.position()).unitSize();
                 boolean grazes = CollisionDetector.grazes(ball.position().minus(other.position()),
                         motion.apply(ball).minus(motion.apply(other)), 2 * Arena.BALL_RADIUS);
-                if (j < 0 && cluster.balls.size() < MAX_BALLS && movable.test(other)) {
+                if (j < 0 && cluster.balls.size() < maxBalls && movable.test(other)) {
                     j = cluster.balls.size();
                     cluster.balls.add(other);
                     indexOf.put(other, j);

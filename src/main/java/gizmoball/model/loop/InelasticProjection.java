@@ -9,14 +9,9 @@ import java.util.Arrays;
  * which the round's restitution reads.
  */
 final class InelasticProjection {
-    /**
-     * Sweeps of projected Gauss-Seidel before it counts as not converging: it is the fallback for rows the active set
-     * cannot settle, and at 10,000 sweeps a cluster of 30 balls cost half a second of one tick.
-     */
-    private static final int MAX_SWEEPS = 500;
-    /** Changes of the active set before the solve counts as not settling (each adds or drops one row). */
-    private static final int MAX_ROUNDS = 200;
-
+    /** {@link LoopSettings#projectionSweeps()} and {@link LoopSettings#activeSetChanges()}: when it gives up. */
+    private final int maxSweeps;
+    private final int maxRounds;
     private final ContactRows contacts;
     private final int balls;
     private final int rows;
@@ -25,7 +20,9 @@ final class InelasticProjection {
     private double[] vx;
     private double[] vy;
 
-    InelasticProjection(ContactRows contacts) {
+    InelasticProjection(ContactRows contacts, LoopSettings settings) {
+        this.maxSweeps = settings.projectionSweeps();
+        this.maxRounds = settings.activeSetChanges();
         this.contacts = contacts;
         this.balls = contacts.balls();
         this.rows = contacts.count();
@@ -94,7 +91,7 @@ final class InelasticProjection {
             scale = Math.max(scale, Math.abs(vx[k]) + Math.abs(vy[k]));
         }
         double tolerance = 1e-14 * scale;
-        for (int sweep = 0; sweep < MAX_SWEEPS; sweep++) {
+        for (int sweep = 0; sweep < maxSweeps; sweep++) {
             double largest = 0;
             for (int i = 0; i < rows; i++) {
                 double step = Math.max(-impulse[i], (contacts.closing(vx, vy, i) - ContactRows.SLOP) / contacts.diagonal(i));
@@ -134,7 +131,7 @@ final class InelasticProjection {
         ActiveRowsFactor factor = new ActiveRowsFactor(rows, contacts::coupling);
         Arrays.fill(impulse, 0);
         double[] trial = new double[rows];
-        for (int round = 0; round < MAX_ROUNDS; round++) {
+        for (int round = 0; round < maxRounds; round++) {
             int joining = -1;
             double most = ContactRows.SLOP;
             for (int i = 0; i < rows; i++) {

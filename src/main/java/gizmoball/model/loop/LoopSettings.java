@@ -3,7 +3,7 @@ package gizmoball.model.loop;
 /**
  * The loop's tuning, each value with its unit in its name's comment (docs/design.md, "The tick" and
  * "Guards"). Lengths and speeds shared with the editor and the loader are {@link Tolerances}; the cluster solver's own
- * limits are {@link NormalImpulses}'. The board hands the loop {@link #STANDARD}; tests read the values from there.
+ * limits are components too. The board hands the loop {@link #STANDARD}; tests read the values from there.
  *
  * @param zeroTime                 s: a collision sooner than this after the previous one counts as zero-time
  * @param restTicksOfGravity       ticks: a normal approach slower than this many ticks' worth of the gravity pressing
@@ -27,12 +27,24 @@ package gizmoball.model.loop;
  *                                 solved as a cluster
  * @param rattleTime               s: collisions of one ball this close together are a rattle
  * @param rattleReach              L: the farthest a rattling ball's cluster reaches for what it nearly touches
+ * @param clusterBalls             balls in one contact cluster at most: the ones beyond are taken as surfaces moving as
+ *                                 they move now
+ * @param impactRounds             rounds of impacts of one cluster solve after which what still closes takes the impact
+ *                                 inelastically: far more than a row of {@code clusterBalls} touching balls needs to
+ *                                 pass an impact along and back; only balls ringing in a pocket they nearly fill go on
+ *                                 longer, and their limit, with any loss at all, is rest
+ * @param projectionSweeps         sweeps of projected Gauss-Seidel before the inelastic projection counts as not
+ *                                 converging: it is the fallback for rows the active set cannot settle, and at 10,000
+ *                                 sweeps a cluster of 30 balls cost half a second of one tick
+ * @param activeSetChanges         changes of the projection's active set (each adds or drops one row) before it counts
+ *                                 as not settling
  */
 public record LoopSettings(double zeroTime, double restTicksOfGravity, double sleepSpeed, double sleepTime,
                            int zeroTimeHitsBeforeWedged, int strikesOfASqueeze, int strikesOfAPush,
                            int squeezesBeforePinched, int bouncesAmongContacts, int pressSteps, int maxCollisionsBase,
                            int maxCollisionsPerBall, int maxCollisionsOfABall, int rattleCollisions, double rattleTime,
-                           double rattleReach) {
+                           double rattleReach, int clusterBalls, int impactRounds, int projectionSweeps,
+                           int activeSetChanges) {
 
     /** The settings of every board, each default named by the component it sets. */
     public static final LoopSettings STANDARD = new LoopSettings(
@@ -51,7 +63,11 @@ public record LoopSettings(double zeroTime, double restTicksOfGravity, double sl
             /* maxCollisionsOfABall */ 400,
             /* rattleCollisions */ 8,
             /* rattleTime */ 1e-3,
-            /* rattleReach */ 1e-3);
+            /* rattleReach */ 1e-3,
+            /* clusterBalls */ 32,
+            /* impactRounds */ 256,
+            /* projectionSweeps */ 500,
+            /* activeSetChanges */ 200);
 
     /**
      * Whether a ball still for {@code stillTime} seconds, summed a tick of {@code dt} at a time, has lain still for

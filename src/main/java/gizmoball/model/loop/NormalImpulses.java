@@ -21,7 +21,7 @@ package gizmoball.model.loop;
  * </ol>
  * The restitution of one contact can close another (a ball sent back into the one behind it): the next round takes
  * it, until no contact closes faster than rounding. A round after the first whose compression stops every ball dead
- * is a jammed cluster (balls filling a pocket): it ends at rest; so does, after {@link #MAX_IMPACT_ROUNDS} rounds, what
+ * is a jammed cluster (balls filling a pocket): it ends at rest; so does, after {@link LoopSettings#impactRounds()} rounds, what
  * still rings.
  * A projection onto a convex set that holds the still velocities never adds kinetic energy, and with one coefficient
  * for every contact of still surfaces a round's restitution keeps it exactly (the compression impulse is orthogonal to
@@ -32,16 +32,12 @@ package gizmoball.model.loop;
  */
 final class NormalImpulses {
     /**
-     * Rounds of impacts after which what still closes takes the impact inelastically: far more than a row of
-     * {@link ContactCluster#MAX_BALLS} touching balls needs to pass an impact along and back. Only balls ringing in a
-     * pocket they nearly fill go on longer; their limit, with any loss at all, is rest.
-     */
-    private static final int MAX_IMPACT_ROUNDS = 256;
-    /**
      * Relative to the fastest ball's speed, how near a round's start must be to the start two rounds before for the
      * rounds to count as a cycle of two: rounding's scale, far below any change a round of impacts makes.
      */
     private static final double CYCLE_MATCH = 1e-9;
+    /** {@link LoopSettings#impactRounds()}. */
+    private final int maxImpactRounds;
     private final int balls;
     private final int rows;
     private final ContactRows contacts;
@@ -53,18 +49,21 @@ final class NormalImpulses {
     private double[] vy;
 
     /**
+     * @param settings    the loop's tuning: how many rounds of impacts, and when the projection gives up
      * @param a           per row, the ball the normal points into
      * @param b           per row, the other ball, or -1 for a surface
      * @param nx          per row, the unit normal (from {@code b} or the surface toward {@code a})
      * @param speed       per row, the surface's speed along the normal (0 for a ball or a still surface)
      * @param restitution per row, the coefficient a real impact on it bounces with
      */
-    NormalImpulses(int balls, int[] a, int[] b, double[] nx, double[] ny, double[] speed, double[] restitution) {
+    NormalImpulses(LoopSettings settings, int balls, int[] a, int[] b, double[] nx, double[] ny, double[] speed,
+                   double[] restitution) {
+        this.maxImpactRounds = settings.impactRounds();
         this.balls = balls;
         this.rows = a.length;
         this.contacts = new ContactRows(balls, a, b, nx, ny, speed);
         this.restitution = restitution;
-        this.projection = new InelasticProjection(contacts);
+        this.projection = new InelasticProjection(contacts, settings);
         this.impulse = projection.impulses();
     }
 
@@ -101,11 +100,11 @@ final class NormalImpulses {
         double[] twoBackX = null;
         double[] twoBackY = null;
         int round = 0;
-        for (; round < MAX_IMPACT_ROUNDS; round++) {
+        for (; round < maxImpactRounds; round++) {
             if (!anyClosing()) {
                 return new Result(vx, vy, largest, projection.withinLimit(vx, vy, speedLimit), round);
             }
-            if ((MAX_IMPACT_ROUNDS - round) % 2 == 0 && twoBackX != null) {
+            if ((maxImpactRounds - round) % 2 == 0 && twoBackX != null) {
                 double tolerance = CYCLE_MATCH * Math.max(1, fastest(vx, vy));
                 if (within(twoBackX, vx, tolerance) && within(twoBackY, vy, tolerance)) {
                     break;

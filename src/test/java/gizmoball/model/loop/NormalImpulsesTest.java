@@ -58,7 +58,7 @@ class NormalImpulsesTest {
             }
             double[] impact = new double[n];
             Arrays.fill(impact, IMPACT);
-            return new NormalImpulses(count, a, b, nx, ny, speed, restitution).solve(vx, vy, impact, LIMIT);
+            return new NormalImpulses(LoopSettings.STANDARD, count, a, b, nx, ny, speed, restitution).solve(vx, vy, impact, LIMIT);
         }
     }
 
