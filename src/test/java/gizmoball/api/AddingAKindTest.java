@@ -2,9 +2,6 @@ package gizmoball.api;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.io.IOException;
-import java.io.UncheckedIOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
@@ -13,7 +10,6 @@ import java.util.Locale;
 import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Test;
 
@@ -34,8 +30,8 @@ class AddingAKindTest {
     void everyFileThatNamesEachExtensionKindIsListedAndEveryListedFileExists() {
         Set<String> listed = listedFiles();
         List<String> perKind = new ArrayList<>();
-        for (Path file : mainFiles()) {
-            String text = read(file);
+        for (Path file : SourceTexts.javaFiles(List.of(MAIN))) {
+            String text = SourceTexts.read(file);
             if (EXTENSION_KINDS.stream().allMatch(kind -> names(text, kind))) {
                 perKind.add(MAIN.relativize(file).toString().replace('\\', '/'));
             }
@@ -72,7 +68,7 @@ class AddingAKindTest {
     }
 
     private static Set<String> listedFiles() {
-        String design = read(Path.of("docs", "design.md"));
+        String design = SourceTexts.read(Path.of("docs", "design.md"));
         int start = design.indexOf("## Adding a gizmo kind");
         assertThat(start).as("the section").isNotNegative();
         int end = design.indexOf("\n## ", start + 1);
@@ -82,21 +78,5 @@ class AddingAKindTest {
             files.add(m.group(1));
         }
         return files;
-    }
-
-    private static List<Path> mainFiles() {
-        try (Stream<Path> walk = Files.walk(MAIN)) {
-            return walk.filter(p -> p.toString().endsWith(".java")).toList();
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
-    }
-
-    private static String read(Path file) {
-        try {
-            return Files.readString(file);
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
     }
 }

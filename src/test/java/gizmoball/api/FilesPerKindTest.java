@@ -4,8 +4,6 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoKind;
-import java.io.IOException;
-import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -43,8 +41,8 @@ class FilesPerKindTest {
 
     @Test
     void everyKindIsNamedByFewFilesOfTheGame() {
-        Map<Path, String> code = mainFiles().stream()
-                .collect(Collectors.toMap(file -> file, file -> withoutComments(read(file))));
+        Map<Path, String> code = SourceTexts.javaFiles(List.of(MAIN)).stream()
+                .collect(Collectors.toMap(file -> file, file -> withoutComments(SourceTexts.read(file))));
         List<String> over = new ArrayList<>();
         for (GizmoKind kind : GizmoKind.values()) {
             Pattern names = namesOf(kind);
@@ -142,21 +140,5 @@ class FilesPerKindTest {
             i += source.charAt(i) == '\\' ? 2 : 1;
         }
         return i + 1;
-    }
-
-    private static List<Path> mainFiles() {
-        try (Stream<Path> walk = Files.walk(MAIN)) {
-            return walk.filter(p -> p.toString().endsWith(".java")).toList();
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
-    }
-
-    private static String read(Path file) {
-        try {
-            return Files.readString(file);
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
     }
 }
