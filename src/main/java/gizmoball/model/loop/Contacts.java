@@ -137,7 +137,8 @@ final class Contacts {
     }
 
     private boolean onAFaceOf(List<ContactRef> refs, Vect point) {
-        for (ContactRef ref : refs) {
+        for (int i = 0; i < refs.size(); i++) {
+            ContactRef ref = refs.get(i);
             LineSegment face = faceOf(ref);
             if (face != null && Geometry.perpendicularPoint(face, point) != null
                     && point.distanceSquared(Geometry.perpendicularPointWholeLine(face, point))
@@ -181,7 +182,9 @@ final class Contacts {
     /** The normals of the ball's contacts as they are now, without changing them. */
     List<Vect> normals(Ball ball) {
         List<Vect> normals = new ArrayList<>();
-        for (ContactRef ref : ball.contacts()) {
+        List<ContactRef> refs = ball.contacts();
+        for (int i = 0; i < refs.size(); i++) {
+            ContactRef ref = refs.get(i);
             normalOf(ball, ref, normals, Look.QUERY);
         }
         return normals;
@@ -196,12 +199,13 @@ final class Contacts {
      * velocity closes on faster than rounding; null if there is none.
      */
     Touch closing(Ball ball, List<ContactRef> surfaces, ContactRef besides) {
-        for (ContactRef ref : surfaces) {
+        for (int i = 0; i < surfaces.size(); i++) {
+            ContactRef ref = surfaces.get(i);
             if (ref.equals(besides) || ref instanceof ContactRef.OnBall) {
                 continue;
             }
             Vect normal = normal(ball, ref);   // null too for a part of a shape now moving
-            if (normal == null || ball.velocity().dot(normal) >= -Tolerances.ROUNDING_SPEED) {
+            if (normal == null || ball.vx() * normal.x() + ball.vy() * normal.y() >= -Tolerances.ROUNDING_SPEED) {
                 continue;
             }
             if (ref instanceof ContactRef.Wall wall) {
@@ -225,7 +229,9 @@ final class Contacts {
     /** The normals of the ball's contacts other than {@code surface}, as they are now. */
     List<Vect> normalsBesides(Ball ball, ContactRef surface) {
         List<Vect> normals = new ArrayList<>();
-        for (ContactRef ref : ball.contacts()) {
+        List<ContactRef> refs = ball.contacts();
+        for (int i = 0; i < refs.size(); i++) {
+            ContactRef ref = refs.get(i);
             if (!ref.equals(surface)) {
                 normalOf(ball, ref, normals, Look.QUERY);
             }
@@ -246,35 +252,51 @@ final class Contacts {
      * two independent surfaces hold a ball still).
      */
     static Vect project(Vect v, List<Vect> normals) {
-        Vect best = v;
+        double[] projected = new double[2];
+        return project(v.x(), v.y(), normals, projected) ? new Vect(projected[0], projected[1]) : v;
+    }
+
+    /**
+     * {@link #project(Vect, List)} of {@code new Vect(vx, vy)} on its components, the same doubles, into
+     * {@code projected} (x, y): false, and {@code projected} untouched, when the velocity closes on none of the
+     * surfaces and stays as it is.
+     */
+    static boolean project(double vx, double vy, List<Vect> normals, double[] projected) {
+        double bestX = 0;
+        double bestY = 0;
         double bestChange = Double.POSITIVE_INFINITY;
         boolean closes = false;
         for (int i = 0; i < normals.size(); i++) {
             Vect n = normals.get(i);
-            double along = v.dot(n);
+            double along = vx * n.x() + vy * n.y();
             if (along >= 0) {
                 continue;
             }
             closes = true;
-            Vect candidate = v.minus(n.times(along));
-            if (-along < bestChange && closesOnNone(candidate, normals)) {
-                best = candidate;
+            // v.minus(n.times(along))
+            double candidateX = vx - (n.x() * along + 0.0) + 0.0;
+            double candidateY = vy - (n.y() * along + 0.0) + 0.0;
+            if (-along < bestChange && closesOnNone(candidateX, candidateY, normals)) {
+                bestX = candidateX;
+                bestY = candidateY;
                 bestChange = -along;
             }
         }
         if (!closes) {
-            return v;
+            return false;
         }
-        return bestChange < Double.POSITIVE_INFINITY ? best : Vect.ZERO;
+        projected[0] = bestX;   // zero where no one normal's removal frees it
+        projected[1] = bestY;
+        return true;
     }
 
     /**
-     * Whether a ball whose velocity after friction is {@code v} only slides on its contacts: they are all still
+     * Whether a ball whose velocity after friction is {@code (vx, vy)} only slides on its contacts: they are all still
      * (no ball among them) and v closes on none faster than rounding, so projecting stage 1's velocity removes only
      * what gravity's kick pressed into them. Such a tick keeps the shadow energy (ShadowEnergy): along the surfaces
      * the kick is gravity's part along them, and the straight move never leaves them.
      */
-    static boolean slidesOnStill(Ball ball, Vect v, List<Vect> normals) {
+    static boolean slidesOnStill(Ball ball, double vx, double vy, List<Vect> normals) {
         List<ContactRef> refs = ball.contacts();
         for (int i = 0; i < refs.size(); i++) {
             if (refs.get(i) instanceof ContactRef.OnBall) {
@@ -282,17 +304,19 @@ final class Contacts {
             }
         }
         for (int i = 0; i < normals.size(); i++) {
-            if (v.dot(normals.get(i)) < -Tolerances.ROUNDING_SPEED) {
+            Vect n = normals.get(i);
+            if (vx * n.x() + vy * n.y() < -Tolerances.ROUNDING_SPEED) {
                 return false;
             }
         }
         return true;
     }
 
-    private static boolean closesOnNone(Vect v, List<Vect> normals) {
-        double rounding = 1e-12 * v.length();
+    private static boolean closesOnNone(double vx, double vy, List<Vect> normals) {
+        double rounding = 1e-12 * Components.length(vx, vy);
         for (int i = 0; i < normals.size(); i++) {
-            if (v.dot(normals.get(i)) < -rounding) {
+            Vect n = normals.get(i);
+            if (vx * n.x() + vy * n.y() < -rounding) {
                 return false;
             }
         }
@@ -368,50 +392,69 @@ final class Contacts {
         return false;
     }
 
+    /**
+     * The contact with the segment at the foot of the perpendicular from the ball's centre; none past its ends. The
+     * foot is {@code Geometry.perpendicularPoint}'s, reckoned on the components (the same doubles, in the same order)
+     * so that a ball lying on a face makes no vector for it tick after tick.
+     */
     private Vect onSegment(Ball ball, LineSegment segment, Look look) {
-        Vect p = ball.position();
-        Vect foot = Geometry.perpendicularPoint(segment, p);
-        if (foot == null) {
+        Vect p1 = segment.p1();
+        Vect p2 = segment.p2();
+        double dirX = p2.x() - p1.x() + 0.0;
+        double dirY = p2.y() - p1.y() + 0.0;
+        if (dirX == 0 && dirY == 0) {
+            return touching(ball, p1.x(), p1.y(), 0, look);
+        }
+        double px = ball.x();
+        double py = ball.y();
+        double fromP1 = (px - p1.x() + 0.0) * dirX + (py - p1.y() + 0.0) * dirY;
+        double fromP2 = (p2.x() - px + 0.0) * dirX + (p2.y() - py + 0.0) * dirY;
+        if (fromP1 < 0 || fromP2 < 0) {
             return null;   // past the end: the corner circle or the next face takes over
         }
-        return touching(ball, foot, 0, look);
+        double along = fromP1 / (dirX * dirX + dirY * dirY);
+        return touching(ball, p1.x() + (dirX * along + 0.0) + 0.0, p1.y() + (dirY * along + 0.0) + 0.0, 0, look);
     }
 
     private Vect onCircle(Ball ball, Circle circle, Look look) {
-        return touching(ball, circle.getCenter(), circle.getRadius(), look);
+        Vect centre = circle.getCenter();
+        return touching(ball, centre.x(), centre.y(), circle.getRadius(), look);
     }
 
     /**
-     * The normal away from a surface point (or circle centre) the ball touches, or null. Unless the look is a query,
-     * a ball found slightly inside is put back to touching; on a {@code HOLD}, one that drifted off by more than the
-     * contact tolerance but less than the hold gap, slowly, from a surface below or beside it (gravity does not pull
-     * it away), keeps the contact and loses the drift, and is put back onto the surface where that pushes it into
-     * nothing else; where it would, it lies a hair above the surface instead (at most g dt^2). A ball left hovering
-     * would sit still in mid-air, a visible gap under a resting ball.
+     * The normal away from a surface point (or circle centre) {@code (fromX, fromY)} the ball touches, or null.
+     * Unless the look is a query, a ball found slightly inside is put back to touching; on a {@code HOLD}, one that
+     * drifted off by more than the contact tolerance but less than the hold gap, slowly, from a surface below or
+     * beside it (gravity does not pull it away), keeps the contact and loses the drift, and is put back onto the
+     * surface where that pushes it into nothing else; where it would, it lies a hair above the surface instead (at
+     * most g dt^2). A ball left hovering would sit still in mid-air, a visible gap under a resting ball. The offset
+     * from the point is reckoned on the components, as {@code Vect}'s minus and length would.
      */
-    private Vect touching(Ball ball, Vect from, double radius, Look look) {
-        Vect offset = ball.position().minus(from);
-        double distance = offset.length();
+    private Vect touching(Ball ball, double fromX, double fromY, double radius, Look look) {
+        double offsetX = ball.x() - fromX + 0.0;
+        double offsetY = ball.y() - fromY + 0.0;
+        double distance = Components.length(offsetX, offsetY);
         double touch = radius + Arena.BALL_RADIUS;
         if (distance == 0 || distance - touch > (look == Look.HOLD ? holdGap : Tolerances.CONTACT)) {
             return null;
         }
-        Vect normal = offset.times(1 / distance);
+        double inverse = 1 / distance;
+        Vect normal = new Vect(offsetX * inverse, offsetY * inverse);
         if (look == Look.QUERY) {
             return normal;
         }
         if (distance - touch > Tolerances.CONTACT) {
-            double leaving = ball.velocity().dot(normal);
+            double leaving = ball.vx() * normal.x() + ball.vy() * normal.y();
             if (leaving > holdSpeed || normal.dot(gravity) > 0) {
                 return null;
             }
             ball.setVelocity(ball.velocity().minus(normal.times(Math.max(0, leaving))));
-            Vect onSurface = from.plus(normal.times(touch));
+            Vect onSurface = new Vect(fromX, fromY).plus(normal.times(touch));
             if (clearAt(view, ball, onSurface)) {
                 ball.moveTo(onSurface);
             }
         } else if (touch - distance > SNAP_DEPTH) {
-            ball.moveTo(from.plus(normal.times(touch)));
+            ball.moveTo(new Vect(fromX, fromY).plus(normal.times(touch)));
         }
         return normal;
     }
@@ -429,7 +472,9 @@ final class Contacts {
             }
         }
         double apart = 2 * r - Tolerances.CONTACT;
-        for (Ball other : view.balls()) {
+        List<Ball> others = view.balls();
+        for (int b = 0; b < others.size(); b++) {
+            Ball other = others.get(b);
             if (other != ball && !other.isCaptured() && !view.passingThrough(ball, other)
                     && p.distanceSquared(other.position()) < apart * apart) {
                 return false;
