@@ -259,9 +259,14 @@ public final class Ball implements BallView {
             x0 = x0 * factor + 0.0;
             y0 = y0 * factor + 0.0;
         }
-        vx = negligibleToZero(x0);
-        vy = negligibleToZero(y0);
-        velocity = null;
+        double newVx = negligibleToZero(x0);
+        double newVy = negligibleToZero(y0);
+        if (newVx != vx || newVy != vy) {
+            vx = newVx;
+            vy = newVy;
+            // its vector is made when asked for, but for a ball stopped (one at rest on its contacts) or unchanged
+            velocity = newVx == 0 && newVy == 0 ? Vect.ZERO : null;
+        }
     }
 
     private void keepVelocity(Vect v) {

@@ -32,6 +32,8 @@ final class Contacts {
     private final Vect gravity;
     /** Which of a ball's contacts still hold, by place ({@link #keepHolding}), kept from ball to ball. */
     private boolean[] holds = new boolean[4];
+    /** The list {@link #normals(Ball)} fills. */
+    private final List<Vect> queried = new ArrayList<>();
 
     /**
      * A ball lying on something and nudged off it by a rounding of a wedge's projections, or rolling over a curve
@@ -61,9 +63,13 @@ final class Contacts {
     void refresh(Ball ball, List<Vect> normals) {
         if (onACorner(ball)) {
             // the face a corner may be the end of is found and takes over, before the corner's hold can act
-            discover(ball, new ArrayList<>());
+            discover(ball, null);
             List<ContactRef> refs = ball.contacts();
-            refs.removeIf(ref -> isFlushCorner(refs, ref));
+            for (int i = refs.size() - 1; i >= 0; i--) {
+                if (isFlushCorner(refs, refs.get(i))) {
+                    refs.remove(i);   // a corner's removal changes no face, so no other corner's test
+                }
+            }
         }
         normals.clear();
         if (keepHolding(ball, normals)) {
@@ -179,9 +185,13 @@ final class Contacts {
         return gizmo instanceof MovingShape moving && moving.isMoving() ? null : gizmo;
     }
 
-    /** The normals of the ball's contacts as they are now, without changing them. */
+    /**
+     * The normals of the ball's contacts as they are now, without changing them: a list kept from call to call, which
+     * the next call empties (each caller reads it before it asks again).
+     */
     List<Vect> normals(Ball ball) {
-        List<Vect> normals = new ArrayList<>();
+        List<Vect> normals = queried;
+        normals.clear();
         List<ContactRef> refs = ball.contacts();
         for (int i = 0; i < refs.size(); i++) {
             ContactRef ref = refs.get(i);
@@ -223,7 +233,7 @@ final class Contacts {
 
     /** The normal of one of the ball's contacts as it is now; null if that contact has ended. */
     Vect normal(Ball ball, ContactRef ref) {
-        return normalOf(ball, ref, new ArrayList<>(), Look.QUERY);
+        return normalOf(ball, ref, null, Look.QUERY);
     }
 
     /** The normals of the ball's contacts other than {@code surface}, as they are now. */
@@ -249,45 +259,12 @@ final class Contacts {
     /**
      * The velocity nearest to v that closes on none of the surfaces: unchanged if it closes on none, else with the
      * closing part along one normal removed if that leaves it closing on no other, else zero (wedged: in the plane,
-     * two independent surfaces hold a ball still).
+     * two independent surfaces hold a ball still). {@link Projection} reckons it on the components.
      */
     static Vect project(Vect v, List<Vect> normals) {
-        double[] projected = new double[2];
-        return project(v.x(), v.y(), normals, projected) ? new Vect(projected[0], projected[1]) : v;
-    }
-
-    /**
-     * {@link #project(Vect, List)} of {@code new Vect(vx, vy)} on its components, the same doubles, into
-     * {@code projected} (x, y): false, and {@code projected} untouched, when the velocity closes on none of the
-     * surfaces and stays as it is.
-     */
-    static boolean project(double vx, double vy, List<Vect> normals, double[] projected) {
-        double bestX = 0;
-        double bestY = 0;
-        double bestChange = Double.POSITIVE_INFINITY;
-        boolean closes = false;
-        for (int i = 0; i < normals.size(); i++) {
-            Vect n = normals.get(i);
-            double along = vx * n.x() + vy * n.y();
-            if (along >= 0) {
-                continue;
-            }
-            closes = true;
-            // v.minus(n.times(along))
-            double candidateX = vx - (n.x() * along + 0.0) + 0.0;
-            double candidateY = vy - (n.y() * along + 0.0) + 0.0;
-            if (-along < bestChange && closesOnNone(candidateX, candidateY, normals)) {
-                bestX = candidateX;
-                bestY = candidateY;
-                bestChange = -along;
-            }
-        }
-        if (!closes) {
-            return false;
-        }
-        projected[0] = bestX;   // zero where no one normal's removal frees it
-        projected[1] = bestY;
-        return true;
+        int along = Projection.of(v.x(), v.y(), normals);
+        return along == Projection.CLOSES_ON_NONE ? v
+                : new Vect(Projection.x(v.x(), v.y(), normals, along), Projection.y(v.x(), v.y(), normals, along));
     }
 
     /**
@@ -312,17 +289,6 @@ final class Contacts {
         return true;
     }
 
-    private static boolean closesOnNone(double vx, double vy, List<Vect> normals) {
-        double rounding = 1e-12 * Components.length(vx, vy);
-        for (int i = 0; i < normals.size(); i++) {
-            Vect n = normals.get(i);
-            if (vx * n.x() + vy * n.y() < -rounding) {
-                return false;
-            }
-        }
-        return true;
-    }
-
     /**
      * How a look at a contact may change the ball: a query changes nothing; a look that keeps or finds contacts puts a
      * ball found slightly inside back to touching and, {@code HOLD}, one that has only just drifted off back onto
@@ -332,7 +298,10 @@ final class Contacts {
         QUERY, SNAP, HOLD
     }
 
-    /** Adds the normal of a contact that still holds to {@code normals} and returns it; null if it has ended. */
+    /**
+     * Adds the normal of a contact that still holds to {@code normals} (unless that is null) and returns it; null if
+     * it has ended.
+     */
     private Vect normalOf(Ball ball, ContactRef ref, List<Vect> normals, Look look) {
         Vect normal;
         if (ref instanceof ContactRef.Wall wall) {
@@ -342,7 +311,7 @@ final class Contacts {
         } else {
             normal = onBall(ball, (ContactRef.OnBall) ref, look);
         }
-        if (normal != null) {
+        if (normal != null && normals != null) {
             normals.add(normal);
         }
         return normal;

@@ -49,8 +49,6 @@ public final class TickRun {
     private final List<Vect> contactNormals = new ArrayList<>();
     /** The normals of a ball's contacts as they are now, for the shadow energy: made once, not every tick. */
     private final Function<Ball, List<Vect>> normalsNow;
-    /** Stage 1's projected velocity, x and y ({@link Contacts#project(double, double, List, double[])}). */
-    private final double[] projected = new double[2];
 
     /**
      * The loop of the board that {@code view} shows and {@code actions} act on, tuned by {@code settings}, which the
@@ -161,9 +159,10 @@ public final class TickRun {
             double slowY = vy * factor + 0.0;
             double freeX = slowX + kickX + 0.0;   // plus the kick
             double freeY = slowY + kickY + 0.0;
-            boolean pressed = Contacts.project(freeX, freeY, normals, projected);
-            double nextX = pressed ? projected[0] : freeX;
-            double nextY = pressed ? projected[1] : freeY;
+            int along = Projection.of(freeX, freeY, normals);
+            boolean pressed = along != Projection.CLOSES_ON_NONE;
+            double nextX = Projection.x(freeX, freeY, normals, along);
+            double nextY = Projection.y(freeX, freeY, normals, along);
             ball.setVelocity(nextX, nextY);
             // a ball that only slides loses only the kick
             if (pressed && !Contacts.slidesOnStill(ball, slowX, slowY, normals)) {
