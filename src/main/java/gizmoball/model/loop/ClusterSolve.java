@@ -48,7 +48,7 @@ final class ClusterSolve {
         Ball other = collision.otherBall();
         double reach;
         if (again(ball) || other != null && again(other)) {
-            reach = ContactCluster.TOUCHING;
+            reach = Tolerances.PLACEMENT;
         } else if (rattling(ball)) {
             reach = Math.min(step.settings.rattleReach(),
                     2 * ball.velocity().length() * (step.elapsed - step.lastCollisionAt(ball)));

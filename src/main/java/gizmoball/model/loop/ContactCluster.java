@@ -23,8 +23,6 @@ import physics.Vect;
  * reads positions and velocities and changes nothing.
  */
 final class ContactCluster {
-    /** L: a ball this near a surface or another ball touches it, for the cluster (the placement tolerance). */
-    static final double TOUCHING = Tolerances.PLACEMENT;
     /** Seconds a ball leaving a moving part keeps ahead of it (see {@link #leavingFace}). */
     static final double LEAD_TIME = 1e-3;
 
@@ -108,12 +106,12 @@ final class ContactCluster {
     /**
      * The cluster of {@code seeds} as they are now; {@code motion} gives the velocity each ball moves with this tick
      * (none while asleep); a ball that {@code movable} refuses (one that moves no more in this tick) is taken as a
-     * surface. Surfaces and balls within {@code reach} of a ball count as touching it: at least {@link #TOUCHING}.
+     * surface. Surfaces and balls within {@code reach} of a ball count as touching it: at least {@link Tolerances#PLACEMENT}.
      */
     static ContactCluster around(LoopView view, List<Ball> seeds, Function<Ball, Vect> motion,
                                  Predicate<Ball> movable, double reach, int maxBalls) {
         ContactCluster cluster = new ContactCluster();
-        cluster.touching = Math.max(TOUCHING, reach);
+        cluster.touching = Math.max(Tolerances.PLACEMENT, reach);
         Map<Ball, Integer> indexOf = new IdentityHashMap<>();
         for (Ball seed : seeds) {
             if (!indexOf.containsKey(seed)) {
@@ -136,7 +134,7 @@ final class ContactCluster {
                     continue;   // its row was made from the other side
                 }
                 Vect normal = ball.position().minus(other.position()).unitSize();
-                boolean grazes = CollisionDetector.grazes(ball.position().minus(other.position()),
+                boolean grazes = Kinematics.grazes(ball.position().minus(other.position()),
                         motion.apply(ball).minus(motion.apply(other)), 2 * Arena.BALL_RADIUS);
                 if (j < 0 && cluster.balls.size() < maxBalls && movable.test(other)) {
                     j = cluster.balls.size();
@@ -182,7 +180,7 @@ final class ContactCluster {
                 relative = relative.minus(new Vect(vx[in.index()], vy[in.index()]));
             }
             if (-relative.dot(row.normal()) > Tolerances.ROUNDING_SPEED
-                    && !CollisionDetector.grazes(graze.offset(), relative, graze.touch())) {
+                    && !Kinematics.grazes(graze.offset(), relative, graze.touch())) {
                 rows.add(grazing.remove(i).row());
                 took = true;
             }
@@ -192,8 +190,8 @@ final class ContactCluster {
 
     private void surfaces(LoopView view, int index, Ball ball, Function<Ball, Vect> motion) {
         Vect p = ball.position();
-        for (int side = 0; side < CollisionDetector.OUTER_WALLS.size(); side++) {
-            still(index, p, CollisionDetector.OUTER_WALLS.get(side), ContactRef.Wall.of(side), null);
+        for (int side = 0; side < Arena.OUTER_WALLS.size(); side++) {
+            still(index, p, Arena.OUTER_WALLS.get(side), ContactRef.Wall.of(side), null);
         }
         double reach = Arena.BALL_RADIUS + touching;
         for (GizmoBase gizmo : view.index().within(p.x() - reach, p.y() - reach, p.x() + reach, p.y() + reach)) {
@@ -219,7 +217,7 @@ final class ContactCluster {
                     Vect normal = p.minus(circle.getCenter()).unitSize();
                     Row row = new Row(index, new Other.Still(ref, gizmo), normal, 0, gizmo.reflectionCoefficient());
                     if (!ball.contacts().contains(ref)
-                            && CollisionDetector.grazes(p.minus(circle.getCenter()), motion.apply(ball), touch)) {
+                            && Kinematics.grazes(p.minus(circle.getCenter()), motion.apply(ball), touch)) {
                         grazing.add(new Graze(row, p.minus(circle.getCenter()), touch, Vect.ZERO));
                     } else {
                         rows.add(row);
@@ -248,7 +246,7 @@ final class ContactCluster {
      * a tick).
      */
     private static double leavingFace(Vect pivot, double omega, Vect p, Vect normal, Vect foot, Vect velocity) {
-        return CollisionDetector.surfaceVelocity(pivot, omega, foot).dot(normal)
+        return Kinematics.surfaceVelocity(pivot, omega, foot).dot(normal)
                 + Math.max(0, gaining(pivot, omega, p, normal, velocity)) * LEAD_TIME;
     }
 
@@ -265,7 +263,7 @@ final class ContactCluster {
      */
     private static double leavingEnd(Vect pivot, double omega, Vect p, Vect normal, Vect point) {
         double along = p.minus(pivot).dot(normal);
-        return CollisionDetector.surfaceVelocity(pivot, omega, point).dot(normal)
+        return Kinematics.surfaceVelocity(pivot, omega, point).dot(normal)
                 + omega * omega * Math.max(0, along) * LEAD_TIME;
     }
 

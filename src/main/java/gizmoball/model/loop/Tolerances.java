@@ -13,7 +13,7 @@ package gizmoball.model.loop;
 public final class Tolerances {
     /** L: a ball this close to touching a surface is touching it (persistent contacts are kept within this). */
     public static final double CONTACT = 1e-9;
-    /** L: overlaps up to this depth are touching for placements and for the loader. */
+    /** L: overlaps up to this depth are touching for placements and for the loader, and for a contact cluster. */
     public static final double PLACEMENT = 1e-8;
     /** L: the invariants allow this depth of penetration (rounding of many collisions, never a real overlap). */
     public static final double INVARIANT = 1e-6;
