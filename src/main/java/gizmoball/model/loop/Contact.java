@@ -165,8 +165,27 @@ sealed interface Contact {
         }
     }
 
-    /** The unit normal from the line through a segment toward a point. */
+    /**
+     * The unit normal from the line through a segment toward a point: {@code centre.minus(foot).unitSize()}, the foot
+     * {@code Geometry.perpendicularPointWholeLine}'s, reckoned on the components (the same doubles, in the same order)
+     * so that only the normal is made.
+     */
     private static Vect fromLine(LineSegment segment, Vect centre) {
-        return centre.minus(Geometry.perpendicularPointWholeLine(segment, centre)).unitSize();
+        Vect p1 = segment.p1();
+        Vect p2 = segment.p2();
+        double dirX = p2.x() - p1.x() + 0.0;
+        double dirY = p2.y() - p1.y() + 0.0;
+        double footX = p1.x();
+        double footY = p1.y();
+        if (dirX != 0 || dirY != 0) {
+            double along = ((centre.x() - p1.x() + 0.0) * dirX + (centre.y() - p1.y() + 0.0) * dirY)
+                    / (dirX * dirX + dirY * dirY);
+            footX = p1.x() + (dirX * along + 0.0) + 0.0;
+            footY = p1.y() + (dirY * along + 0.0) + 0.0;
+        }
+        double awayX = centre.x() - footX + 0.0;
+        double awayY = centre.y() - footY + 0.0;
+        double length = Components.length(awayX, awayY);
+        return length == 0 ? Vect.ZERO : new Vect(awayX / length, awayY / length);
     }
 }

@@ -188,7 +188,9 @@ final class ShadowEnergy {
      * total.
      */
     private void restore(List<Ball> group, Function<Ball, List<Vect>> contactNormals) {
-        Vect h = gravity.times(dt / 2);
+        // h = g dt/2 and w = v + h on the components: the doubles of Vect's times, plus and dot
+        double hx = gravity.x() * (dt / 2) + 0.0;
+        double hy = gravity.y() * (dt / 2) + 0.0;
         double squares = 0;
         double along = 0;
         double target = 0;
@@ -200,14 +202,15 @@ final class ShadowEnergy {
             if (marks.lostIn == tick || ball.isCaptured() || marks.startedIn != tick) {
                 return;
             }
-            Vect w = ball.velocity().plus(h);
-            squares += w.dot(w);
-            target += 2 * (marks.atStart + gravity.dot(ball.position()));
+            double wx = ball.vx() + hx + 0.0;
+            double wy = ball.vy() + hy + 0.0;
+            squares += wx * wx + wy * wy;
+            target += 2 * (marks.atStart + (gravity.x() * ball.x() + gravity.y() * ball.y()));
             Vect direction = direction(ball, contactNormals);
             if (direction != null) {
                 correctable.add(ball);
                 directions.add(direction);
-                along += w.dot(direction);
+                along += wx * direction.x() + wy * direction.y();
             }
         }
         if (directions.isEmpty()) {
@@ -226,14 +229,17 @@ final class ShadowEnergy {
         double root = Math.sqrt(discriminant);
         double lambda = Math.abs(-along + root) <= Math.abs(-along - root) ? (-along + root) / n : (-along - root) / n;
         for (int i = 0; i < n; i++) {
-            double normalSpeed = correctable.get(i).velocity().dot(directions.get(i));
+            Ball ball = correctable.get(i);
+            Vect direction = directions.get(i);
+            double normalSpeed = ball.vx() * direction.x() + ball.vy() * direction.y();
             if (normalSpeed + lambda < 0 || Math.abs(lambda) > Math.max(normalSpeed / 2, timingSpeed)) {
                 return;   // not a rounding of the bounce timing: leave the group alone
             }
         }
         for (int i = 0; i < n; i++) {
             Ball ball = correctable.get(i);
-            ball.setVelocity(ball.velocity().plus(directions.get(i).times(lambda)));
+            Vect direction = directions.get(i);
+            ball.setVelocity(ball.vx() + (direction.x() * lambda + 0.0), ball.vy() + (direction.y() * lambda + 0.0));
         }
     }
 }

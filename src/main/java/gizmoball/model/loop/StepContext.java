@@ -47,9 +47,10 @@ final class StepContext {
     final List<TriggerSource> alsoHit = new ArrayList<>();
     /**
      * The surfaces whose hit the collision being resolved has reported: the bounces among a ball's contacts within one
-     * collision (a wedge takes about 180 / its angle of them) are one hit each for the sound and the score.
+     * collision (a wedge takes about 180 / its angle of them) are one hit each for the sound and the score. A list,
+     * as there are a few at most: adding to it makes nothing, where a set makes an entry.
      */
-    final Set<ContactRef> reported = new HashSet<>();
+    final List<ContactRef> reported = new ArrayList<>();
     /** Seconds of the tick simulated so far. */
     double elapsed;
     int collisions;

@@ -18,6 +18,9 @@ import physics.Vect;
  */
 final class StillSurfaces {
     private final StepContext step;
+    /** The surfaces a ball bounces among, and the normals of the contacts taking a bounce: lists kept from use to use. */
+    private final List<ContactRef> among = new ArrayList<>();
+    private final List<Vect> taking = new ArrayList<>();
 
     StillSurfaces(StepContext step) {
         this.step = step;
@@ -93,7 +96,8 @@ final class StillSurfaces {
             return false;
         }
         GizmoBase gizmo = surface.gizmo();
-        if (step.reported.add(ref)) {   // a bounce, not a rest: one hit per surface and collision
+        if (!step.reported.contains(ref)) {   // a bounce, not a rest: one hit per surface and collision
+            step.reported.add(ref);
             step.actions.recordEvent(new PlayEvent.Hit(surface.struck(), gizmo == null ? null : gizmo.kind(),
                     approach, ball.name(), ball.position()));
         }
@@ -114,7 +118,9 @@ final class StillSurfaces {
      * here, each one a hit that triggers as any hit does (stage 5 takes them after this collision's own).
      */
     private void bounceAmongContacts(Ball ball, ContactRef from) {
-        List<ContactRef> among = new ArrayList<>(ball.contacts());
+        List<ContactRef> among = this.among;
+        among.clear();
+        among.addAll(ball.contacts());
         if (!among.contains(from)) {
             among.add(from);   // met just now, not lain on: the ball may come straight back to it
         }
@@ -151,7 +157,8 @@ final class StillSurfaces {
      * where the ball rests against both. A bounce fast enough to leave a contact is a bounce like any other.
      */
     private boolean wedged(Ball ball, ContactRef surface, Vect normal, Vect bounced) {
-        List<Vect> taking = new ArrayList<>();
+        List<Vect> taking = this.taking;
+        taking.clear();
         List<ContactRef> refs = ball.contacts();
         for (int i = 0; i < refs.size(); i++) {
             ContactRef ref = refs.get(i);
