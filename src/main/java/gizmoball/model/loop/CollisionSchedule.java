@@ -2,7 +2,6 @@ package gizmoball.model.loop;
 
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.Collection;
 import java.util.List;
 
 /**
@@ -91,7 +90,7 @@ final class CollisionSchedule {
      * collision is forgotten. The books are kept from filing to filing, and from tick to tick, grown when the balls
      * outgrow them.
      */
-    void file(Collection<Ball> free, double elapsed) {
+    void file(List<Ball> free, double elapsed) {
         int n = free.size();
         grid.clear(n);
         filedAt = elapsed;
@@ -100,7 +99,8 @@ final class CollisionSchedule {
         if (bySlot.length < n) {
             grow(Math.max(n, 2 * bySlot.length));
         }
-        for (Ball ball : free) {
+        for (int i = 0; i < n; i++) {   // by index: an iterator would be made at every filing
+            Ball ball = free.get(i);
             bySlot[filed] = ball;
             ball.setSlot(filed++);
             double speed = CollisionDetector.speedBound(detector.motion(ball));
@@ -253,7 +253,8 @@ final class CollisionSchedule {
     private void findAwake(List<Ball> awake) {
         Arrays.fill(isAwake, false);
         awakeCount = 0;
-        for (Ball ball : awake) {
+        for (int i = 0; i < awake.size(); i++) {
+            Ball ball = awake.get(i);
             awakeIndex[ball.slot()] = awakeCount;
             awakeSlots[awakeCount++] = ball.slot();
             isAwake[ball.slot()] = true;
