@@ -35,7 +35,7 @@ final class Registry {
      */
     private List<MovingShape> movingShapes;
     private List<SwitchedCell> switchedCells;
-    /** The balls in board order, made again after a ball comes or goes (null until then): the loop walks it by index. */
+    /** The balls in board order, made again after a ball comes or goes (null till then): the loop walks it by index. */
     private List<Ball> ballList;
 
     /** Becomes a deep copy of source. */

@@ -18,12 +18,13 @@ final class CollisionSchedule {
     private final CollisionDetector detector;
     /**
      * Each free ball's known collisions, by its slot ({@link Ball#slot()}): whether it is known (not: ask again), and
-     * the collision (null: none), as it was found, its time counted from when it was asked.
+     * what the slot's ball meets then (null: none), as it was found; its time is {@code sceneAt} and {@code ballsAt}
+     * below. No {@link Collision} is made until {@link #next} gives the earliest.
      */
     private boolean[] sceneKnown = new boolean[0];
     private boolean[] ballsKnown = new boolean[0];
-    private Collision[] withScene = new Collision[0];
-    private Collision[] withBalls = new Collision[0];
+    private Contact[] withScene = new Contact[0];
+    private Contact[] withBalls = new Contact[0];
     /**
      * When each known collision comes and what it meets, side by side: {@code at} in seconds since the tick began
      * (positive infinity: none) and whether it is with a circle.
@@ -115,8 +116,8 @@ final class CollisionSchedule {
     private void grow(int n) {
         sceneKnown = new boolean[n];
         ballsKnown = new boolean[n];
-        withScene = new Collision[n];
-        withBalls = new Collision[n];
+        withScene = new Contact[n];
+        withBalls = new Contact[n];
         sceneAt = new double[n];
         sceneCircle = new boolean[n];
         ballsAt = new double[n];
@@ -185,8 +186,8 @@ final class CollisionSchedule {
         if (best.slot < 0) {
             return null;
         }
-        Collision found = best.withScene ? withScene[best.slot] : withBalls[best.slot];
-        return new Collision(best.time, found.ball(), found.contact());
+        Contact contact = best.withScene ? withScene[best.slot] : withBalls[best.slot];
+        return new Collision(best.time, bySlot[best.slot], contact);
     }
 
     /** The earliest {@code at} of the known collisions of the awake balls in places [first, end). */
@@ -278,8 +279,7 @@ final class CollisionSchedule {
             }
             Ball ball = bySlot[slot];
             if (!sceneKnown[slot]) {
-                Earliest earliest = detector.againstScene(ball, window);
-                knowWithScene(slot, elapsed, earliest.collision(), earliest.isCircle());
+                knowWithScene(slot, elapsed, detector.againstScene(ball, window));
             }
             if (!ballsKnown[slot]) {
                 askAgainstBalls(ball, elapsed, window);
@@ -296,12 +296,13 @@ final class CollisionSchedule {
         }
     }
 
-    /** Files the ball's earliest collision with the scene, found {@code elapsed} seconds into the tick (null: none). */
-    private void knowWithScene(int slot, double elapsed, Collision collision, boolean circle) {
+    /** Files the ball's earliest collision with the scene, found {@code elapsed} seconds into the tick. */
+    private void knowWithScene(int slot, double elapsed, Earliest found) {
+        Contact contact = found.contact();
         sceneKnown[slot] = true;
-        withScene[slot] = collision;
-        sceneAt[slot] = collision == null ? Double.POSITIVE_INFINITY : elapsed + collision.time();
-        sceneCircle[slot] = collision != null && circle;
+        withScene[slot] = contact;
+        sceneAt[slot] = contact == null ? Double.POSITIVE_INFINITY : elapsed + found.time();
+        sceneCircle[slot] = contact != null && found.isCircle();
         changedAt(slot);
     }
 
@@ -355,24 +356,24 @@ final class CollisionSchedule {
         unknownCount = filed;
     }
 
-    private static Ball partner(Collision collision) {
-        return ((Contact.OtherBall) collision.contact()).other();
+    private static Ball partner(Contact contact) {
+        return ((Contact.OtherBall) contact).other();
     }
 
     /**
-     * Files a ball's earliest known ball collision, found {@code elapsed} seconds into the tick (null: none), noting
-     * it with its partner.
+     * Files a ball's earliest known ball collision, found {@code elapsed} seconds into the tick: in {@code time}
+     * seconds it meets {@code contact} (null: none), noted with its partner.
      */
-    private void knowWithBalls(int slot, double elapsed, Collision collision, boolean circle) {
+    private void knowWithBalls(int slot, double elapsed, Contact contact, double time, boolean circle) {
         ballsKnown[slot] = true;
-        withBalls[slot] = collision;
-        ballsAt[slot] = collision == null ? Double.POSITIVE_INFINITY : elapsed + collision.time();
-        ballsCircle[slot] = collision != null && circle;
+        withBalls[slot] = contact;
+        ballsAt[slot] = contact == null ? Double.POSITIVE_INFINITY : elapsed + time;
+        ballsCircle[slot] = contact != null && circle;
         changedAt(slot);
-        if (collision == null) {
+        if (contact == null) {
             return;
         }
-        int partner = partner(collision).slot();
+        int partner = partner(contact).slot();
         int[] pointing = pointedAtBy[partner];
         if (pointing == null || pointing.length == pointedAtCount[partner]) {
             int grown = Math.max(4, 2 * pointedAtCount[partner]);
@@ -404,17 +405,17 @@ final class CollisionSchedule {
             }
             pair.reset(window);
             detector.againstBall(other, ball, window, pair);
-            Collision found = pair.collision();
+            Contact found = pair.contact();
             if (found == null) {
                 continue;
             }
-            earliest.offer(found.time(), ball, other.asContact(), true);
+            earliest.offer(pair.time(), ball, other.asContact(), true);
             int theirs = other.slot();
-            if (ballsKnown[theirs] && (withBalls[theirs] == null || elapsed + found.time() < ballsAt[theirs])) {
-                knowWithBalls(theirs, elapsed, found, true);
+            if (ballsKnown[theirs] && (withBalls[theirs] == null || elapsed + pair.time() < ballsAt[theirs])) {
+                knowWithBalls(theirs, elapsed, found, pair.time(), true);
             }
         }
-        knowWithBalls(ball.slot(), elapsed, earliest.collision(), earliest.isCircle());
+        knowWithBalls(ball.slot(), elapsed, earliest.contact(), earliest.time(), earliest.isCircle());
     }
 
 }

@@ -1,7 +1,9 @@
 package gizmoball.model.loop;
 
+import physics.Vect;
+
 /**
- * Vector arithmetic on components, for the loop's hot paths that would otherwise make a {@link physics.Vect} for
+ * Vector arithmetic on components, for the loop's hot paths that would otherwise make a {@link Vect} for
  * each step of a sum: each method gives the very doubles the {@code Vect} expression it names would hold.
  */
 final class Components {
@@ -17,5 +19,11 @@ final class Components {
             return Math.abs(x);
         }
         return Math.hypot(x, y);
+    }
+
+    /** {@code new Vect(x, y).unitSize()}: the unit vector along (x, y), and {@code Vect.ZERO} for (0, 0). */
+    static Vect unit(double x, double y) {
+        double length = length(x, y);
+        return length == 0 ? Vect.ZERO : new Vect(x / length, y / length);
     }
 }

@@ -183,9 +183,6 @@ sealed interface Contact {
             footX = p1.x() + (dirX * along + 0.0) + 0.0;
             footY = p1.y() + (dirY * along + 0.0) + 0.0;
         }
-        double awayX = centre.x() - footX + 0.0;
-        double awayY = centre.y() - footY + 0.0;
-        double length = Components.length(awayX, awayY);
-        return length == 0 ? Vect.ZERO : new Vect(awayX / length, awayY / length);
+        return Components.unit(centre.x() - footX + 0.0, centre.y() - footY + 0.0);
     }
 }

@@ -97,6 +97,8 @@ final class ContactCluster {
     }
     /** L: how near counts as touching for this cluster. */
     private double touching;
+    /** Where a ball's centre falls on a face, found again for each face in reach. */
+    private final Foot foot = new Foot();
     /** {@link LoopSettings#leadTime()}. */
     private double leadTime;
 
@@ -125,8 +127,10 @@ final class ContactCluster {
             Ball ball = cluster.balls.get(i);
             cluster.surfaces(view, i, ball, motion);
             double within = 2 * Arena.BALL_RADIUS + cluster.touching;
-            for (Ball other : view.balls()) {
-                if (farApart(ball.position(), other.position(), within)
+            List<Ball> all = view.balls();
+            for (int k = 0; k < all.size(); k++) {
+                Ball other = all.get(k);
+                if (farApart(ball, other, within)
                         || other == ball || other.isCaptured() || view.passingThrough(ball, other)
                         || gap(ball.position(), other.position(), 2 * Arena.BALL_RADIUS) > cluster.touching) {
                     continue;
@@ -193,7 +197,7 @@ final class ContactCluster {
     private void surfaces(LoopView view, int index, Ball ball, Function<Ball, Vect> motion) {
         Vect p = ball.position();
         for (int side = 0; side < Arena.OUTER_WALLS.size(); side++) {
-            still(index, p, Arena.OUTER_WALLS.get(side), ContactRef.Wall.of(side), null);
+            still(index, p, Arena.OUTER_WALLS.get(side), side, null);
         }
         double reach = Arena.BALL_RADIUS + touching;
         for (GizmoBase gizmo : view.index().within(p.x() - reach, p.y() - reach, p.x() + reach, p.y() + reach)) {
@@ -207,7 +211,7 @@ final class ContactCluster {
             }
             for (int i = 0; i < shape.segments().size(); i++) {
                 if (Passages.through(view, ball, gizmo, i) == null) {   // an open mouth with room passes the ball on
-                    still(index, p, shape.segments().get(i), new ContactRef.Part(gizmo.name(), false, i), gizmo);
+                    still(index, p, shape.segments().get(i), i, gizmo);
                 }
             }
             for (int i = 0; i < shape.circles().size(); i++) {
@@ -229,10 +233,21 @@ final class ContactCluster {
         }
     }
 
-    private void still(int index, Vect p, LineSegment segment, ContactRef ref, GizmoBase gizmo) {
-        Vect foot = Geometry.perpendicularPoint(segment, p);
-        if (foot != null && gap(p, foot, Arena.BALL_RADIUS) <= touching) {
-            rows.add(new Row(index, new Other.Still(ref, gizmo), p.minus(foot).unitSize(), 0,
+    /**
+     * Segment {@code part} of the gizmo (of the outer walls where it is null) as a row of the ball at {@code p}, if it
+     * touches: the foot, the gap and the normal reckoned on the components (each face in reach is asked).
+     */
+    private void still(int index, Vect p, LineSegment segment, int part, GizmoBase gizmo) {
+        if (!foot.on(segment, p.x(), p.y())) {
+            return;
+        }
+        double awayX = p.x() - foot.x + 0.0;   // p.minus(foot)
+        double awayY = p.y() - foot.y + 0.0;
+        double dx = p.x() - foot.x;   // as p.distanceSquared(foot)
+        double dy = p.y() - foot.y;
+        if (Math.sqrt(dx * dx + dy * dy) - Arena.BALL_RADIUS <= touching) {
+            ContactRef ref = gizmo == null ? ContactRef.Wall.of(part) : new ContactRef.Part(gizmo.name(), false, part);
+            rows.add(new Row(index, new Other.Still(ref, gizmo), Components.unit(awayX, awayY), 0,
                     gizmo == null ? 1.0 : gizmo.reflectionCoefficient()));
         }
     }
@@ -292,8 +307,9 @@ final class ContactCluster {
     }
 
     /** Whether p and q lie farther apart than {@code distance} along x or y: a test cheaper than {@link #gap}. */
-    private static boolean farApart(Vect p, Vect q, double distance) {
-        return Math.abs(p.x() - q.x()) > distance || Math.abs(p.y() - q.y()) > distance;
+    /** On the centres' coordinates: every ball of the board is looked at, and most are far, so no vector is made. */
+    private static boolean farApart(Ball a, Ball b, double distance) {
+        return Math.abs(a.x() - b.x()) > distance || Math.abs(a.y() - b.y()) > distance;
     }
 
     private static double gap(Vect p, Vect q, double touch) {

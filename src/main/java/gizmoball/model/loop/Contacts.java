@@ -30,6 +30,8 @@ final class Contacts {
     private final Vect gravity;
     /** Which of a ball's contacts still hold, by place ({@link #keepHolding}), kept from ball to ball. */
     private boolean[] holds = new boolean[4];
+    /** Where a ball's centre falls on a face, found again for each face looked at. */
+    private final Foot foot = new Foot();
     /** The list {@link #normals(Ball)} fills. */
     private final List<Vect> queried = new ArrayList<>();
 
@@ -359,28 +361,12 @@ final class Contacts {
         return false;
     }
 
-    /**
-     * The contact with the segment at the foot of the perpendicular from the ball's centre; none past its ends. The
-     * foot is {@code Geometry.perpendicularPoint}'s, reckoned on the components (the same doubles, in the same order)
-     * so that a ball lying on a face makes no vector for it tick after tick.
-     */
+    /** The contact with the segment at the foot of the perpendicular from the ball's centre; none past its ends. */
     private Vect onSegment(Ball ball, LineSegment segment, Look look) {
-        Vect p1 = segment.p1();
-        Vect p2 = segment.p2();
-        double dirX = p2.x() - p1.x() + 0.0;
-        double dirY = p2.y() - p1.y() + 0.0;
-        if (dirX == 0 && dirY == 0) {
-            return touching(ball, p1.x(), p1.y(), 0, look);
-        }
-        double px = ball.x();
-        double py = ball.y();
-        double fromP1 = (px - p1.x() + 0.0) * dirX + (py - p1.y() + 0.0) * dirY;
-        double fromP2 = (p2.x() - px + 0.0) * dirX + (p2.y() - py + 0.0) * dirY;
-        if (fromP1 < 0 || fromP2 < 0) {
+        if (!foot.on(segment, ball.x(), ball.y())) {
             return null;   // past the end: the corner circle or the next face takes over
         }
-        double along = fromP1 / (dirX * dirX + dirY * dirY);
-        return touching(ball, p1.x() + (dirX * along + 0.0) + 0.0, p1.y() + (dirY * along + 0.0) + 0.0, 0, look);
+        return touching(ball, foot.x, foot.y, 0, look);
     }
 
     private Vect onCircle(Ball ball, Circle circle, Look look) {

@@ -50,6 +50,16 @@ final class Earliest {
         return ball == null ? limit : Math.min(limit, time + Tolerances.TIME_TIE);
     }
 
+    /** What the earliest offer meets, or null: none (read with {@link #time()}, its {@link Collision} is not made). */
+    Contact contact() {
+        return ball == null ? null : contact;
+    }
+
+    /** Seconds until the earliest offer, when there is one ({@link #contact()} not null). */
+    double time() {
+        return time;
+    }
+
     /** The earliest offer, or null. */
     Collision collision() {
         if (collision == null && ball != null) {

@@ -18,7 +18,7 @@ import physics.Vect;
  */
 final class StillSurfaces {
     private final StepContext step;
-    /** The surfaces a ball bounces among, and the normals of the contacts taking a bounce: lists kept from use to use. */
+    /** The surfaces a ball bounces among, the normals of the contacts taking a bounce: lists kept from use to use. */
     private final List<ContactRef> among = new ArrayList<>();
     private final List<Vect> taking = new ArrayList<>();
 
