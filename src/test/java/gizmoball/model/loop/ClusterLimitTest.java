@@ -19,16 +19,23 @@ import physics.Vect;
 class ClusterLimitTest {
     private static final double R = Board.BALL_RADIUS;
 
-    /** Three balls in a column on the floor, touching, the top one moving at {@code vy}; the cluster holds two. */
+    /**
+     * A column of touching balls on the floor, one more than a cluster holds, the top one moving at {@code vy}: the
+     * cluster of the bottom ball holds all but that one.
+     */
     private static ContactCluster columnWithTopBeyond(double vy) {
+        LoopSettings settings = LoopSettings.STANDARD;
+        int below = settings.clusterBalls();
         Board board = new Board();
         board.setFriction(0, 0);
-        board.addBall("A", 10, Board.SIZE - R, 0, 0);
-        board.addBall("B", 10, Board.SIZE - 3 * R, 0, 0);
-        board.addBall("C", 10, Board.SIZE - 5 * R, 0, vy);
+        for (int k = 0; k <= below; k++) {
+            board.addBall("B" + k, 10, Board.SIZE - R - 2 * R * k, 0, k == below ? vy : 0);
+        }
         LoopView view = LoopViews.of(board);
-        return ContactCluster.around(view, List.of(view.ball("A")), Ball::velocity, ball -> true,
-                Tolerances.PLACEMENT, 2);
+        ContactCluster cluster = ContactCluster.around(view, List.of(view.ball("B0")), Ball::velocity, ball -> true,
+                Tolerances.PLACEMENT, settings);
+        assertThat(cluster.balls()).hasSize(below).extracting(Ball::name).doesNotContain("B" + below);
+        return cluster;
     }
 
     private static ContactCluster.Row beyondRow(ContactCluster cluster) {
@@ -40,11 +47,10 @@ class ClusterLimitTest {
     void aBallBeyondThatPressesInIsStill() {
         ContactCluster cluster = columnWithTopBeyond(5);
 
-        assertThat(cluster.balls()).extracting(Ball::name).containsExactly("A", "B");
         ContactCluster.Row row = beyondRow(cluster);
         assertThat(row.normal()).isEqualTo(new Vect(0, 1));
         assertThat(row.surfaceSpeed()).isZero();
-        // The floor, A on it and C still above B: the balls at rest close on none of the rows.
+        // The floor, the column on it and the ball beyond still on top: the balls at rest close on no row.
         assertThat(cluster.rows()).allSatisfy(each -> assertThat(each.surfaceSpeed()).isLessThanOrEqualTo(0));
     }
 
