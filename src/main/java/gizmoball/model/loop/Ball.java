@@ -187,6 +187,12 @@ public final class Ball implements BallView {
     }
 
     private final EnergyMarks energyMarks = new EnergyMarks();
+    private final KnownNormals knownNormals = new KnownNormals();
+
+    /** The normals its contacts last gave it, for the contact queries ({@link KnownNormals}). */
+    KnownNormals knownNormals() {
+        return knownNormals;
+    }
 
     EnergyMarks energyMarks() {
         return energyMarks;

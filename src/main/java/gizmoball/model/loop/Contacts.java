@@ -391,8 +391,13 @@ final class Contacts {
         if (distance == 0 || distance - touch > (look == Look.HOLD ? holdGap : Tolerances.CONTACT)) {
             return null;
         }
-        double inverse = 1 / distance;
-        Vect normal = new Vect(offsetX * inverse, offsetY * inverse);
+        KnownNormals known = ball.knownNormals();
+        Vect normal = known.find(ball.x(), ball.y(), fromX, fromY);
+        if (normal == null) {
+            double inverse = 1 / distance;
+            normal = new Vect(offsetX * inverse, offsetY * inverse);
+            known.keep(ball.x(), ball.y(), fromX, fromY, normal);
+        }
         if (look == Look.QUERY) {
             return normal;
         }
