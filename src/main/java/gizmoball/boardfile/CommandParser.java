@@ -168,7 +168,6 @@ final class CommandParser {
                     + " (" + word.usage() + "), found " + args.size());
         }
         return switch (word) {
-            case ABSORBER -> absorber(args, notes);
             case BALL -> new Command.AddBall(args.get(0), ballCoordinate("x", args.get(1)),
                     ballCoordinate("y", args.get(2)), number("vx", args.get(3)), number("vy", args.get(4)));
             case ROTATE -> new Command.Rotate(args.get(0));
@@ -198,14 +197,15 @@ final class CommandParser {
             case TILT -> new GameLine.TiltLine(tilt(args));
             case BALL_SAVE -> new GameLine.BallSave(number("ball save seconds", args.get(0)));
             case COLOUR -> throw new IllegalStateException("colours are read by colour(), in any spelling");
-            // Every other word adds a gizmo of its kind on one cell (CommandWord.of says which: a word that adds none
-            // throws there).
-            default -> new Command.AddGizmo(word.kind(), args.get(0), cell("x", args.get(1)), cell("y", args.get(2)));
+            // Every other word adds a gizmo of its kind (CommandWord.of says which: a word that adds none throws there),
+            // on one cell or, for a kind sized by its corners, over them.
+            default -> word.addsSizedByCorners() ? sizedByCorners(args, notes)
+                    : new Command.AddGizmo(word.kind(), args.get(0), cell("x", args.get(1)), cell("y", args.get(2)));
         };
     }
 
-    /** The corners in any order: each axis from its smaller to its larger number. */
-    private static Command absorber(List<String> args, List<String> notes) throws Refusal {
+    /** A gizmo sized by its corners (an absorber), in any order: each axis from its smaller to its larger number. */
+    private static Command sizedByCorners(List<String> args, List<String> notes) throws Refusal {
         int x1 = cell("x1", args.get(1));
         int y1 = cell("y1", args.get(2));
         int x2 = cell("x2", args.get(3));
@@ -267,12 +267,12 @@ final class CommandParser {
     /** The MIT 6.170 3-D variant: corners and positions with a z, rotations about two axes, a gravity vector. */
     private static void refuseMit3d(CommandWord word, List<String> args) throws Refusal {
         String form = switch (word) {
-            case ABSORBER -> args.size() == 7 && allNumbers(args.subList(1, 7)) ? "an absorber with x y z corners" : null;
             case BALL -> args.size() == 8 && allNumbers(args.subList(1, 8)) ? "a ball with x y z and its velocity" : null;
             case ROTATE -> args.size() == 2 && AXES.matcher(args.get(1)).matches() ? "a rotation in a plane of axes"
                     : null;
             case GRAVITY -> args.size() == 3 && allNumbers(args) ? "a gravity vector" : null;
-            default -> null;
+            default -> word.addsSizedByCorners() && args.size() == 7 && allNumbers(args.subList(1, 7))
+                    ? word.kind().withArticle() + " with x y z corners" : null;
         };
         if (form != null) {
             throw mit3d(form);

@@ -141,6 +141,14 @@ enum CommandWord {
                 .orElseThrow(() -> new IllegalStateException(spelling + " adds no gizmo"));
     }
 
+    /**
+     * Whether the command adds a gizmo of a kind {@link GizmoKind#sizedByCorners} (an absorber): its arguments are a
+     * name and two corners.
+     */
+    boolean addsSizedByCorners() {
+        return Arrays.stream(GizmoKind.values()).anyMatch(kind -> kind.sizedByCorners() && of(kind) == this);
+    }
+
     /** The word without {@link #OURS}. */
     String spelling() {
         return spelling;

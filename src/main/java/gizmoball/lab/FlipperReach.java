@@ -1,11 +1,9 @@
 package gizmoball.lab;
 
 import gizmoball.model.Board;
-import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
-import gizmoball.model.gizmo.GizmoKind;
+import gizmoball.model.gizmo.Sweep;
 import java.util.Optional;
-import physics.Vect;
 
 /**
  * The area a flipper sweeps on its way up, as a player judges it: the quarter disc about the pivot between the bar
@@ -25,37 +23,19 @@ final class FlipperReach {
     private final double upY;
     private final double reachSquared;
 
-    /** The reach of the gizmo if it is a flipper; empty for any other. */
+    /** The reach of the gizmo if a key swings its bar (a flipper); empty for any other. */
     static Optional<FlipperReach> of(Gizmo gizmo) {
-        return gizmo instanceof FlipperView flipper ? Optional.of(new FlipperReach(flipper)) : Optional.empty();
+        return gizmo.sweep().map(FlipperReach::new);
     }
 
-    private FlipperReach(FlipperView flipper) {
-        Vect pivot = flipper.pivot();
-        pivotX = pivot.x();
-        pivotY = pivot.y();
-        // At rest a flipper of rotation 0 hangs straight down; each quarter turn turns it clockwise on the screen
-        // (y grows downward, so clockwise takes (x, y) to (-y, x)).
-        double x = 0;
-        double y = 1;
-        for (int turn = 0; turn < flipper.rotation(); turn++) {
-            double turned = -y;
-            y = x;
-            x = turned;
-        }
-        restX = x;
-        restY = y;
-        // Up is a quarter turn from rest: anticlockwise on the screen for a left flipper (down to the right), clockwise
-        // for a right one (down to the left).
-        if (flipper.kind() == GizmoKind.LEFT_FLIPPER) {
-            upX = y;
-            upY = -x;
-        } else {
-            upX = -y;
-            upY = x;
-        }
-        double length = flipper.tip().minus(pivot).length();
-        double reach = length + flipper.radius() + Board.BALL_RADIUS;
+    private FlipperReach(Sweep sweep) {
+        pivotX = sweep.pivot().x();
+        pivotY = sweep.pivot().y();
+        restX = sweep.rest().x();
+        restY = sweep.rest().y();
+        upX = sweep.up().x();
+        upY = sweep.up().y();
+        double reach = sweep.reach() + Board.BALL_RADIUS;
         reachSquared = reach * reach;
     }
 

@@ -1,6 +1,7 @@
 package gizmoball.model;
 
 import gizmoball.model.gizmo.Absorber;
+import gizmoball.model.gizmo.BallHolder;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.GizmoKind;
@@ -149,10 +150,9 @@ final class Edits {
         candidate.moveTo(x, y);
         refuseIfPresent(rules.problemFor(candidate, gizmo));
         registry.move(target, x, y);
-        if (target instanceof Absorber absorber) {
-            absorber.held().forEach(held -> registry.ball(held)
-                    .capture(absorber.holdingPosition(Arena.BALL_RADIUS)));
-            play.captureFreeBallsIn(absorber);
+        if (target instanceof BallHolder holder) {
+            holder.held().forEach(held -> registry.ball(held).capture(holder.holdingPosition(Arena.BALL_RADIUS)));
+            play.captureFreeBallsIn(target);
         }
     }
 
@@ -181,7 +181,7 @@ final class Edits {
         int cy = (int) dy;
         // A ball an absorber of the group holds goes with it; so do the balls any moved absorber holds.
         Set<String> heldInGroup = new HashSet<>();
-        gizmos.stream().filter(g -> g instanceof Absorber).forEach(a -> heldInGroup.addAll(((Absorber) a).held()));
+        gizmos.forEach(gizmo -> heldInGroup.addAll(gizmo.held()));
         List<Ball> loose = balls.stream().filter(b -> !heldInGroup.contains(b.name())).toList();
         Map<Ball, GizmoBase> captors = new HashMap<>();
         // The group moves as one: checked with its own gizmos out of the grid, so that none is in another's way.
@@ -218,13 +218,12 @@ final class Edits {
             }
         }
         for (GizmoBase gizmo : gizmos) {
-            if (gizmo instanceof Absorber absorber) {
-                absorber.held().forEach(held -> registry.ball(held)
-                        .capture(absorber.holdingPosition(Arena.BALL_RADIUS)));
+            if (gizmo instanceof BallHolder holder) {
+                holder.held().forEach(held -> registry.ball(held).capture(holder.holdingPosition(Arena.BALL_RADIUS)));
             }
         }
         captors.forEach(play::take);
-        gizmos.stream().filter(g -> g instanceof Absorber).forEach(a -> play.captureFreeBallsIn((Absorber) a));
+        gizmos.stream().filter(g -> g instanceof BallHolder).forEach(play::captureFreeBallsIn);
     }
 
     void resizeAbsorber(String name, int x1, int y1, int x2, int y2) {

@@ -2,7 +2,8 @@ package gizmoball.model;
 
 import gizmoball.model.game.GameRules;
 import gizmoball.model.game.Playfield;
-import gizmoball.model.gizmo.Absorber;
+import gizmoball.model.gizmo.BallHolder;
+import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Ball;
 
@@ -51,7 +52,7 @@ final class GameField implements Playfield {
     @Override
     public boolean isLauncher(String absorber) {
         return settings.rules().isDrain(absorber)
-                || registry.gizmo(absorber) instanceof Absorber a && a.plunger().isPresent();
+                || registry.gizmo(absorber) instanceof BallHolder holder && holder.plunger().isPresent();
     }
 
     @Override
@@ -61,16 +62,17 @@ final class GameField implements Playfield {
 
     @Override
     public boolean serve(Optional<String> drained) {
-        Optional<Absorber> holder = drained.flatMap(ball -> absorbers().filter(a -> a.held().contains(ball))
+        Optional<GizmoBase> holder = drained.flatMap(ball -> holders().filter(h -> h.held().contains(ball))
                 .findFirst());
-        Optional<Absorber> launcher = absorbers().filter(a -> a.plunger().isPresent()).findFirst()
+        Optional<GizmoBase> launcher = holders().filter(h -> h.plunger().isPresent()).findFirst()
                 .or(() -> holder)
-                .or(() -> absorbers().filter(a -> settings.rules().isDrain(a.name())).findFirst());
+                .or(() -> holders().filter(h -> settings.rules().isDrain(h.name())).findFirst());
         if (launcher.isEmpty()) {
             return false;
         }
         Ball ball = drained.map(registry::ball).orElseGet(() -> {
-            Ball fresh = new Ball(registry.freshBallName(), launcher.get().holdingPosition(Arena.BALL_RADIUS), Vect.ZERO);
+            Vect holding = ((BallHolder) launcher.get()).holdingPosition(Arena.BALL_RADIUS);
+            Ball fresh = new Ball(registry.freshBallName(), holding, Vect.ZERO);
             registry.add(fresh);
             return fresh;
         });
@@ -83,7 +85,8 @@ final class GameField implements Playfield {
         return true;
     }
 
-    private Stream<Absorber> absorbers() {
-        return registry.gizmos().stream().filter(g -> g instanceof Absorber).map(g -> (Absorber) g);
+    /** The gizmos that hold balls (absorbers), in board order: where a served ball can wait to be launched. */
+    private Stream<GizmoBase> holders() {
+        return registry.gizmos().stream().filter(g -> g instanceof BallHolder);
     }
 }

@@ -1,7 +1,7 @@
 package gizmoball.model;
 
-import gizmoball.model.gizmo.Absorber;
 import gizmoball.model.gizmo.Action;
+import gizmoball.model.gizmo.BallHolder;
 import gizmoball.model.gizmo.BallSource;
 import gizmoball.model.gizmo.BallTaking;
 import gizmoball.model.gizmo.GizmoBase;
@@ -67,10 +67,10 @@ final class Play implements Surroundings {
                 }
                 Action action = binding.order().action().orElse(binding.edge().actionOf(gizmo.kind()));
                 if (edge == KeyEdge.DOWN && action == Action.FIRE && binding.order().delay() == 0
-                        && gizmo instanceof Absorber absorber && absorber.plunger().isPresent()) {
-                    if (absorber.pullingKey().isEmpty()) {
-                        absorber.markTriggered(now);
-                        absorber.startPull(keyCode);
+                        && gizmo instanceof BallHolder holder && holder.plunger().isPresent()) {
+                    if (holder.pullingKey().isEmpty()) {
+                        holder.markTriggered(now);
+                        holder.startPull(keyCode);
                     }
                 } else {
                     carryOut(gizmo, action, binding.order().delay(), now);
@@ -82,11 +82,11 @@ final class Play implements Surroundings {
     /** The key went up: every plunger it pulls fires, at the speed its pull has reached. */
     private void releasePlungers(int keyCode, double now) {
         for (GizmoBase gizmo : registry.gizmos()) {
-            if (gizmo instanceof Absorber absorber && absorber.pullingKey().equals(OptionalInt.of(keyCode))) {
-                double speed = absorber.releaseSpeed();
-                absorber.letGoOfPull();
-                absorber.markTriggered(now);
-                launch(absorber, speed);
+            if (gizmo instanceof BallHolder holder && holder.pullingKey().equals(OptionalInt.of(keyCode))) {
+                double speed = holder.releaseSpeed();
+                holder.letGoOfPull();
+                holder.markTriggered(now);
+                launch(holder, speed);
             }
         }
     }
@@ -94,8 +94,8 @@ final class Play implements Surroundings {
     /** A tick of {@code dt} seconds ran: every plunger being pulled was held that much longer. */
     void holdPulls(double dt) {
         for (GizmoBase gizmo : registry.gizmos()) {
-            if (gizmo instanceof Absorber absorber && absorber.pullingKey().isPresent()) {
-                absorber.heldFor(dt);
+            if (gizmo instanceof BallHolder holder && holder.pullingKey().isPresent()) {
+                holder.heldFor(dt);
             }
         }
     }
@@ -172,26 +172,26 @@ final class Play implements Surroundings {
      * few microseconds apart, thousands of times a tick.
      */
     @Override
-    public void fire(Absorber absorber) {
-        launch(absorber, absorber.plunger().map(Plunger::fullSpeed).orElse(Board.ABSORBER_LAUNCH_SPEED));
+    public void fire(BallHolder holder) {
+        launch(holder, holder.plunger().map(Plunger::fullSpeed).orElse(Board.ABSORBER_LAUNCH_SPEED));
     }
 
     /** Fires the longest-held ball straight up at {@code speed}, as {@link #fire} says. */
-    private void launch(Absorber absorber, double speed) {
-        List<String> held = absorber.held();
+    private void launch(BallHolder holder, double speed) {
+        List<String> held = holder.held();
         if (held.isEmpty()) {
             return;
         }
         String name = held.get(0);
-        Vect launch = absorber.launchPosition(Arena.BALL_RADIUS);
-        if (fired.contains(absorber.name())) {
+        Vect launch = holder.launchPosition(Arena.BALL_RADIUS);
+        if (fired.contains(holder.name())) {
             return;   // fired already in this tick: what came straight back stays held until the next
         }
         if (rules.freeForBall(launch)) {
-            fired.add(absorber.name());
-            absorber.letGo(name);
+            fired.add(holder.name());
+            holder.letGo(name);
             registry.ball(name).release(launch, new Vect(0, -speed));
-            events.record(new PlayEvent.Fired(absorber.name()));
+            events.record(new PlayEvent.Fired(holder.name()));
             double margin = 4 * Arena.BALL_RADIUS;
             sleepers.wakeWithin(launch.x() - margin, launch.y() - margin, launch.x() + margin, launch.y() + margin);
         }
@@ -242,11 +242,11 @@ final class Play implements Surroundings {
         endOfTick.switchCell(cell, solid);
     }
 
-    /** An absorber placed or moved captures the free balls it now covers. */
-    void captureFreeBallsIn(Absorber absorber) {
+    /** A gizmo that holds balls (an absorber), placed or moved, captures the free balls it now covers. */
+    void captureFreeBallsIn(GizmoBase holder) {
         for (Ball ball : registry.balls()) {
-            if (!ball.isCaptured() && Overlaps.ballInGizmo(absorber, ball.position())) {
-                take(ball, absorber);
+            if (!ball.isCaptured() && Overlaps.ballInGizmo(holder, ball.position())) {
+                take(ball, holder);
             }
         }
     }

@@ -265,12 +265,10 @@ enum GizmoArt {
         return new Bar(new Line2D.Double(f.pivot().toPoint2D(), between.tip(f).toPoint2D()), f.radius(), f.pivot());
     }
 
-    /** From one end's centre to the other's, at the angle drawn between two ticks. */
+    /** From one end's centre to the other's, across the pivot, at the angle drawn between two ticks. */
     private static Bar spinnerBar(Gizmo gizmo, Interpolation between) {
         SpinnerView s = (SpinnerView) gizmo;
-        double angle = between.angle(s);
-        double arm = s.ends().get(1).minus(s.pivot()).length();
-        Vect along = new Vect(arm * Math.cos(angle), arm * Math.sin(angle));
+        Vect along = between.tip(s).minus(s.pivot());
         return new Bar(new Line2D.Double(s.pivot().minus(along).toPoint2D(), s.pivot().plus(along).toPoint2D()),
                 s.radius(), s.pivot());
     }

@@ -1,21 +1,20 @@
 package gizmoball.view;
 
 import gizmoball.model.Board;
-import gizmoball.model.gizmo.FlipperView;
+import gizmoball.model.gizmo.BarView;
 import gizmoball.model.gizmo.Gizmo;
-import gizmoball.model.gizmo.SpinnerView;
 import gizmoball.model.loop.BallView;
 import java.util.HashMap;
 import java.util.Map;
 import physics.Vect;
 
 /**
- * Where the board view draws balls and flippers between two ticks, so that slow motion (a tick every 1/8 s at
+ * Where the board view draws balls and turning bars between two ticks, so that slow motion (a tick every 1/8 s at
  * 1/8x) moves smoothly at the display's rate: the drawing runs one tick behind the model and goes from the board
  * at the tick before the last to the board at the last, as far as the real time since has come towards the next
  * tick ({@link #setFraction}). Only the drawing: the model, its ticks and replays are untouched.
  * <p>
- * A free ball moves in a straight line between ticks; a flipper or a spinner turns about its pivot. What was not there at the
+ * A free ball moves in a straight line between ticks; a bar (a flipper's, a spinner's) turns about its pivot. What was not there at the
  * tick before (a ball placed, fired from an absorber, caught by one) and any change other than a tick (an edit, a
  * load, Reset) are drawn where they are.
  */
@@ -24,15 +23,12 @@ final class Interpolation {
     private Map<String, Vect> ballsNow = Map.of();
     private Map<String, Vect> tipsBefore = Map.of();
     private Map<String, Vect> tipsNow = Map.of();
-    private Map<String, Double> anglesBefore = Map.of();
-    private Map<String, Double> anglesNow = Map.of();
     private double fraction = 1;
 
     /** The board ticked: the last tick's positions become the ones drawn from. */
     void ticked(Board board) {
         ballsBefore = ballsNow;
         tipsBefore = tipsNow;
-        anglesBefore = anglesNow;
         take(board);
     }
 
@@ -41,7 +37,6 @@ final class Interpolation {
         take(board);
         ballsBefore = ballsNow;
         tipsBefore = tipsNow;
-        anglesBefore = anglesNow;
     }
 
     /** How far real time has come from the last tick towards the next, 0..1 (1 when the game is stopped). */
@@ -63,30 +58,20 @@ final class Interpolation {
         return before.plus(now.minus(before).times(fraction));
     }
 
-    /** Where to draw the flipper's tip: turned about its pivot from its angle at the tick before. */
-    Vect tip(FlipperView flipper) {
-        Vect before = tipsBefore.get(flipper.name());
-        Vect now = flipper.tip();
-        if (before == null || !now.equals(tipsNow.get(flipper.name()))) {
+    /** Where to draw the bar's tip: turned the short way about its pivot from its angle at the tick before. */
+    Vect tip(BarView bar) {
+        Vect before = tipsBefore.get(bar.name());
+        Vect now = bar.tip();
+        if (before == null || !now.equals(tipsNow.get(bar.name()))) {
             return now;
         }
-        Vect pivot = flipper.pivot();
+        Vect pivot = bar.pivot();
         double from = StrictMath.atan2(before.y() - pivot.y(), before.x() - pivot.x());
         double to = StrictMath.atan2(now.y() - pivot.y(), now.x() - pivot.x());
         double turn = StrictMath.IEEEremainder(to - from, 2 * Math.PI);
         double angle = from + turn * fraction;
         double length = now.minus(pivot).length();
         return pivot.plus(new Vect(length * StrictMath.cos(angle), length * StrictMath.sin(angle)));
-    }
-
-    /** At what angle to draw the spinner's bar: turned the short way from its angle at the tick before. */
-    double angle(SpinnerView spinner) {
-        Double before = anglesBefore.get(spinner.name());
-        double now = spinner.angle();
-        if (before == null || !Double.valueOf(now).equals(anglesNow.get(spinner.name()))) {
-            return now;
-        }
-        return before + StrictMath.IEEEremainder(now - before, 2 * Math.PI) * fraction;
     }
 
     private void take(Board board) {
@@ -97,16 +82,12 @@ final class Interpolation {
             }
         }
         Map<String, Vect> tips = new HashMap<>();
-        Map<String, Double> angles = new HashMap<>();
         for (Gizmo gizmo : board.gizmos()) {
-            if (gizmo instanceof FlipperView flipper) {
-                tips.put(flipper.name(), flipper.tip());
-            } else if (gizmo instanceof SpinnerView spinner) {
-                angles.put(spinner.name(), spinner.angle());
+            if (gizmo instanceof BarView bar) {
+                tips.put(bar.name(), bar.tip());
             }
         }
         ballsNow = balls;
         tipsNow = tips;
-        anglesNow = angles;
     }
 }

@@ -32,12 +32,6 @@ class FilesPerKindTest {
     private static final Path GIZMO_PACKAGE = MAIN.resolve(Path.of("model", "gizmo"));
     /** The most files of the game that may name one kind. */
     private static final int MOST = 12;
-    /**
-     * The kinds still named by more files than {@link #MOST}, each at most as many as now (issue 38 brings them down;
-     * a count here only falls).
-     */
-    private static final Map<GizmoKind, Integer> STILL_OVER = Map.of(GizmoKind.ABSORBER, 16,
-            GizmoKind.LEFT_FLIPPER, 14, GizmoKind.RIGHT_FLIPPER, 13);
 
     @Test
     void everyKindIsNamedByFewFilesOfTheGame() {
@@ -49,9 +43,8 @@ class FilesPerKindTest {
             List<String> naming = code.entrySet().stream().filter(e -> names.matcher(e.getValue()).find())
                     .map(e -> MAIN.relativize(e.getKey()).toString().replace('\\', '/')).sorted().toList();
             assertThat(naming).as("files naming %s (not vacuous: its own class at least)", kind).isNotEmpty();
-            int most = STILL_OVER.getOrDefault(kind, MOST);
-            if (naming.size() > most) {
-                over.add(kind + " is named by " + naming.size() + " files, at most " + most + ": " + naming);
+            if (naming.size() > MOST) {
+                over.add(kind + " is named by " + naming.size() + " files, at most " + MOST + ": " + naming);
             }
         }
         assertThat(over).isEmpty();

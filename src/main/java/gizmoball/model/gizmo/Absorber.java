@@ -14,7 +14,7 @@ import physics.Vect;
  * corner and, when triggered, fires the longest-held one straight up. A board can make it a {@link Plunger}: the key
  * that fires it then pulls it while held, and its release fires.
  */
-public final class Absorber extends PolygonGizmo implements AbsorberView {
+public final class Absorber extends PolygonGizmo implements AbsorberView, BallHolder {
     private final int width;
     private final int height;
     /** Names of the balls held, in capture order (names keep deep copies of the board simple). */
@@ -82,6 +82,7 @@ public final class Absorber extends PolygonGizmo implements AbsorberView {
      * Where the centre of a captured ball of radius {@code ballRadius} sits: the bottom-right corner, ball inside.
      * For the board and its loop, not for views.
      */
+    @Override
     public Vect holdingPosition(double ballRadius) {
         return new Vect(x() + width - ballRadius, y() + height - ballRadius);
     }
@@ -90,6 +91,7 @@ public final class Absorber extends PolygonGizmo implements AbsorberView {
      * Where a fired ball of radius {@code ballRadius} starts: right above the top edge, touching it, in the holding
      * column. For the board and its loop, not for views.
      */
+    @Override
     public Vect launchPosition(double ballRadius) {
         return new Vect(x() + width - ballRadius, y() - ballRadius);
     }
@@ -144,17 +146,20 @@ public final class Absorber extends PolygonGizmo implements AbsorberView {
     }
 
     /** The key pulling it, if one is. For the board, not for views. */
+    @Override
     public OptionalInt pullingKey() {
         return pullingKey;
     }
 
     /** The key starts to pull it, from no pull. For the board, not for views. */
+    @Override
     public void startPull(int keyCode) {
         pullingKey = OptionalInt.of(keyCode);
         heldSeconds = 0;
     }
 
     /** The pulling key was held through a tick of {@code dt} seconds. For the board, not for views. */
+    @Override
     public void heldFor(double dt) {
         heldSeconds += dt;
     }
@@ -163,11 +168,13 @@ public final class Absorber extends PolygonGizmo implements AbsorberView {
      * The speed its release fires at now, after the time the key was held (a plunger that is pulled). For the board,
      * not for views.
      */
+    @Override
     public double releaseSpeed() {
         return plunger.orElseThrow().speedAfter(heldSeconds);
     }
 
     /** The pull is over, released or dropped. For the board, not for views. */
+    @Override
     public void letGoOfPull() {
         pullingKey = OptionalInt.empty();
         heldSeconds = 0;

@@ -80,6 +80,23 @@ public final class Flipper extends GizmoBase implements FlipperView, MovingShape
         return RADIUS;
     }
 
+    /** From its bar at rest a quarter turn up: anticlockwise on the screen for a left flipper, clockwise for a right one. */
+    @Override
+    public Optional<Sweep> sweep() {
+        // At rest a flipper of rotation 0 hangs straight down; each quarter turn turns it clockwise on the screen
+        // (y grows downward, so clockwise takes (x, y) to (-y, x)).
+        double x = 0;
+        double y = 1;
+        for (int turn = 0; turn < rotation(); turn++) {
+            double turned = -y;
+            y = x;
+            x = turned;
+        }
+        Vect up = kind() == GizmoKind.LEFT_FLIPPER ? new Vect(y, -x) : new Vect(-y, x);
+        Vect pivot = pivot();
+        return Optional.of(new Sweep(pivot, new Vect(x, y), up, tip().minus(pivot).length() + RADIUS));
+    }
+
     /** Degrees swung from rest, 0..90. */
     public double angleFromRest() {
         return angle;

@@ -51,6 +51,9 @@ public sealed interface Gizmo permits BumperView, FlipperView, AbsorberView, Sin
     /** How far it is pulled as a plunger, 0 (at rest, or no plunger) to 1 (a full pull). */
     double pull();
 
+    /** The quarter turn its key swings its bar through (a flipper's); empty for every other kind. */
+    Optional<Sweep> sweep();
+
     /** What play has changed of it, for a save during play; {@link PlayState.AsBuilt} for most kinds and at rest. */
     PlayState playState();
 }

@@ -140,6 +140,11 @@ public abstract sealed class GizmoBase permits Bumper, Flipper, PolygonGizmo, Ac
         return 0;
     }
 
+    /** Most kinds have no bar that a key swings; a flipper says where its bar goes. */
+    public Optional<Sweep> sweep() {
+        return Optional.empty();
+    }
+
     /** Play changes nothing of most kinds that a save must write; a kind it changes says what. */
     public PlayState playState() {
         return new PlayState.AsBuilt();

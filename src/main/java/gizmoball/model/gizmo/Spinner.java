@@ -131,6 +131,12 @@ public final class Spinner extends GizmoBase implements SpinnerView, MovingShape
         return List.of(now.circles().get(0).getCenter(), now.circles().get(1).getCenter());
     }
 
+    /** The end its angle points to. */
+    @Override
+    public Vect tip() {
+        return shape().circles().get(1).getCenter();
+    }
+
     @Override
     public boolean isMoving() {
         return running && !stalled;

@@ -7,8 +7,8 @@ package gizmoball.model.gizmo;
  */
 public interface Surroundings {
 
-    /** The absorber was triggered: it fires its longest-held ball, if the spot above it is free. */
-    void fire(Absorber absorber);
+    /** The holder (an absorber) was triggered: it fires its longest-held ball, if the spot above it is free. */
+    void fire(BallHolder holder);
 
     /**
      * The gate or drop target was told to be solid ({@code solid}: a gate closed, a target up) or nothing: it becomes

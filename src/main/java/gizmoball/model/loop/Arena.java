@@ -1,5 +1,9 @@
 package gizmoball.model.loop;
 
+import java.util.List;
+
+import physics.LineSegment;
+
 /**
  * The square the balls play in and the balls' own measures: constants of the loop, which may not see the board.
  * The board names them for its users too ({@code Board.SIZE}, {@code Board.BALL_RADIUS}, {@code Board.MAX_SPEED}
@@ -12,6 +16,12 @@ public final class Arena {
     public static final double BALL_RADIUS = 0.25;
     /** L/s: no ball moves faster. */
     public static final double MAX_SPEED = 200;
+    /** The outer walls, by side: 0 the top (y = 0), then clockwise on the screen: right, bottom, left. */
+    static final List<LineSegment> OUTER_WALLS = List.of(
+            new LineSegment(0, 0, SIZE, 0),
+            new LineSegment(SIZE, 0, SIZE, SIZE),
+            new LineSegment(SIZE, SIZE, 0, SIZE),
+            new LineSegment(0, SIZE, 0, 0));
 
     private Arena() {
     }

@@ -27,23 +27,11 @@ import physics.Vect;
  * (docs/design.md, "Grazes").
  */
 final class CollisionDetector {
-    /** Margin around a ball's swept box when asking the spatial index (touching shapes must be found). */
-    static final double REACH_MARGIN = 1e-6;
-    /**
-     * Slices of a flipper's swing over which the rotating search bounds the ball's motion. Any value finds the
-     * same contacts; more slices take fewer search steps for fast balls. Ours, because the API has no constant.
-     */
-    private static final int ROTATING_SEARCH_SLICES = 16;
 
-    static final List<LineSegment> OUTER_WALLS = List.of(
-            new LineSegment(0, 0, Arena.SIZE, 0),
-            new LineSegment(Arena.SIZE, 0, Arena.SIZE, Arena.SIZE),
-            new LineSegment(Arena.SIZE, Arena.SIZE, 0, Arena.SIZE),
-            new LineSegment(0, Arena.SIZE, 0, 0));
     /** The outer walls as contacts, made once (a contact is a value: the same wall is the same contact). */
-    private static final List<Contact.OuterWall> WALL_CONTACTS = List.of(new Contact.OuterWall(0, OUTER_WALLS.get(0)),
-            new Contact.OuterWall(1, OUTER_WALLS.get(1)), new Contact.OuterWall(2, OUTER_WALLS.get(2)),
-            new Contact.OuterWall(3, OUTER_WALLS.get(3)));
+    private static final List<Contact.OuterWall> WALL_CONTACTS = List.of(
+            new Contact.OuterWall(0, Arena.OUTER_WALLS.get(0)), new Contact.OuterWall(1, Arena.OUTER_WALLS.get(1)),
+            new Contact.OuterWall(2, Arena.OUTER_WALLS.get(2)), new Contact.OuterWall(3, Arena.OUTER_WALLS.get(3)));
 
     private final LoopView view;
     private final Set<Ball> finishedBalls;
@@ -54,10 +42,14 @@ final class CollisionDetector {
     /** The box the asking ball sweeps in the window: what lies outside it is not asked about. */
     private final SweptBox swept = new SweptBox();
 
+    /** {@link LoopSettings#rotatingSearchSlices()}. */
+    private final int rotatingSearchSlices;
+
     /** @param finishedBalls balls that move no more this tick (SEED), treated as at rest */
-    CollisionDetector(LoopView view, Set<Ball> finishedBalls) {
+    CollisionDetector(LoopView view, Set<Ball> finishedBalls, LoopSettings settings) {
         this.view = view;
         this.finishedBalls = finishedBalls;
+        this.rotatingSearchSlices = settings.rotatingSearchSlices();
     }
 
     /** The velocity the ball moves with for the rest of the tick: none while asleep or finished. */
@@ -67,8 +59,8 @@ final class CollisionDetector {
     }
 
     /**
-     * A speed for a reach, which carries {@link #REACH_MARGIN}, far above the rounding: a plain square root, several
-     * times cheaper than the overflow-safe hypot behind {@link Vect#length()}.
+     * A speed for a reach, which carries {@link Tolerances#REACH_MARGIN}, far above the rounding: a plain square root,
+     * several times cheaper than the overflow-safe hypot behind {@link Vect#length()}.
      */
     static double speedBound(Vect velocity) {
         return Math.sqrt(velocity.x() * velocity.x() + velocity.y() * velocity.y());
@@ -86,8 +78,8 @@ final class CollisionDetector {
         boolean still = velocity.x() == 0 && velocity.y() == 0;
         swept.set(ball.x(), ball.y(), velocity, window);
         if (!still) {
-            for (int side = 0; side < OUTER_WALLS.size(); side++) {
-                LineSegment wall = OUTER_WALLS.get(side);
+            for (int side = 0; side < Arena.OUTER_WALLS.size(); side++) {
+                LineSegment wall = Arena.OUTER_WALLS.get(side);
                 if (swept.misses(wall)) {
                     continue;
                 }
@@ -117,7 +109,7 @@ final class CollisionDetector {
         double dx = ball.x() - other.x();   // as Vect.distanceSquared, without making the centres' vectors
         double dy = ball.y() - other.y();
         double gap = Math.sqrt(dx * dx + dy * dy) - 2 * Arena.BALL_RADIUS;
-        if (gap > speedBound(relative) * window + REACH_MARGIN) {
+        if (gap > speedBound(relative) * window + Tolerances.REACH_MARGIN) {
             return;   // cannot close the gap within the window
         }
         if (view.passingThrough(ball, other)) {
@@ -185,7 +177,7 @@ final class CollisionDetector {
         Vect pivot = moving.pivot();
         Shape now = moving.shape();
         // The rotating search looks only as far as it must: to the end of the swing or of the window.
-        GeometryInterface rotating = new GeometryImpl(Math.min(swingLeft, window), ROTATING_SEARCH_SLICES);
+        GeometryInterface rotating = new GeometryImpl(Math.min(swingLeft, window), rotatingSearchSlices);
         for (int i = 0; i < now.segments().size(); i++) {
             LineSegment side = now.segments().get(i);
             double time = rotating.timeUntilRotatingWallCollision(side, pivot, omega, circle, velocity);
@@ -193,7 +185,7 @@ final class CollisionDetector {
                 Vect centre = ball.position().plus(velocity.times(time));
                 LineSegment then = Geometry.rotateAround(side, pivot, new Angle(omega * time));
                 Vect foot = Geometry.perpendicularPointWholeLine(then, centre);
-                if (closing(centre.minus(foot), velocity.minus(surfaceVelocity(pivot, omega, foot)))) {
+                if (closing(centre.minus(foot), velocity.minus(Kinematics.surfaceVelocity(pivot, omega, foot)))) {
                     earliest.offer(time, ball, new Contact.MovingPart(moving, false, i), false);
                 }
             }
@@ -213,7 +205,7 @@ final class CollisionDetector {
             if (time <= swingLeft && time <= earliest.limit()) {
                 Vect centre = ball.position().plus(velocity.times(time));
                 Vect endCentre = Geometry.rotateAround(end.getCenter(), pivot, new Angle(omega * time));
-                Vect relative = velocity.minus(surfaceVelocity(pivot, omega, endCentre));
+                Vect relative = velocity.minus(Kinematics.surfaceVelocity(pivot, omega, endCentre));
                 if (closingOnCircle(centre.minus(endCentre), relative)) {
                     earliest.offer(time, ball, new Contact.MovingPart(moving, true, i), true);
                 }
@@ -224,11 +216,6 @@ final class CollisionDetector {
             Circle later = new Circle(circle.getCenter().plus(velocity.times(swingLeft)), circle.getRadius());
             againstStillShape(ball, later, velocity, swingLeft, gizmo, moving.shapeAtStop(), earliest);
         }
-    }
-
-    /** Velocity of the point of a body turning at omega about the pivot (the library's sense: +x toward +y). */
-    static Vect surfaceVelocity(Vect pivot, double omega, Vect point) {
-        return new Vect(-omega * (point.y() - pivot.y()), omega * (point.x() - pivot.x()));
     }
 
     /**
@@ -272,7 +259,7 @@ final class CollisionDetector {
 
     /**
      * As {@link #closing}, for a circle met at {@code away} from its centre: a touch within
-     * {@link Tolerances#GRAZE_ANGLE} of tangent is a graze, and so is one that {@link #grazes}.
+     * {@link Tolerances#GRAZE_ANGLE} of tangent is a graze, and so is one that {@link Kinematics#grazes}.
      */
     static boolean closingOnCircle(Vect away, Vect relative) {
         double approach = -relative.dot(away);
@@ -290,7 +277,7 @@ final class CollisionDetector {
                 return false;
             }
             int grazing = clearly(Math.abs(away.x() * relative.y() - away.y() * relative.x()) / speed,
-                    length - ContactCluster.TOUCHING);
+                    length - Tolerances.PLACEMENT);
             if (closes > 0 && grazing != 0) {
                 return grazing < 0;
             }
@@ -324,25 +311,6 @@ final class CollisionDetector {
         double length = away.length();
         double closing = length > 0 ? -relative.dot(away) / length : 0;
         return closing > Math.max(Tolerances.ROUNDING_SPEED, Tolerances.GRAZE_ANGLE * relative.length())
-                && !grazes(away, relative, length);
-    }
-
-    /**
-     * Whether a round contact (another ball, a circle), {@code offset} from its centre and touching at {@code touch}
-     * apart, closes only as a graze: along the straight relative motion the two come no nearer than {@code touch}
-     * less {@link ContactCluster#TOUCHING}, so left alone they overlap by no more than what counts as touching. Two
-     * balls sliding past each other in a gap that just fits them close so until they pass (a tilt of 4e-5 rad is a
-     * closing speed of 4e-5 of their speed), and resolving that as a contact asks for impulses some 30,000 times their
-     * speed, past any velocity the walls beside them allow. The detector and the cluster ask the same, so neither
-     * meets again at once what the other let pass.
-     */
-    static boolean grazes(Vect offset, Vect relative, double touch) {
-        double closing = -relative.dot(offset);
-        double speed = relative.length();
-        if (closing <= 0 || speed == 0) {
-            return false;
-        }
-        double nearest = Math.abs(offset.x() * relative.y() - offset.y() * relative.x()) / speed;
-        return nearest >= touch - ContactCluster.TOUCHING;
+                && !Kinematics.grazes(away, relative, length);
     }
 }

@@ -133,7 +133,7 @@ sealed interface Contact {
             Vect normal = normal(centre);
             Vect touching = centre.minus(normal.times(Arena.BALL_RADIUS));
             return new Squeeze.Side(normal,
-                    CollisionDetector.surfaceVelocity(shape.pivot(), shape.angularVelocity(), touching).dot(normal));
+                    Kinematics.surfaceVelocity(shape.pivot(), shape.angularVelocity(), touching).dot(normal));
         }
 
         /** The velocity {@code velocity} of the ball becomes when the part, turning, strikes it (physics-lib). */

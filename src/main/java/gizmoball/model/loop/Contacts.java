@@ -22,8 +22,6 @@ import physics.Vect;
  * <p>Over 400 lines because a contact's whole life is one job (found, kept, its normal, ended), in stage 1 every tick.
  */
 final class Contacts {
-    /** Penetration below this is rounding and left alone; deeper, the ball is put back to touching. */
-    private static final double SNAP_DEPTH = Tolerances.CONTACT / 10;
 
     private final LoopView view;
     /** A contact the ball has drifted off by less than this, slower than {@link #holdSpeed}, still holds. */
@@ -151,7 +149,7 @@ final class Contacts {
     /** The still segment a contact names; null for a circle, a ball or a part that is gone or swinging. */
     private LineSegment faceOf(ContactRef ref) {
         if (ref instanceof ContactRef.Wall wall) {
-            return CollisionDetector.OUTER_WALLS.get(wall.side());
+            return Arena.OUTER_WALLS.get(wall.side());
         }
         if (ref instanceof ContactRef.Part part && !part.circle()) {
             GizmoBase gizmo = stillGizmo(part);
@@ -205,7 +203,7 @@ final class Contacts {
                 continue;
             }
             if (ref instanceof ContactRef.Wall wall) {
-                return new Touch(new Contact.OuterWall(wall.side(), CollisionDetector.OUTER_WALLS.get(wall.side())),
+                return new Touch(new Contact.OuterWall(wall.side(), Arena.OUTER_WALLS.get(wall.side())),
                         normal);
             }
             ContactRef.Part part = (ContactRef.Part) ref;
@@ -312,7 +310,7 @@ final class Contacts {
     private Vect normalOf(Ball ball, ContactRef ref, List<Vect> normals, Look look) {
         Vect normal;
         if (ref instanceof ContactRef.Wall wall) {
-            normal = onSegment(ball, CollisionDetector.OUTER_WALLS.get(wall.side()), look);
+            normal = onSegment(ball, Arena.OUTER_WALLS.get(wall.side()), look);
         } else if (ref instanceof ContactRef.Part part) {
             normal = onPart(ball, part, look);
         } else {
@@ -407,40 +405,18 @@ final class Contacts {
             }
             ball.setVelocity(ball.velocity().minus(normal.times(Math.max(0, leaving))));
             Vect onSurface = from.plus(normal.times(touch));
-            if (clearAt(view, ball, onSurface)) {
+            if (Room.at(view, ball, onSurface)) {
                 ball.moveTo(onSurface);
             }
-        } else if (touch - distance > SNAP_DEPTH) {
+        } else if (touch - distance > Tolerances.SNAP_DEPTH) {
             ball.moveTo(from.plus(normal.times(touch)));
         }
         return normal;
     }
 
-    /** Whether the ball could lie at {@code p} without entering a wall, a gizmo or another ball. */
-    static boolean clearAt(LoopView view, Ball ball, Vect p) {
-        double r = Arena.BALL_RADIUS;
-        double inner = r - Tolerances.CONTACT;
-        if (p.x() < inner || p.y() < inner || p.x() > Arena.SIZE - inner || p.y() > Arena.SIZE - inner) {
-            return false;
-        }
-        for (GizmoBase gizmo : view.index().within(p.x() - r, p.y() - r, p.x() + r, p.y() + r)) {
-            if (gizmo.signedDistance(p) < inner) {
-                return false;
-            }
-        }
-        double apart = 2 * r - Tolerances.CONTACT;
-        for (Ball other : view.balls()) {
-            if (other != ball && !other.isCaptured() && !view.passingThrough(ball, other)
-                    && p.distanceSquared(other.position()) < apart * apart) {
-                return false;
-            }
-        }
-        return true;
-    }
-
     /** Every still surface the ball touches now becomes a contact of it. */
     private void discover(Ball ball, List<Vect> normals) {
-        for (int side = 0; side < CollisionDetector.OUTER_WALLS.size(); side++) {
+        for (int side = 0; side < Arena.OUTER_WALLS.size(); side++) {
             consider(ball, ContactRef.Wall.of(side), normals);
         }
         Vect p = ball.position();

@@ -21,7 +21,7 @@ final class Passages {
             return null;
         }
         Passage out = portal.passage(ball.position(), ball.velocity(), exit, Arena.BALL_RADIUS);
-        return Contacts.clearAt(view, ball, out.centre()) ? out : null;
+        return Room.at(view, ball, out.centre()) ? out : null;
     }
 
     /** The passage the ball takes through what it meets, or null: it is no open mouth with room beyond. */

@@ -6,7 +6,7 @@ import physics.Vect;
 
 /**
  * The box a ball sweeps in a window: its centre from where it is to where it is after the window, widened by its
- * radius and {@link CollisionDetector#REACH_MARGIN}. A segment or circle whose own box lies outside it cannot be
+ * radius and {@link Tolerances#REACH_MARGIN}. A segment or circle whose own box lies outside it cannot be
  * touched within the window, so detection asks physics-lib nothing about it: the margin, far above the rounding of
  * the library's times, keeps every contact it would find within the window inside the box. One per detector, set
  * again for every ball it asks about.
@@ -22,7 +22,7 @@ final class SweptBox {
         // The doubles centre + velocity * window gives, as the ball's own move computes them.
         double toX = x + velocity.x() * window;
         double toY = y + velocity.y() * window;
-        double reach = Arena.BALL_RADIUS + CollisionDetector.REACH_MARGIN;
+        double reach = Arena.BALL_RADIUS + Tolerances.REACH_MARGIN;
         minX = Math.min(x, toX) - reach;
         minY = Math.min(y, toY) - reach;
         maxX = Math.max(x, toX) + reach;

@@ -65,7 +65,7 @@ class CollisionDetectorTest {
             };
             double closingPart = switch (random.nextInt(5)) {
                 case 0 -> Tolerances.GRAZE_ANGLE * (1 + random.nextDouble(-1e-9, 1e-9));   // at the graze angle
-                case 1 -> Math.sqrt(2 * ContactCluster.TOUCHING / touch) * (1 + random.nextDouble(-1e-6, 1e-6));
+                case 1 -> Math.sqrt(2 * Tolerances.PLACEMENT / touch) * (1 + random.nextDouble(-1e-6, 1e-6));
                 case 2 -> 0;
                 default -> random.nextDouble(-1, 1);
             };
@@ -84,7 +84,7 @@ class CollisionDetectorTest {
         double length = away.length();
         double closing = length > 0 ? -relative.dot(away) / length : 0;
         return closing > Math.max(Tolerances.ROUNDING_SPEED, Tolerances.GRAZE_ANGLE * relative.length())
-                && !CollisionDetector.grazes(away, relative, length);
+                && !Kinematics.grazes(away, relative, length);
     }
 
     @Test
