@@ -388,7 +388,10 @@ final class CollisionSchedule {
         into.clear();
         double stale = elapsed - filedAt;
         double near = within + Tolerances.REACH_MARGIN;
-        grid.near(ball.x(), ball.y(), near + fastest * stale, within, near, 0, stale, into);
+        int found = grid.near(ball.x(), ball.y(), near + fastest * stale, within, near, 0, stale);
+        for (int i = 0; i < found; i++) {
+            into.add(grid.found(i));
+        }
         for (int i = 1; i < into.size(); i++) {
             Ball next = into.get(i);
             int k = i;
