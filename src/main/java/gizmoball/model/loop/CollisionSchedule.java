@@ -341,7 +341,7 @@ final class CollisionSchedule {
         }
     }
 
-    void forgetAll() {
+    private void forgetAll() {
         Arrays.fill(sceneKnown, false);
         Arrays.fill(ballsKnown, false);
         Arrays.fill(pointedAtCount, 0);
