@@ -20,11 +20,6 @@ final class ActiveRowsFactor {
         double of(int i, int j);
     }
 
-    /**
-     * Relative size below which a pivot counts as zero: the row depends on the set (a face and the corner flush with
-     * it, both touched along one normal).
-     */
-    private static final double DEPENDENT = 1e-12;
 
     private final Coupling coupling;
     /** The set's rows in the order they joined: factor row k is {@code order[k]}. */
@@ -58,7 +53,7 @@ final class ActiveRowsFactor {
             pivot -= entries[k] * entries[k];
         }
         double newScale = Math.max(scale, coupling.of(row, row));
-        if (pivot <= DEPENDENT * newScale) {
+        if (pivot <= Tolerances.DEPENDENT_PIVOT * newScale) {
             return false;
         }
         entries[size] = Math.sqrt(pivot);

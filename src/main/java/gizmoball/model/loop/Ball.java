@@ -12,12 +12,6 @@ import physics.Vect;
  * has been still on them, and whether it sleeps (docs/design.md, "Sleeping").
  */
 public final class Ball implements BallView {
-    /**
-     * L/s: components below this are rounding debris. Far below anything meaningful (resting-contact projections
-     * leave components near 1e-14 that decide whether a ball is still closing on a corner), far above the
-     * range where a collision time gap / speed overflows.
-     */
-    static final double NEGLIGIBLE_SPEED = 1e-100;
     private final String name;
     /**
      * The centre's coordinates (as {@link Vect} keeps them, -0 as +0), and the centre as a {@link Vect}, made when
@@ -216,12 +210,12 @@ public final class Ball implements BallView {
     }
 
     /**
-     * Sets the velocity, its speed clamped to {@link Arena#MAX_SPEED}. A clamped velocity can measure a rounding
-     * error over the limit; it is kept as it is (the invariants the tests check allow for it), so clamping twice
-     * changes nothing and a saved ball reloads with exactly its velocity. Components below {@link #NEGLIGIBLE_SPEED}
-     * become 0: friction shrinks a leftover component geometrically toward the subnormal range, where the time
-     * until it crosses the board overflows (a 1e-308 L/s drift meets a wall after more than 1e308 s).
-     * For the board and its loop, not for views.
+     * Sets the velocity, its speed clamped to {@link Arena#MAX_SPEED}. A clamped velocity can measure a rounding error
+     * over the limit; it is kept as it is (the invariants the tests check allow for it), so clamping twice changes
+     * nothing and a saved ball reloads with exactly its velocity. Components below {@link Tolerances#NEGLIGIBLE_SPEED}
+     * become 0: friction shrinks a leftover component geometrically toward the subnormal range, where the time until it
+     * crosses the board overflows (a 1e-308 L/s drift meets a wall after more than 1e308 s). For the board and its
+     * loop, not for views.
      */
     public void setVelocity(Vect newVelocity) {
         double speed = newVelocity.length();
@@ -233,7 +227,7 @@ public final class Ball implements BallView {
     }
 
     private static double negligibleToZero(double component) {
-        return Math.abs(component) < NEGLIGIBLE_SPEED ? 0 : component;
+        return Math.abs(component) < Tolerances.NEGLIGIBLE_SPEED ? 0 : component;
     }
 
     /** Straight on for {@code dt} seconds: the centre {@code new Vect(x + vx dt, y + vy dt)} would give. */

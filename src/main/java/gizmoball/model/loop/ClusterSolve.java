@@ -17,8 +17,6 @@ import physics.Vect;
  * rests and stalls.
  */
 final class ClusterSolve {
-    /** Relative change of the cluster's summed |v|^2 that is rounding, not a loss or a gain. */
-    private static final double KEPT_ENERGY = 1e-12;
 
     private final StepContext step;
 
@@ -57,7 +55,7 @@ final class ClusterSolve {
         }
         return ContactCluster.around(step.view, collision.balls(),
                 step.detector::motion, candidate -> !step.finished.contains(candidate), reach,
-                step.settings.clusterBalls());
+                step.settings);
     }
 
     private boolean rattling(Ball ball) {
@@ -161,7 +159,7 @@ final class ClusterSolve {
             before += v.dot(v);
             after += result.vx()[k] * result.vx()[k] + result.vy()[k] * result.vy()[k];
         }
-        return Math.abs(after - before) <= KEPT_ENERGY * before;
+        return Math.abs(after - before) <= Tolerances.KEPT_ENERGY * before;
     }
 
     /**

@@ -27,13 +27,6 @@ import physics.Vect;
  * (docs/design.md, "Grazes").
  */
 final class CollisionDetector {
-    /** Margin around a ball's swept box when asking the spatial index (touching shapes must be found). */
-    static final double REACH_MARGIN = 1e-6;
-    /**
-     * Slices of a flipper's swing over which the rotating search bounds the ball's motion. Any value finds the
-     * same contacts; more slices take fewer search steps for fast balls. Ours, because the API has no constant.
-     */
-    private static final int ROTATING_SEARCH_SLICES = 16;
 
     /** The outer walls as contacts, made once (a contact is a value: the same wall is the same contact). */
     private static final List<Contact.OuterWall> WALL_CONTACTS = List.of(
@@ -47,10 +40,14 @@ final class CollisionDetector {
     /** The gizmos a ball can reach, found again for every ask. */
     private final List<GizmoBase> reached = new ArrayList<>();
 
+    /** {@link LoopSettings#rotatingSearchSlices()}. */
+    private final int rotatingSearchSlices;
+
     /** @param finishedBalls balls that move no more this tick (SEED), treated as at rest */
-    CollisionDetector(LoopView view, Set<Ball> finishedBalls) {
+    CollisionDetector(LoopView view, Set<Ball> finishedBalls, LoopSettings settings) {
         this.view = view;
         this.finishedBalls = finishedBalls;
+        this.rotatingSearchSlices = settings.rotatingSearchSlices();
     }
 
     /** The velocity the ball moves with for the rest of the tick: none while asleep or finished. */
@@ -60,8 +57,8 @@ final class CollisionDetector {
     }
 
     /**
-     * A speed for a reach, which carries {@link #REACH_MARGIN}, far above the rounding: a plain square root, several
-     * times cheaper than the overflow-safe hypot behind {@link Vect#length()}.
+     * A speed for a reach, which carries {@link Tolerances#REACH_MARGIN}, far above the rounding: a plain square root,
+     * several times cheaper than the overflow-safe hypot behind {@link Vect#length()}.
      */
     static double speedBound(Vect velocity) {
         return Math.sqrt(velocity.x() * velocity.x() + velocity.y() * velocity.y());
@@ -106,7 +103,7 @@ final class CollisionDetector {
         double dx = ball.x() - other.x();   // as Vect.distanceSquared, without making the centres' vectors
         double dy = ball.y() - other.y();
         double gap = Math.sqrt(dx * dx + dy * dy) - 2 * Arena.BALL_RADIUS;
-        if (gap > speedBound(relative) * window + REACH_MARGIN) {
+        if (gap > speedBound(relative) * window + Tolerances.REACH_MARGIN) {
             return;   // cannot close the gap within the window
         }
         if (view.passingThrough(ball, other)) {
@@ -133,7 +130,7 @@ final class CollisionDetector {
         double fromY = ball.y();
         double toX = fromX + velocity.x() * window;
         double toY = fromY + velocity.y() * window;
-        double reach = Arena.BALL_RADIUS + REACH_MARGIN;
+        double reach = Arena.BALL_RADIUS + Tolerances.REACH_MARGIN;
         view.index().within(Math.min(fromX, toX) - reach, Math.min(fromY, toY) - reach, Math.max(fromX, toX) + reach,
                 Math.max(fromY, toY) + reach, reached);
         return reached;
@@ -172,7 +169,7 @@ final class CollisionDetector {
         Vect pivot = moving.pivot();
         Shape now = moving.shape();
         // The rotating search looks only as far as it must: to the end of the swing or of the window.
-        GeometryInterface rotating = new GeometryImpl(Math.min(swingLeft, window), ROTATING_SEARCH_SLICES);
+        GeometryInterface rotating = new GeometryImpl(Math.min(swingLeft, window), rotatingSearchSlices);
         for (int i = 0; i < now.segments().size(); i++) {
             LineSegment side = now.segments().get(i);
             double time = rotating.timeUntilRotatingWallCollision(side, pivot, omega, circle, velocity);

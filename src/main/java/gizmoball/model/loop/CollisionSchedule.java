@@ -47,14 +47,15 @@ final class CollisionSchedule {
     private int[] awakeIndex = new int[0];
     private boolean awakeStale = true;
     /**
-     * The awake balls in blocks of {@link #BLOCK} consecutive places of {@link #awakeSlots}, each with the earliest
+     * The awake balls in blocks of {@link #blockSize} consecutive places of {@link #awakeSlots}, each with the earliest
      * {@code at} of its balls' known collisions (found again when one of them changed): the search for the earliest
      * collision passes over a block that cannot hold a better one, so a collision among 200 awake balls reads a few
      * blocks, not 400 known collisions.
      */
     private double[] blockEarliest = new double[0];
     private boolean[] blockStale = new boolean[0];
-    private static final int BLOCK = 16;
+    /** {@link LoopSettings#scheduleBlock()}. */
+    private final int blockSize;
     private final Best best = new Best();
     /**
      * By slot, the slots whose known ball collision has been with that ball (some since replaced): forgetting a ball
@@ -73,9 +74,10 @@ final class CollisionSchedule {
     private double filedAt;
     private double fastest;
 
-    CollisionSchedule(CollisionDetector detector, BallGrid grid) {
+    CollisionSchedule(CollisionDetector detector, BallGrid grid, LoopSettings settings) {
         this.detector = detector;
         this.grid = grid;
+        this.blockSize = settings.scheduleBlock();
     }
 
     /** A tick starts: no ball is filed (a ball forgotten before the first filing is not filed). */
@@ -125,8 +127,8 @@ final class CollisionSchedule {
         awakeSlots = new int[n];
         isAwake = new boolean[n];
         awakeIndex = new int[n];
-        blockEarliest = new double[n / BLOCK + 1];
-        blockStale = new boolean[n / BLOCK + 1];
+        blockEarliest = new double[n / blockSize + 1];
+        blockStale = new boolean[n / blockSize + 1];
         pointedAtBy = Arrays.copyOf(pointedAtBy, n);
         pointedAtCount = new int[n];
     }
@@ -154,10 +156,10 @@ final class CollisionSchedule {
     /**
      * The earliest collision of the awake balls within the window, {@code elapsed} seconds into the tick. The balls
      * whose collisions are not known are asked first, in slot order (asking about a ball may tell a later one of a
-     * sooner pair); then every awake ball's known collisions are offered in board order, near-ties going to
-     * circles as {@link Earliest} has it. A block of balls whose earliest known collision is later than the best so
-     * far by more than {@link Earliest#TIE} is passed over: {@link Earliest#better} refuses every offer of it, so the
-     * search finds what offering them all would.
+     * sooner pair); then every awake ball's known collisions are offered in board order, near-ties going to circles as
+     * {@link Earliest} has it. A block of balls whose earliest known collision is later than the best so far by more
+     * than {@link Tolerances#TIME_TIE} is passed over: {@link Earliest#better} refuses every offer of it, so the search
+     * finds what offering them all would.
      */
     Collision next(List<Ball> awake, double elapsed, double window) {
         if (awakeStale) {
@@ -165,8 +167,8 @@ final class CollisionSchedule {
         }
         askTheUnknown(elapsed, window);
         best.reset(elapsed, window);
-        for (int block = 0, first = 0; first < awakeCount; block++, first += BLOCK) {
-            int end = Math.min(first + BLOCK, awakeCount);
+        for (int block = 0, first = 0; first < awakeCount; block++, first += blockSize) {
+            int end = Math.min(first + blockSize, awakeCount);
             if (blockStale[block]) {
                 blockEarliest[block] = earliestOf(first, end);
                 blockStale[block] = false;
@@ -200,7 +202,7 @@ final class CollisionSchedule {
     /** A known collision of the slot changed: its block's earliest is found again before the next search. */
     private void changedAt(int slot) {
         if (isAwake[slot]) {
-            blockStale[awakeIndex[slot] / BLOCK] = true;
+            blockStale[awakeIndex[slot] / blockSize] = true;
         }
     }
 
@@ -227,10 +229,10 @@ final class CollisionSchedule {
 
         /**
          * Whether every offer at {@code earliest} or later is refused: one is offered already, and it is sooner by
-         * more than {@link Earliest#TIE} ({@link #fromNow} keeps the order of the times it is given).
+         * more than {@link Tolerances#TIME_TIE} ({@link #fromNow} keeps the order of the times it is given).
          */
         boolean refusesAll(double earliest) {
-            return earliest == Double.POSITIVE_INFINITY || slot >= 0 && fromNow(earliest) > time + Earliest.TIE;
+            return earliest == Double.POSITIVE_INFINITY || slot >= 0 && fromNow(earliest) > time + Tolerances.TIME_TIE;
         }
 
         /** A known collision at {@code at} seconds since the tick began; positive infinity: none. */
@@ -333,7 +335,7 @@ final class CollisionSchedule {
         for (int slot = 0; slot < filed; slot++) {
             Ball ball = bySlot[slot];
             double reach = Arena.BALL_RADIUS + CollisionDetector.speedBound(detector.motion(ball)) * window
-                    + CollisionDetector.REACH_MARGIN;
+                    + Tolerances.REACH_MARGIN;
             if (ball.x() + reach >= x0 && ball.x() - reach <= x1 && ball.y() + reach >= y0 && ball.y() - reach <= y1) {
                 sceneKnown[slot] = false;
                 markUnknown(slot);
@@ -388,10 +390,10 @@ final class CollisionSchedule {
         earliest.reset(window);
         double speed = CollisionDetector.speedBound(detector.motion(ball));
         // No ball farther now than this can meet this one within the window (the pair test's own bound, wider).
-        double near = 2 * Arena.BALL_RADIUS + (speed + fastest) * window + CollisionDetector.REACH_MARGIN;
+        double near = 2 * Arena.BALL_RADIUS + (speed + fastest) * window + Tolerances.REACH_MARGIN;
         double reach = near + fastest * (elapsed - filedAt);
         // The same bound for one cell's balls, with twice the margin: rounding can never pass over a pair.
-        double alone = 2 * Arena.BALL_RADIUS + speed * window + 2 * CollisionDetector.REACH_MARGIN;
+        double alone = 2 * Arena.BALL_RADIUS + speed * window + 2 * Tolerances.REACH_MARGIN;
         nearby.clear();
         grid.near(ball.x(), ball.y(), reach, near, alone, window, elapsed - filedAt, nearby);
         for (int i = 0; i < nearby.size(); i++) {

@@ -23,8 +23,6 @@ import physics.Vect;
  * reads positions and velocities and changes nothing.
  */
 final class ContactCluster {
-    /** Seconds a ball leaving a moving part keeps ahead of it (see {@link #leavingFace}). */
-    static final double LEAD_TIME = 1e-3;
 
     /** What a row of the cluster is a contact with. */
     sealed interface Other {
@@ -99,6 +97,8 @@ final class ContactCluster {
     }
     /** L: how near counts as touching for this cluster. */
     private double touching;
+    /** {@link LoopSettings#leadTime()}. */
+    private double leadTime;
 
     private ContactCluster() {
     }
@@ -106,11 +106,13 @@ final class ContactCluster {
     /**
      * The cluster of {@code seeds} as they are now; {@code motion} gives the velocity each ball moves with this tick
      * (none while asleep); a ball that {@code movable} refuses (one that moves no more in this tick) is taken as a
-     * surface. Surfaces and balls within {@code reach} of a ball count as touching it: at least {@link Tolerances#PLACEMENT}.
+     * surface. Surfaces and balls within {@code reach} of a ball count as touching it: at least
+     * {@link Tolerances#PLACEMENT}. The cluster holds at most {@link LoopSettings#clusterBalls()} balls.
      */
     static ContactCluster around(LoopView view, List<Ball> seeds, Function<Ball, Vect> motion,
-                                 Predicate<Ball> movable, double reach, int maxBalls) {
+                                 Predicate<Ball> movable, double reach, LoopSettings settings) {
         ContactCluster cluster = new ContactCluster();
+        cluster.leadTime = settings.leadTime();
         cluster.touching = Math.max(Tolerances.PLACEMENT, reach);
         Map<Ball, Integer> indexOf = new IdentityHashMap<>();
         for (Ball seed : seeds) {
@@ -136,7 +138,7 @@ final class ContactCluster {
                 Vect normal = ball.position().minus(other.position()).unitSize();
                 boolean grazes = Kinematics.grazes(ball.position().minus(other.position()),
                         motion.apply(ball).minus(motion.apply(other)), 2 * Arena.BALL_RADIUS);
-                if (j < 0 && cluster.balls.size() < maxBalls && movable.test(other)) {
+                if (j < 0 && cluster.balls.size() < settings.clusterBalls() && movable.test(other)) {
                     j = cluster.balls.size();
                     cluster.balls.add(other);
                     indexOf.put(other, j);
@@ -237,17 +239,17 @@ final class ContactCluster {
 
     /**
      * The speed a ball must leave a moving part's face with, along its normal n: the surface's own speed there, and
-     * what the surface gains on the ball over {@link #LEAD_TIME}. The distance from a ball moving in a straight line
-     * at v to a line turning at omega about the pivot changes at d'' = 2 omega (v . t) - omega^2 (p - pivot) . n, t
-     * being n turned a quarter the way omega turns: a ball left at only the surface's speed is met again at once
-     * where d'' &lt; 0. The second term is a ball at rest in the way of a turning line (a flipper sweeping a ball along
-     * a wall beside it would strike it every microsecond); the first a ball sliding along the line away from the
-     * pivot as it turns into the ball (one fired along a spinner's bar at 40 L/s was struck every 33 us, 250 times
+     * what the surface gains on the ball over {@link LoopSettings#leadTime()}. The distance from a ball moving in a
+     * straight line at v to a line turning at omega about the pivot changes at d'' = 2 omega (v . t) - omega^2 (p -
+     * pivot) . n, t being n turned a quarter the way omega turns: a ball left at only the surface's speed is met again
+     * at once where d'' &lt; 0. The second term is a ball at rest in the way of a turning line (a flipper sweeping a
+     * ball along a wall beside it would strike it every microsecond); the first a ball sliding along the line away from
+     * the pivot as it turns into the ball (one fired along a spinner's bar at 40 L/s was struck every 33 us, 250 times
      * a tick).
      */
-    private static double leavingFace(Vect pivot, double omega, Vect p, Vect normal, Vect foot, Vect velocity) {
+    private double leavingFace(Vect pivot, double omega, Vect p, Vect normal, Vect foot, Vect velocity) {
         return Kinematics.surfaceVelocity(pivot, omega, foot).dot(normal)
-                + Math.max(0, gaining(pivot, omega, p, normal, velocity)) * LEAD_TIME;
+                + Math.max(0, gaining(pivot, omega, p, normal, velocity)) * leadTime;
     }
 
     /** L/s^2: -d'' above, how fast a face turning at omega through p with normal n closes on a ball moving at v. */
@@ -261,10 +263,10 @@ final class ContactCluster {
      * pivot), which takes it away from a ball beyond it, and the ball's sliding round it carries it off the circle,
      * so only what the surface gains as at a face is kept, from the ball's centre (more than the end gains).
      */
-    private static double leavingEnd(Vect pivot, double omega, Vect p, Vect normal, Vect point) {
+    private double leavingEnd(Vect pivot, double omega, Vect p, Vect normal, Vect point) {
         double along = p.minus(pivot).dot(normal);
         return Kinematics.surfaceVelocity(pivot, omega, point).dot(normal)
-                + omega * omega * Math.max(0, along) * LEAD_TIME;
+                + omega * omega * Math.max(0, along) * leadTime;
     }
 
     private void moving(int index, Vect p, Vect velocity, MovingShape moving, Shape shape) {

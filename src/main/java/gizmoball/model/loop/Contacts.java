@@ -22,8 +22,6 @@ import physics.Vect;
  * <p>Over 400 lines because a contact's whole life is one job (found, kept, its normal, ended), in stage 1 every tick.
  */
 final class Contacts {
-    /** Penetration below this is rounding and left alone; deeper, the ball is put back to touching. */
-    private static final double SNAP_DEPTH = Tolerances.CONTACT / 10;
 
     private final LoopView view;
     /** A contact the ball has drifted off by less than this, slower than {@link #holdSpeed}, still holds. */
@@ -410,7 +408,7 @@ final class Contacts {
             if (Room.at(view, ball, onSurface)) {
                 ball.moveTo(onSurface);
             }
-        } else if (touch - distance > SNAP_DEPTH) {
+        } else if (touch - distance > Tolerances.SNAP_DEPTH) {
             ball.moveTo(from.plus(normal.times(touch)));
         }
         return normal;

@@ -2,9 +2,6 @@ package gizmoball.model.loop;
 
 /** Keeps the earliest collision offered within a time limit; near-ties go to circles (segment ends, corners). */
 final class Earliest {
-    /** Collisions this close in time count as simultaneous. */
-    static final double TIE = 1e-12;
-
     private double limit;
     /** The earliest offer so far (ball null: none); its {@link Collision} is made only when asked for. */
     private double time;
@@ -40,15 +37,17 @@ final class Earliest {
 
     /**
      * Whether an offer at {@code time} beats the best so far ({@code none}: there is none yet): sooner by more than
-     * {@link #TIE}, or a circle tied with a segment. Also the rule of {@link CollisionSchedule}'s search.
+     * {@link Tolerances#TIME_TIE}, or a circle tied with a segment. Also the rule of {@link CollisionSchedule}'s
+     * search.
      */
     static boolean better(double time, boolean isCircle, boolean none, double bestTime, boolean bestCircle) {
-        return none || time < bestTime - TIE || (time <= bestTime + TIE && isCircle && !bestCircle);
+        return none || time < bestTime - Tolerances.TIME_TIE
+                || (time <= bestTime + Tolerances.TIME_TIE && isCircle && !bestCircle);
     }
 
     /** Offers later than this are dropped. */
     double limit() {
-        return ball == null ? limit : Math.min(limit, time + TIE);
+        return ball == null ? limit : Math.min(limit, time + Tolerances.TIME_TIE);
     }
 
     /** The earliest offer, or null. */

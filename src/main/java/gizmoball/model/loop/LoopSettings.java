@@ -38,13 +38,25 @@ package gizmoball.model.loop;
  *                                 sweeps a cluster of 30 balls cost half a second of one tick
  * @param activeSetChanges         changes of the projection's active set (each adds or drops one row) before it counts
  *                                 as not settling
+ * @param leadTime                 s: a ball leaving a moving part's face is given what the surface gains on it over this
+ *                                 time, so a turning flipper or spinner does not meet it again at once (a flipper
+ *                                 sweeping a ball along a wall would strike it every microsecond)
+ * @param slidingPart              the least part of a bounce's normal lying along a sliding ball's contacts for the
+ *                                 shadow-energy correction to be made along them (less, and none is)
+ * @param rotatingSearchSlices     slices of a flipper's swing over which the rotating search bounds a ball's motion: any
+ *                                 value finds the same contacts, more take fewer search steps for fast balls (the API
+ *                                 leaves it to the caller)
+ * @param scheduleBlock            awake balls per block of the collision schedule, each block keeping its earliest
+ *                                 collision so the search for the next reads a few blocks (speed only: any value finds
+ *                                 the same collision)
  */
 public record LoopSettings(double zeroTime, double restTicksOfGravity, double sleepSpeed, double sleepTime,
                            int zeroTimeHitsBeforeWedged, int strikesOfASqueeze, int strikesOfAPush,
                            int squeezesBeforePinched, int bouncesAmongContacts, int pressSteps, int maxCollisionsBase,
                            int maxCollisionsPerBall, int maxCollisionsOfABall, int rattleCollisions, double rattleTime,
                            double rattleReach, int clusterBalls, int impactRounds, int projectionSweeps,
-                           int activeSetChanges) {
+                           int activeSetChanges, double leadTime, double slidingPart, int rotatingSearchSlices,
+                           int scheduleBlock) {
 
     /** The settings of every board, each default named by the component it sets. */
     public static final LoopSettings STANDARD = new LoopSettings(
@@ -67,7 +79,11 @@ public record LoopSettings(double zeroTime, double restTicksOfGravity, double sl
             /* clusterBalls */ 32,
             /* impactRounds */ 256,
             /* projectionSweeps */ 500,
-            /* activeSetChanges */ 200);
+            /* activeSetChanges */ 200,
+            /* leadTime */ 1e-3,
+            /* slidingPart */ 1e-3,
+            /* rotatingSearchSlices */ 16,
+            /* scheduleBlock */ 16);
 
     /**
      * Whether a ball still for {@code stillTime} seconds, summed a tick of {@code dt} at a time, has lain still for

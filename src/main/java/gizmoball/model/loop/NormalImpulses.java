@@ -31,11 +31,6 @@ package gizmoball.model.loop;
  * cluster is infeasible: the caller stalls those surfaces and solves again.
  */
 final class NormalImpulses {
-    /**
-     * Relative to the fastest ball's speed, how near a round's start must be to the start two rounds before for the
-     * rounds to count as a cycle of two: rounding's scale, far below any change a round of impacts makes.
-     */
-    private static final double CYCLE_MATCH = 1e-9;
     /** {@link LoopSettings#impactRounds()}. */
     private final int maxImpactRounds;
     private final int balls;
@@ -87,9 +82,9 @@ final class NormalImpulses {
      * Some ring in a cycle of two: a ball between two contacts that touch it on both sides is sent from one into the
      * other and back (in a box packed with 31 elastic balls, rounds 5 to 256 alternated between two states to 2e-13
      * L/s; in a pocket of 32 balls a flipper pressed on, to 7e-10 L/s, drifting by that much every two rounds). A round
-     * that starts where the round two before it started, to within {@link #CYCLE_MATCH} of the fastest ball's speed,
-     * would ring so to the cap; on a round of the cap's parity it ends there, in the state the cap would have met (to
-     * that drift, some 1e-7 of the speeds).
+     * that starts where the round two before it started, to within {@link Tolerances#CYCLE_MATCH} of the fastest ball's
+     * speed, would ring so to the cap; on a round of the cap's parity it ends there, in the state the cap would have
+     * met (to that drift, some 1e-7 of the speeds).
      */
     Result solve(double[] vx0, double[] vy0, double[] impact, double speedLimit) {
         vx = vx0.clone();
@@ -105,7 +100,7 @@ final class NormalImpulses {
                 return new Result(vx, vy, largest, projection.withinLimit(vx, vy, speedLimit), round);
             }
             if ((maxImpactRounds - round) % 2 == 0 && twoBackX != null) {
-                double tolerance = CYCLE_MATCH * Math.max(1, fastest(vx, vy));
+                double tolerance = Tolerances.CYCLE_MATCH * Math.max(1, fastest(vx, vy));
                 if (within(twoBackX, vx, tolerance) && within(twoBackY, vy, tolerance)) {
                     break;
                 }

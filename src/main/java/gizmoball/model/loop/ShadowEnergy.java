@@ -33,10 +33,12 @@ final class ShadowEnergy {
     /** The balls of a group that take a correction, and the direction each takes, side by side. */
     private final List<Ball> correctable = new ArrayList<>();
     private final List<Vect> directions = new ArrayList<>();
-    /** A correction's direction along a ball's contacts may close on one by no more than rounding. */
-    private static final double TANGENT_ROUNDING = 1e-12;
-    /** The least part of a bounce's normal along a sliding ball's contacts that carries a correction. */
-    private static final double SLIDING_PART = 1e-3;
+    /** {@link LoopSettings#slidingPart()}. */
+    private final double slidingPart;
+
+    ShadowEnergy(LoopSettings settings) {
+        this.slidingPart = settings.slidingPart();
+    }
 
     /**
      * Tick {@code number} ({@link StepContext#tick}), of {@code seconds} under this gravity, starts: the books are
@@ -150,12 +152,12 @@ final class ShadowEnergy {
             along = along.minus(c.times(along.dot(c)));
         }
         for (Vect c : contacts) {
-            if (Math.abs(along.dot(c)) > TANGENT_ROUNDING) {
+            if (Math.abs(along.dot(c)) > Tolerances.TANGENT_ROUNDING) {
                 return null;   // not along all of them at once
             }
         }
         double length = along.length();
-        return length < SLIDING_PART ? null : along.times(1 / length);
+        return length < slidingPart ? null : along.times(1 / length);
     }
 
     /**

@@ -29,7 +29,7 @@ final class StepContext {
     Vect gravity;
     /** The contact queries for this tick's gravity and length (made again only when either changes). */
     Contacts contacts;
-    final ShadowEnergy energy = new ShadowEnergy();
+    final ShadowEnergy energy;
     /** SEED: balls that have had their collision this tick and move no more; CONTINUOUS: balls over their cap. */
     final Set<Ball> finished = new HashSet<>();
     final CollisionDetector detector;
@@ -66,8 +66,9 @@ final class StepContext {
         this.view = view;
         this.actions = actions;
         this.settings = settings;
-        this.detector = new CollisionDetector(view, finished);
-        this.schedule = new CollisionSchedule(detector, view.ballGrid());
+        this.energy = new ShadowEnergy(settings);
+        this.detector = new CollisionDetector(view, finished, settings);
+        this.schedule = new CollisionSchedule(detector, view.ballGrid(), settings);
     }
 
     /** A tick of {@code seconds} starts: the constants are the board's now, every book is empty, every count 0. */

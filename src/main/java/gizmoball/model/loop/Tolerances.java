@@ -1,8 +1,8 @@
 package gizmoball.model.loop;
 
 /**
- * Every length and speed tolerance of the model and the board files, in one place, so that what the loop leaves
- * behind is always what the editor and the loader accept (docs/design.md, "Tolerances").
+ * Every tolerance of the model and the board files, in one place: lengths, speeds, times and rounding scales, so
+ * that what the loop leaves behind is always what the editor and the loader accept (docs/design.md, "Tolerances").
  *
  * <p>They nest: {@link #CONTACT} &lt; {@link #PLACEMENT} &lt; {@link #INVARIANT}. The loop never leaves a ball
  * deeper than {@code CONTACT} in a surface (a persistent contact whose ball drifts in by more is pushed back out to
@@ -30,6 +30,34 @@ public final class Tolerances {
      * 1e-12 L. Faces have no such allowance: along a face a graze could sink a ball.
      */
     public static final double GRAZE_ANGLE = 1e-6;
+    /** L: a persistent contact's penetration below this is rounding and left alone; deeper, the ball is put back. */
+    static final double SNAP_DEPTH = CONTACT / 10;
+    /** L: the margin around a ball's swept box when asking for what it can reach (touching shapes must be found). */
+    static final double REACH_MARGIN = 1e-6;
+    /** s: collisions this close in time are simultaneous (the earliest search then prefers a circle). */
+    static final double TIME_TIE = 1e-12;
+    /**
+     * L/s: a velocity component below this is rounding debris. Far below anything meaningful (resting-contact
+     * projections leave components near 1e-14 that decide whether a ball is still closing on a corner), far above the
+     * range where a collision time gap / speed overflows.
+     */
+    static final double NEGLIGIBLE_SPEED = 1e-100;
+
+    // Rounding on a relative scale: each a multiple of the quantities it compares, far below any real change.
+    /** Of the cluster's summed |v|^2: a change this small is rounding, not a loss or a gain. */
+    static final double KEPT_ENERGY = 1e-12;
+    /**
+     * Of the fastest ball's speed: how near a round of impacts must start to the start two rounds before for the
+     * rounds to count as a cycle of two.
+     */
+    static final double CYCLE_MATCH = 1e-9;
+    /**
+     * Of the set's scale: a pivot this small counts as zero, the row depending on the set (a face and the corner flush
+     * with it, both touched along one normal).
+     */
+    static final double DEPENDENT_PIVOT = 1e-12;
+    /** Of a unit direction: a correction along a ball's contacts may close on one by no more than this. */
+    static final double TANGENT_ROUNDING = 1e-12;
 
     private Tolerances() {
     }

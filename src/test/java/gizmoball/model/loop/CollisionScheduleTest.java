@@ -44,15 +44,15 @@ class CollisionScheduleTest {
             }
         }
         List<Ball> free = new ArrayList<>(LoopViews.of(board).balls());
-        CollisionDetector detector = new CollisionDetector(LoopViews.of(board), Set.of());
-        CollisionSchedule schedule = new CollisionSchedule(detector, new BallGrid());
+        CollisionDetector detector = new CollisionDetector(LoopViews.of(board), Set.of(), LoopSettings.STANDARD);
+        CollisionSchedule schedule = new CollisionSchedule(detector, new BallGrid(), LoopSettings.STANDARD);
         schedule.file(free, 0);
         double tick = 0.25;
         double elapsed = 0;
         int step = 0;
         for (; step < 200 && elapsed < tick; step++) {
             Collision kept = schedule.next(free, elapsed, tick - elapsed);
-            CollisionSchedule afresh = new CollisionSchedule(detector, new BallGrid());
+            CollisionSchedule afresh = new CollisionSchedule(detector, new BallGrid(), LoopSettings.STANDARD);
             afresh.file(free, elapsed);
             Collision fresh = afresh.next(free, elapsed, tick - elapsed);
             String where = "seed " + seed + " step " + step;
