@@ -17,6 +17,7 @@ import gizmoball.view.editor.PropertiesPanel;
 import gizmoball.view.editor.SidePane;
 
 import gizmoball.controller.PlayTest;
+import gizmoball.controller.PlayTestCommand;
 import javax.swing.JMenu;
 import javax.swing.JMenuBar;
 import javax.swing.JMenuItem;
@@ -119,7 +120,8 @@ public final class BuildModeInstaller {
 
     /**
      * Build mode's Test menu: Play-test (Ctrl+L) plays the design {@link PlayTest#GAMES} times with the lab's
-     * autoplayer and idle player in the background and shows what came of it. Enabled in build mode only.
+     * autoplayer and idle player in the background and shows what came of it; asked again while it plays, it shows
+     * the running one. Enabled in build mode only.
      */
     private static JMenu testMenu(GameWindow window, GameSession session) {
         JMenu menu = new JMenu("Test");
@@ -129,8 +131,8 @@ public final class BuildModeInstaller {
         playTest.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_L, InputEvent.CTRL_DOWN_MASK));
         playTest.setToolTipText("Play the board " + PlayTest.GAMES + " times with an autoplayer and " + PlayTest.GAMES
                 + " with a player who only launches: scores, seconds per ball, gizmos never hit, a heat map");
-        playTest.addActionListener(e -> PlayTest.start(window, session.boardToSave(), session.boardName(),
-                PlayTest.settings()));
+        PlayTestCommand command = new PlayTestCommand(window, session::boardToSave, session::boardName);
+        playTest.addActionListener(e -> command.run());
         menu.add(playTest);
         menu.setEnabled(session.mode() == Mode.BUILD);
         return menu;

@@ -41,6 +41,8 @@ final class BoardLoop implements LoopView, LoopActions {
     private LoopMode loopMode = LoopMode.CONTINUOUS;
     private double nextCollisionLookAhead;
     private long lastRedrawNanos;
+    /** The last {@link #gravity()}, kept while the board's gravity stays the same (a vector is a value). */
+    private Vect gravity;
 
     BoardLoop(PhysicsConstants constants, Clock clock, Registry registry, Wiring wiring, Play play,
             Sleepers sleepers, EventLog events, EndOfTick endOfTick) {
@@ -55,8 +57,8 @@ final class BoardLoop implements LoopView, LoopActions {
     }
 
     @Override
-    public Collection<Ball> balls() {
-        return registry.balls();
+    public List<Ball> balls() {
+        return registry.ballList();
     }
 
     @Override
@@ -100,7 +102,11 @@ final class BoardLoop implements LoopView, LoopActions {
 
     @Override
     public Vect gravity() {
-        return new Vect(0, constants.gravity());   // the board's gravity pulls down the board, along +y
+        double g = constants.gravity();
+        if (gravity == null || gravity.y() != g) {
+            gravity = new Vect(0, g);   // the board's gravity pulls down the board, along +y
+        }
+        return gravity;
     }
 
     @Override

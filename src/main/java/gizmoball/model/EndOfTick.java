@@ -71,21 +71,28 @@ final class EndOfTick {
      * any order it was given in the tick: the hit is what the ball saw last).
      */
     void dropHitTargets(List<PlayEvent> tickEvents) {
-        for (PlayEvent event : tickEvents) {
-            if (event instanceof PlayEvent.Hit hit && hit.struck() instanceof TriggerSource.OfGizmo struck
+        for (int i = 0; i < tickEvents.size(); i++) {
+            if (tickEvents.get(i) instanceof PlayEvent.Hit hit && hit.struck() instanceof TriggerSource.OfGizmo struck
                     && registry.gizmo(struck.gizmo()) instanceof SwitchedCell cell && cell.fallsWhenHit()) {
                 cellOrders.put(cell.name(), false);
             }
         }
     }
 
-    /** A tick starts or ends: spawns, gates and drop targets asked for while it runs wait for its end. */
+    /**
+     * A tick starts or ends: spawns, gates and drop targets asked for while it runs wait for its end. A tick that
+     * asked for none and left no cell waiting ends with nothing made.
+     */
     void ticking(boolean inTick) {
         ticking = inTick;
-        if (!inTick) {
+        if (inTick) {
+            return;
+        }
+        List<SwitchedCell> switched = registry.switchedCells();
+        if (!cellOrders.isEmpty() || anyWaiting(switched)) {
             Map<String, Boolean> cells = new LinkedHashMap<>(cellOrders);
             cellOrders.clear();
-            for (SwitchedCell cell : registry.switchedCells()) {
+            for (SwitchedCell cell : switched) {
                 if (cell.isWaiting() && !cells.containsKey(cell.name())) {
                     cells.put(cell.name(), true);   // still waiting to be solid: the cell may be clear now
                 }
@@ -95,10 +102,21 @@ final class EndOfTick {
                     switchNow(cell, solid);
                 }
             });
+        }
+        if (!toSpawn.isEmpty()) {
             List<Runnable> due = List.copyOf(toSpawn);
             toSpawn.clear();
             due.forEach(Runnable::run);
         }
+    }
+
+    private static boolean anyWaiting(List<SwitchedCell> cells) {
+        for (int i = 0; i < cells.size(); i++) {
+            if (cells.get(i).isWaiting()) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** A sink took the ball, which leaves the board at the tick's end ({@link #removeSunk}). */
@@ -108,8 +126,8 @@ final class EndOfTick {
 
     /** The tick is over: the balls sinks took in it leave the board. */
     void removeSunk() {
-        for (String ball : sunk) {
-            registry.remove(registry.ball(ball));
+        for (int i = 0; i < sunk.size(); i++) {
+            registry.remove(registry.ball(sunk.get(i)));
         }
         sunk.clear();
     }

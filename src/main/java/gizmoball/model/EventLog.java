@@ -15,6 +15,9 @@ final class EventLog {
 
     /** The events since the last tick's report, for this tick's. */
     List<PlayEvent> drain() {
+        if (pending.isEmpty()) {
+            return List.of();   // most ticks: no copy of nothing
+        }
         List<PlayEvent> events = List.copyOf(pending);
         pending.clear();
         return events;

@@ -35,6 +35,8 @@ final class Registry {
      */
     private List<MovingShape> movingShapes;
     private List<SwitchedCell> switchedCells;
+    /** The balls in board order, made again after a ball comes or goes (null until then): the loop walks it by index. */
+    private List<Ball> ballList;
 
     /** Becomes a deep copy of source. */
     void copyFrom(Registry source) {
@@ -43,12 +45,14 @@ final class Registry {
             insert(gizmo.copy());
         }
         source.balls.values().forEach(ball -> balls.put(ball.name(), ball.copy()));
+        ballList = null;
         passingPairs.addAll(source.passingPairs);
     }
 
     void clear() {
         gizmos.clear();
         balls.clear();
+        ballList = null;
         passingPairs.clear();
         index = new SpatialIndex();
         kindsChanged();
@@ -60,6 +64,14 @@ final class Registry {
 
     Collection<Ball> balls() {
         return balls.values();
+    }
+
+    /** {@link #balls()} as a list, kept until a ball comes or goes. */
+    List<Ball> ballList() {
+        if (ballList == null) {
+            ballList = List.copyOf(balls.values());
+        }
+        return ballList;
     }
 
     /** The gizmo of that name, or null. */
@@ -101,6 +113,7 @@ final class Registry {
         index.remove(gizmo);
         gizmos.remove(gizmo.name());
         gizmo.held().forEach(balls::remove);
+        ballList = null;
         kindsChanged();
     }
 
@@ -121,11 +134,13 @@ final class Registry {
 
     void add(Ball ball) {
         balls.put(ball.name(), ball);
+        ballList = null;
     }
 
     void remove(Ball ball) {
         releaseFromAbsorber(ball);
         balls.remove(ball.name());
+        ballList = null;
     }
 
     /** The ball leaves whichever absorber holds it. */
@@ -177,6 +192,9 @@ final class Registry {
 
     /** Forgets the passing pairs that have come apart (or lost a ball to an absorber or a delete). */
     void forgetSeparatedPairs() {
+        if (passingPairs.isEmpty()) {
+            return;   // the usual board: none to look at, and no iterator made for none
+        }
         passingPairs.removeIf(pair -> {
             List<Ball> two = pair.stream().map(balls::get).toList();
             return two.contains(null) || two.get(0).isCaptured() || two.get(1).isCaptured()

@@ -39,12 +39,16 @@ class Issue20ReproductionsTest {
      * neighbour then took away what pressed into the neighbour as if it stood still, which sent the end ball back
      * into the square, 400 times a tick. Seed 13000553 (a packed pocket drawn): a row that only nearly depended on
      * the active set's was taken as proof that the cluster had no answer, and the pocket met itself again at no time
-     * apart to the cap.
+     * apart to the cap. Seeds 1000117, 1000384 and 1000596 (200 balls, spawners fed by the walls), each from the
+     * tick before its guard: a pile of more balls than a cluster holds, the ones beyond falling onto the rest, pushed
+     * the cluster into the floor as surfaces moving at their speed; no velocity satisfied that, and the cluster met
+     * itself again at no time apart to the cap.
      */
     @ParameterizedTest(name = "{0}")
     @ValueSource(strings = {"sink-corner-in-a-chain.txt", "passing-in-a-slot.txt", "sliding-past-in-a-slot.txt",
             "four-in-a-box.txt", "nearly-flat-wedge.txt", "row-pushed-along.txt", "resting-on-a-moving-ball.txt",
-            "pocket-nearly-dependent.txt"})
+            "pocket-nearly-dependent.txt", "pocket-beyond-the-limit-1000117.txt",
+            "pocket-beyond-the-limit-1000384.txt", "pocket-beyond-the-limit-1000596.txt"})
     void boardsTheFuzzFoundPlayCleanly(String file) throws Exception {
         assertPlaysCleanly("/fuzz-found/", file);
     }

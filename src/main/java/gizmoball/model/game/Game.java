@@ -143,7 +143,8 @@ public final class Game implements GameProgress {
             toCome[0] = Math.max(0, rules.ballsPerGame() - field.ballCount());
             Arrays.fill(toCome, 1, players, rules.ballsPerGame());
         }
-        for (PlayEvent event : events) {
+        for (int i = 0; i < events.size(); i++) {
+            PlayEvent event = events.get(i);
             if (event instanceof PlayEvent.Hit hit && hit.isRealImpact() && hit.struck() instanceof TriggerSource.OfGizmo gizmo) {
                 scored(tick, rules, gizmo.gizmo(), rules.pointsOf(gizmo.gizmo(), hit.kind()));
             } else if (event instanceof PlayEvent.Fired fired && field.isLauncher(fired.absorber()) && !saveUsed) {

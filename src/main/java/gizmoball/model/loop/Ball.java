@@ -25,6 +25,12 @@ public final class Ball implements BallView {
     private Circle circle;
     private Contact.OtherBall asContact;
     private ContactRef.OnBall asSupported;
+    /**
+     * The velocity's components (as {@link Vect} keeps them), and the velocity as a {@link Vect}, made when asked for:
+     * stage 1 changes the velocity of every awake ball in every tick.
+     */
+    private double vx;
+    private double vy;
     private Vect velocity;
     private boolean captured;
     private final List<ContactRef> contacts = new ArrayList<>();
@@ -37,13 +43,13 @@ public final class Ball implements BallView {
     /** A free ball, awake, in contact with nothing. For the board, not for views. */
     public Ball(String name, Vect position, Vect velocity) {
         this.name = name;
-        this.velocity = velocity;
+        keepVelocity(velocity);
         moveTo(position);
     }
 
     /** A copy with the same state and contacts (for a copy of the board). For the board, not for views. */
     public Ball copy() {
-        Ball copy = new Ball(name, position(), velocity);
+        Ball copy = new Ball(name, position(), velocity());
         copy.captured = captured;
         copy.contacts.addAll(contacts);
         copy.stillTime = stillTime;
@@ -73,7 +79,20 @@ public final class Ball implements BallView {
     }
 
     public Vect velocity() {
+        if (velocity == null) {
+            velocity = new Vect(vx, vy);
+        }
         return velocity;
+    }
+
+    /** The velocity's x in L/s, as {@link #velocity()} has it, without making a vector. */
+    double vx() {
+        return vx;
+    }
+
+    /** The velocity's y in L/s, as {@link #velocity()} has it, without making a vector. */
+    double vy() {
+        return vy;
     }
 
     public double radius() {
@@ -111,7 +130,7 @@ public final class Ball implements BallView {
 
     void fallAsleep() {
         asleep = true;
-        velocity = Vect.ZERO;
+        keepVelocity(Vect.ZERO);
     }
 
     /** Awake again, contacts kept (the loop checks them at the next tick), stillness counted from zero. */
@@ -218,24 +237,55 @@ public final class Ball implements BallView {
      * loop, not for views.
      */
     public void setVelocity(Vect newVelocity) {
-        double speed = newVelocity.length();
-        Vect clamped = speed > Arena.MAX_SPEED * (1 + 1e-12) ? newVelocity.times(Arena.MAX_SPEED / speed) : newVelocity;
-        double vx = negligibleToZero(clamped.x());
-        double vy = negligibleToZero(clamped.y());
-        // A vector is a value: where nothing was clamped or zeroed, the one given is the one to keep.
-        velocity = vx == clamped.x() && vy == clamped.y() ? clamped : new Vect(vx, vy);
+        setVelocity(newVelocity.x(), newVelocity.y());
+        if (vx == newVelocity.x() && vy == newVelocity.y()) {
+            velocity = newVelocity;   // a vector is a value: where nothing was clamped or zeroed, keep the one given
+        }
+    }
+
+    /** As {@link #setVelocity(Vect)} with {@code new Vect(newX, newY)}, without making it. */
+    void setVelocity(double newX, double newY) {
+        double x0 = newX + 0.0;
+        double y0 = newY + 0.0;
+        double speed = Components.length(x0, y0);
+        if (speed > Arena.MAX_SPEED * (1 + 1e-12)) {
+            double factor = Arena.MAX_SPEED / speed;   // Vect.times
+            x0 = x0 * factor + 0.0;
+            y0 = y0 * factor + 0.0;
+        }
+        double newVx = negligibleToZero(x0);
+        double newVy = negligibleToZero(y0);
+        if (newVx != vx || newVy != vy) {
+            vx = newVx;
+            vy = newVy;
+            // its vector is made when asked for, but for a ball stopped (one at rest on its contacts) or unchanged
+            velocity = newVx == 0 && newVy == 0 ? Vect.ZERO : null;
+        }
+    }
+
+    private void keepVelocity(Vect v) {
+        vx = v.x();
+        vy = v.y();
+        velocity = v;
     }
 
     private static double negligibleToZero(double component) {
         return Math.abs(component) < Tolerances.NEGLIGIBLE_SPEED ? 0 : component;
     }
 
-    /** Straight on for {@code dt} seconds: the centre {@code new Vect(x + vx dt, y + vy dt)} would give. */
+    /**
+     * Straight on for {@code dt} seconds: the centre {@code new Vect(x + vx dt, y + vy dt)} would give. A ball that
+     * stays where it is (at rest, as a ball lying on its contacts mostly is) keeps its vector and circle.
+     */
     void advance(double dt) {
-        x = x + velocity.x() * dt + 0.0;
-        y = y + velocity.y() * dt + 0.0;
-        position = null;
-        circle = null;
+        double newX = x + vx * dt + 0.0;
+        double newY = y + vy * dt + 0.0;
+        if (newX != x || newY != y) {
+            x = newX;
+            y = newY;
+            position = null;
+            circle = null;
+        }
     }
 
     /** An absorber holds it there, at rest, its contacts forgotten. For the board, not for views. */
@@ -243,7 +293,7 @@ public final class Ball implements BallView {
         disturb();
         captured = true;
         moveTo(holdingPosition);
-        velocity = Vect.ZERO;
+        keepVelocity(Vect.ZERO);
     }
 
     /** Free again, at that place and velocity, its contacts forgotten. For the board, not for views. */
@@ -256,7 +306,7 @@ public final class Ball implements BallView {
 
     @Override
     public String toString() {
-        return "ball " + name + " at " + position() + " moving " + velocity + (captured ? " (captured)" : "")
+        return "ball " + name + " at " + position() + " moving " + velocity() + (captured ? " (captured)" : "")
                 + (asleep ? " (asleep)" : "");
     }
 }

@@ -30,6 +30,8 @@ final class Contacts {
     private final Vect gravity;
     /** Which of a ball's contacts still hold, by place ({@link #keepHolding}), kept from ball to ball. */
     private boolean[] holds = new boolean[4];
+    /** The list {@link #normals(Ball)} fills. */
+    private final List<Vect> queried = new ArrayList<>();
 
     /**
      * A ball lying on something and nudged off it by a rounding of a wedge's projections, or rolling over a curve
@@ -59,9 +61,13 @@ final class Contacts {
     void refresh(Ball ball, List<Vect> normals) {
         if (onACorner(ball)) {
             // the face a corner may be the end of is found and takes over, before the corner's hold can act
-            discover(ball, new ArrayList<>());
+            discover(ball, null);
             List<ContactRef> refs = ball.contacts();
-            refs.removeIf(ref -> isFlushCorner(refs, ref));
+            for (int i = refs.size() - 1; i >= 0; i--) {
+                if (isFlushCorner(refs, refs.get(i))) {
+                    refs.remove(i);   // a corner's removal changes no face, so no other corner's test
+                }
+            }
         }
         normals.clear();
         if (keepHolding(ball, normals)) {
@@ -135,7 +141,8 @@ final class Contacts {
     }
 
     private boolean onAFaceOf(List<ContactRef> refs, Vect point) {
-        for (ContactRef ref : refs) {
+        for (int i = 0; i < refs.size(); i++) {
+            ContactRef ref = refs.get(i);
             LineSegment face = faceOf(ref);
             if (face != null && Geometry.perpendicularPoint(face, point) != null
                     && point.distanceSquared(Geometry.perpendicularPointWholeLine(face, point))
@@ -176,10 +183,16 @@ final class Contacts {
         return gizmo instanceof MovingShape moving && moving.isMoving() ? null : gizmo;
     }
 
-    /** The normals of the ball's contacts as they are now, without changing them. */
+    /**
+     * The normals of the ball's contacts as they are now, without changing them: a list kept from call to call, which
+     * the next call empties (each caller reads it before it asks again).
+     */
     List<Vect> normals(Ball ball) {
-        List<Vect> normals = new ArrayList<>();
-        for (ContactRef ref : ball.contacts()) {
+        List<Vect> normals = queried;
+        normals.clear();
+        List<ContactRef> refs = ball.contacts();
+        for (int i = 0; i < refs.size(); i++) {
+            ContactRef ref = refs.get(i);
             normalOf(ball, ref, normals, Look.QUERY);
         }
         return normals;
@@ -194,12 +207,13 @@ final class Contacts {
      * velocity closes on faster than rounding; null if there is none.
      */
     Touch closing(Ball ball, List<ContactRef> surfaces, ContactRef besides) {
-        for (ContactRef ref : surfaces) {
+        for (int i = 0; i < surfaces.size(); i++) {
+            ContactRef ref = surfaces.get(i);
             if (ref.equals(besides) || ref instanceof ContactRef.OnBall) {
                 continue;
             }
             Vect normal = normal(ball, ref);   // null too for a part of a shape now moving
-            if (normal == null || ball.velocity().dot(normal) >= -Tolerances.ROUNDING_SPEED) {
+            if (normal == null || ball.vx() * normal.x() + ball.vy() * normal.y() >= -Tolerances.ROUNDING_SPEED) {
                 continue;
             }
             if (ref instanceof ContactRef.Wall wall) {
@@ -217,13 +231,15 @@ final class Contacts {
 
     /** The normal of one of the ball's contacts as it is now; null if that contact has ended. */
     Vect normal(Ball ball, ContactRef ref) {
-        return normalOf(ball, ref, new ArrayList<>(), Look.QUERY);
+        return normalOf(ball, ref, null, Look.QUERY);
     }
 
     /** The normals of the ball's contacts other than {@code surface}, as they are now. */
     List<Vect> normalsBesides(Ball ball, ContactRef surface) {
         List<Vect> normals = new ArrayList<>();
-        for (ContactRef ref : ball.contacts()) {
+        List<ContactRef> refs = ball.contacts();
+        for (int i = 0; i < refs.size(); i++) {
+            ContactRef ref = refs.get(i);
             if (!ref.equals(surface)) {
                 normalOf(ball, ref, normals, Look.QUERY);
             }
@@ -241,38 +257,21 @@ final class Contacts {
     /**
      * The velocity nearest to v that closes on none of the surfaces: unchanged if it closes on none, else with the
      * closing part along one normal removed if that leaves it closing on no other, else zero (wedged: in the plane,
-     * two independent surfaces hold a ball still).
+     * two independent surfaces hold a ball still). {@link Projection} reckons it on the components.
      */
     static Vect project(Vect v, List<Vect> normals) {
-        Vect best = v;
-        double bestChange = Double.POSITIVE_INFINITY;
-        boolean closes = false;
-        for (int i = 0; i < normals.size(); i++) {
-            Vect n = normals.get(i);
-            double along = v.dot(n);
-            if (along >= 0) {
-                continue;
-            }
-            closes = true;
-            Vect candidate = v.minus(n.times(along));
-            if (-along < bestChange && closesOnNone(candidate, normals)) {
-                best = candidate;
-                bestChange = -along;
-            }
-        }
-        if (!closes) {
-            return v;
-        }
-        return bestChange < Double.POSITIVE_INFINITY ? best : Vect.ZERO;
+        int along = Projection.of(v.x(), v.y(), normals);
+        return along == Projection.CLOSES_ON_NONE ? v
+                : new Vect(Projection.x(v.x(), v.y(), normals, along), Projection.y(v.x(), v.y(), normals, along));
     }
 
     /**
-     * Whether a ball whose velocity after friction is {@code v} only slides on its contacts: they are all still
+     * Whether a ball whose velocity after friction is {@code (vx, vy)} only slides on its contacts: they are all still
      * (no ball among them) and v closes on none faster than rounding, so projecting stage 1's velocity removes only
      * what gravity's kick pressed into them. Such a tick keeps the shadow energy (ShadowEnergy): along the surfaces
      * the kick is gravity's part along them, and the straight move never leaves them.
      */
-    static boolean slidesOnStill(Ball ball, Vect v, List<Vect> normals) {
+    static boolean slidesOnStill(Ball ball, double vx, double vy, List<Vect> normals) {
         List<ContactRef> refs = ball.contacts();
         for (int i = 0; i < refs.size(); i++) {
             if (refs.get(i) instanceof ContactRef.OnBall) {
@@ -280,17 +279,8 @@ final class Contacts {
             }
         }
         for (int i = 0; i < normals.size(); i++) {
-            if (v.dot(normals.get(i)) < -Tolerances.ROUNDING_SPEED) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    private static boolean closesOnNone(Vect v, List<Vect> normals) {
-        double rounding = 1e-12 * v.length();
-        for (int i = 0; i < normals.size(); i++) {
-            if (v.dot(normals.get(i)) < -rounding) {
+            Vect n = normals.get(i);
+            if (vx * n.x() + vy * n.y() < -Tolerances.ROUNDING_SPEED) {
                 return false;
             }
         }
@@ -306,7 +296,10 @@ final class Contacts {
         QUERY, SNAP, HOLD
     }
 
-    /** Adds the normal of a contact that still holds to {@code normals} and returns it; null if it has ended. */
+    /**
+     * Adds the normal of a contact that still holds to {@code normals} (unless that is null) and returns it; null if
+     * it has ended.
+     */
     private Vect normalOf(Ball ball, ContactRef ref, List<Vect> normals, Look look) {
         Vect normal;
         if (ref instanceof ContactRef.Wall wall) {
@@ -316,7 +309,7 @@ final class Contacts {
         } else {
             normal = onBall(ball, (ContactRef.OnBall) ref, look);
         }
-        if (normal != null) {
+        if (normal != null && normals != null) {
             normals.add(normal);
         }
         return normal;
@@ -366,50 +359,69 @@ final class Contacts {
         return false;
     }
 
+    /**
+     * The contact with the segment at the foot of the perpendicular from the ball's centre; none past its ends. The
+     * foot is {@code Geometry.perpendicularPoint}'s, reckoned on the components (the same doubles, in the same order)
+     * so that a ball lying on a face makes no vector for it tick after tick.
+     */
     private Vect onSegment(Ball ball, LineSegment segment, Look look) {
-        Vect p = ball.position();
-        Vect foot = Geometry.perpendicularPoint(segment, p);
-        if (foot == null) {
+        Vect p1 = segment.p1();
+        Vect p2 = segment.p2();
+        double dirX = p2.x() - p1.x() + 0.0;
+        double dirY = p2.y() - p1.y() + 0.0;
+        if (dirX == 0 && dirY == 0) {
+            return touching(ball, p1.x(), p1.y(), 0, look);
+        }
+        double px = ball.x();
+        double py = ball.y();
+        double fromP1 = (px - p1.x() + 0.0) * dirX + (py - p1.y() + 0.0) * dirY;
+        double fromP2 = (p2.x() - px + 0.0) * dirX + (p2.y() - py + 0.0) * dirY;
+        if (fromP1 < 0 || fromP2 < 0) {
             return null;   // past the end: the corner circle or the next face takes over
         }
-        return touching(ball, foot, 0, look);
+        double along = fromP1 / (dirX * dirX + dirY * dirY);
+        return touching(ball, p1.x() + (dirX * along + 0.0) + 0.0, p1.y() + (dirY * along + 0.0) + 0.0, 0, look);
     }
 
     private Vect onCircle(Ball ball, Circle circle, Look look) {
-        return touching(ball, circle.getCenter(), circle.getRadius(), look);
+        Vect centre = circle.getCenter();
+        return touching(ball, centre.x(), centre.y(), circle.getRadius(), look);
     }
 
     /**
-     * The normal away from a surface point (or circle centre) the ball touches, or null. Unless the look is a query,
-     * a ball found slightly inside is put back to touching; on a {@code HOLD}, one that drifted off by more than the
-     * contact tolerance but less than the hold gap, slowly, from a surface below or beside it (gravity does not pull
-     * it away), keeps the contact and loses the drift, and is put back onto the surface where that pushes it into
-     * nothing else; where it would, it lies a hair above the surface instead (at most g dt^2). A ball left hovering
-     * would sit still in mid-air, a visible gap under a resting ball.
+     * The normal away from a surface point (or circle centre) {@code (fromX, fromY)} the ball touches, or null.
+     * Unless the look is a query, a ball found slightly inside is put back to touching; on a {@code HOLD}, one that
+     * drifted off by more than the contact tolerance but less than the hold gap, slowly, from a surface below or
+     * beside it (gravity does not pull it away), keeps the contact and loses the drift, and is put back onto the
+     * surface where that pushes it into nothing else; where it would, it lies a hair above the surface instead (at
+     * most g dt^2). A ball left hovering would sit still in mid-air, a visible gap under a resting ball. The offset
+     * from the point is reckoned on the components, as {@code Vect}'s minus and length would.
      */
-    private Vect touching(Ball ball, Vect from, double radius, Look look) {
-        Vect offset = ball.position().minus(from);
-        double distance = offset.length();
+    private Vect touching(Ball ball, double fromX, double fromY, double radius, Look look) {
+        double offsetX = ball.x() - fromX + 0.0;
+        double offsetY = ball.y() - fromY + 0.0;
+        double distance = Components.length(offsetX, offsetY);
         double touch = radius + Arena.BALL_RADIUS;
         if (distance == 0 || distance - touch > (look == Look.HOLD ? holdGap : Tolerances.CONTACT)) {
             return null;
         }
-        Vect normal = offset.times(1 / distance);
+        double inverse = 1 / distance;
+        Vect normal = new Vect(offsetX * inverse, offsetY * inverse);
         if (look == Look.QUERY) {
             return normal;
         }
         if (distance - touch > Tolerances.CONTACT) {
-            double leaving = ball.velocity().dot(normal);
+            double leaving = ball.vx() * normal.x() + ball.vy() * normal.y();
             if (leaving > holdSpeed || normal.dot(gravity) > 0) {
                 return null;
             }
             ball.setVelocity(ball.velocity().minus(normal.times(Math.max(0, leaving))));
-            Vect onSurface = from.plus(normal.times(touch));
+            Vect onSurface = new Vect(fromX, fromY).plus(normal.times(touch));
             if (Room.at(view, ball, onSurface)) {
                 ball.moveTo(onSurface);
             }
         } else if (touch - distance > Tolerances.SNAP_DEPTH) {
-            ball.moveTo(from.plus(normal.times(touch)));
+            ball.moveTo(new Vect(fromX, fromY).plus(normal.times(touch)));
         }
         return normal;
     }

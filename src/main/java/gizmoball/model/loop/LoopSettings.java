@@ -28,7 +28,7 @@ package gizmoball.model.loop;
  * @param rattleTime               s: collisions of one ball this close together are a rattle
  * @param rattleReach              L: the farthest a rattling ball's cluster reaches for what it nearly touches
  * @param clusterBalls             balls in one contact cluster at most: the ones beyond are taken as surfaces moving as
- *                                 they move now
+ *                                 they move now where they move away, still where they press in
  * @param impactRounds             rounds of impacts of one cluster solve after which what still closes takes the impact
  *                                 inelastically: far more than a row of {@code clusterBalls} touching balls needs to
  *                                 pass an impact along and back; only balls ringing in a pocket they nearly fill go on

@@ -15,8 +15,8 @@ import physics.Vect;
  * the board goes through {@link LoopActions} (docs/design.md, "The tick"). The board is the one implementation.
  */
 public interface LoopView {
-    /** Every ball, captured ones included, in board order. */
-    Collection<Ball> balls();
+    /** Every ball, captured ones included, in board order (a list, so that the loop walks it by index). */
+    List<Ball> balls();
 
     /** Every gizmo, in board order. */
     Collection<GizmoBase> gizmos();

@@ -52,7 +52,9 @@ final class MovingStrikes {
 
     /** A stalled shape goes on once no ball touches it any more, and wakes what fell asleep in its way. */
     void releaseStalled() {
-        for (MovingShape moving : step.view.movingShapes()) {
+        List<MovingShape> shapes = step.view.movingShapes();
+        for (int i = 0; i < shapes.size(); i++) {
+            MovingShape moving = shapes.get(i);
             if (moving.isStalled() && step.view.balls().stream().noneMatch(ball -> !ball.isCaptured()
                     && moving.signedDistance(ball.position()) <= Arena.BALL_RADIUS + Tolerances.CONTACT)) {
                 moving.release();
@@ -64,10 +66,13 @@ final class MovingStrikes {
     /** Whether a moving shape's box, widened by a ball, holds the ball: it may not sleep there. */
     boolean nearMoving(Ball ball) {
         double r = 2 * Arena.BALL_RADIUS;
-        Vect p = ball.position();
-        for (MovingShape moving : step.view.movingShapes()) {
-            if (moving.isMoving() && p.x() > moving.x() - r && p.x() < moving.x() + moving.width() + r
-                    && p.y() > moving.y() - r && p.y() < moving.y() + moving.height() + r) {
+        double x = ball.x();
+        double y = ball.y();
+        List<MovingShape> shapes = step.view.movingShapes();
+        for (int i = 0; i < shapes.size(); i++) {
+            MovingShape moving = shapes.get(i);
+            if (moving.isMoving() && x > moving.x() - r && x < moving.x() + moving.width() + r
+                    && y > moving.y() - r && y < moving.y() + moving.height() + r) {
                 return true;
             }
         }

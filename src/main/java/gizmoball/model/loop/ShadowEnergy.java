@@ -58,8 +58,8 @@ final class ShadowEnergy {
      */
     void start(Ball ball) {
         double half = dt / 2;
-        double ux = ball.velocity().x() - (gravity.x() * half + 0.0);
-        double uy = ball.velocity().y() - (gravity.y() * half + 0.0);
+        double ux = ball.vx() - (gravity.x() * half + 0.0);
+        double uy = ball.vy() - (gravity.y() * half + 0.0);
         Ball.EnergyMarks marks = ball.energyMarks();
         marks.atStart = (ux * ux + uy * uy) / 2 - (gravity.x() * ball.x() + gravity.y() * ball.y());
         marks.startedIn = tick;
@@ -126,7 +126,8 @@ final class ShadowEnergy {
                 joining.clear();
             }
         }
-        for (Ball ball : bouncers) {
+        for (int i = 0; i < bouncers.size(); i++) {
+            Ball ball = bouncers.get(i);
             List<Ball> group = groups.get(ball.energyMarks().group);
             if (!group.isEmpty()) {
                 restore(group, contactNormals);
@@ -148,10 +149,12 @@ final class ShadowEnergy {
             return normal;
         }
         Vect along = normal;
-        for (Vect c : contacts) {
+        for (int i = 0; i < contacts.size(); i++) {
+            Vect c = contacts.get(i);
             along = along.minus(c.times(along.dot(c)));
         }
-        for (Vect c : contacts) {
+        for (int i = 0; i < contacts.size(); i++) {
+            Vect c = contacts.get(i);
             if (Math.abs(along.dot(c)) > Tolerances.TANGENT_ROUNDING) {
                 return null;   // not along all of them at once
             }
@@ -191,7 +194,8 @@ final class ShadowEnergy {
         double target = 0;
         correctable.clear();
         directions.clear();
-        for (Ball ball : group) {
+        for (int i = 0; i < group.size(); i++) {
+            Ball ball = group.get(i);
             Ball.EnergyMarks marks = ball.energyMarks();
             if (marks.lostIn == tick || ball.isCaptured() || marks.startedIn != tick) {
                 return;

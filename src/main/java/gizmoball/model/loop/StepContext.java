@@ -125,7 +125,9 @@ final class StepContext {
     BallCounts ballCounts() {
         int free = 0;
         int awakeNow = 0;
-        for (Ball ball : view.balls()) {
+        List<Ball> balls = view.balls();
+        for (int b = 0; b < balls.size(); b++) {
+            Ball ball = balls.get(b);
             if (!ball.isCaptured()) {
                 free++;
                 awakeNow += ball.isAsleep() ? 0 : 1;
@@ -153,7 +155,9 @@ final class StepContext {
     void findAwake() {
         schedule.awakeChanged();
         awake.clear();
-        for (Ball ball : view.balls()) {
+        List<Ball> balls = view.balls();
+        for (int b = 0; b < balls.size(); b++) {
+            Ball ball = balls.get(b);
             if (!ball.isCaptured() && !ball.isAsleep()) {
                 awake.add(ball);
             }
@@ -163,7 +167,9 @@ final class StepContext {
     /** The balls no absorber holds, in board order (a list kept for the tick's filings). */
     List<Ball> freeBalls() {
         free.clear();
-        for (Ball ball : view.balls()) {
+        List<Ball> balls = view.balls();
+        for (int b = 0; b < balls.size(); b++) {
+            Ball ball = balls.get(b);
             if (!ball.isCaptured()) {
                 free.add(ball);
             }

@@ -62,7 +62,9 @@ final class StillSurfaces {
         step.actions.recordEvent(new PlayEvent.Teleported(out.entry(), out.exit(), ball.name(), ball.position(),
                 out.centre()));
         ContactRef on = new ContactRef.OnBall(ball.name());
-        for (Ball other : step.view.balls()) {
+        List<Ball> others = step.view.balls();
+        for (int b = 0; b < others.size(); b++) {
+            Ball other = others.get(b);
             other.contacts().remove(on);
         }
         step.view.sleepers().wake(ball);   // and what slept on it: it has gone from under them
@@ -150,7 +152,9 @@ final class StillSurfaces {
      */
     private boolean wedged(Ball ball, ContactRef surface, Vect normal, Vect bounced) {
         List<Vect> taking = new ArrayList<>();
-        for (ContactRef ref : ball.contacts()) {
+        List<ContactRef> refs = ball.contacts();
+        for (int i = 0; i < refs.size(); i++) {
+            ContactRef ref = refs.get(i);
             Vect held = ref.equals(surface) ? null : step.contacts.normal(ball, ref);
             if (held != null) {
                 if (-bounced.dot(held) > step.restingSpeed(held, step.contacts.normalsBesides(ball, ref))) {

@@ -7,6 +7,7 @@ import gizmoball.model.gizmo.MovingShape;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.function.Function;
 
 import physics.Vect;
 
@@ -46,6 +47,8 @@ public final class TickRun {
     private final List<GizmoBase> tookOnTouch = new ArrayList<>();
     private final List<GizmoBase> touched = new ArrayList<>();
     private final List<Vect> contactNormals = new ArrayList<>();
+    /** The normals of a ball's contacts as they are now, for the shadow energy: made once, not every tick. */
+    private final Function<Ball, List<Vect>> normalsNow;
 
     /**
      * The loop of the board that {@code view} shows and {@code actions} act on, tuned by {@code settings}, which the
@@ -58,6 +61,7 @@ public final class TickRun {
         this.pairs = new BallPairs(step);
         this.clusters = new ClusterSolve(step);
         this.strikes = new MovingStrikes(step);
+        this.normalsNow = ball -> step.contacts.normals(ball);
     }
 
     /** Runs one tick of {@code dt} seconds: the six stages, then the report for the board to keep. */
@@ -79,7 +83,7 @@ public final class TickRun {
             collide(mark);
         }
         if (step.view.loopMode() == LoopMode.CONTINUOUS) {
-            step.energy.restore(step.contacts::normals);   // SEED stays the classic loop, lost time and all
+            step.energy.restore(normalsNow);   // SEED stays the classic loop, lost time and all
         }
         step.actions.forgetSeparatedPairs();
         step.actions.advanceTime(step.dt);
@@ -135,31 +139,43 @@ public final class TickRun {
     private void stage1FrictionAndGravity() {
         LoopView view = step.view;
         double dt = step.dt;
-        Vect kick = step.gravity.times(dt);
+        // gravity.times(dt), and each velocity below, on components: the doubles the vectors would hold
+        double kickX = step.gravity.x() * dt + 0.0;
+        double kickY = step.gravity.y() * dt + 0.0;
         List<GizmoBase> took = tookOnTouch;
         took.clear();
-        for (Ball ball : view.balls()) {
+        List<Ball> balls = view.balls();
+        for (int b = 0; b < balls.size(); b++) {
+            Ball ball = balls.get(b);
             if (ball.isCaptured() || ball.isAsleep() || takenOnTouch(ball, took)) {
                 continue;
             }
             List<Vect> normals = contactNormals;
             step.contacts.refresh(ball, normals);
-            Vect v = ball.velocity();
-            double factor = Math.max(0, 1 - view.mu() * dt - view.mu2() * v.length() * dt);
-            // v.times(factor).plus(kick), one vector made instead of two: the same doubles
-            Vect free = new Vect(v.x() * factor + 0.0 + kick.x(), v.y() * factor + 0.0 + kick.y());
-            Vect next = Contacts.project(free, normals);
-            ball.setVelocity(next);
-            // project gives back its argument when nothing presses; a ball that only slides loses only the kick
-            if (next != free && !Contacts.slidesOnStill(ball, v.times(factor), normals)) {
+            double vx = ball.vx();
+            double vy = ball.vy();
+            double factor = Math.max(0, 1 - view.mu() * dt - view.mu2() * Components.length(vx, vy) * dt);
+            double slowX = vx * factor + 0.0;   // v.times(factor)
+            double slowY = vy * factor + 0.0;
+            double freeX = slowX + kickX + 0.0;   // plus the kick
+            double freeY = slowY + kickY + 0.0;
+            int along = Projection.of(freeX, freeY, normals);
+            boolean pressed = along != Projection.CLOSES_ON_NONE;
+            double nextX = Projection.x(freeX, freeY, normals, along);
+            double nextY = Projection.y(freeX, freeY, normals, along);
+            ball.setVelocity(nextX, nextY);
+            // a ball that only slides loses only the kick
+            if (pressed && !Contacts.slidesOnStill(ball, slowX, slowY, normals)) {
                 step.energy.lost(ball);
-            } else if (ball.velocity().equals(next)) {
+            } else if (Double.compare(ball.vx(), nextX) == 0 && Double.compare(ball.vy(), nextY) == 0) {
                 step.energy.start(ball);
             }
             countStillness(ball, normals);
         }
         // Once every ball has its velocity: a trigger may add balls (a spawner) or wake them.
-        took.forEach(taker -> stage5Triggering(TriggerSource.gizmo(taker.name())));
+        for (int i = 0; i < took.size(); i++) {
+            stage5Triggering(TriggerSource.gizmo(took.get(i).name()));
+        }
     }
 
     /**
@@ -186,7 +202,8 @@ public final class TickRun {
 
     private void countStillness(Ball ball, List<Vect> normals) {
         double stillFor = ball.stillTime() + step.dt;
-        if (normals.isEmpty() || ball.velocity().length() > step.settings.sleepSpeed() || strikes.nearMoving(ball)) {
+        if (normals.isEmpty() || Components.length(ball.vx(), ball.vy()) > step.settings.sleepSpeed()
+                || strikes.nearMoving(ball)) {
             ball.setStillTime(0);
         } else if (step.settings.stillLongEnough(stillFor, step.dt)) {
             ball.fallAsleep();
@@ -208,7 +225,9 @@ public final class TickRun {
                 ball.advance(t);
             }
         }
-        for (MovingShape moving : step.view.movingShapes()) {
+        List<MovingShape> shapes = step.view.movingShapes();
+        for (int j = 0; j < shapes.size(); j++) {
+            MovingShape moving = shapes.get(j);
             moving.advance(t);   // one at a stop, or stalled by a jammed ball, does not move
         }
         step.elapsed += t;
@@ -266,7 +285,9 @@ public final class TickRun {
     /** Stage 5: the gizmo or the walls that were hit trigger every gizmo connected to them, as each connection says. */
     private void stage5Triggering(TriggerSource source) {
         double now = step.now();
-        for (Connection connection : step.view.connectionsFrom(source)) {
+        List<Connection> connections = step.view.connectionsFrom(source);
+        for (int i = 0; i < connections.size(); i++) {
+            Connection connection = connections.get(i);
             GizmoBase target = step.view.gizmo(connection.target());
             if (target != null) {
                 StepContext.BallCounts balls = step.ballCounts();
@@ -288,21 +309,24 @@ public final class TickRun {
     private TickReport report() {
         LoopView view = step.view;
         int asleep = 0;
-        List<BallReport> balls = new ArrayList<>();
         double lookAhead = view.nextCollisionLookAhead();
-        for (Ball ball : view.balls()) {
+        // Without the look-ahead no ball is reported: no list is made for none.
+        List<BallReport> reports = lookAhead > 0 ? new ArrayList<>() : List.of();
+        List<Ball> balls = view.balls();
+        for (int b = 0; b < balls.size(); b++) {
+            Ball ball = balls.get(b);
             if (ball.isCaptured()) {
                 continue;
             }
             asleep += ball.isAsleep() ? 1 : 0;
             if (lookAhead > 0) {
-                balls.add(ballReport(ball, lookAhead));
+                reports.add(ballReport(ball, lookAhead));
             }
         }
         nanos[Stage.REDRAWING.ordinal()] = view.lastRedrawNanos();
         return new TickReport(view.time(), StageTimes.of(nanos), step.collisions, step.zeroTimeCollisions,
                 step.simultaneousCollisions, step.awake.size(), asleep,
-                step.guards(), step.actions.drainEvents(), balls);
+                step.guards(), step.actions.drainEvents(), reports);
     }
 
     private BallReport ballReport(Ball ball, double lookAhead) {
@@ -312,7 +336,9 @@ public final class TickRun {
         Vect at = null;
         if (!ball.isAsleep()) {
             Earliest earliest = step.detector.againstScene(ball, lookAhead);
-            for (Ball other : step.view.balls()) {
+            List<Ball> others = step.view.balls();
+            for (int b = 0; b < others.size(); b++) {
+                Ball other = others.get(b);
                 if (other != ball && !other.isCaptured()) {
                     step.detector.againstBall(ball, other, lookAhead, earliest);
                 }

@@ -79,7 +79,7 @@ public final class BuildOverlay implements BoardOverlay {
             });
             controller.awaitingKeyFor().flatMap(controller.board()::gizmo).ifPresent(gizmo -> {
                 Point2D above = t.toScreen(gizmo.x(), gizmo.y());
-                label(g, "press a key\u2026", above.getX(), above.getY() - 8, EditorColors.SELECTION);
+                label(g, t, "press a key\u2026", above.getX(), above.getY() - 8, EditorColors.SELECTION);
             });
             controller.preview().ifPresent(p -> paintPreview(g, t, p));
         } finally {
@@ -227,7 +227,7 @@ public final class BuildOverlay implements BoardOverlay {
         Point2D to = t.toScreen(x + vx / Editor.VELOCITY_PER_DRAG, y + vy / Editor.VELOCITY_PER_DRAG);
         g.setStroke(new BasicStroke(LINE));
         arrow(g, from, to, color);
-        label(g, "(" + Numbers.brief(vx) + ", " + Numbers.brief(vy) + ") L/s", to.getX() + 6, to.getY(), color);
+        label(g, t, "(" + Numbers.brief(vx) + ", " + Numbers.brief(vy) + ") L/s", to.getX() + 6, to.getY(), color);
     }
 
     /** Connect's first click is made: a dashed line from the source to the pointer, to where the target goes. */
@@ -294,30 +294,35 @@ public final class BuildOverlay implements BoardOverlay {
         // Below the gizmo, clear of its selection outline; above it for the bottom row, where below is the wall.
         boolean bottomRow = gizmo.y() + gizmo.height() >= Board.SIZE;
         Point2D corner = t.toScreen(gizmo.x(), bottomRow ? gizmo.y() : gizmo.y() + gizmo.height());
-        labelBeside(g, "keys: " + keys, corner.getX(), corner.getY(), bottomRow, EditorColors.KEY_LABEL);
+        labelBeside(g, t, "keys: " + keys, corner.getX(), corner.getY(), bottomRow, EditorColors.KEY_LABEL);
     }
 
     /** A label whose box starts {@link #LABEL_GAP} beyond a selection outline, below or above {@code edgeY}. */
-    private static void labelBeside(Graphics2D g, String text, double x, double edgeY, boolean above, Color color) {
+    private static void labelBeside(Graphics2D g, BoardTransform t, String text, double x, double edgeY, boolean above,
+                                    Color color) {
         g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 12));
         FontMetrics fm = g.getFontMetrics();
         double clear = OUTLINE_GROW + (LINE + 1) / 2 + LABEL_GAP;
         // label() draws its box from (baseline - ascent - 2) to (baseline - ascent + height).
         double baseline = above ? edgeY - clear - fm.getHeight() + fm.getAscent()
                 : edgeY + clear + fm.getAscent() + 2;
-        label(g, text, x, baseline, color);
+        label(g, t, text, x, baseline, color);
     }
 
-    /** Text on a dark rounded box so it stays readable over any gizmo colour. */
-    private static void label(Graphics2D g, String text, double x, double y, Color color) {
+    /**
+     * Text on a dark rounded box so it stays readable over any gizmo colour, starting at {@code x} or, where it would
+     * run past the board's right edge (a gizmo in the last columns), moved left to end there.
+     */
+    private static void label(Graphics2D g, BoardTransform t, String text, double x, double y, Color color) {
         g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 12));
         FontMetrics fm = g.getFontMetrics();
         double w = fm.stringWidth(text) + 8;
         double h = fm.getHeight();
+        double start = Math.max(t.toScreen(0, 0).getX() + 4, Math.min(x, t.toScreen(Board.SIZE, 0).getX() - w + 4));
         g.setColor(new Color(0, 0, 0, 170));
-        g.fill(new RoundRectangle2D.Double(x - 4, y - fm.getAscent() - 2, w, h + 2, 6, 6));
+        g.fill(new RoundRectangle2D.Double(start - 4, y - fm.getAscent() - 2, w, h + 2, 6, 6));
         g.setColor(color);
-        g.drawString(text, (float) x, (float) y);
+        g.drawString(text, (float) start, (float) y);
     }
 
     private static void arrow(Graphics2D g, Point2D from, Point2D to, Color color) {

@@ -23,8 +23,13 @@ class BuildOverlayPaintTest {
     private final Editor editor = Editor.of(board);
 
     private BufferedImage render() {
+        return render(SIZE);
+    }
+
+    /** The panel painted into an image {@code width} wide: wider than the panel shows what is drawn past it. */
+    private BufferedImage render(int width) {
         BoardPanel panel = panel();
-        BufferedImage image = new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
+        BufferedImage image = new BufferedImage(width, SIZE, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();
         panel.paint(g);
         g.dispose();
@@ -85,5 +90,29 @@ class BuildOverlayPaintTest {
             assertThat(c.getRed() > 200 && c.getGreen() > 180 && c.getBlue() < 120)
                     .as("outline colour at (%d, %d): %s", x, y, c).isTrue();
         }
+    }
+
+    /** A key label beside a gizmo in the right-hand column is moved in to stay whole on the board. */
+    @Test
+    void aKeyLabelAtTheRightEdgeStaysOnTheBoard() {
+        board.addGizmo(GizmoKind.SQUARE, "S", 19, 5);
+        editor.select("S");
+        BufferedImage without = render(SIZE + 300);
+        board.bindKey(KeyEvent.VK_ENTER, KeyEdge.DOWN, "S");
+        board.bindKey(KeyEvent.VK_ENTER, KeyEdge.UP, "S");
+        BufferedImage with = render(SIZE + 300);
+        double boardRight = panel().transform().toScreen(Board.SIZE, 0).getX();
+        int drawn = 0;
+        int pastTheBoard = 0;
+        for (int x = 0; x < with.getWidth(); x++) {
+            for (int y = 0; y < SIZE; y++) {
+                if (with.getRGB(x, y) != without.getRGB(x, y)) {
+                    drawn++;
+                    pastTheBoard += x >= boardRight ? 1 : 0;
+                }
+            }
+        }
+        assertThat(drawn).as("pixels of the key label").isGreaterThan(100);
+        assertThat(pastTheBoard).as("pixels of the key label right of the board's edge at %.0f", boardRight).isZero();
     }
 }

@@ -12,6 +12,7 @@ import java.awt.Robot;
 import java.awt.Window;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.function.BooleanSupplier;
 import javax.imageio.ImageIO;
 import javax.swing.JButton;
@@ -103,6 +104,13 @@ class PlayTestGuiTest extends GameWindowFixture {
         Files.createDirectories(SHOTS);
         Gui.sleep(200);
         screenshot("play-test-running.png");
+
+        // Asked again while it plays, Play-test brings the running one forward and starts no second lab.
+        JMenuItem again = onEdt(() -> Gui.menuItem(app.window().menus(), "Play-test\u2026"));
+        onEdt(() -> again.doClick(0));
+        Gui.sleep(300);
+        assertThat(onEdt(() -> Arrays.stream(Window.getWindows())
+                .filter(w -> w.isShowing() && "playtest".equals(w.getName())).toList())).containsExactly(dialog);
 
         JButton cancel = part(dialog, JButton.class, "playtest.cancel");
         long pressed = System.nanoTime();
