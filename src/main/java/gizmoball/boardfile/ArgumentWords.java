@@ -1,6 +1,5 @@
 package gizmoball.boardfile;
 
-import gizmoball.boardfile.CommandParser.Refusal;
 import gizmoball.model.Board;
 import gizmoball.model.game.Nudge;
 import gizmoball.model.game.Tilt;

@@ -44,15 +44,6 @@ final class CommandParser {
     private CommandParser() {
     }
 
-    /** Thrown for a line that is not a well-formed command; the message is the reason. */
-    static final class Refusal extends Exception {
-        private static final long serialVersionUID = 1L;
-
-        Refusal(String reason) {
-            super(reason);
-        }
-    }
-
     /**
      * A command and how its line was understood where it was not written canonically.
      *

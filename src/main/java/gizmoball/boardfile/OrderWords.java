@@ -31,24 +31,24 @@ public final class OrderWords {
     }
 
     /** The order the words after a target say, or why they say none. */
-    static Order parse(List<String> words) throws CommandParser.Refusal {
+    static Order parse(List<String> words) throws Refusal {
         int i = 0;
         Optional<Action> action = Optional.empty();
         if (i < words.size() && !words.get(i).equalsIgnoreCase(AFTER)) {
             String word = words.get(i++);
-            action = Optional.of(Action.named(word).orElseThrow(() -> new CommandParser.Refusal("unknown action '"
+            action = Optional.of(Action.named(word).orElseThrow(() -> new Refusal("unknown action '"
                     + word + "': an action is one of " + Arrays.stream(Action.values()).map(Action::word)
                     .collect(Collectors.joining(", ")))));
         }
         double delay = 0;
         if (i < words.size()) {
             if (!words.get(i).equalsIgnoreCase(AFTER) || i + 2 != words.size()) {
-                throw new CommandParser.Refusal("after the target come an action, then '" + AFTER
+                throw new Refusal("after the target come an action, then '" + AFTER
                         + " <seconds>', each only if given; found '" + String.join(" ", words) + "'");
             }
             OptionalDouble seconds = Decimals.parse(words.get(i + 1));
             if (seconds.isEmpty()) {
-                throw new CommandParser.Refusal("delay '" + words.get(i + 1) + "' is not a number of seconds");
+                throw new Refusal("delay '" + words.get(i + 1) + "' is not a number of seconds");
             }
             delay = seconds.getAsDouble();
         }

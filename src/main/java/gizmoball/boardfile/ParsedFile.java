@@ -32,7 +32,7 @@ record ParsedFile(List<Line> commands, List<BoardFileError> errors) {
             try {
                 CommandParser.Parsed parsed = CommandParser.parse(line.text());
                 commands.add(new Line(line, parsed.command(), parsed.notes()));
-            } catch (CommandParser.Refusal refusal) {
+            } catch (Refusal refusal) {
                 errors.add(BoardFileError.at(source, line, refusal.getMessage()));
             }
         }

@@ -1,6 +1,5 @@
 package gizmoball.boardfile;
 
-import gizmoball.boardfile.CommandParser.Refusal;
 import gizmoball.model.gizmo.Setting;
 import java.util.List;
 import java.util.Locale;

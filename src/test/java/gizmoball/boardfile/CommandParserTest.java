@@ -42,13 +42,13 @@ class CommandParserTest {
 
     @ParameterizedTest(name = "{0}")
     @MethodSource("wellFormedLines")
-    void parsesWellFormedLines(String line, Command expected) throws CommandParser.Refusal {
+    void parsesWellFormedLines(String line, Command expected) throws Refusal {
         assertThat(CommandParser.parse(line)).isEqualTo(new CommandParser.Parsed(expected, List.of()));
     }
 
     @ParameterizedTest(name = "{0}")
     @MethodSource("wellFormedLines")
-    void canonicalLineParsesBackToTheSameCommand(String line, Command command) throws CommandParser.Refusal {
+    void canonicalLineParsesBackToTheSameCommand(String line, Command command) throws Refusal {
         assertThat(CommandParser.parse(command.toLine()).command()).isEqualTo(command);
     }
 
@@ -97,7 +97,7 @@ class CommandParserTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("malformedLines")
     void refusesMalformedLinesSayingWhy(String line, String reason) {
-        assertThatThrownBy(() -> CommandParser.parse(line)).isInstanceOf(CommandParser.Refusal.class)
+        assertThatThrownBy(() -> CommandParser.parse(line)).isInstanceOf(Refusal.class)
                 .hasMessageStartingWith(reason);
     }
 }
