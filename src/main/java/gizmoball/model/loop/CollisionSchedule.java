@@ -1,6 +1,5 @@
 package gizmoball.model.loop;
 
-import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collection;
 import java.util.List;
@@ -65,7 +64,6 @@ final class CollisionSchedule {
     private int[] pointedAtCount = new int[0];
     private int filed;
     private final BallGrid grid;
-    private final List<Ball> nearby = new ArrayList<>();
     /** One pair's search, asked again for every ball near the one asking (its collision is made only when found). */
     private final Earliest pair = new Earliest(0);
     /** The search of one asking ball against the balls near it. */
@@ -394,10 +392,9 @@ final class CollisionSchedule {
         double reach = near + fastest * (elapsed - filedAt);
         // The same bound for one cell's balls, with twice the margin: rounding can never pass over a pair.
         double alone = 2 * Arena.BALL_RADIUS + speed * window + 2 * Tolerances.REACH_MARGIN;
-        nearby.clear();
-        grid.near(ball.x(), ball.y(), reach, near, alone, window, elapsed - filedAt, nearby);
-        for (int i = 0; i < nearby.size(); i++) {
-            Ball other = nearby.get(i);
+        int nearby = grid.near(ball.x(), ball.y(), reach, near, alone, window, elapsed - filedAt);
+        for (int i = 0; i < nearby; i++) {
+            Ball other = grid.found(i);
             if (other == ball || other.isCaptured()) {
                 continue;
             }
