@@ -380,6 +380,29 @@ final class CollisionSchedule {
     }
 
     /**
+     * Into {@code into}, in slot order (the board's order), every filed ball whose centre lies now, {@code elapsed}
+     * seconds into the tick, within {@code within} of the ball's along x and along y, the ball itself too: a question
+     * of the cells around it, where asking every ball on the board cost a cluster of 32 balls 6,400 tests at 200 balls.
+     */
+    void filedNear(Ball ball, double within, double elapsed, List<Ball> into) {
+        into.clear();
+        double stale = elapsed - filedAt;
+        double near = within + Tolerances.REACH_MARGIN;
+        int found = grid.near(ball.x(), ball.y(), near + fastest * stale, within, near, 0, stale);
+        for (int i = 0; i < found; i++) {
+            into.add(grid.found(i));
+        }
+        for (int i = 1; i < into.size(); i++) {
+            Ball next = into.get(i);
+            int k = i;
+            for (; k > 0 && into.get(k - 1).slot() > next.slot(); k--) {
+                into.set(k, into.get(k - 1));
+            }
+            into.set(k, next);
+        }
+    }
+
+    /**
      * The ball against every ball it can reach in the window; a pair sooner than what the other ball knew becomes
      * the other's too. A sleeping ball is a still target; it never asks.
      */
