@@ -17,13 +17,14 @@ import java.util.Optional;
 
 /**
  * One parsed board-file command: {@link #applyTo} performs it on a board through the board's own editing
- * operations (so every rule of the model applies), {@link #toLine()} writes it back in canonical form. What several
- * commands share is said once, by the kind of command they are ({@link Adds}, {@link OfOne}, {@link AboutOne}); the
- * lines of the board's game are {@link GameLine}s. Over 400 lines because it is one sealed family, a record for
- * each of the format's words, so that reading and writing have one list of what a line can say.
+ * operations (so every rule of the model applies), {@link #toLine()} writes it back in canonical form; each record
+ * says only those two. What several commands share (what they need, define and state) is said once, by the kind of
+ * command they are ({@link Adds}, {@link OfOne}, {@link AboutOne}, {@link OfTheBoard}); the lines of the board's game
+ * are {@link GameLine}s. One sealed family, a record for each of the format's words, so that reading and writing have
+ * one list of what a line can say.
  */
-public sealed interface Command permits Command.Adds, Command.OfOne, Command.AboutOne, Command.Marked,
-        Command.Connect, Command.KeyConnect, Command.Pair, Command.Gravity, Command.Friction, GameLine {
+public sealed interface Command permits Command.Adds, Command.OfOne, Command.AboutOne, Command.OfTheBoard,
+        Command.Marked, Command.Connect, Command.KeyConnect, Command.Pair, GameLine {
 
     /** Performs the command, or throws the board's refusal leaving the board as it was. */
     void applyTo(Board board);
@@ -76,13 +77,10 @@ public sealed interface Command permits Command.Adds, Command.OfOne, Command.Abo
 
     /**
      * A command that states one fact of one named gizmo (its colour, an accelerator's factor, where play left a
-     * flipper): it needs that gizmo, and the fact is its subject.
+     * flipper): it needs that gizmo, and the fact is its subject, named by the command's record, one for each fact.
      */
     sealed interface AboutOne extends Command {
         String name();
-
-        /** What the line states of the gizmo, as its {@link Subject} names it: "colour", "factor". */
-        String fact();
 
         @Override
         default List<String> references() {
@@ -91,7 +89,19 @@ public sealed interface Command permits Command.Adds, Command.OfOne, Command.Abo
 
         @Override
         default Subject subject() {
-            return new Subject(fact(), name());
+            return new Subject(getClass().getSimpleName(), name());
+        }
+    }
+
+    /**
+     * A command that states one fact of the board itself (gravity, friction, a rule of its game): the fact is its
+     * subject, named by the command's record, one for each fact.
+     */
+    sealed interface OfTheBoard extends Command permits Gravity, Friction, GameLine.BallsPerGame, GameLine.ExtraBall,
+            GameLine.NudgeLine, GameLine.TiltLine, GameLine.BallSave {
+        @Override
+        default Subject subject() {
+            return new Subject(getClass().getSimpleName(), "");
         }
     }
 
@@ -166,10 +176,6 @@ public sealed interface Command permits Command.Adds, Command.OfOne, Command.Abo
 
         public String toLine() {
             return CommandWord.ROTATE.line(name);
-        }
-
-        public String fact() {
-            return "rotation";
         }
     }
 
@@ -263,10 +269,6 @@ public sealed interface Command permits Command.Adds, Command.OfOne, Command.Abo
         public String toLine() {
             return CommandWord.COLOUR.line(name, colour.red(), colour.green(), colour.blue());
         }
-
-        public String fact() {
-            return "colour";
-        }
     }
 
     /** {@code #@Factor <name> <factor>}: how many times faster the accelerator sends a ball away. */
@@ -278,10 +280,6 @@ public sealed interface Command permits Command.Adds, Command.OfOne, Command.Abo
         public String toLine() {
             return CommandWord.FACTOR.line(name, format(factor));
         }
-
-        public String fact() {
-            return "factor";
-        }
     }
 
     /** {@code #@Plunger <absorber> <full-speed> <pull-seconds>}: the absorber is a plunger. */
@@ -292,10 +290,6 @@ public sealed interface Command permits Command.Adds, Command.OfOne, Command.Abo
 
         public String toLine() {
             return CommandWord.PLUNGER.line(name, format(plunger.fullSpeed()), format(plunger.pullSeconds()));
-        }
-
-        public String fact() {
-            return "plunger";
         }
     }
 
@@ -323,10 +317,6 @@ public sealed interface Command permits Command.Adds, Command.OfOne, Command.Abo
         public String toLine() {
             return CommandWord.SPINNER_SPEED.line(name, format(turnsPerSecond));
         }
-
-        public String fact() {
-            return "spinner speed";
-        }
     }
 
     /** {@code #@SpinnerAngle <name> <radians> running|stopped}: where play left a spinner. */
@@ -338,10 +328,6 @@ public sealed interface Command permits Command.Adds, Command.OfOne, Command.Abo
         public String toLine() {
             return CommandWord.SPINNER_STATE.line(name, format(radians), running ? "running" : "stopped");
         }
-
-        public String fact() {
-            return "spinner state";
-        }
     }
 
     /** {@code #@SpawnVelocity <name> <vx> <vy>}: the velocity of the balls the spawner adds. */
@@ -352,10 +338,6 @@ public sealed interface Command permits Command.Adds, Command.OfOne, Command.Abo
 
         public String toLine() {
             return CommandWord.SPAWN_VELOCITY.line(name, format(vx), format(vy));
-        }
-
-        public String fact() {
-            return "spawn velocity";
         }
     }
 
@@ -371,10 +353,6 @@ public sealed interface Command permits Command.Adds, Command.OfOne, Command.Abo
         public String toLine() {
             return CommandWord.FLIPPER_STATE.line(name, format(degrees), active ? "up" : "down");
         }
-
-        public String fact() {
-            return "flipper state";
-        }
     }
 
     /**
@@ -389,13 +367,9 @@ public sealed interface Command permits Command.Adds, Command.OfOne, Command.Abo
         public String toLine() {
             return CommandWord.CELL_OPEN.line(name);
         }
-
-        public String fact() {
-            return "open cell";
-        }
     }
 
-    record Gravity(double g) implements Command {
+    record Gravity(double g) implements OfTheBoard {
         public void applyTo(Board board) {
             board.setGravity(g);
         }
@@ -403,23 +377,15 @@ public sealed interface Command permits Command.Adds, Command.OfOne, Command.Abo
         public String toLine() {
             return CommandWord.GRAVITY.line(format(g));
         }
-
-        public Subject subject() {
-            return new Subject("gravity", "");
-        }
     }
 
-    record Friction(double mu, double mu2) implements Command {
+    record Friction(double mu, double mu2) implements OfTheBoard {
         public void applyTo(Board board) {
             board.setFriction(mu, mu2);
         }
 
         public String toLine() {
             return CommandWord.FRICTION.line(format(mu), format(mu2));
-        }
-
-        public Subject subject() {
-            return new Subject("friction", "");
         }
     }
 }

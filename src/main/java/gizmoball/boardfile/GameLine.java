@@ -17,7 +17,7 @@ import java.util.OptionalLong;
 public sealed interface GameLine extends Command {
 
     /** {@code #@Balls <n>}: how many balls a game on the board has. */
-    record BallsPerGame(int balls) implements GameLine {
+    record BallsPerGame(int balls) implements GameLine, Command.OfTheBoard {
         public void applyTo(Board board) {
             board.setBallsPerGame(balls);
         }
@@ -25,24 +25,16 @@ public sealed interface GameLine extends Command {
         public String toLine() {
             return CommandWord.BALLS.line(balls);
         }
-
-        public Subject subject() {
-            return new Subject("balls per game", "");
-        }
     }
 
     /** {@code #@ExtraBall <score>}: reaching that score gives one more ball, once a game. */
-    record ExtraBall(long score) implements GameLine {
+    record ExtraBall(long score) implements GameLine, Command.OfTheBoard {
         public void applyTo(Board board) {
             board.setExtraBallAt(OptionalLong.of(score));
         }
 
         public String toLine() {
             return CommandWord.EXTRA_BALL.line(score);
-        }
-
-        public Subject subject() {
-            return new Subject("extra ball", "");
         }
     }
 
@@ -62,7 +54,7 @@ public sealed interface GameLine extends Command {
     }
 
     /** {@code #@Nudge <speed> <left-key> <right-key> <up-key>}: the board can be nudged with those keys. */
-    record NudgeLine(Nudge nudge) implements GameLine {
+    record NudgeLine(Nudge nudge) implements GameLine, Command.OfTheBoard {
         public void applyTo(Board board) {
             board.setNudge(Optional.of(nudge));
         }
@@ -70,14 +62,10 @@ public sealed interface GameLine extends Command {
         public String toLine() {
             return CommandWord.NUDGE.line(format(nudge.speed()), nudge.leftKey(), nudge.rightKey(), nudge.upKey());
         }
-
-        public Subject subject() {
-            return new Subject("nudge", "");
-        }
     }
 
     /** {@code #@Tilt <nudges> <seconds>}: that many nudges within that time tilt the game. */
-    record TiltLine(Tilt tilt) implements GameLine {
+    record TiltLine(Tilt tilt) implements GameLine, Command.OfTheBoard {
         public void applyTo(Board board) {
             board.setTilt(tilt);
         }
@@ -85,24 +73,16 @@ public sealed interface GameLine extends Command {
         public String toLine() {
             return CommandWord.TILT.line(tilt.nudges(), format(tilt.seconds()));
         }
-
-        public Subject subject() {
-            return new Subject("tilt", "");
-        }
     }
 
     /** {@code #@BallSave <seconds>}: a ball drained that soon after its launch is given back, once. */
-    record BallSave(double seconds) implements GameLine {
+    record BallSave(double seconds) implements GameLine, Command.OfTheBoard {
         public void applyTo(Board board) {
             board.setBallSave(seconds);
         }
 
         public String toLine() {
             return CommandWord.BALL_SAVE.line(format(seconds));
-        }
-
-        public Subject subject() {
-            return new Subject("ball save", "");
         }
     }
 

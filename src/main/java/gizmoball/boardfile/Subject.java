@@ -6,7 +6,8 @@ package gizmoball.boardfile;
  * which is its line. A canonical file states each subject in one group of lines; a save compares a subject's
  * lines before and after an edit to know whether the author's lines for it can stay as they are.
  *
- * @param aspect what is stated ("thing", "rotation", ..., "line")
+ * @param aspect what is stated: "thing", "line", or the record of the command that states one fact ("Rotate",
+ *               "Colour", "Gravity", ...)
  * @param name   the gizmo or ball it is stated of, empty for the board's constants, the line for a set element
  */
 public record Subject(String aspect, String name) {

@@ -1,15 +1,14 @@
 package gizmoball.view;
 
 import gizmoball.model.gizmo.AcceleratorView;
+import gizmoball.model.gizmo.BarView;
 import gizmoball.model.gizmo.BumperView;
 import gizmoball.model.gizmo.DropTargetView;
-import gizmoball.model.gizmo.FlipperView;
 import gizmoball.model.gizmo.Gizmo;
 import gizmoball.model.gizmo.GateView;
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.PortalView;
 import gizmoball.model.gizmo.SpawnerView;
-import gizmoball.model.gizmo.SpinnerView;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Graphics2D;
@@ -33,10 +32,10 @@ enum GizmoArt {
     POLYGON(gizmo -> polygon(((BumperView) gizmo).outline())),
     /** A circle bumper. */
     DISC(gizmo -> circle(((BumperView) gizmo).circle())),
-    /** A flipper: its bar with round ends, at the angle play has turned it to, and a hub at the pivot. */
-    FLIPPER_BAR(GizmoArt::flipperBar),
+    /** A flipper: its bar with round ends from the pivot, at the angle play has turned it to, and a hub at the pivot. */
+    FLIPPER_BAR((gizmo, between) -> bar(gizmo, between, false)),
     /** A spinner: its bar with round ends across the pivot, at the angle play has turned it to, and a hub. */
-    SPINNER_BAR(GizmoArt::spinnerBar),
+    SPINNER_BAR((gizmo, between) -> bar(gizmo, between, true)),
     /** A sink: its cell, with the hole the balls go into. */
     SINK_HOLE(GizmoArt::cell) {
         @Override
@@ -260,17 +259,16 @@ enum GizmoArt {
         }
     }
 
-    private static Bar flipperBar(Gizmo gizmo, Interpolation between) {
-        FlipperView f = (FlipperView) gizmo;
-        return new Bar(new Line2D.Double(f.pivot().toPoint2D(), between.tip(f).toPoint2D()), f.radius(), f.pivot());
-    }
-
-    /** From one end's centre to the other's, across the pivot, at the angle drawn between two ticks. */
-    private static Bar spinnerBar(Gizmo gizmo, Interpolation between) {
-        SpinnerView s = (SpinnerView) gizmo;
-        Vect along = between.tip(s).minus(s.pivot());
-        return new Bar(new Line2D.Double(s.pivot().minus(along).toPoint2D(), s.pivot().plus(along).toPoint2D()),
-                s.radius(), s.pivot());
+    /**
+     * The turning bar at the angle drawn between two ticks: from its pivot to its tip, or {@code acrossPivot} from as
+     * far the other side of the pivot.
+     */
+    private static Bar bar(Gizmo gizmo, Interpolation between, boolean acrossPivot) {
+        BarView bar = (BarView) gizmo;
+        Vect pivot = bar.pivot();
+        Vect tip = between.tip(bar);
+        Vect tail = acrossPivot ? pivot.minus(tip.minus(pivot)) : pivot;
+        return new Bar(new Line2D.Double(tail.toPoint2D(), tip.toPoint2D()), bar.radius(), pivot);
     }
 
     private static BasicStroke roundCapped(double width) {

@@ -16,10 +16,7 @@ import physics.Vect;
  * are built once per placement, so a flipper at a stop is as static as a bumper; only a swinging flipper builds
  * the shape of its current angle.
  */
-public final class Flipper extends GizmoBase implements FlipperView, MovingShape {
-    static final double RADIUS = 0.25;
-    /** Its {@link #reflectionCoefficient()}, still or swinging. */
-    private static final double REFLECTION = 0.95;
+public final class Flipper extends TurningBar implements FlipperView {
     /** Degrees from rest to the active stop. */
     public static final double MAX_ANGLE = 90;
     static final double DEGREES_PER_SECOND = 1080;
@@ -31,15 +28,8 @@ public final class Flipper extends GizmoBase implements FlipperView, MovingShape
 
     private double angle;
     private boolean active;
-    /** Stopped short of its stop by a ball jammed against something: still until it is sent the other way. */
-    private boolean blocked;
     private Shape restShape;
     private Shape activeShape;
-    /**
-     * The shape at the angle now, made when first asked after a turn (null till then): the loop turns every moving
-     * flipper at each collision of a tick, and asks the shape only of those a ball can reach.
-     */
-    private Shape currentShape;
 
     Flipper(GizmoKind kind, String name, int x, int y) {
         super(name, kind, x, y);
@@ -53,15 +43,8 @@ public final class Flipper extends GizmoBase implements FlipperView, MovingShape
         super(other);
         this.angle = other.angle;
         this.active = other.active;
-        this.blocked = other.blocked;
         this.restShape = other.restShape;
         this.activeShape = other.activeShape;
-        this.currentShape = other.currentShape;
-    }
-
-    @Override
-    public double reflectionCoefficient() {
-        return REFLECTION;
     }
 
     /** Centre of the round end at the pivot. */
@@ -74,10 +57,6 @@ public final class Flipper extends GizmoBase implements FlipperView, MovingShape
     /** Centre of the other round end, at the current angle. */
     public Vect tip() {
         return shape().circles().get(TIP_CIRCLE).getCenter();
-    }
-
-    public double radius() {
-        return RADIUS;
     }
 
     /** From its bar at rest a quarter turn up: anticlockwise on the screen for a left flipper, clockwise for a right one. */
@@ -113,15 +92,10 @@ public final class Flipper extends GizmoBase implements FlipperView, MovingShape
         return angle != 0 || active ? new PlayState.Swung(angle, active) : new PlayState.AsBuilt();
     }
 
+    /** Short of the stop it swings to. */
     @Override
-    public boolean isMoving() {
-        return !blocked && (active ? angle < MAX_ANGLE : angle > 0);
-    }
-
-    /** True while a jammed ball holds the flipper short of its stop. */
-    @Override
-    public boolean isStalled() {
-        return blocked;
+    boolean turns() {
+        return active ? angle < MAX_ANGLE : angle > 0;
     }
 
     private void activate() {
@@ -136,10 +110,10 @@ public final class Flipper extends GizmoBase implements FlipperView, MovingShape
         }
     }
 
-    /** Sent the other way: whatever blocked it is behind it now. */
+    /** Sent the other way: whatever stalled it is behind it now. */
     private void toggle() {
         active = !active;
-        blocked = false;
+        release();
     }
 
     /** Triggered, it toggles: up if it was down or going down, else back down. */
@@ -212,23 +186,8 @@ public final class Flipper extends GizmoBase implements FlipperView, MovingShape
     public void setState(double degrees, boolean toActive) {
         angle = degrees;
         active = toActive;
-        blocked = false;
-        currentShape = shapeAt(angle);
-    }
-
-    /**
-     * A ball jammed between the flipper and something else stops it where it is. For the board and its loop, not for
-     * views.
-     */
-    @Override
-    public void stall() {
-        blocked = true;
-    }
-
-    /** The ball that blocked it has gone: it swings on. For the board and its loop, not for views. */
-    @Override
-    public void release() {
-        blocked = false;
+        release();
+        reshaped();
     }
 
     /**
@@ -254,21 +213,14 @@ public final class Flipper extends GizmoBase implements FlipperView, MovingShape
         return (active ? up : -up) * Math.toRadians(DEGREES_PER_SECOND);
     }
 
-    /**
-     * Swings for dt seconds toward the current limit, stopping exactly at it. For the board and its loop, not for
-     * views.
-     */
+    /** Swings toward the current limit, stopping exactly at it. */
     @Override
-    public void advance(double dt) {
-        if (!isMoving() || dt <= 0) {
-            return;
-        }
+    void turn(double dt) {
         double step = DEGREES_PER_SECOND * dt;
         double limit = active ? MAX_ANGLE : 0;
         double next = active ? Math.min(MAX_ANGLE, angle + step) : Math.max(0, angle - step);
         // Sums of sub-tick steps round; a swing that ends within rounding of its limit ends exactly at it.
         angle = Math.abs(limit - next) < LIMIT_SNAP_DEGREES ? limit : next;
-        currentShape = null;
     }
 
     /** The shape at the limit it is swinging to (where it will stop). For the board and its loop, not for views. */
@@ -283,11 +235,8 @@ public final class Flipper extends GizmoBase implements FlipperView, MovingShape
     }
 
     @Override
-    public Shape shape() {
-        if (currentShape == null) {
-            currentShape = shapeAt(angle);
-        }
-        return currentShape;
+    Shape shapeNow() {
+        return shapeAt(angle);
     }
 
     @Override
@@ -300,7 +249,7 @@ public final class Flipper extends GizmoBase implements FlipperView, MovingShape
                         new LineSegment(pivot.minus(across), restTip.minus(across))),
                 List.of(new Circle(pivot, RADIUS), new Circle(restTip, RADIUS)));
         activeShape = turned(MAX_ANGLE);
-        currentShape = shapeAt(angle);
+        reshaped();
         return restShape;
     }
 

@@ -12,7 +12,7 @@ import physics.Vect;
  * The members the board and its loop need beyond that are public only because the board lives in another
  * package; each says so: only the board changes gizmos, after it has checked the change on a copy.
  */
-public abstract sealed class GizmoBase permits Bumper, Flipper, PolygonGizmo, Accelerator, SwitchedCell, Spinner {
+public abstract sealed class GizmoBase permits Bumper, TurningBar, PolygonGizmo, Accelerator, SwitchedCell {
     private final String name;
     private final GizmoKind kind;
     /** Its kind's, kept here: the loop's hot paths ask it of every gizmo near a ball. */

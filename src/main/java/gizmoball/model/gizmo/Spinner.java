@@ -15,12 +15,9 @@ import physics.Vect;
  * Its shape is two side segments and two end circles; neither end is at the pivot, so neither turns in place. The
  * angle is kept reduced to [0, 2 pi) and the shape built from it with StrictMath, so play is the same everywhere.
  */
-public final class Spinner extends GizmoBase implements SpinnerView, MovingShape {
-    static final double RADIUS = 0.25;
+public final class Spinner extends TurningBar implements SpinnerView {
     /** From the pivot to each end's centre: the end's outer edge touches the inscribed disc. */
     static final double ARM = 1 - RADIUS;
-    /** Its {@link #reflectionCoefficient()}, as a flipper's. */
-    private static final double REFLECTION = 0.95;
     private static final double TWO_PI = 2 * Math.PI;
 
     /** Signed, turns per second: positive turns +x toward +y (clockwise on the screen, y down). */
@@ -29,10 +26,6 @@ public final class Spinner extends GizmoBase implements SpinnerView, MovingShape
     private double angle;
     /** Turning unless told to stop; stopped, it holds its angle. */
     private boolean running = true;
-    /** Held where it is by a jammed ball until the ball has gone or it is sent the other way. */
-    private boolean stalled;
-    /** The bar at the angle now, made when first asked after a turn (null till then), as a flipper's shape is. */
-    private Shape currentShape;
 
     Spinner(String name, int x, int y) {
         super(name, GizmoKind.SPINNER, x, y);
@@ -44,13 +37,6 @@ public final class Spinner extends GizmoBase implements SpinnerView, MovingShape
         this.turnsPerSecond = other.turnsPerSecond;
         this.angle = other.angle;
         this.running = other.running;
-        this.stalled = other.stalled;
-        this.currentShape = other.currentShape;
-    }
-
-    @Override
-    public double reflectionCoefficient() {
-        return REFLECTION;
     }
 
     @Override
@@ -91,7 +77,7 @@ public final class Spinner extends GizmoBase implements SpinnerView, MovingShape
     /** Puts the bar at an angle (reduced to [0, 2 pi)). For the board and its loop, not for views. */
     public void setAngle(double radians) {
         angle = reduced(radians);
-        currentShape = shapeAt(angle);
+        reshaped();
     }
 
     /** Lets it turn or holds it still. For the board and its loop, not for views. */
@@ -121,11 +107,6 @@ public final class Spinner extends GizmoBase implements SpinnerView, MovingShape
     }
 
     @Override
-    public double radius() {
-        return RADIUS;
-    }
-
-    @Override
     public List<Vect> ends() {
         Shape now = shape();
         return List.of(now.circles().get(0).getCenter(), now.circles().get(1).getCenter());
@@ -137,26 +118,10 @@ public final class Spinner extends GizmoBase implements SpinnerView, MovingShape
         return shape().circles().get(1).getCenter();
     }
 
+    /** Running. */
     @Override
-    public boolean isMoving() {
-        return running && !stalled;
-    }
-
-    @Override
-    public boolean isStalled() {
-        return stalled;
-    }
-
-    /** For the board and its loop, not for views. */
-    @Override
-    public void stall() {
-        stalled = true;
-    }
-
-    /** For the board and its loop, not for views. */
-    @Override
-    public void release() {
-        stalled = false;
+    boolean turns() {
+        return running;
     }
 
     /** In the library's sense (+x toward +y), radians per second; 0 while stopped or stalled. */
@@ -182,14 +147,9 @@ public final class Spinner extends GizmoBase implements SpinnerView, MovingShape
         return false;
     }
 
-    /** Turns for dt seconds, unless stopped or stalled. For the board and its loop, not for views. */
     @Override
-    public void advance(double dt) {
-        if (!isMoving() || dt <= 0) {
-            return;
-        }
+    void turn(double dt) {
         angle = reduced(angle + angularVelocity() * dt);
-        currentShape = null;
     }
 
     /** The angle in [0, 2 pi); a sum within rounding below 0 lands on 2 pi and is taken as 0. */
@@ -208,7 +168,7 @@ public final class Spinner extends GizmoBase implements SpinnerView, MovingShape
         switch (action) {
             case REVERSE -> {
                 turnsPerSecond = -turnsPerSecond;
-                stalled = false;
+                release();
             }
             case START -> running = true;
             case STOP -> running = false;
@@ -221,17 +181,14 @@ public final class Spinner extends GizmoBase implements SpinnerView, MovingShape
     }
 
     @Override
-    public Shape shape() {
-        if (currentShape == null) {
-            currentShape = shapeAt(angle);
-        }
-        return currentShape;
+    Shape shapeNow() {
+        return shapeAt(angle);
     }
 
     @Override
     Shape buildShape() {
-        currentShape = shapeAt(angle);
-        return currentShape;
+        reshaped();
+        return shape();
     }
 
     /** The bar at an angle: its ends' centres ARM either side of the pivot, its sides RADIUS either side of them. */

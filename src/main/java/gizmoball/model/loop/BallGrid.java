@@ -1,8 +1,6 @@
 package gizmoball.model.loop;
 
-import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.List;
 
 /**
  * The broad phase for ball pairs: free balls filed by the cell their centre was in when filed, each cell with the
@@ -10,46 +8,64 @@ import java.util.List;
  * by how far any ball can have moved since, and passes over a cell whose balls are too slow to come within reach:
  * balls far apart are never asked about each other, and a fast ball does not make every query read the cells of
  * slow ones (docs/design.md, "Detection asks only about what can be reached").
+ *
+ * <p>Its books are flat arrays kept from filing to filing and grown when the balls outgrow them: each cell's balls are
+ * a chain of slots (first, next), so a query reads ints for the empty cells of its box and touches only the balls it
+ * may find, and a filing costs one link per ball, never a list per cell.
  */
 public final class BallGrid {
     private static final int CELLS = Arena.SIZE * Arena.SIZE;
-    private final List<List<Ball>> cells = new ArrayList<>(CELLS);
+    private static final int NONE = -1;
+    /** By cell: the slot of the first and of the last ball filed there ({@link #NONE}: empty). */
+    private final int[] first = new int[CELLS];
+    private final int[] last = new int[CELLS];
     /** By cell: the highest speed (L/s) of a ball filed there, since it was filed. */
     private final double[] cellFastest = new double[CELLS];
     /** The cells holding a ball, so that clearing costs the balls filed, not the 400 cells. */
     private final int[] filled = new int[CELLS];
     private int filledCount;
-    /** By slot ({@link Ball#slot()}): the cell the ball was filed in. */
+    /** By slot ({@link Ball#slot()}): the ball, the next slot filed in its cell ({@link #NONE}: none), its cell. */
+    private Ball[] bySlot = new Ball[0];
+    private int[] next = new int[0];
     private int[] cellOfSlot = new int[0];
+    /** What the last {@link #near} found, in its order: {@link #found(int)} for i below its count. */
+    private Ball[] found = new Ball[0];
 
     /** Empty; the loop files the balls at each tick. The board keeps one for its loop, not for views. */
     public BallGrid() {
-        for (int i = 0; i < CELLS; i++) {
-            cells.add(new ArrayList<>(2));
-        }
+        Arrays.fill(first, NONE);
     }
 
     /** Empty, ready for {@code balls} balls in slots 0 to balls - 1. */
     void clear(int balls) {
         for (int k = 0; k < filledCount; k++) {
-            cells.get(filled[k]).clear();
+            first[filled[k]] = NONE;
             cellFastest[filled[k]] = 0;
         }
         filledCount = 0;
-        if (cellOfSlot.length < balls) {
-            cellOfSlot = new int[Math.max(balls, 2 * cellOfSlot.length)];
+        if (bySlot.length < balls) {
+            int size = Math.max(balls, 2 * bySlot.length);
+            bySlot = new Ball[size];
+            next = new int[size];
+            cellOfSlot = new int[size];
+            found = new Ball[size];
         }
     }
 
-    /** Files the ball, in its slot, where it is now, moving at {@code speed} (L/s). */
+    /** Files the ball, in its slot, where it is now, moving at {@code speed} (L/s): after the balls filed before it. */
     void add(Ball ball, double speed) {
         int index = index(cell(ball.x()), cell(ball.y()));
-        List<Ball> cell = cells.get(index);
-        if (cell.isEmpty()) {
+        int slot = ball.slot();
+        if (first[index] == NONE) {
             filled[filledCount++] = index;
+            first[index] = slot;
+        } else {
+            next[last[index]] = slot;
         }
-        cell.add(ball);
-        cellOfSlot[ball.slot()] = index;
+        last[index] = slot;
+        next[slot] = NONE;
+        bySlot[slot] = ball;
+        cellOfSlot[slot] = index;
         sped(ball, speed);
     }
 
@@ -60,11 +76,11 @@ public final class BallGrid {
     }
 
     /**
-     * Every filed ball whose centre lies now within the square of half-side {@code near} around (x, y), looked for
-     * among the balls filed within {@code reach} of it ({@code reach} covers how far any ball moved since it was
-     * filed), in the order of their cells, row by row, and of their filing in a cell. The test on where a ball is now
-     * keeps out the balls that filed cells bring in but that lie too far for any pair test to accept: in a pile of
-     * 100 balls, three in four of those the cells give.
+     * Finds every filed ball whose centre lies now within the square of half-side {@code near} around (x, y), looked
+     * for among the balls filed within {@code reach} of it ({@code reach} covers how far any ball moved since it was
+     * filed), in the order of their cells, row by row, and of their filing in a cell; returns how many
+     * ({@link #found(int)} reads them). The test on where a ball is now keeps out the balls that filed cells bring in
+     * but that lie too far for any pair test to accept: in a pile of 100 balls, three in four of those the cells give.
      *
      * <p>A cell is passed over when none of its balls can be within reach of a ball at (x, y) moving at s: they are
      * no faster than the cell's fastest f, so they are now within f {@code stale} of the cell, and a pair farther
@@ -72,19 +88,17 @@ public final class BallGrid {
      * That is the pair test's own bound (the two balls' relative speed is at most s + f), so no pair that could meet
      * is passed over, and the balls found come in the same order.
      */
-    void near(double x, double y, double reach, double near, double alone, double window, double stale,
-              List<Ball> into) {
+    int near(double x, double y, double reach, double near, double alone, double window, double stale) {
+        int count = 0;
         int x0 = cell(x - reach);
         int x1 = cell(x + reach);
         int y0 = cell(y - reach);
         int y1 = cell(y + reach);
         for (int cy = y0; cy <= y1; cy++) {
             double dy = Math.max(0, Math.max(cy - y, y - (cy + 1)));
-            for (int cx = x0; cx <= x1; cx++) {
-                int index = index(cx, cy);
-                List<Ball> cell = cells.get(index);
-                int n = cell.size();
-                if (n == 0) {
+            for (int cx = x0, index = index(x0, cy); cx <= x1; cx++, index++) {
+                int slot = first[index];
+                if (slot == NONE) {
                     continue;
                 }
                 double fastest = cellFastest[index];
@@ -92,14 +106,20 @@ public final class BallGrid {
                 if (dy > within || Math.max(0, Math.max(cx - x, x - (cx + 1))) > within) {
                     continue;
                 }
-                for (int i = 0; i < n; i++) {
-                    Ball ball = cell.get(i);
+                for (; slot != NONE; slot = next[slot]) {
+                    Ball ball = bySlot[slot];
                     if (Math.abs(ball.x() - x) <= near && Math.abs(ball.y() - y) <= near) {
-                        into.add(ball);
+                        found[count++] = ball;
                     }
                 }
             }
         }
+        return count;
+    }
+
+    /** The {@code i}th ball the last {@link #near} found. */
+    Ball found(int i) {
+        return found[i];
     }
 
     private static int index(int cx, int cy) {

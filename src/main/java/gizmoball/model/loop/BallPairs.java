@@ -39,9 +39,11 @@ final class BallPairs {
                 ball.position()));
         other.setStillTime(0);
         if (other.isAsleep()) {
+            // What it wakes is at rest still, as every ball's known collisions took it: only the ball this bounce
+            // sets moving is asked again (with those whose next collision was with it), as after any bounce; the
+            // balls woken under it, never asked while asleep, ask when the schedule next looks.
             step.view.sleepers().wake(other);
             step.findAwake();
-            step.schedule.forgetAll();
         }
         Geometry.VectPair after = Geometry.reflectBalls(ball.position(), 1, ball.velocity(), other.position(), 1,
                 other.velocity());

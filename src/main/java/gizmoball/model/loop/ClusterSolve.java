@@ -19,9 +19,12 @@ import physics.Vect;
 final class ClusterSolve {
 
     private final StepContext step;
+    /** The balls filed near a ball, where they are now: what a cluster asks for the balls touching its own. */
+    private final ContactCluster.Near near;
 
     ClusterSolve(StepContext step) {
         this.step = step;
+        this.near = (ball, within, into) -> step.schedule.filedNear(ball, within, step.elapsed, into);
     }
 
     /**
@@ -53,7 +56,7 @@ final class ClusterSolve {
         } else {
             return null;
         }
-        return ContactCluster.around(step.view, collision.balls(),
+        return ContactCluster.around(step.view, collision.balls(), near,
                 step.detector::motion, candidate -> !step.finished.contains(candidate), reach,
                 step.settings);
     }

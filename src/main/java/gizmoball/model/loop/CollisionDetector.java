@@ -39,6 +39,8 @@ final class CollisionDetector {
     private final Earliest scene = new Earliest(0);
     /** The gizmos a ball can reach, found again for every ask. */
     private final List<GizmoBase> reached = new ArrayList<>();
+    /** The box the asking ball sweeps in the window: what lies outside it is not asked about. */
+    private final SweptBox swept = new SweptBox();
 
     /** {@link LoopSettings#rotatingSearchSlices()}. */
     private final int rotatingSearchSlices;
@@ -74,16 +76,20 @@ final class CollisionDetector {
         Circle circle = ball.circle();
         Vect velocity = motion(ball);
         boolean still = velocity.x() == 0 && velocity.y() == 0;
+        swept.set(ball.x(), ball.y(), velocity, window);
         if (!still) {
             for (int side = 0; side < Arena.OUTER_WALLS.size(); side++) {
                 LineSegment wall = Arena.OUTER_WALLS.get(side);
+                if (swept.misses(wall)) {
+                    continue;
+                }
                 double time = Geometry.timeUntilWallCollision(wall, circle, velocity);
                 if (time <= earliest.limit() && closesOnSegment(wall, ball, velocity, time)) {
                     earliest.offer(time, ball, WALL_CONTACTS.get(side), false);
                 }
             }
         }
-        List<GizmoBase> reachable = reachable(ball, velocity, window);
+        List<GizmoBase> reachable = reachable();
         for (int i = 0; i < reachable.size(); i++) {
             GizmoBase gizmo = reachable.get(i);
             if (gizmo instanceof MovingShape moving && moving.isMoving()) {
@@ -118,29 +124,28 @@ final class CollisionDetector {
         }
     }
 
-    /** The gizmos whose cells meet the box the ball sweeps in the window (all gizmos without the index). */
-    private List<GizmoBase> reachable(Ball ball, Vect velocity, double window) {
+    /** The gizmos whose cells meet the box the asking ball sweeps (all gizmos without the index). */
+    private List<GizmoBase> reachable() {
         if (!view.spatialIndexEnabled()) {
             reached.clear();
             reached.addAll(view.gizmos());
             return reached;
         }
-        // The box from the centre to where it is after the window: the doubles centre + velocity * window gives.
-        double fromX = ball.x();
-        double fromY = ball.y();
-        double toX = fromX + velocity.x() * window;
-        double toY = fromY + velocity.y() * window;
-        double reach = Arena.BALL_RADIUS + Tolerances.REACH_MARGIN;
-        view.index().within(Math.min(fromX, toX) - reach, Math.min(fromY, toY) - reach, Math.max(fromX, toX) + reach,
-                Math.max(fromY, toY) + reach, reached);
+        view.index().within(swept.minX, swept.minY, swept.maxX, swept.maxY, reached);
         return reached;
     }
 
-    /** A shape that does not move; {@code delay}: the ball's circle is where the ball will be after that time. */
+    /**
+     * A shape that does not move; {@code delay}: the ball's circle is where the ball will be after that time, still
+     * within the box it sweeps in the window, so what lies outside the box is passed over.
+     */
     private void againstStillShape(Ball ball, Circle circle, Vect velocity, double delay, GizmoBase gizmo,
                                    Shape shape, Earliest earliest) {
         List<LineSegment> segments = shape.segments();
         for (int i = 0; i < segments.size(); i++) {
+            if (swept.misses(segments.get(i))) {
+                continue;
+            }
             double time = delay + Geometry.timeUntilWallCollision(segments.get(i), circle, velocity);
             if (time <= earliest.limit() && closesOnSegment(segments.get(i), ball, velocity, time)) {
                 earliest.offer(time, ball, new Contact.Face(gizmo, i, segments.get(i)), false);
@@ -148,6 +153,9 @@ final class CollisionDetector {
         }
         List<Circle> circles = shape.circles();
         for (int i = 0; i < circles.size(); i++) {
+            if (swept.misses(circles.get(i))) {
+                continue;
+            }
             double time = delay + Geometry.timeUntilCircleCollision(circles.get(i), circle, velocity);
             if (time <= earliest.limit() && closingOnCircle(
                     ball.position().plus(velocity.times(time)).minus(circles.get(i).getCenter()), velocity)) {
@@ -251,9 +259,55 @@ final class CollisionDetector {
 
     /**
      * As {@link #closing}, for a circle met at {@code away} from its centre: a touch within
-     * {@link Tolerances#GRAZE_ANGLE} of tangent is a graze, and so is one that {@link #grazes}.
+     * {@link Tolerances#GRAZE_ANGLE} of tangent is a graze, and so is one that {@link Kinematics#grazes}.
      */
     static boolean closingOnCircle(Vect away, Vect relative) {
+        double approach = -relative.dot(away);
+        if (!(approach > 0)) {
+            return false;   // the closing speed, approach / |away|, is not positive: no length changes that
+        }
+        double awaySquared = away.x() * away.x() + away.y() * away.y();
+        double speedSquared = relative.x() * relative.x() + relative.y() * relative.y();
+        if (awaySquared > TINY_SQUARE && speedSquared > TINY_SQUARE) {
+            double length = Math.sqrt(awaySquared);
+            double speed = Math.sqrt(speedSquared);
+            int closes = clearly(approach / length,
+                    Math.max(Tolerances.ROUNDING_SPEED, Tolerances.GRAZE_ANGLE * speed));
+            if (closes < 0) {
+                return false;
+            }
+            int grazing = clearly(Math.abs(away.x() * relative.y() - away.y() * relative.x()) / speed,
+                    length - Tolerances.PLACEMENT);
+            if (closes > 0 && grazing != 0) {
+                return grazing < 0;
+            }
+        }
+        return closingOnCircleExactly(away, relative);
+    }
+
+    /**
+     * Squares of lengths above this are sums of squares that lost nothing to underflow (board lengths and speeds
+     * lie far above it).
+     */
+    private static final double TINY_SQUARE = 1e-200;
+    /** Relative difference far above what the square roots of {@link #closingOnCircle} make (a few 1e-16). */
+    private static final double CLEAR = 1e-12;
+
+    /**
+     * 1 where {@code a} exceeds {@code b} by more than {@link #CLEAR} of them, -1 where it falls short so, else 0: a
+     * comparison that a length by a square root, within a few ulps of physics-lib's hypot, decides as hypot would.
+     */
+    private static int clearly(double a, double b) {
+        double margin = CLEAR * (Math.abs(a) + Math.abs(b));
+        return a - b > margin ? 1 : b - a > margin ? -1 : 0;
+    }
+
+    /**
+     * {@link #closingOnCircle} with the lengths as physics-lib gives them ({@link Vect#length}, a hypot): what decides
+     * it where the square roots leave it within rounding, so that the answer is always this one. A ball asks it of
+     * every ball it may meet, so the square roots answer first (hypot costs several times as much).
+     */
+    private static boolean closingOnCircleExactly(Vect away, Vect relative) {
         double length = away.length();
         double closing = length > 0 ? -relative.dot(away) / length : 0;
         return closing > Math.max(Tolerances.ROUNDING_SPEED, Tolerances.GRAZE_ANGLE * relative.length())

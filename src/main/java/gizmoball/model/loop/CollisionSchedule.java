@@ -1,6 +1,5 @@
 package gizmoball.model.loop;
 
-import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 
@@ -65,7 +64,6 @@ final class CollisionSchedule {
     private int[] pointedAtCount = new int[0];
     private int filed;
     private final BallGrid grid;
-    private final List<Ball> nearby = new ArrayList<>();
     /** One pair's search, asked again for every ball near the one asking (its collision is made only when found). */
     private final Earliest pair = new Earliest(0);
     /** The search of one asking ball against the balls near it. */
@@ -345,7 +343,7 @@ final class CollisionSchedule {
         }
     }
 
-    void forgetAll() {
+    private void forgetAll() {
         Arrays.fill(sceneKnown, false);
         Arrays.fill(ballsKnown, false);
         Arrays.fill(pointedAtCount, 0);
@@ -384,6 +382,29 @@ final class CollisionSchedule {
     }
 
     /**
+     * Into {@code into}, in slot order (the board's order), every filed ball whose centre lies now, {@code elapsed}
+     * seconds into the tick, within {@code within} of the ball's along x and along y, the ball itself too: a question
+     * of the cells around it, where asking every ball on the board cost a cluster of 32 balls 6,400 tests at 200 balls.
+     */
+    void filedNear(Ball ball, double within, double elapsed, List<Ball> into) {
+        into.clear();
+        double stale = elapsed - filedAt;
+        double near = within + Tolerances.REACH_MARGIN;
+        int found = grid.near(ball.x(), ball.y(), near + fastest * stale, within, near, 0, stale);
+        for (int i = 0; i < found; i++) {
+            into.add(grid.found(i));
+        }
+        for (int i = 1; i < into.size(); i++) {
+            Ball next = into.get(i);
+            int k = i;
+            for (; k > 0 && into.get(k - 1).slot() > next.slot(); k--) {
+                into.set(k, into.get(k - 1));
+            }
+            into.set(k, next);
+        }
+    }
+
+    /**
      * The ball against every ball it can reach in the window; a pair sooner than what the other ball knew becomes
      * the other's too. A sleeping ball is a still target; it never asks.
      */
@@ -396,10 +417,9 @@ final class CollisionSchedule {
         double reach = near + fastest * (elapsed - filedAt);
         // The same bound for one cell's balls, with twice the margin: rounding can never pass over a pair.
         double alone = 2 * Arena.BALL_RADIUS + speed * window + 2 * Tolerances.REACH_MARGIN;
-        nearby.clear();
-        grid.near(ball.x(), ball.y(), reach, near, alone, window, elapsed - filedAt, nearby);
-        for (int i = 0; i < nearby.size(); i++) {
-            Ball other = nearby.get(i);
+        int nearby = grid.near(ball.x(), ball.y(), reach, near, alone, window, elapsed - filedAt);
+        for (int i = 0; i < nearby; i++) {
+            Ball other = grid.found(i);
             if (other == ball || other.isCaptured()) {
                 continue;
             }

@@ -24,6 +24,15 @@ import physics.Vect;
  */
 final class ContactCluster {
 
+    /**
+     * The balls that may touch a ball: into {@code into}, in the board's order, every ball whose centre lies within
+     * {@code within} of the ball's along x and along y, and perhaps others (the ball itself too).
+     */
+    @FunctionalInterface
+    interface Near {
+        void balls(Ball ball, double within, List<Ball> into);
+    }
+
     /** What a row of the cluster is a contact with. */
     sealed interface Other {
         /** What a ball of the cluster ({@code balls}, by index) struck when this row takes an impact. */
@@ -112,11 +121,13 @@ final class ContactCluster {
      * The cluster of {@code seeds} as they are now; {@code motion} gives the velocity each ball moves with this tick
      * (none while asleep); a ball that {@code movable} refuses (one that moves no more in this tick) is taken as a
      * surface. Surfaces and balls within {@code reach} of a ball count as touching it: at least
-     * {@link Tolerances#PLACEMENT}. The cluster holds at most {@link LoopSettings#clusterBalls()} balls.
+     * {@link Tolerances#PLACEMENT}. The cluster holds at most {@link LoopSettings#clusterBalls()} balls. {@code near}
+     * gives the balls that may touch one.
      */
-    static ContactCluster around(LoopView view, List<Ball> seeds, Function<Ball, Vect> motion,
+    static ContactCluster around(LoopView view, List<Ball> seeds, Near near, Function<Ball, Vect> motion,
                                  Predicate<Ball> movable, double reach, LoopSettings settings) {
         ContactCluster cluster = new ContactCluster();
+        List<Ball> nearby = new ArrayList<>();
         cluster.leadTime = settings.leadTime();
         cluster.touching = Math.max(Tolerances.PLACEMENT, reach);
         Map<Ball, Integer> indexOf = new IdentityHashMap<>();
@@ -130,11 +141,10 @@ final class ContactCluster {
             Ball ball = cluster.balls.get(i);
             cluster.surfaces(view, i, ball, motion);
             double within = 2 * Arena.BALL_RADIUS + cluster.touching;
-            List<Ball> all = view.balls();
-            for (int k = 0; k < all.size(); k++) {
-                Ball other = all.get(k);
-                if (farApart(ball, other, within)
-                        || other == ball || other.isCaptured() || view.passingThrough(ball, other)
+            near.balls(ball, within, nearby);
+            for (int n = 0; n < nearby.size(); n++) {
+                Ball other = nearby.get(n);
+                if (other == ball || other.isCaptured() || view.passingThrough(ball, other)
                         || gap(ball.position(), other.position(), 2 * Arena.BALL_RADIUS) > cluster.touching) {
                     continue;
                 }
@@ -320,12 +330,6 @@ final class ContactCluster {
                         moving.reflectionCoefficient()));
             }
         }
-    }
-
-    /** Whether p and q lie farther apart than {@code distance} along x or y: a test cheaper than {@link #gap}. */
-    /** On the centres' coordinates: every ball of the board is looked at, and most are far, so no vector is made. */
-    private static boolean farApart(Ball a, Ball b, double distance) {
-        return Math.abs(a.x() - b.x()) > distance || Math.abs(a.y() - b.y()) > distance;
     }
 
     private static double gap(Vect p, Vect q, double touch) {
