@@ -42,13 +42,16 @@ class Issue20ReproductionsTest {
      * apart to the cap. Seeds 1000117, 1000384 and 1000596 (200 balls, spawners fed by the walls), each from the
      * tick before its guard: a pile of more balls than a cluster holds, the ones beyond falling onto the rest, pushed
      * the cluster into the floor as surfaces moving at their speed; no velocity satisfied that, and the cluster met
-     * itself again at no time apart to the cap.
+     * itself again at no time apart to the cap. Seed 1000117 again, at tick 1,407 (200 balls): a pocket packed with 32
+     * balls whose 47 rows so nearly depend on each other that neither the exact solve nor 500 sweeps of Gauss-Seidel
+     * left them closing on nothing; it met itself 400 times in one tick, to the cap, in 0.3 s.
      */
     @ParameterizedTest(name = "{0}")
     @ValueSource(strings = {"sink-corner-in-a-chain.txt", "passing-in-a-slot.txt", "sliding-past-in-a-slot.txt",
             "four-in-a-box.txt", "nearly-flat-wedge.txt", "row-pushed-along.txt", "resting-on-a-moving-ball.txt",
             "pocket-nearly-dependent.txt", "pocket-beyond-the-limit-1000117.txt",
-            "pocket-beyond-the-limit-1000384.txt", "pocket-beyond-the-limit-1000596.txt"})
+            "pocket-beyond-the-limit-1000384.txt", "pocket-beyond-the-limit-1000596.txt",
+            "pocket-nearly-dependent-1000117.txt"})
     void boardsTheFuzzFoundPlayCleanly(String file) throws Exception {
         assertPlaysCleanly("/fuzz-found/", file);
     }

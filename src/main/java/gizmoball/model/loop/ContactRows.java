@@ -77,6 +77,19 @@ final class ContactRows {
         return sum;
     }
 
+    /** Stops the balls of row i in the velocities (x, y); returns whether one of them was moving. */
+    boolean rest(double[] x, double[] y, int i) {
+        boolean moved = x[a[i]] != 0 || y[a[i]] != 0;
+        x[a[i]] = 0;
+        y[a[i]] = 0;
+        if (b[i] >= 0) {
+            moved |= x[b[i]] != 0 || y[b[i]] != 0;
+            x[b[i]] = 0;
+            y[b[i]] = 0;
+        }
+        return moved;
+    }
+
     /** Adds {@code amount} of impulse on row i to the velocities (x, y). */
     void addImpulse(double[] x, double[] y, int i, double amount) {
         x[a[i]] += amount * nx[i];

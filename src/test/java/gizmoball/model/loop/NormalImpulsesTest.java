@@ -41,6 +41,10 @@ class NormalImpulsesTest {
         }
 
         NormalImpulses.Result solve(int count, double[] vx, double[] vy) {
+            return solve(count, vx, vy, LoopSettings.STANDARD);
+        }
+
+        NormalImpulses.Result solve(int count, double[] vx, double[] vy, LoopSettings settings) {
             int n = balls.size();
             int[] a = new int[n];
             int[] b = new int[n];
@@ -58,7 +62,7 @@ class NormalImpulsesTest {
             }
             double[] impact = new double[n];
             Arrays.fill(impact, IMPACT);
-            return new NormalImpulses(LoopSettings.STANDARD, count, a, b, nx, ny, speed, restitution).solve(vx, vy, impact, LIMIT);
+            return new NormalImpulses(settings, count, a, b, nx, ny, speed, restitution).solve(vx, vy, impact, LIMIT);
         }
     }
 
@@ -312,6 +316,31 @@ class NormalImpulsesTest {
 
     @RepeatedTest(400)
     void aStillClusterNeverGainsEnergyAndIsLeftClosingOnNothing(RepetitionInfo repetition) {
+        assertStillClusterSolved(repetition, LoopSettings.STANDARD, true);
+    }
+
+    /**
+     * The same clusters with the active set allowed no change and Gauss-Seidel one sweep, as where their rows depend on
+     * each other too nearly for either (a pocket packed with 32 balls, fuzz seed 1000117): the balls of what still
+     * closes stop, so the answer still closes on nothing and gains no energy (momentum goes to the stopped balls'
+     * surfaces, as in any jam).
+     */
+    @RepeatedTest(400)
+    void whereNeitherMethodFindsTheProjectionAStillClusterStopsWhereItCloses(RepetitionInfo repetition) {
+        assertStillClusterSolved(repetition, givingUpAtOnce(), false);
+    }
+
+    private static LoopSettings givingUpAtOnce() {
+        LoopSettings s = LoopSettings.STANDARD;
+        return new LoopSettings(s.zeroTime(), s.restTicksOfGravity(), s.sleepSpeed(), s.sleepTime(),
+                s.zeroTimeHitsBeforeWedged(), s.strikesOfASqueeze(), s.strikesOfAPush(), s.squeezesBeforePinched(),
+                s.bouncesAmongContacts(), s.pressSteps(), s.maxCollisionsBase(), s.maxCollisionsPerBall(),
+                s.maxCollisionsOfABall(), s.rattleCollisions(), s.rattleTime(), s.rattleReach(), s.clusterBalls(),
+                s.impactRounds(), 1, 0, s.leadTime(), s.slidingPart(), s.rotatingSearchSlices(), s.scheduleBlock());
+    }
+
+    private static void assertStillClusterSolved(RepetitionInfo repetition, LoopSettings settings,
+                                                 boolean keepsMomentum) {
         SplittableRandom random = new SplittableRandom(7919L * repetition.getCurrentRepetition());
         int count = 1 + random.nextInt(6);
         boolean surfaces = random.nextBoolean() || count == 1;
@@ -339,7 +368,7 @@ class NormalImpulsesTest {
             px += vx[k];
             py += vy[k];
         }
-        NormalImpulses.Result result = rows.solve(count, vx.clone(), vy.clone());
+        NormalImpulses.Result result = rows.solve(count, vx.clone(), vy.clone(), settings);
         double after = 0;
         double qx = 0;
         double qy = 0;
@@ -358,7 +387,7 @@ class NormalImpulsesTest {
             double uy = result.vy()[a] - (b < 0 ? 0 : result.vy()[b]);
             assertThat(ux * row[0] + uy * row[1]).as("row %d", i).isGreaterThanOrEqualTo(-Tolerances.ROUNDING_SPEED);
         }
-        if (!surfaces) {
+        if (!surfaces && keepsMomentum) {
             assertThat(qx).isCloseTo(px, within(1e-9));
             assertThat(qy).isCloseTo(py, within(1e-9));
         }
