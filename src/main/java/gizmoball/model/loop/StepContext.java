@@ -43,6 +43,14 @@ final class StepContext {
      * energy's), so that nothing is emptied tick after tick.
      */
     long tick;
+    /**
+     * {@link Ball#stateChanges()} when {@link #awake} and {@link #ballCounts} were last found (a tick starts with
+     * neither found: between ticks balls are added and removed).
+     */
+    private boolean awakeFound;
+    private long awakeFoundAt;
+    private BallCounts counts;
+    private long countedAt;
     /** Surfaces hit besides the collision's own within the collision just resolved, for stage 5. */
     final List<TriggerSource> alsoHit = new ArrayList<>();
     /**
@@ -86,6 +94,8 @@ final class StepContext {
         schedule.begin();
         finished.clear();
         awake.clear();
+        awakeFound = false;
+        counts = null;
         alsoHit.clear();
         reported.clear();
         elapsed = 0;
@@ -122,8 +132,16 @@ final class StepContext {
     record BallCounts(int free, int awake) {
     }
 
-    /** The balls free and awake now: a trigger that changes neither count changes nothing the loop knows. */
+    /**
+     * The balls free and awake now: a trigger that changes neither count changes nothing the loop knows. Counted again
+     * only when a ball's state may have changed since the last count ({@link Ball#stateChanges()}), so the triggers
+     * of a tick's wall hits on a spawner board do not count 200 balls twice each.
+     */
     BallCounts ballCounts() {
+        long changes = Ball.stateChanges();
+        if (counts != null && changes == countedAt) {
+            return counts;
+        }
         int free = 0;
         int awakeNow = 0;
         List<Ball> balls = view.balls();
@@ -134,7 +152,9 @@ final class StepContext {
                 awakeNow += ball.isAsleep() ? 0 : 1;
             }
         }
-        return new BallCounts(free, awakeNow);
+        counts = new BallCounts(free, awakeNow);
+        countedAt = changes;
+        return counts;
     }
 
     /**
@@ -153,7 +173,14 @@ final class StepContext {
                 dt - elapsed);
     }
 
+    /** The awake balls, found again only when a ball's state may have changed since they were last found. */
     void findAwake() {
+        long changes = Ball.stateChanges();
+        if (awakeFound && changes == awakeFoundAt) {
+            return;
+        }
+        awakeFound = true;
+        awakeFoundAt = changes;
         schedule.awakeChanged();
         awake.clear();
         List<Ball> balls = view.balls();
