@@ -24,8 +24,14 @@ final class EndOfTick {
     private boolean ticking;
     /** The gates and drop targets told to be solid (true) or nothing during this tick, the last order of each. */
     private final Map<String, Boolean> cellOrders = new LinkedHashMap<>();
-    /** The spawns asked for during this tick, in order. */
+    /**
+     * The spawns asked for during this tick, in order, and the sources that asked for them: one each. A source's later
+     * spawns in the tick could never add a ball (its first left a ball in its mouth, or found the mouth taken or the
+     * board full, and spawns only add balls), and on a spawner board each wall hit asks again: kept, each would look
+     * among 200 balls for room at the tick's end.
+     */
     private final List<Runnable> toSpawn = new ArrayList<>();
+    private final List<String> spawning = new ArrayList<>();
     /** The balls sinks took in this tick, which leave the board when it is over. */
     private final List<String> sunk = new ArrayList<>();
 
@@ -34,10 +40,16 @@ final class EndOfTick {
         this.sleepers = sleepers;
     }
 
-    /** A spawn ({@link Play#spawn}): at once between ticks, at the tick's end during one. */
-    void spawn(Runnable spawn) {
+    /**
+     * A spawn of the source named {@code source} ({@link Play#spawn}): at once between ticks, at the tick's end during
+     * one (once, however often the source asks in the tick).
+     */
+    void spawn(String source, Runnable spawn) {
         if (ticking) {
-            toSpawn.add(spawn);
+            if (!spawning.contains(source)) {
+                spawning.add(source);
+                toSpawn.add(spawn);
+            }
         } else {
             spawn.run();
         }
@@ -106,6 +118,7 @@ final class EndOfTick {
         if (!toSpawn.isEmpty()) {
             List<Runnable> due = List.copyOf(toSpawn);
             toSpawn.clear();
+            spawning.clear();
             due.forEach(Runnable::run);
         }
     }

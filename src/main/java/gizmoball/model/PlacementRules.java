@@ -131,7 +131,19 @@ final class PlacementRules {
 
     /** Whether a ball could appear there now: inside the board, in no gizmo (absorbers too), on no free ball. */
     boolean freeForBall(Vect position) {
-        return insideBoard(position) && gizmosUnder(position).isEmpty() && freeBallUnder(position, Set.of()).isEmpty();
+        return insideBoard(position) && gizmosUnder(position).isEmpty() && !onFreeBall(position);
+    }
+
+    /** Whether a ball centred there would overlap a free ball: a walk of the balls, no stream made (a spawner asks). */
+    private boolean onFreeBall(Vect position) {
+        List<Ball> balls = registry.ballList();
+        for (int b = 0; b < balls.size(); b++) {
+            Ball other = balls.get(b);
+            if (!other.isCaptured() && Overlaps.balls(other.position(), position)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** The gizmos a ball centred there would be inside, in the order of the cells around it. */

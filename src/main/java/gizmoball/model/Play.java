@@ -216,7 +216,7 @@ final class Play implements Surroundings {
      */
     @Override
     public void spawn(BallSource source) {
-        endOfTick.spawn(() -> spawnNow(source));
+        endOfTick.spawn(source.name(), () -> spawnNow(source));
     }
 
     private void spawnNow(BallSource source) {

@@ -2,6 +2,7 @@ package gizmoball.model.loop;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.atomic.AtomicLong;
 
 import physics.Circle;
 import physics.Vect;
@@ -39,12 +40,19 @@ public final class Ball implements BallView {
     private boolean asleep;
     /** Index of the ball among the free balls of the tick running now (the collision schedule's bookkeeping). */
     private int slot;
+    /**
+     * How many times any ball was made, fell asleep or woke (a capture and a release wake it), on every board: a loop
+     * that finds the count where it was when it last counted its free and awake balls knows they are as they were,
+     * and does not count 200 balls again at every trigger. Another board's changes only make it count again.
+     */
+    private static final AtomicLong STATE_CHANGES = new AtomicLong();
 
     /** A free ball, awake, in contact with nothing. For the board, not for views. */
     public Ball(String name, Vect position, Vect velocity) {
         this.name = name;
         keepVelocity(velocity);
         moveTo(position);
+        STATE_CHANGES.incrementAndGet();
     }
 
     /** A copy with the same state and contacts (for a copy of the board). For the board, not for views. */
@@ -128,8 +136,14 @@ public final class Ball implements BallView {
         slot = index;
     }
 
+    /** {@link #STATE_CHANGES} now. */
+    static long stateChanges() {
+        return STATE_CHANGES.get();
+    }
+
     void fallAsleep() {
         asleep = true;
+        STATE_CHANGES.incrementAndGet();
         keepVelocity(Vect.ZERO);
     }
 
@@ -137,6 +151,7 @@ public final class Ball implements BallView {
     void wake() {
         asleep = false;
         stillTime = 0;
+        STATE_CHANGES.incrementAndGet();
     }
 
     /** Forgets every contact and wakes: the board changed under the ball. */

@@ -21,6 +21,8 @@ public final class BallGrid {
     private final int[] last = new int[CELLS];
     /** By cell: the highest speed (L/s) of a ball filed there, since it was filed. */
     private final double[] cellFastest = new double[CELLS];
+    /** By row: the highest speed (L/s) of a ball filed in the row since it was filed, the most of its cells'. */
+    private final double[] rowFastest = new double[Arena.SIZE];
     /** The cells holding a ball, so that clearing costs the balls filed, not the 400 cells. */
     private final int[] filled = new int[CELLS];
     private int filledCount;
@@ -43,6 +45,7 @@ public final class BallGrid {
             cellFastest[filled[k]] = 0;
         }
         filledCount = 0;
+        Arrays.fill(rowFastest, 0);
         if (bySlot.length < balls) {
             int size = Math.max(balls, 2 * bySlot.length);
             bySlot = new Ball[size];
@@ -73,6 +76,7 @@ public final class BallGrid {
     void sped(Ball ball, double speed) {
         int index = cellOfSlot[ball.slot()];
         cellFastest[index] = Math.max(cellFastest[index], speed);
+        rowFastest[index / Arena.SIZE] = Math.max(rowFastest[index / Arena.SIZE], speed);
     }
 
     /**
@@ -86,7 +90,9 @@ public final class BallGrid {
      * no faster than the cell's fastest f, so they are now within f {@code stale} of the cell, and a pair farther
      * apart than {@code alone} + f {@code window} (alone: 2 r + s window and a margin) cannot meet in the window.
      * That is the pair test's own bound (the two balls' relative speed is at most s + f), so no pair that could meet
-     * is passed over, and the balls found come in the same order.
+     * is passed over, and the balls found come in the same order. A row's fastest bounds its cells' the same way: a
+     * row out of that reach is passed over whole, and of the others only the columns within it (and one more each
+     * side, past any rounding) are read, so one fast ball widens only its own row's search, not every row's.
      */
     int near(double x, double y, double reach, double near, double alone, double window, double stale) {
         int count = 0;
@@ -96,7 +102,13 @@ public final class BallGrid {
         int y1 = cell(y + reach);
         for (int cy = y0; cy <= y1; cy++) {
             double dy = Math.max(0, Math.max(cy - y, y - (cy + 1)));
-            for (int cx = x0, index = index(x0, cy); cx <= x1; cx++, index++) {
+            double rowWithin = alone + rowFastest[cy] * window + rowFastest[cy] * stale;
+            if (dy > rowWithin) {
+                continue;
+            }
+            int from = Math.max(x0, cell(x - rowWithin) - 1);
+            int to = Math.min(x1, cell(x + rowWithin) + 1);
+            for (int cx = from, index = index(from, cy); cx <= to; cx++, index++) {
                 int slot = first[index];
                 if (slot == NONE) {
                     continue;

@@ -43,6 +43,14 @@ final class StepContext {
      * energy's), so that nothing is emptied tick after tick.
      */
     long tick;
+    /**
+     * {@link Ball#stateChanges()} when {@link #awake} and {@link #ballCounts} were last found (a tick starts with
+     * neither found: between ticks balls are added and removed).
+     */
+    private boolean awakeFound;
+    private long awakeFoundAt;
+    private BallCounts counts;
+    private long countedAt;
     /** Surfaces hit besides the collision's own within the collision just resolved, for stage 5. */
     final List<TriggerSource> alsoHit = new ArrayList<>();
     /**
@@ -86,6 +94,8 @@ final class StepContext {
         schedule.begin();
         finished.clear();
         awake.clear();
+        awakeFound = false;
+        counts = null;
         alsoHit.clear();
         reported.clear();
         elapsed = 0;
@@ -122,8 +132,16 @@ final class StepContext {
     record BallCounts(int free, int awake) {
     }
 
-    /** The balls free and awake now: a trigger that changes neither count changes nothing the loop knows. */
+    /**
+     * The balls free and awake now: a trigger that changes neither count changes nothing the loop knows. Counted again
+     * only when a ball's state may have changed since the last count ({@link Ball#stateChanges()}), so the triggers
+     * of a tick's wall hits on a spawner board do not count 200 balls twice each.
+     */
     BallCounts ballCounts() {
+        long changes = Ball.stateChanges();
+        if (counts != null && changes == countedAt) {
+            return counts;
+        }
         int free = 0;
         int awakeNow = 0;
         List<Ball> balls = view.balls();
@@ -134,7 +152,9 @@ final class StepContext {
                 awakeNow += ball.isAsleep() ? 0 : 1;
             }
         }
-        return new BallCounts(free, awakeNow);
+        counts = new BallCounts(free, awakeNow);
+        countedAt = changes;
+        return counts;
     }
 
     /**
@@ -153,7 +173,14 @@ final class StepContext {
                 dt - elapsed);
     }
 
+    /** The awake balls, found again only when a ball's state may have changed since they were last found. */
     void findAwake() {
+        long changes = Ball.stateChanges();
+        if (awakeFound && changes == awakeFoundAt) {
+            return;
+        }
+        awakeFound = true;
+        awakeFoundAt = changes;
         schedule.awakeChanged();
         awake.clear();
         List<Ball> balls = view.balls();
@@ -189,7 +216,12 @@ final class StepContext {
     /** The ball keeps the surface as a contact and loses every part of its velocity that presses into its contacts. */
     void comeToRest(Ball ball, ContactRef ref) {
         Contacts.attach(ball, ref);
-        ball.setVelocity(Contacts.project(ball.velocity(), contacts.normals(ball)));
+        List<Vect> normals = contacts.normals(ball);
+        int along = Projection.of(ball.vx(), ball.vy(), normals);   // Contacts.project, on the components
+        if (along != Projection.CLOSES_ON_NONE) {
+            ball.setVelocity(Projection.x(ball.vx(), ball.vy(), normals, along),
+                    Projection.y(ball.vx(), ball.vy(), normals, along));
+        }
         energy.lost(ball);
         restingContact = true;
     }
@@ -201,8 +233,12 @@ final class StepContext {
      * its foot by the slope, though gravity is parallel to the wall).
      */
     double restingSpeed(Vect normal, List<Vect> otherNormals) {
-        Vect pull = Contacts.project(gravity, otherNormals);
-        double pressing = Math.max(0, -pull.dot(normal));
+        // Contacts.project(gravity, otherNormals), on the components
+        int along = Projection.of(gravity.x(), gravity.y(), otherNormals);
+        boolean free = along == Projection.CLOSES_ON_NONE;
+        double pullX = free ? gravity.x() : Projection.x(gravity.x(), gravity.y(), otherNormals, along);
+        double pullY = free ? gravity.y() : Projection.y(gravity.x(), gravity.y(), otherNormals, along);
+        double pressing = Math.max(0, -(pullX * normal.x() + pullY * normal.y()));
         return Math.max(Tolerances.ROUNDING_SPEED, settings.restTicksOfGravity() * pressing * dt);
     }
 
