@@ -83,7 +83,7 @@ public final class Angle implements Serializable, Comparable<Angle> {
         if (x == 0 && y == 0) {
             throw new IllegalArgumentException("the vector (0, 0) has no direction");
         }
-        double length = Math.hypot(x, y);
+        double length = StrictMath.hypot(x, y);
         return new Direction(x / length, y / length);
     }
 
@@ -116,7 +116,7 @@ public final class Angle implements Serializable, Comparable<Angle> {
 
     /** The direction of (c, s), a vector of length 1 up to rounding, scaled back to length 1 (exactly so on an axis). */
     private static Angle unit(double c, double s) {
-        double length = Math.hypot(c, s);
+        double length = StrictMath.hypot(c, s);
         return new Angle(new Direction(c / length, s / length));
     }
 

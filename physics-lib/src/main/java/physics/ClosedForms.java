@@ -17,7 +17,7 @@ final class ClosedForms {
         if (y == 0) {
             return Math.abs(x);
         }
-        return Math.hypot(x, y);
+        return StrictMath.hypot(x, y);
     }
 
     /** Whether the foot of the perpendicular from the point (px, py) lies on the half-open face [p1, p2). */
@@ -80,13 +80,20 @@ final class ClosedForms {
     static double norm(double x, double y) {
         double sumOfSquares = x * x + y * y;
         if (sumOfSquares < Double.MIN_NORMAL || sumOfSquares == Double.POSITIVE_INFINITY) {
-            return Math.hypot(x, y);
+            return StrictMath.hypot(x, y);
         }
         return Math.sqrt(sumOfSquares);
     }
 
     /** v with its part along the unit normal replaced by -coeff times that part. */
     static Vect reflectAlong(Vect unitNormal, Vect velocity, double reflectionCoeff) {
-        return velocity.minus(unitNormal.times((1 + reflectionCoeff) * velocity.dot(unitNormal)));
+        return reflectAlong(unitNormal.x(), unitNormal.y(), velocity, reflectionCoeff);
+    }
+
+    /** {@link #reflectAlong(Vect, Vect, double)} about the unit normal (nx, ny), making only the result. */
+    static Vect reflectAlong(double nx, double ny, Vect velocity, double reflectionCoeff) {
+        double along = (1 + reflectionCoeff) * (velocity.x() * nx + velocity.y() * ny);
+        // velocity.minus(unitNormal.times(along)), each made vector's -0 turned to +0 as Vect does
+        return new Vect(velocity.x() - (nx * along + 0.0), velocity.y() - (ny * along + 0.0));
     }
 }

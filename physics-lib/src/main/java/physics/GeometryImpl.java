@@ -193,8 +193,17 @@ public class GeometryImpl implements GeometryInterface {
     /** The velocity reflected off the segment's line, its normal part multiplied by the coefficient. */
     @Override
     public Vect reflectWall(LineSegment line, Vect velocity, double reflectionCoeff) {
-        Vect dir = line.p2().minus(line.p1());
-        return reflectAlong(new Vect(-dir.y(), dir.x()).unitSize(), velocity, reflectionCoeff);
+        // The unit normal (-dy, dx) of the direction, as Vect's minus and unitSize make it (-0 turned to +0), without
+        // making those vectors: a bounce off a wall is the commonest collision.
+        double dx = line.p2().x() - line.p1().x() + 0.0;
+        double dy = line.p2().y() - line.p1().y() + 0.0;
+        double nx = -dy + 0.0;
+        double ny = dx + 0.0;
+        double normal = length(nx, ny);
+        if (normal == 0) {
+            return reflectAlong(Vect.ZERO, velocity, reflectionCoeff);
+        }
+        return reflectAlong(nx / normal + 0.0, ny / normal + 0.0, velocity, reflectionCoeff);
     }
 
     /** {@link #reflectWall(LineSegment, Vect, double)} with coefficient 1. */

@@ -133,7 +133,7 @@ final class RotatingContactSearch {
         Region region = classify(null, 0);
         for (int slice = 0, steps = 0; slice < slices; slice++) {
             double sliceEnd = slice == slices - 1 ? foresight : foresight * (slice + 1) / slices;
-            double farthest = Math.max(u(t).length(), u(sliceEnd).length());
+            double farthest = Math.max(fromPivot(t), fromPivot(sliceEnd));
             double lipschitz = speed + spin * farthest;
             double curvature = 2 * spin * speed + w * w * farthest;
             while (true) {
@@ -233,17 +233,18 @@ final class RotatingContactSearch {
     private double closestApproachToPivot(double foresight) {
         double speedSquared = v.dot(v);
         double tClosest = speedSquared == 0 ? 0 : -c0MinusPivot.dot(v) / speedSquared;
-        return u(Math.max(0, Math.min(foresight, tClosest))).length();
+        return fromPivot(Math.max(0, Math.min(foresight, tClosest)));
     }
 
-    private Vect u(double t) {
-        return c0MinusPivot.plus(v.times(t));
+    /** |u(t)| = |c0 + v t - pivot|, made of no vector (the search asks for it at every slice). */
+    private double fromPivot(double t) {
+        return ClosedForms.length(c0MinusPivot.x() + v.x() * t, c0MinusPivot.y() + v.y() * t);
     }
 
     /** Sets the gaps and rates at time t in the obstacle's frame (plain arithmetic: this is the hot loop). */
     private void evaluate(double t) {
-        double cos = Math.cos(w * t);
-        double sin = -Math.sin(w * t); // R(-w t)
+        double cos = StrictMath.cos(w * t);
+        double sin = -StrictMath.sin(w * t); // R(-w t), the same on every JVM and processor
         double ux = c0MinusPivot.x() + v.x() * t;
         double uy = c0MinusPivot.y() + v.y() * t;
         double turnedX = ux * cos - uy * sin;
@@ -260,7 +261,7 @@ final class RotatingContactSearch {
         if (wall) {
             evaluateFace(relX, relY, rateX, rateY, accelerationX, accelerationY);
         } else {
-            double distance = Math.hypot(relX, relY);
+            double distance = StrictMath.hypot(relX, relY);
             gap = distance - contactDistance;
             faceGap = gap;
             if (distance == 0) {
@@ -303,7 +304,7 @@ final class RotatingContactSearch {
                 : Math.signum(offsetAcceleration);
         faceAcceleration = side * offsetAcceleration;
         double out = Math.max(faceGap, 0);
-        gap = Math.hypot(beyond, out);
+        gap = StrictMath.hypot(beyond, out);
         gapRate = gap == 0 ? 0 : (beyond * beyondRate + out * faceRate) / gap;
     }
 }

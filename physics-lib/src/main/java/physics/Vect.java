@@ -64,7 +64,7 @@ public final class Vect implements Serializable {
         if (y == 0) {
             return Math.abs(x);
         }
-        return Math.hypot(x, y);
+        return StrictMath.hypot(x, y);
     }
 
     public double distanceSquared(Vect other) {

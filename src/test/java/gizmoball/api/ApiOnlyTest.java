@@ -155,7 +155,7 @@ class ApiOnlyTest {
     }
 
     /** Every class file in a class path entry, a directory or a jar. */
-    private static void forEachClassFile(Path location, ClassFileVisitor visitor) throws IOException {
+    static void forEachClassFile(Path location, ClassFileVisitor visitor) throws IOException {
         if (Files.isDirectory(location)) {
             visitClassFiles(location, visitor);
         } else {

@@ -95,7 +95,7 @@ public sealed interface Setting {
         }
 
         public Optional<String> problem(String name, Board board) {
-            return Double.isFinite(vx) && Double.isFinite(vy) && Math.hypot(vx, vy) <= board.maxSpeed()
+            return Double.isFinite(vx) && Double.isFinite(vy) && StrictMath.hypot(vx, vy) <= board.maxSpeed()
                     ? Optional.empty()
                     : Optional.of("a spawner's velocity is finite and at most " + (int) board.maxSpeed()
                             + " L/s fast, not (" + vx + ", " + vy + ")");

@@ -1,5 +1,6 @@
 package gizmoball.model.loop;
 
+import java.util.ArrayList;
 import java.util.List;
 
 import physics.Geometry;
@@ -11,6 +12,10 @@ import physics.Vect;
  */
 final class BallPairs {
     private final StepContext step;
+
+    /** The normals of what else holds each ball of a pair pressed together: lists kept from use to use. */
+    private final List<Vect> holdingBall = new ArrayList<>();
+    private final List<Vect> holdingOther = new ArrayList<>();
 
     BallPairs(StepContext step) {
         this.step = step;
@@ -62,8 +67,8 @@ final class BallPairs {
      * the loop would otherwise reach only through a chain of zero-time collisions, one step each.
      */
     private void pressTogether(Ball ball, Ball other, Vect normal) {
-        List<Vect> holdingBall = step.contacts.normalsBesides(ball, new ContactRef.OnBall(other.name()));
-        List<Vect> holdingOther = step.contacts.normalsBesides(other, new ContactRef.OnBall(ball.name()));
+        List<Vect> holdingBall = step.contacts.normalsBesides(ball, other.asSupported(), this.holdingBall);
+        List<Vect> holdingOther = step.contacts.normalsBesides(other, ball.asSupported(), this.holdingOther);
         for (int i = 0; i < step.settings.pressSteps()
                 && -ball.velocity().minus(other.velocity()).dot(normal) > Tolerances.ROUNDING_SPEED; i++) {
             double common = (ball.velocity().dot(normal) + other.velocity().dot(normal)) / 2;

@@ -54,8 +54,17 @@ final class CollisionDetector {
 
     /** The velocity the ball moves with for the rest of the tick: none while asleep or finished. */
     Vect motion(Ball ball) {
-        boolean finished = !finishedBalls.isEmpty() && finishedBalls.contains(ball);
-        return ball.isAsleep() || finished ? Vect.ZERO : ball.velocity();
+        return resting(ball) ? Vect.ZERO : ball.velocity();
+    }
+
+    /** {@link #speedBound} of the ball's {@link #motion}, on its components: the schedule asks it of every ball. */
+    double speedOf(Ball ball) {
+        return resting(ball) ? 0 : Math.sqrt(ball.vx() * ball.vx() + ball.vy() * ball.vy());
+    }
+
+    /** Whether the ball moves no more in this tick: asleep, or finished. */
+    private boolean resting(Ball ball) {
+        return ball.isAsleep() || !finishedBalls.isEmpty() && finishedBalls.contains(ball);
     }
 
     /**
@@ -73,17 +82,21 @@ final class CollisionDetector {
     Earliest againstScene(Ball ball, double window) {
         Earliest earliest = scene;
         earliest.reset(window);
-        Circle circle = ball.circle();
-        Vect velocity = motion(ball);
-        boolean still = velocity.x() == 0 && velocity.y() == 0;
-        swept.set(ball.x(), ball.y(), velocity, window);
+        // The ball's circle and velocity as vectors, which the physics API takes, are made (by the ball, once per place
+        // and velocity) only when a shape lies in reach: most asks in a tick find none.
+        boolean resting = resting(ball);
+        double vx = resting ? 0 : ball.vx();
+        double vy = resting ? 0 : ball.vy();
+        boolean still = vx == 0 && vy == 0;
+        swept.set(ball.x(), ball.y(), vx, vy, window);
         if (!still) {
             for (int side = 0; side < Arena.OUTER_WALLS.size(); side++) {
                 LineSegment wall = Arena.OUTER_WALLS.get(side);
                 if (swept.misses(wall)) {
                     continue;
                 }
-                double time = Geometry.timeUntilWallCollision(wall, circle, velocity);
+                Vect velocity = motion(ball);
+                double time = Geometry.timeUntilWallCollision(wall, ball.circle(), velocity);
                 if (time <= earliest.limit() && closesOnSegment(wall, ball, velocity, time)) {
                     earliest.offer(time, ball, WALL_CONTACTS.get(side), false);
                 }
@@ -95,7 +108,7 @@ final class CollisionDetector {
             if (gizmo instanceof MovingShape moving && moving.isMoving()) {
                 againstMovingShape(ball, gizmo, moving, window, earliest);
             } else if (!still) {
-                againstStillShape(ball, circle, velocity, 0, gizmo, gizmo.shape(), earliest);
+                againstStillShape(ball, 0, gizmo, gizmo.shape(), earliest);
             }
         }
         return earliest;
@@ -105,12 +118,13 @@ final class CollisionDetector {
     void againstBall(Ball ball, Ball other, double window, Earliest earliest) {
         Vect mine = motion(ball);
         Vect theirs = motion(other);
-        Vect relative = mine.minus(theirs);
+        double rx = mine.x() - theirs.x();   // mine.minus(theirs), made only for a pair that meets
+        double ry = mine.y() - theirs.y();
         double dx = ball.x() - other.x();   // as Vect.distanceSquared, without making the centres' vectors
         double dy = ball.y() - other.y();
         double gap = Math.sqrt(dx * dx + dy * dy) - 2 * Arena.BALL_RADIUS;
-        if (gap > speedBound(relative) * window + Tolerances.REACH_MARGIN) {
-            return;   // cannot close the gap within the window
+        if (gap > Math.sqrt(rx * rx + ry * ry) * window + Tolerances.REACH_MARGIN) {
+            return;   // cannot close the gap within the window (speedBound of the relative velocity)
         }
         if (view.passingThrough(ball, other)) {
             return;   // placed on each other (a loaded file may do that): they pass through until they are apart
@@ -118,7 +132,7 @@ final class CollisionDetector {
         double time = Geometry.timeUntilBallBallCollision(ball.circle(), mine, other.circle(), theirs);
         if (time <= window) {
             Vect normal = ball.position().plus(mine.times(time)).minus(other.position().plus(theirs.times(time)));
-            if (closingOnCircle(normal, relative)) {
+            if (closingOnCircle(normal, mine.minus(theirs))) {
                 earliest.offer(time, ball, other.asContact(), true);
             }
         }
@@ -136,15 +150,20 @@ final class CollisionDetector {
     }
 
     /**
-     * A shape that does not move; {@code delay}: the ball's circle is where the ball will be after that time, still
+     * A shape that does not move, met by the moving ball from where it will be after {@code delay} seconds, still
      * within the box it sweeps in the window, so what lies outside the box is passed over.
      */
-    private void againstStillShape(Ball ball, Circle circle, Vect velocity, double delay, GizmoBase gizmo,
-                                   Shape shape, Earliest earliest) {
+    private void againstStillShape(Ball ball, double delay, GizmoBase gizmo, Shape shape, Earliest earliest) {
+        Vect velocity = null;
+        Circle circle = null;
         List<LineSegment> segments = shape.segments();
         for (int i = 0; i < segments.size(); i++) {
             if (swept.misses(segments.get(i))) {
                 continue;
+            }
+            if (circle == null) {
+                velocity = motion(ball);
+                circle = circleAfter(ball, velocity, delay);
             }
             double time = delay + Geometry.timeUntilWallCollision(segments.get(i), circle, velocity);
             if (time <= earliest.limit() && closesOnSegment(segments.get(i), ball, velocity, time)) {
@@ -155,6 +174,10 @@ final class CollisionDetector {
         for (int i = 0; i < circles.size(); i++) {
             if (swept.misses(circles.get(i))) {
                 continue;
+            }
+            if (circle == null) {
+                velocity = motion(ball);
+                circle = circleAfter(ball, velocity, delay);
             }
             double time = delay + Geometry.timeUntilCircleCollision(circles.get(i), circle, velocity);
             if (time <= earliest.limit() && closingOnCircle(
@@ -213,9 +236,14 @@ final class CollisionDetector {
         }
         boolean still = velocity.x() == 0 && velocity.y() == 0;
         if (swingLeft < window && !still) {
-            Circle later = new Circle(circle.getCenter().plus(velocity.times(swingLeft)), circle.getRadius());
-            againstStillShape(ball, later, velocity, swingLeft, gizmo, moving.shapeAtStop(), earliest);
+            againstStillShape(ball, swingLeft, gizmo, moving.shapeAtStop(), earliest);
         }
+    }
+
+    /** The ball's circle where it will be after {@code delay} seconds at {@code velocity}: its own for none. */
+    private static Circle circleAfter(Ball ball, Vect velocity, double delay) {
+        return delay == 0 ? ball.circle()
+                : new Circle(ball.position().plus(velocity.times(delay)), Arena.BALL_RADIUS);
     }
 
     /**
@@ -244,7 +272,7 @@ final class CollisionDetector {
         }
         double awayX = cx - footX + 0.0;
         double awayY = cy - footY + 0.0;
-        double length = awayX == 0 ? Math.abs(awayY) : awayY == 0 ? Math.abs(awayX) : Math.hypot(awayX, awayY);
+        double length = awayX == 0 ? Math.abs(awayY) : awayY == 0 ? Math.abs(awayX) : StrictMath.hypot(awayX, awayY);
         return length > 0 && -(velocity.x() * awayX + velocity.y() * awayY) / length > Tolerances.ROUNDING_SPEED;
     }
 

@@ -104,7 +104,7 @@ final class CollisionSchedule {
             Ball ball = free.get(i);
             bySlot[filed] = ball;
             ball.setSlot(filed++);
-            double speed = CollisionDetector.speedBound(detector.motion(ball));
+            double speed = detector.speedOf(ball);
             fastest = Math.max(fastest, speed);
             grid.add(ball, speed);
         }
@@ -166,7 +166,7 @@ final class CollisionSchedule {
 
     /** A ball's velocity changed: positions may go stale faster. */
     void sped(Ball ball) {
-        double speed = CollisionDetector.speedBound(detector.motion(ball));
+        double speed = detector.speedOf(ball);
         fastest = Math.max(fastest, speed);
         if (isFiled(ball)) {
             grid.sped(ball, speed);
@@ -370,7 +370,7 @@ final class CollisionSchedule {
     void forgetReaching(double x0, double y0, double x1, double y1, double window) {
         for (int slot = 0; slot < filed; slot++) {
             Ball ball = bySlot[slot];
-            double reach = Arena.BALL_RADIUS + CollisionDetector.speedBound(detector.motion(ball)) * window
+            double reach = Arena.BALL_RADIUS + detector.speedOf(ball) * window
                     + Tolerances.REACH_MARGIN;
             if (ball.x() + reach >= x0 && ball.x() - reach <= x1 && ball.y() + reach >= y0 && ball.y() - reach <= y1) {
                 sceneKnown[slot] = false;
@@ -448,7 +448,7 @@ final class CollisionSchedule {
     private void askAgainstBalls(Ball ball, double elapsed, double window) {
         Earliest earliest = againstBalls;
         earliest.reset(window);
-        double speed = CollisionDetector.speedBound(detector.motion(ball));
+        double speed = detector.speedOf(ball);
         // No ball farther now than this can meet this one within the window (the pair test's own bound, wider).
         double near = 2 * Arena.BALL_RADIUS + (speed + fastest) * window + Tolerances.REACH_MARGIN;
         double reach = near + fastest * (elapsed - filedAt);

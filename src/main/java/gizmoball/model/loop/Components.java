@@ -18,7 +18,7 @@ final class Components {
         if (y == 0) {
             return Math.abs(x);
         }
-        return Math.hypot(x, y);
+        return StrictMath.hypot(x, y);
     }
 
     /** {@code new Vect(x, y).unitSize()}: the unit vector along (x, y), and {@code Vect.ZERO} for (0, 0). */

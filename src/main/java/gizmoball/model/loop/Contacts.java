@@ -34,6 +34,8 @@ final class Contacts {
     private final Foot foot = new Foot();
     /** The list {@link #normals(Ball)} fills. */
     private final List<Vect> queried = new ArrayList<>();
+    /** The gizmos near a ball whose contacts are looked for: kept from use to use. */
+    private final List<GizmoBase> nearby = new ArrayList<>();
 
     /**
      * A ball lying on something and nudged off it by a rounding of a wedge's projections, or rolling over a curve
@@ -236,9 +238,12 @@ final class Contacts {
         return normalOf(ball, ref, null, Look.QUERY);
     }
 
-    /** The normals of the ball's contacts other than {@code surface}, as they are now. */
-    List<Vect> normalsBesides(Ball ball, ContactRef surface) {
-        List<Vect> normals = new ArrayList<>();
+    /**
+     * The normals of the ball's contacts other than {@code surface}, as they are now, into {@code normals} (emptied
+     * first; the caller's list, kept from use to use), which it returns.
+     */
+    List<Vect> normalsBesides(Ball ball, ContactRef surface, List<Vect> normals) {
+        normals.clear();
         List<ContactRef> refs = ball.contacts();
         for (int i = 0; i < refs.size(); i++) {
             ContactRef ref = refs.get(i);
@@ -318,21 +323,23 @@ final class Contacts {
     }
 
     private Vect onPart(Ball ball, ContactRef.Part part, Look look) {
-        GizmoBase gizmo = view.gizmo(part.gizmo());
+        return onPart(ball, view.gizmo(part.gizmo()), part.circle(), part.index(), look);
+    }
+
+    /** The contact with circle or segment {@code index} of the gizmo's shape (null: no gizmo); null if none. */
+    private Vect onPart(Ball ball, GizmoBase gizmo, boolean circle, int index, Look look) {
         if (gizmo == null || gizmo instanceof MovingShape moving && moving.isMoving()
-                && !(part.circle() && moving.turnsInPlace(part.index()))) {
+                && !(circle && moving.turnsInPlace(index))) {
             return null;   // a moving shape holds nothing up, but a round end it turns in place does not move
         }
-        if (!part.circle() && Passages.through(view, ball, gizmo, part.index()) != null) {
+        if (!circle && Passages.through(view, ball, gizmo, index) != null) {
             return null;   // an open mouth with room beyond holds nothing up: the ball goes through
         }
         Shape shape = gizmo.shape();
-        if (part.circle()) {
-            return part.index() < shape.circles().size() ? onCircle(ball, shape.circles().get(part.index()), look)
-                    : null;
+        if (circle) {
+            return index < shape.circles().size() ? onCircle(ball, shape.circles().get(index), look) : null;
         }
-        return part.index() < shape.segments().size() ? onSegment(ball, shape.segments().get(part.index()), look)
-                : null;
+        return index < shape.segments().size() ? onSegment(ball, shape.segments().get(index), look) : null;
     }
 
     private Vect onBall(Ball ball, ContactRef.OnBall on, Look look) {
@@ -422,18 +429,20 @@ final class Contacts {
         for (int side = 0; side < Arena.OUTER_WALLS.size(); side++) {
             consider(ball, ContactRef.Wall.of(side), normals);
         }
-        Vect p = ball.position();
         double reach = Arena.BALL_RADIUS + Tolerances.CONTACT;
-        for (GizmoBase gizmo : view.index().within(p.x() - reach, p.y() - reach, p.x() + reach, p.y() + reach)) {
+        List<GizmoBase> nearby = this.nearby;
+        view.index().within(ball.x() - reach, ball.y() - reach, ball.x() + reach, ball.y() + reach, nearby);
+        for (int g = 0; g < nearby.size(); g++) {
+            GizmoBase gizmo = nearby.get(g);
             if (gizmo.takesBalls() || gizmo instanceof MovingShape moving && moving.isMoving()) {
                 continue;   // an absorber or a sink takes what touches it; a moving shape is no support
             }
             Shape shape = gizmo.shape();
             for (int i = 0; i < shape.segments().size(); i++) {
-                consider(ball, new ContactRef.Part(gizmo.name(), false, i), normals);
+                considerPart(ball, gizmo, false, i, normals);
             }
             for (int i = 0; i < shape.circles().size(); i++) {
-                consider(ball, new ContactRef.Part(gizmo.name(), true, i), normals);
+                considerPart(ball, gizmo, true, i, normals);
             }
         }
     }
@@ -441,6 +450,24 @@ final class Contacts {
     private void consider(Ball ball, ContactRef ref, List<Vect> normals) {
         if (!ball.contacts().contains(ref) && normalOf(ball, ref, normals, Look.SNAP) != null) {
             ball.contacts().add(ref);
+        }
+    }
+
+    /** As {@link #consider} for a part of the gizmo, whose reference is made only when it becomes a contact. */
+    private void considerPart(Ball ball, GizmoBase gizmo, boolean circle, int index, List<Vect> normals) {
+        List<ContactRef> refs = ball.contacts();
+        for (int i = 0; i < refs.size(); i++) {
+            if (refs.get(i) instanceof ContactRef.Part part && part.circle() == circle && part.index() == index
+                    && part.gizmo().equals(gizmo.name())) {
+                return;
+            }
+        }
+        Vect normal = onPart(ball, gizmo, circle, index, Look.SNAP);
+        if (normal != null) {
+            if (normals != null) {
+                normals.add(normal);
+            }
+            refs.add(new ContactRef.Part(gizmo.name(), circle, index));
         }
     }
 }

@@ -240,7 +240,12 @@ final class StepContext {
     /** The ball keeps the surface as a contact and loses every part of its velocity that presses into its contacts. */
     void comeToRest(Ball ball, ContactRef ref) {
         Contacts.attach(ball, ref);
-        ball.setVelocity(Contacts.project(ball.velocity(), contacts.normals(ball)));
+        List<Vect> normals = contacts.normals(ball);
+        int along = Projection.of(ball.vx(), ball.vy(), normals);   // Contacts.project, on the components
+        if (along != Projection.CLOSES_ON_NONE) {
+            ball.setVelocity(Projection.x(ball.vx(), ball.vy(), normals, along),
+                    Projection.y(ball.vx(), ball.vy(), normals, along));
+        }
         energy.lost(ball);
         restingContact = true;
     }
@@ -252,8 +257,12 @@ final class StepContext {
      * its foot by the slope, though gravity is parallel to the wall).
      */
     double restingSpeed(Vect normal, List<Vect> otherNormals) {
-        Vect pull = Contacts.project(gravity, otherNormals);
-        double pressing = Math.max(0, -pull.dot(normal));
+        // Contacts.project(gravity, otherNormals), on the components
+        int along = Projection.of(gravity.x(), gravity.y(), otherNormals);
+        boolean free = along == Projection.CLOSES_ON_NONE;
+        double pullX = free ? gravity.x() : Projection.x(gravity.x(), gravity.y(), otherNormals, along);
+        double pullY = free ? gravity.y() : Projection.y(gravity.x(), gravity.y(), otherNormals, along);
+        double pressing = Math.max(0, -(pullX * normal.x() + pullY * normal.y()));
         return Math.max(Tolerances.ROUNDING_SPEED, settings.restTicksOfGravity() * pressing * dt);
     }
 

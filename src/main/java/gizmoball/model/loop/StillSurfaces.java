@@ -21,6 +21,8 @@ final class StillSurfaces {
     /** The surfaces a ball bounces among, the normals of the contacts taking a bounce: lists kept from use to use. */
     private final List<ContactRef> among = new ArrayList<>();
     private final List<Vect> taking = new ArrayList<>();
+    /** The normals of a ball's other contacts, read at once by {@link StepContext#restingSpeed}: kept from use to use. */
+    private final List<Vect> besides = new ArrayList<>();
 
     StillSurfaces(StepContext step) {
         this.step = step;
@@ -85,7 +87,7 @@ final class StillSurfaces {
     private boolean bounceOff(Ball ball, Contact.StillSurface surface, Vect normal) {
         ContactRef ref = surface.ref();
         double approach = -ball.velocity().dot(normal);
-        if (approach <= step.restingSpeed(normal, step.contacts.normalsBesides(ball, ref))) {
+        if (approach <= step.restingSpeed(normal, step.contacts.normalsBesides(ball, ref, besides))) {
             step.comeToRest(ball, ref);
             return false;
         }
@@ -164,7 +166,7 @@ final class StillSurfaces {
             ContactRef ref = refs.get(i);
             Vect held = ref.equals(surface) ? null : step.contacts.normal(ball, ref);
             if (held != null) {
-                if (-bounced.dot(held) > step.restingSpeed(held, step.contacts.normalsBesides(ball, ref))) {
+                if (-bounced.dot(held) > step.restingSpeed(held, step.contacts.normalsBesides(ball, ref, besides))) {
                     return false;
                 }
                 taking.add(held);

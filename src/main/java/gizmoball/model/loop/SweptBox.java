@@ -18,10 +18,10 @@ final class SweptBox {
     double maxY;
 
     /** The box of a ball at (x, y) moving at {@code velocity} for {@code window} seconds. */
-    void set(double x, double y, Vect velocity, double window) {
+    void set(double x, double y, double vx, double vy, double window) {
         // The doubles centre + velocity * window gives, as the ball's own move computes them.
-        double toX = x + velocity.x() * window;
-        double toY = y + velocity.y() * window;
+        double toX = x + vx * window;
+        double toY = y + vy * window;
         double reach = Arena.BALL_RADIUS + Tolerances.REACH_MARGIN;
         minX = Math.min(x, toX) - reach;
         minY = Math.min(y, toY) - reach;

@@ -97,7 +97,7 @@ class CollisionDetectorTest {
             Vect velocity = new Vect(random.nextDouble(-100, 100),
                     random.nextInt(8) == 0 ? 0 : random.nextDouble(-100, 100));
             double window = random.nextDouble(0, 1.0 / 60);
-            box.set(centre.x(), centre.y(), velocity, window);
+            box.set(centre.x(), centre.y(), velocity.x(), velocity.y(), window);
             Circle ball = new Circle(centre, Arena.BALL_RADIUS);
             LineSegment face = new LineSegment(coordinate(random), coordinate(random), coordinate(random),
                     coordinate(random));

@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import gizmoball.model.Board;
 import gizmoball.model.LoopViews;
 
+import java.util.ArrayList;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
@@ -39,7 +40,7 @@ class ContactQueriesTest {
 
         List<Vect> normals = contacts.normals(ball);
         Vect normal = contacts.normal(ball, new ContactRef.Wall(2));
-        List<Vect> besides = contacts.normalsBesides(ball, new ContactRef.Wall(0));
+        List<Vect> besides = contacts.normalsBesides(ball, new ContactRef.Wall(0), new ArrayList<>());
 
         assertThat(normals).containsExactly(new Vect(0, -1));
         assertThat(normal).isEqualTo(new Vect(0, -1));
