@@ -26,9 +26,10 @@ public final class Sleepers {
         }
         woken.add(ball);
         while (!woken.isEmpty()) {
-            String support = woken.poll().name();
+            // one reference per support, not one per sleeping ball it is looked for among
+            ContactRef onSupport = new ContactRef.OnBall(woken.poll().name());
             for (Ball other : balls) {
-                if (other.isAsleep() && other.contacts().contains(new ContactRef.OnBall(support))) {
+                if (other.isAsleep() && other.contacts().contains(onSupport)) {
                     other.wake();
                     woken.add(other);
                 }
@@ -43,8 +44,8 @@ public final class Sleepers {
     public void wakeWithin(double minX, double minY, double maxX, double maxY) {
         double r = Arena.BALL_RADIUS + Tolerances.CONTACT;
         for (Ball ball : balls) {
-            double x = ball.position().x();
-            double y = ball.position().y();
+            double x = ball.x();
+            double y = ball.y();
             if (ball.isAsleep() && x + r >= minX && x - r <= maxX && y + r >= minY && y - r <= maxY) {
                 wake(ball);
             }
