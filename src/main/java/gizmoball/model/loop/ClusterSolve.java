@@ -99,6 +99,7 @@ final class ClusterSolve {
         boolean woke = false;
         for (int k = 0; k < balls.size(); k++) {
             Ball ball = balls.get(k);
+            step.energy.mayGain(ball);   // energy moves between its balls, and moving shapes may give some
             Vect after = new Vect(result.vx()[k], result.vy()[k]);
             Vect before = step.detector.motion(ball);
             if (after.equals(before)) {
