@@ -23,63 +23,83 @@ final class ActiveRowsFactor {
 
     private final Coupling coupling;
     /** The set's rows in the order they joined: factor row k is {@code order[k]}. */
-    private final int[] order;
-    /** The lower-triangular factor, row k holding its k + 1 entries. */
-    private final double[][] lower;
+    private int[] order;
+    /** The lower-triangular factor, packed by rows: row k's k + 1 entries start at k (k + 1) / 2. */
+    private double[] lower;
+    /** Per factor row k, the largest diagonal coupling of rows 0..k: the scale a pivot is negligible on. */
+    private double[] scaleTo;
     /** A forward substitution's values, reused. */
-    private final double[] work;
+    private double[] work;
     private int size;
-    /** The largest diagonal coupling of the set: the scale a pivot is negligible on. */
-    private double scale;
 
+    /**
+     * A factor with room for {@code rows} rows; it grows if more join, and is kept across solves ({@link #clear}), so
+     * that solving a cluster allocates nothing once it has seen one as large.
+     */
     ActiveRowsFactor(int rows, Coupling coupling) {
         this.coupling = coupling;
         this.order = new int[rows];
-        this.lower = new double[rows][];
+        this.lower = new double[rows * (rows + 1) / 2];
+        this.scaleTo = new double[rows];
         this.work = new double[rows];
+    }
+
+    /** Empties the set. */
+    void clear() {
+        size = 0;
     }
 
     /** Adds {@code row} to the set; false, leaving the set as it was, if the row depends on the rows already in it. */
     boolean add(int row) {
-        double[] entries = new double[size + 1];
+        room(size + 1);
+        int at = size * (size + 1) / 2;
         double pivot = coupling.of(row, row);
         for (int k = 0; k < size; k++) {
-            double[] lk = lower[k];
+            int lk = k * (k + 1) / 2;
             double sum = coupling.of(row, order[k]);
             for (int p = 0; p < k; p++) {
-                sum -= entries[p] * lk[p];
+                sum -= lower[at + p] * lower[lk + p];
             }
-            entries[k] = sum / lk[k];
-            pivot -= entries[k] * entries[k];
+            double entry = sum / lower[lk + k];
+            lower[at + k] = entry;
+            pivot -= entry * entry;
         }
-        double newScale = Math.max(scale, coupling.of(row, row));
+        double newScale = Math.max(size == 0 ? 0 : scaleTo[size - 1], coupling.of(row, row));
         if (pivot <= Tolerances.DEPENDENT_PIVOT * newScale) {
             return false;
         }
-        entries[size] = Math.sqrt(pivot);
-        lower[size] = entries;
+        lower[at + size] = Math.sqrt(pivot);
         order[size] = row;
+        scaleTo[size] = newScale;
         size++;
-        scale = newScale;
         return true;
+    }
+
+    private void room(int rows) {
+        if (rows > order.length) {
+            int capacity = Math.max(rows, 2 * order.length);
+            order = Arrays.copyOf(order, capacity);
+            lower = Arrays.copyOf(lower, capacity * (capacity + 1) / 2);
+            scaleTo = Arrays.copyOf(scaleTo, capacity);
+            work = Arrays.copyOf(work, capacity);
+        }
     }
 
     /**
      * Keeps only the rows for which {@code keep} is true, in the order they joined; false if one of them no longer
-     * counts as independent of those before it (rounding on a set at the edge of dependence).
+     * counts as independent of those before it (rounding on a set at the edge of dependence). The factor's rows before
+     * the first that leaves stand as they are (each depends only on the rows before it); those after it join again.
      */
     boolean keepOnly(boolean[] keep) {
-        int[] staying = new int[size];
-        int count = 0;
-        for (int k = 0; k < size; k++) {
-            if (keep[order[k]]) {
-                staying[count++] = order[k];
-            }
+        int first = 0;
+        while (first < size && keep[order[first]]) {
+            first++;
         }
-        size = 0;
-        scale = 0;
-        for (int k = 0; k < count; k++) {
-            if (!add(staying[k])) {
+        int count = size;
+        size = first;
+        for (int k = first + 1; k < count; k++) {
+            int row = order[k];
+            if (keep[row] && !add(row)) {
                 return false;
             }
         }
@@ -93,20 +113,20 @@ final class ActiveRowsFactor {
     void solve(double[] base, double[] out) {
         Arrays.fill(out, 0);
         for (int k = 0; k < size; k++) {
-            double[] lk = lower[k];
+            int lk = k * (k + 1) / 2;
             double sum = base[order[k]];
             for (int p = 0; p < k; p++) {
-                sum -= lk[p] * work[p];
+                sum -= lower[lk + p] * work[p];
             }
-            work[k] = sum / lk[k];
+            work[k] = sum / lower[lk + k];
         }
         // L^T x = work, by rows of L: each unknown, once found, is taken out of the equations above it.
         for (int k = size - 1; k >= 0; k--) {
-            double[] lk = lower[k];
-            double x = work[k] / lk[k];
+            int lk = k * (k + 1) / 2;
+            double x = work[k] / lower[lk + k];
             out[order[k]] = x;
             for (int p = 0; p < k; p++) {
-                work[p] -= lk[p] * x;
+                work[p] -= lower[lk + p] * x;
             }
         }
     }

@@ -5,6 +5,7 @@ import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.MovingShape;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
@@ -21,10 +22,21 @@ final class ClusterSolve {
     private final StepContext step;
     /** The balls filed near a ball, where they are now: what a cluster asks for the balls touching its own. */
     private final ContactCluster.Near near;
+    /** The solver, its rows and arrays kept from one cluster to the next (grown to the largest seen). */
+    private final NormalImpulses impulses;
+    // Kept too, and grown likewise: per ball, the velocities a solve starts from and the elastic bounces' strongest
+    // contact; per row, the impact speeds; one row's other normals on its ball.
+    private double[] startX = new double[0];
+    private double[] startY = new double[0];
+    private double[] most = new double[0];
+    private Vect[] strongest = new Vect[0];
+    private double[] impact = new double[0];
+    private final List<Vect> otherNormals = new ArrayList<>();
 
     ClusterSolve(StepContext step) {
         this.step = step;
         this.near = (ball, within, into) -> step.schedule.filedNear(ball, within, step.elapsed, into);
+        this.impulses = new NormalImpulses(step.settings);
     }
 
     /**
@@ -100,11 +112,11 @@ final class ClusterSolve {
         for (int k = 0; k < balls.size(); k++) {
             Ball ball = balls.get(k);
             step.energy.mayGain(ball);   // energy moves between its balls, and moving shapes may give some
-            Vect after = new Vect(result.vx()[k], result.vy()[k]);
             Vect before = step.detector.motion(ball);
-            if (after.equals(before)) {
+            if (Double.compare(result.vx()[k], before.x()) == 0 && Double.compare(result.vy()[k], before.y()) == 0) {
                 continue;
             }
+            Vect after = new Vect(result.vx()[k], result.vy()[k]);
             if (ball.isAsleep()) {
                 step.view.sleepers().wake(ball);
                 woke = true;
@@ -173,8 +185,12 @@ final class ClusterSolve {
     private void noteElasticBounces(ContactCluster cluster, NormalImpulses.Result result) {
         List<ContactCluster.Row> rows = cluster.rows();
         List<Ball> balls = cluster.balls();
-        double[] most = new double[balls.size()];
-        Vect[] normal = new Vect[balls.size()];
+        if (most.length < balls.size()) {
+            most = new double[balls.size()];
+            strongest = new Vect[balls.size()];
+        }
+        Arrays.fill(most, 0, balls.size(), 0);
+        Arrays.fill(strongest, 0, balls.size(), null);
         for (int i = 0; i < rows.size(); i++) {
             ContactCluster.Row row = rows.get(i);
             double change = result.compression()[i];
@@ -183,19 +199,19 @@ final class ClusterSolve {
             }
             if (change > most[row.ball()]) {
                 most[row.ball()] = change;
-                normal[row.ball()] = row.normal();
+                strongest[row.ball()] = row.normal();
             }
             if (row.other() instanceof ContactCluster.Other.InCluster in) {
                 if (change > most[in.index()]) {
                     most[in.index()] = change;
-                    normal[in.index()] = row.normal().neg();
+                    strongest[in.index()] = row.normal().neg();
                 }
                 step.energy.met(balls.get(row.ball()), balls.get(in.index()));
             }
         }
         for (int k = 0; k < balls.size(); k++) {
-            if (normal[k] != null) {
-                step.energy.bounced(balls.get(k), normal[k], true);
+            if (strongest[k] != null) {
+                step.energy.bounced(balls.get(k), strongest[k], true);
             }
         }
     }
@@ -233,34 +249,25 @@ final class ClusterSolve {
     private NormalImpulses.Result solve(ContactCluster cluster, double[] impact, Set<MovingShape> stalled,
                                         boolean carried) {
         List<ContactCluster.Row> rows = cluster.rows();
-        int n = rows.size();
-        int[] a = new int[n];
-        int[] b = new int[n];
-        double[] nx = new double[n];
-        double[] ny = new double[n];
-        double[] speed = new double[n];
-        double[] restitution = new double[n];
-        for (int i = 0; i < n; i++) {
-            ContactCluster.Row row = rows.get(i);
-            a[i] = row.ball();
-            b[i] = row.other() instanceof ContactCluster.Other.InCluster in ? in.index() : -1;
-            nx[i] = row.normal().x();
-            ny[i] = row.normal().y();
+        List<Ball> balls = cluster.balls();
+        impulses.clear(balls.size());
+        for (ContactCluster.Row row : rows) {
             boolean still = row.other() instanceof ContactCluster.Other.Moving moving
                     && stalled.contains(moving.shape());
-            speed[i] = still ? 0 : row.surfaceSpeed();
-            restitution[i] = carried ? 0 : row.restitution();
+            impulses.row(row.ball(), row.other() instanceof ContactCluster.Other.InCluster in ? in.index() : -1,
+                    row.normal().x(), row.normal().y(), still ? 0 : row.surfaceSpeed(),
+                    carried ? 0 : row.restitution());
         }
-        List<Ball> balls = cluster.balls();
-        double[] vx = new double[balls.size()];
-        double[] vy = new double[balls.size()];
+        if (startX.length < balls.size()) {
+            startX = new double[balls.size()];
+            startY = new double[balls.size()];
+        }
         for (int k = 0; k < balls.size(); k++) {
             Vect v = step.detector.motion(balls.get(k));
-            vx[k] = v.x();
-            vy[k] = v.y();
+            startX[k] = v.x();
+            startY[k] = v.y();
         }
-        return new NormalImpulses(step.settings, balls.size(), a, b, nx, ny, speed, restitution).solve(vx, vy, impact,
-                Arena.MAX_SPEED);
+        return impulses.solve(startX, startY, impact, Arena.MAX_SPEED);
     }
 
     /**
@@ -271,17 +278,19 @@ final class ClusterSolve {
      */
     private double[] impactSpeeds(ContactCluster cluster) {
         List<ContactCluster.Row> rows = cluster.rows();
-        double[] impact = new double[rows.size()];
+        if (impact.length < rows.size()) {
+            impact = new double[Math.max(rows.size(), 2 * impact.length)];
+        }
         for (int i = 0; i < rows.size(); i++) {
             ContactCluster.Row row = rows.get(i);
             if (row.other().surface()) {
-                List<Vect> others = new ArrayList<>();
+                otherNormals.clear();
                 for (int j = 0; j < rows.size(); j++) {
                     if (j != i && rows.get(j).ball() == row.ball()) {
-                        others.add(rows.get(j).normal());
+                        otherNormals.add(rows.get(j).normal());
                     }
                 }
-                impact[i] = step.restingSpeed(row.normal(), others);
+                impact[i] = step.restingSpeed(row.normal(), otherNormals);
             } else {
                 impact[i] = step.pressingSpeed();
             }

@@ -1,5 +1,7 @@
 package gizmoball.model.loop;
 
+import java.util.Arrays;
+
 /**
  * The rows of one contact cluster's normal impulses ({@link NormalImpulses}): per row, the ball the normal points into,
  * the other ball or a surface, the unit normal, and the surface's speed along it; and what an impulse on a row does.
@@ -12,21 +14,36 @@ final class ContactRows {
      */
     static final double SLOP = Tolerances.ROUNDING_SPEED / 2;
 
-    private final int balls;
-    private final int[] a;
-    private final int[] b;
-    private final double[] nx;
-    private final double[] ny;
-    private final double[] speed;
+    private int balls;
+    private int count;
+    private int[] a = new int[0];
+    private int[] b = new int[0];
+    private double[] nx = new double[0];
+    private double[] ny = new double[0];
+    private double[] speed = new double[0];
 
-    /** As {@link NormalImpulses#NormalImpulses}'s arguments of the same names. */
-    ContactRows(int balls, int[] a, int[] b, double[] nx, double[] ny, double[] speed) {
+    /** Starts a new set of rows on {@code balls} balls; the arrays are kept and grow with the largest set seen. */
+    void clear(int balls) {
         this.balls = balls;
-        this.a = a;
-        this.b = b;
-        this.nx = nx;
-        this.ny = ny;
-        this.speed = speed;
+        this.count = 0;
+    }
+
+    /** Adds a row, as {@link NormalImpulses#row}'s arguments of the same names. */
+    void add(int a, int b, double nx, double ny, double speed) {
+        if (count == this.a.length) {
+            int capacity = Math.max(8, 2 * count);
+            this.a = Arrays.copyOf(this.a, capacity);
+            this.b = Arrays.copyOf(this.b, capacity);
+            this.nx = Arrays.copyOf(this.nx, capacity);
+            this.ny = Arrays.copyOf(this.ny, capacity);
+            this.speed = Arrays.copyOf(this.speed, capacity);
+        }
+        this.a[count] = a;
+        this.b[count] = b;
+        this.nx[count] = nx;
+        this.ny[count] = ny;
+        this.speed[count] = speed;
+        count++;
     }
 
     int balls() {
@@ -34,7 +51,7 @@ final class ContactRows {
     }
 
     int count() {
-        return a.length;
+        return count;
     }
 
     /** The surface's speed along row i's normal (0 for a ball or a still surface). */

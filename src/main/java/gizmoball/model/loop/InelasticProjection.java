@@ -13,9 +13,24 @@ final class InelasticProjection {
     private final int maxSweeps;
     private final int maxRounds;
     private final ContactRows contacts;
-    private final int balls;
-    private final int rows;
-    private final double[] impulse;
+    private final ActiveRowsFactor factor;
+    /** The rows and balls of the projection under way ({@link ContactRows#count()}, {@link ContactRows#balls()}). */
+    private int balls;
+    private int rows;
+    // Kept from one projection to the next and grown to the largest cluster seen: a solve allocates nothing.
+    private double[] impulse = new double[0];
+    /** Per row: what it closes by before any impulse; the active set's trial impulses; a joining row's coupling. */
+    private double[] base = new double[0];
+    private double[] trial = new double[0];
+    private double[] coupled = new double[0];
+    /** Per row, the combination of the set's rows a joining row depends on ({@link #swapIn}). */
+    private double[] combination = new double[0];
+    private boolean[] active = new boolean[0];
+    /** Per ball: the velocities the projection started from; a dependent row's residual ({@link #noAnswer}). */
+    private double[] startX = new double[0];
+    private double[] startY = new double[0];
+    private double[] residualX = new double[0];
+    private double[] residualY = new double[0];
     /** The velocities being projected, in place: the solve's own arrays. */
     private double[] vx;
     private double[] vy;
@@ -24,14 +39,32 @@ final class InelasticProjection {
         this.maxSweeps = settings.projectionSweeps();
         this.maxRounds = settings.activeSetChanges();
         this.contacts = contacts;
-        this.balls = contacts.balls();
-        this.rows = contacts.count();
-        this.impulse = new double[rows];
+        this.factor = new ActiveRowsFactor(0, contacts::coupling);
     }
 
     /** The impulse on each row of the last projection (the array itself, which each projection overwrites). */
     double[] impulses() {
         return impulse;
+    }
+
+    /** Sizes the kept arrays for the rows and balls of the projection about to start. */
+    private void room() {
+        rows = contacts.count();
+        balls = contacts.balls();
+        if (impulse.length < rows) {
+            impulse = new double[rows];
+            base = new double[rows];
+            trial = new double[rows];
+            coupled = new double[rows];
+            combination = new double[rows];
+            active = new boolean[rows];
+        }
+        if (startX.length < balls) {
+            startX = new double[balls];
+            startY = new double[balls];
+            residualX = new double[balls];
+            residualY = new double[balls];
+        }
     }
 
     /**
@@ -46,8 +79,9 @@ final class InelasticProjection {
     boolean project(double[] vx, double[] vy, double speedLimit) {
         this.vx = vx;
         this.vy = vy;
-        double[] vx0 = vx.clone();
-        double[] vy0 = vy.clone();
+        room();
+        System.arraycopy(vx, 0, startX, 0, balls);
+        System.arraycopy(vy, 0, startY, 0, balls);
         SetOutcome outcome = projectByActiveSet(speedLimit);
         if (outcome != SetOutcome.UNSETTLED) {
             return outcome == SetOutcome.SOLVED && withinLimit(vx, vy, speedLimit);
@@ -55,8 +89,8 @@ final class InelasticProjection {
         // Gauss-Seidel converges from any impulses that push: it starts where the active set got to (in a packed
         // pocket, a row depending on 48 others ends the active set with the rest of the answer found), unless those
         // impulses are past any a velocity within the limit needs (rows nearly dependent: 1e17).
-        System.arraycopy(vx0, 0, vx, 0, balls);
-        System.arraycopy(vy0, 0, vy, 0, balls);
+        System.arraycopy(startX, 0, vx, 0, balls);
+        System.arraycopy(startY, 0, vy, 0, balls);
         double bound = impulseBound(speedLimit);
         boolean warm = true;
         for (int i = 0; i < rows && warm; i++) {
@@ -121,16 +155,12 @@ final class InelasticProjection {
      * own can change what it closes by) is swapped in for one that makes way ({@link #swapIn}).
      */
     private SetOutcome projectByActiveSet(double speedLimit) {
-        double[] base = new double[rows];
         for (int i = 0; i < rows; i++) {
             base[i] = contacts.closing(vx, vy, i);   // what each row closes by, before any impulse
         }
-        double[] vx0 = vx.clone();
-        double[] vy0 = vy.clone();
-        boolean[] active = new boolean[rows];
-        ActiveRowsFactor factor = new ActiveRowsFactor(rows, contacts::coupling);
-        Arrays.fill(impulse, 0);
-        double[] trial = new double[rows];
+        Arrays.fill(active, 0, rows, false);
+        factor.clear();
+        Arrays.fill(impulse, 0, rows, 0);
         for (int round = 0; round < maxRounds; round++) {
             int joining = -1;
             double most = ContactRows.SLOP;
@@ -145,7 +175,7 @@ final class InelasticProjection {
                 return activeRowsHold() ? SetOutcome.SOLVED : SetOutcome.UNSETTLED;
             }
             if (!factor.add(joining)) {
-                Swap swap = swapIn(joining, active, factor, speedLimit);
+                Swap swap = swapIn(joining, speedLimit);
                 if (swap != Swap.SWAPPED) {
                     return swap == Swap.NO_ROW_MAKES_WAY ? SetOutcome.INFEASIBLE : SetOutcome.UNSETTLED;
                 }
@@ -175,8 +205,8 @@ final class InelasticProjection {
                     return SetOutcome.UNSETTLED;
                 }
             }
-            System.arraycopy(vx0, 0, vx, 0, balls);
-            System.arraycopy(vy0, 0, vy, 0, balls);
+            System.arraycopy(startX, 0, vx, 0, balls);
+            System.arraycopy(startY, 0, vy, 0, balls);
             for (int i = 0; i < rows; i++) {
                 contacts.addImpulse(vx, vy, i, impulse[i]);
             }
@@ -195,9 +225,11 @@ final class InelasticProjection {
      * a slot that fits them to 1e-8 L) has an answer that needs large impulses, and this bound does not rule it out:
      * taken as none, a pocket of balls rang at no time apart to the collision cap (fuzz seed 13000553).
      */
-    private boolean noAnswer(int joining, double[] c, boolean[] active, double speedLimit) {
-        double[] rx = new double[balls];
-        double[] ry = new double[balls];
+    private boolean noAnswer(int joining, double[] c, double speedLimit) {
+        double[] rx = residualX;
+        double[] ry = residualY;
+        Arrays.fill(rx, 0, balls, 0);
+        Arrays.fill(ry, 0, balls, 0);
         contacts.addImpulse(rx, ry, joining, 1);
         double combined = 0;
         double weight = 0;
@@ -246,12 +278,11 @@ final class InelasticProjection {
      * late depends on the others. Where no row of the set has c_k &gt; 0, there may be no answer ({@link #noAnswer});
      * else the set is given up to Gauss-Seidel. The impulses are left as they were unless the row is swapped in.
      */
-    private Swap swapIn(int joining, boolean[] active, ActiveRowsFactor factor, double speedLimit) {
-        double[] coupled = new double[rows];
+    private Swap swapIn(int joining, double speedLimit) {
         for (int i = 0; i < rows; i++) {
             coupled[i] = active[i] ? contacts.coupling(i, joining) : 0;
         }
-        double[] c = new double[rows];
+        double[] c = combination;
         factor.solve(coupled, c);
         int leaving = -1;
         double step = Double.POSITIVE_INFINITY;
@@ -262,7 +293,7 @@ final class InelasticProjection {
             }
         }
         if (leaving < 0) {
-            return noAnswer(joining, c, active, speedLimit) ? Swap.NO_ROW_MAKES_WAY : Swap.NOT_TAKEN;
+            return noAnswer(joining, c, speedLimit) ? Swap.NO_ROW_MAKES_WAY : Swap.NOT_TAKEN;
         }
         active[leaving] = false;
         if (!factor.keepOnly(active) || !factor.add(joining)) {
@@ -295,7 +326,7 @@ final class InelasticProjection {
 
     /** Whether every ball's speed is within {@code limit}. */
     boolean withinLimit(double[] vx, double[] vy, double limit) {
-        for (int k = 0; k < balls; k++) {
+        for (int k = 0; k < contacts.balls(); k++) {
             if (Math.sqrt(vx[k] * vx[k] + vy[k] * vy[k]) > limit) {
                 return false;
             }

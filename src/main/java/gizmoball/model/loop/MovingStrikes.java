@@ -178,6 +178,6 @@ final class MovingStrikes {
         moving.stall();
         step.contacts.touchAll(ball);
         ball.setVelocity(Vect.ZERO);
-        step.sceneChanged();
+        step.movingShapeChanged(moving);
     }
 }

@@ -1,5 +1,7 @@
 package gizmoball.model.loop;
 
+import java.util.Arrays;
+
 /**
  * The simultaneous normal impulses of one contact cluster (docs/design.md, "Contact clusters"): balls of equal mass,
  * no spin, frictionless contacts, each contact a row {@code (v_a - v_b) . n >= s} on the balls' velocities, where
@@ -33,39 +35,73 @@ package gizmoball.model.loop;
 final class NormalImpulses {
     /** {@link LoopSettings#impactRounds()}. */
     private final int maxImpactRounds;
-    private final int balls;
-    private final int rows;
-    private final ContactRows contacts;
-    private final double[] restitution;
+    private final ContactRows contacts = new ContactRows();
     private final InelasticProjection projection;
-    /** The impulses of each round's compression: the projection's own array. */
-    private final double[] impulse;
-    private double[] vx;
-    private double[] vy;
+    private int balls;
+    private int rows;
+    // Kept from one solve to the next and grown to the largest cluster seen: a solve allocates nothing.
+    /** Per row: the coefficient a real impact on it bounces with; the largest compression impulse it took. */
+    private double[] restitution = new double[0];
+    private double[] largest = new double[0];
+    /** Per ball: the velocities being solved; a round's compressed ones and its restitution impulses. */
+    private double[] vx = new double[0];
+    private double[] vy = new double[0];
+    private double[] cx = new double[0];
+    private double[] cy = new double[0];
+    private double[] rx = new double[0];
+    private double[] ry = new double[0];
+    /** The velocities each of the last three rounds started from, round r's at r % 3: the cycle check's. */
+    private final double[][] startX = new double[3][0];
+    private final double[][] startY = new double[3][0];
+
+    /** @param settings the loop's tuning: how many rounds of impacts, and when the projection gives up */
+    NormalImpulses(LoopSettings settings) {
+        this.maxImpactRounds = settings.impactRounds();
+        this.projection = new InelasticProjection(contacts, settings);
+    }
+
+    /** Starts a new cluster of {@code balls} balls, with no rows yet. */
+    void clear(int balls) {
+        this.balls = balls;
+        this.rows = 0;
+        contacts.clear(balls);
+        if (vx.length < balls) {
+            vx = new double[balls];
+            vy = new double[balls];
+            cx = new double[balls];
+            cy = new double[balls];
+            rx = new double[balls];
+            ry = new double[balls];
+            for (int r = 0; r < 3; r++) {
+                startX[r] = new double[balls];
+                startY[r] = new double[balls];
+            }
+        }
+    }
 
     /**
-     * @param settings    the loop's tuning: how many rounds of impacts, and when the projection gives up
-     * @param a           per row, the ball the normal points into
-     * @param b           per row, the other ball, or -1 for a surface
-     * @param nx          per row, the unit normal (from {@code b} or the surface toward {@code a})
-     * @param speed       per row, the surface's speed along the normal (0 for a ball or a still surface)
-     * @param restitution per row, the coefficient a real impact on it bounces with
+     * Adds a contact row: {@code (v_a - v_b) . n >= speed}.
+     *
+     * @param a           the ball the normal points into
+     * @param b           the other ball, or -1 for a surface
+     * @param nx          the unit normal (from {@code b} or the surface toward {@code a})
+     * @param speed       the surface's speed along the normal (0 for a ball or a still surface)
+     * @param restitution the coefficient a real impact on it bounces with
      */
-    NormalImpulses(LoopSettings settings, int balls, int[] a, int[] b, double[] nx, double[] ny, double[] speed,
-                   double[] restitution) {
-        this.maxImpactRounds = settings.impactRounds();
-        this.balls = balls;
-        this.rows = a.length;
-        this.contacts = new ContactRows(balls, a, b, nx, ny, speed);
-        this.restitution = restitution;
-        this.projection = new InelasticProjection(contacts, settings);
-        this.impulse = projection.impulses();
+    void row(int a, int b, double nx, double ny, double speed, double restitution) {
+        contacts.add(a, b, nx, ny, speed);
+        if (rows == this.restitution.length) {
+            this.restitution = Arrays.copyOf(this.restitution, Math.max(8, 2 * rows));
+            largest = new double[this.restitution.length];
+        }
+        this.restitution[rows++] = restitution;
     }
 
     /**
      * What the solve found: the balls' velocities; for each row the largest compression impulse it took in any round
      * of impacts (above the impact impulse: a real impact); whether every round had an answer within the speed limit;
-     * how many rounds it took (what its cost grows with).
+     * how many rounds it took (what its cost grows with). The arrays are the solve's own, longer than the balls and
+     * rows where it has seen a larger cluster, and the next solve overwrites them.
      */
     record Result(double[] vx, double[] vy, double[] compression, boolean feasible, int rounds) {
     }
@@ -87,30 +123,24 @@ final class NormalImpulses {
      * met (to that drift, some 1e-7 of the speeds).
      */
     Result solve(double[] vx0, double[] vy0, double[] impact, double speedLimit) {
-        vx = vx0.clone();
-        vy = vy0.clone();
-        double[] largest = new double[rows];
-        double[] lastX = null;
-        double[] lastY = null;
-        double[] twoBackX = null;
-        double[] twoBackY = null;
+        System.arraycopy(vx0, 0, vx, 0, balls);
+        System.arraycopy(vy0, 0, vy, 0, balls);
+        Arrays.fill(largest, 0, rows, 0);
         int round = 0;
         for (; round < maxImpactRounds; round++) {
             if (!anyClosing()) {
                 return new Result(vx, vy, largest, projection.withinLimit(vx, vy, speedLimit), round);
             }
-            if ((maxImpactRounds - round) % 2 == 0 && twoBackX != null) {
+            if ((maxImpactRounds - round) % 2 == 0 && round >= 2) {
                 double tolerance = Tolerances.CYCLE_MATCH * Math.max(1, fastest(vx, vy));
-                if (within(twoBackX, vx, tolerance) && within(twoBackY, vy, tolerance)) {
+                if (within(startX[(round - 2) % 3], vx, tolerance) && within(startY[(round - 2) % 3], vy, tolerance)) {
                     break;
                 }
             }
-            double[] before = vx.clone();
-            double[] beforeY = vy.clone();
-            twoBackX = lastX;
-            twoBackY = lastY;
-            lastX = before;
-            lastY = beforeY;
+            double[] before = startX[round % 3];
+            double[] beforeY = startY[round % 3];
+            System.arraycopy(vx, 0, before, 0, balls);
+            System.arraycopy(vy, 0, beforeY, 0, balls);
             // A round in which nothing closes faster than an impact is a settling, not an impact: it comes to rest
             // however large the impulses (a ball sliding past another at a tilt of 1e-4 meets it at 1e-4 of its speed).
             boolean impacts = anyClosingFaster(impact);
@@ -121,16 +151,17 @@ final class NormalImpulses {
                 }
                 return new Result(vx, vy, largest, restSatisfies, round + 1);
             }
-            double[] cx = vx.clone();
-            double[] cy = vy.clone();
+            double[] impulse = projection.impulses();
+            System.arraycopy(vx, 0, cx, 0, balls);
+            System.arraycopy(vy, 0, cy, 0, balls);
             if (round > 0 && still(cx, cy)) {
                 // Sent back by its last round's restitution into contacts that stop it dead again: the cluster is
                 // jammed (balls filling a pocket), and bounce after bounce would ring in place for ever. Its limit
                 // is rest.
                 return new Result(vx, vy, largest, true, round + 1);
             }
-            double[] rx = new double[balls];
-            double[] ry = new double[balls];
+            Arrays.fill(rx, 0, balls, 0);
+            Arrays.fill(ry, 0, balls, 0);
             double weighted = 0;
             double total = 0;
             for (int i = 0; i < rows; i++) {
@@ -179,10 +210,10 @@ final class NormalImpulses {
      * on until none closes: at rest the rows hold ({@link #restSatisfiesEveryRow}), so it ends with the cluster
      * jammed where it closed, as a pocket packed with balls is, and the energy never grows.
      */
-    private void restWhereClosing(double[] startX, double[] startY, double speedLimit) {
-        if (!(kinetic(vx, vy) <= kinetic(startX, startY)) || !projection.withinLimit(vx, vy, speedLimit)) {
-            System.arraycopy(startX, 0, vx, 0, balls);
-            System.arraycopy(startY, 0, vy, 0, balls);
+    private void restWhereClosing(double[] fromX, double[] fromY, double speedLimit) {
+        if (!(kinetic(vx, vy) <= kinetic(fromX, fromY)) || !projection.withinLimit(vx, vy, speedLimit)) {
+            System.arraycopy(fromX, 0, vx, 0, balls);
+            System.arraycopy(fromY, 0, vy, 0, balls);
         }
         boolean stopped = true;
         while (stopped) {
@@ -196,26 +227,26 @@ final class NormalImpulses {
     }
 
     /** Twice the kinetic energy of unit masses at (x, y); NaN where a velocity is not finite. */
-    private static double kinetic(double[] x, double[] y) {
+    private double kinetic(double[] x, double[] y) {
         double sum = 0;
-        for (int k = 0; k < x.length; k++) {
+        for (int k = 0; k < balls; k++) {
             sum += x[k] * x[k] + y[k] * y[k];
         }
         return sum;
     }
 
     /** The largest speed among the balls, as |vx| + |vy|. */
-    private static double fastest(double[] x, double[] y) {
+    private double fastest(double[] x, double[] y) {
         double most = 0;
-        for (int k = 0; k < x.length; k++) {
+        for (int k = 0; k < balls; k++) {
             most = Math.max(most, Math.abs(x[k]) + Math.abs(y[k]));
         }
         return most;
     }
 
     /** Whether every component of {@code x} lies within {@code tolerance} of the same one of {@code y}. */
-    private static boolean within(double[] x, double[] y, double tolerance) {
-        for (int k = 0; k < x.length; k++) {
+    private boolean within(double[] x, double[] y, double tolerance) {
+        for (int k = 0; k < balls; k++) {
             if (Math.abs(x[k] - y[k]) > tolerance) {
                 return false;
             }

@@ -45,24 +45,19 @@ class NormalImpulsesTest {
         }
 
         NormalImpulses.Result solve(int count, double[] vx, double[] vy, LoopSettings settings) {
+            return solve(new NormalImpulses(settings), count, vx, vy);
+        }
+
+        NormalImpulses.Result solve(NormalImpulses impulses, int count, double[] vx, double[] vy) {
             int n = balls.size();
-            int[] a = new int[n];
-            int[] b = new int[n];
-            double[] nx = new double[n];
-            double[] ny = new double[n];
-            double[] speed = new double[n];
-            double[] restitution = new double[n];
+            impulses.clear(count);
             for (int i = 0; i < n; i++) {
-                a[i] = balls.get(i)[0];
-                b[i] = balls.get(i)[1];
-                nx[i] = values.get(i)[0];
-                ny[i] = values.get(i)[1];
-                speed[i] = values.get(i)[2];
-                restitution[i] = values.get(i)[3];
+                double[] v = values.get(i);
+                impulses.row(balls.get(i)[0], balls.get(i)[1], v[0], v[1], v[2], v[3]);
             }
             double[] impact = new double[n];
             Arrays.fill(impact, IMPACT);
-            return new NormalImpulses(settings, count, a, b, nx, ny, speed, restitution).solve(vx, vy, impact, LIMIT);
+            return impulses.solve(vx, vy, impact, LIMIT);
         }
     }
 
@@ -279,6 +274,43 @@ class NormalImpulsesTest {
         for (int k = 0; k < count; k++) {
             assertThat(result.vx()[k]).as("ball %d", k).isCloseTo(oracle[0][k], within(1e-6));
             assertThat(result.vy()[k]).as("ball %d", k).isCloseTo(oracle[1][k], within(1e-6));
+        }
+    }
+
+    /**
+     * One solver kept from cluster to cluster, as {@link ClusterSolve} keeps it, its arrays grown for the largest
+     * cluster it has seen: each cluster, larger or smaller than the one before, gets exactly the answer a new solver
+     * gives it (nothing of one solve is left in the next).
+     */
+    @Test
+    void aSolverKeptFromClusterToClusterAnswersAsANewOne() {
+        SplittableRandom random = new SplittableRandom(2718);
+        NormalImpulses kept = new NormalImpulses(LoopSettings.STANDARD);
+        for (int cluster = 0; cluster < 200; cluster++) {
+            int count = 1 + random.nextInt(12);
+            Rows rows = new Rows();
+            for (int k = 0; k < count; k++) {
+                for (int j = 0; j < k; j++) {
+                    if (random.nextInt(3) == 0) {
+                        double angle = random.nextDouble(2 * Math.PI);
+                        rows.between(k, j, Math.cos(angle), Math.sin(angle));
+                    }
+                }
+                for (int w = random.nextInt(3); w > 0; w--) {
+                    double angle = random.nextDouble(2 * Math.PI);
+                    rows.surface(k, Math.cos(angle), Math.sin(angle), random.nextDouble(-2, 2), random.nextDouble());
+                }
+            }
+            double[] vx = random.doubles(count, -30, 30).toArray();
+            double[] vy = random.doubles(count, -30, 30).toArray();
+            NormalImpulses.Result fresh = rows.solve(count, vx.clone(), vy.clone());
+            NormalImpulses.Result reused = rows.solve(kept, count, vx.clone(), vy.clone());
+            assertThat(reused.feasible()).as("cluster %d", cluster).isEqualTo(fresh.feasible());
+            assertThat(reused.rounds()).as("cluster %d", cluster).isEqualTo(fresh.rounds());
+            assertThat(Arrays.copyOf(reused.vx(), count)).isEqualTo(Arrays.copyOf(fresh.vx(), count));
+            assertThat(Arrays.copyOf(reused.vy(), count)).isEqualTo(Arrays.copyOf(fresh.vy(), count));
+            int n = rows.balls.size();
+            assertThat(Arrays.copyOf(reused.compression(), n)).isEqualTo(Arrays.copyOf(fresh.compression(), n));
         }
     }
 
