@@ -111,6 +111,7 @@ final class ClusterSolve {
         boolean woke = false;
         for (int k = 0; k < balls.size(); k++) {
             Ball ball = balls.get(k);
+            step.energy.mayGain(ball);   // energy moves between its balls, and moving shapes may give some
             Vect before = step.detector.motion(ball);
             if (Double.compare(result.vx()[k], before.x()) == 0 && Double.compare(result.vy()[k], before.y()) == 0) {
                 continue;
