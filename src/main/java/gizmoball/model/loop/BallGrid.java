@@ -46,11 +46,16 @@ public final class BallGrid {
         }
         filledCount = 0;
         Arrays.fill(rowFastest, 0);
+        room(balls);
+    }
+
+    /** Books for slots 0 to {@code balls} - 1, what is filed kept. */
+    private void room(int balls) {
         if (bySlot.length < balls) {
             int size = Math.max(balls, 2 * bySlot.length);
-            bySlot = new Ball[size];
-            next = new int[size];
-            cellOfSlot = new int[size];
+            bySlot = Arrays.copyOf(bySlot, size);
+            next = Arrays.copyOf(next, size);
+            cellOfSlot = Arrays.copyOf(cellOfSlot, size);
             found = new Ball[size];
         }
     }
@@ -59,6 +64,7 @@ public final class BallGrid {
     void add(Ball ball, double speed) {
         int index = index(cell(ball.x()), cell(ball.y()));
         int slot = ball.slot();
+        room(slot + 1);
         if (first[index] == NONE) {
             filled[filledCount++] = index;
             first[index] = slot;

@@ -62,6 +62,8 @@ final class CollisionSchedule {
      */
     private int[][] pointedAtBy = new int[0][];
     private int[] pointedAtCount = new int[0];
+    /** By slot: whether the ball was taken out of play (captured) since it was filed: its cell no longer holds it. */
+    private boolean[] taken = new boolean[0];
     private int filed;
     private final BallGrid grid;
     /** One pair's search, asked again for every ball near the one asking (its collision is made only when found). */
@@ -110,26 +112,51 @@ final class CollisionSchedule {
         awakeStale = true;
     }
 
-    /** Books for {@code n} balls. */
+    /** Books for {@code n} balls, what they know kept (a ball freed in the tick is added to them). */
     private void grow(int n) {
-        sceneKnown = new boolean[n];
-        ballsKnown = new boolean[n];
-        withScene = new Contact[n];
-        withBalls = new Contact[n];
-        sceneAt = new double[n];
-        sceneCircle = new boolean[n];
-        ballsAt = new double[n];
-        ballsCircle = new boolean[n];
-        bySlot = new Ball[n];
-        unknown = new int[n];
-        isUnknown = new boolean[n];
-        awakeSlots = new int[n];
-        isAwake = new boolean[n];
-        awakeIndex = new int[n];
-        blockEarliest = new double[n / blockSize + 1];
-        blockStale = new boolean[n / blockSize + 1];
+        sceneKnown = Arrays.copyOf(sceneKnown, n);
+        ballsKnown = Arrays.copyOf(ballsKnown, n);
+        withScene = Arrays.copyOf(withScene, n);
+        withBalls = Arrays.copyOf(withBalls, n);
+        sceneAt = Arrays.copyOf(sceneAt, n);
+        sceneCircle = Arrays.copyOf(sceneCircle, n);
+        ballsAt = Arrays.copyOf(ballsAt, n);
+        ballsCircle = Arrays.copyOf(ballsCircle, n);
+        bySlot = Arrays.copyOf(bySlot, n);
+        unknown = Arrays.copyOf(unknown, n);
+        isUnknown = Arrays.copyOf(isUnknown, n);
+        awakeSlots = Arrays.copyOf(awakeSlots, n);
+        isAwake = Arrays.copyOf(isAwake, n);
+        awakeIndex = Arrays.copyOf(awakeIndex, n);
+        blockEarliest = Arrays.copyOf(blockEarliest, n / blockSize + 1);
+        blockStale = Arrays.copyOf(blockStale, n / blockSize + 1);
         pointedAtBy = Arrays.copyOf(pointedAtBy, n);
-        pointedAtCount = new int[n];
+        pointedAtCount = Arrays.copyOf(pointedAtCount, n);
+        taken = Arrays.copyOf(taken, n);
+    }
+
+    /**
+     * Files one more free ball (one an absorber let go of) in the next slot, where it is now, {@code elapsed} seconds
+     * into the tick; it asks when the schedule next looks, and a collision sooner than what another ball knew becomes
+     * that ball's too. Every other known collision stands.
+     */
+    void add(Ball ball, double elapsed) {
+        if (filed == bySlot.length) {
+            grow(2 * filed + 1);
+        }
+        int slot = filed++;
+        bySlot[slot] = ball;
+        ball.setSlot(slot);
+        sceneKnown[slot] = false;
+        ballsKnown[slot] = false;
+        pointedAtCount[slot] = 0;
+        taken[slot] = false;
+        isUnknown[slot] = false;
+        markUnknown(slot);
+        double speed = CollisionDetector.speedBound(detector.motion(ball));
+        fastest = Math.max(fastest, speed);
+        grid.add(ball, speed);
+        awakeStale = true;
     }
 
     /** Which balls are awake changed (a wake-up, a capture, a new filing): found again before the next search. */
@@ -147,9 +174,17 @@ final class CollisionSchedule {
     }
 
     /** Whether the ball is filed now (not held since before the last filing). */
-    private boolean isFiled(Ball ball) {
+    boolean isFiled(Ball ball) {
         int slot = ball.slot();
         return slot < filed && bySlot[slot] == ball;
+    }
+
+    /**
+     * Whether the ball is filed but was taken out of play since (an absorber or a sink took it): the cell it was filed
+     * in no longer bounds where it is, so freed again it must be filed afresh.
+     */
+    boolean wasTaken(Ball ball) {
+        return isFiled(ball) && taken[ball.slot()];
     }
 
     /**
@@ -310,6 +345,7 @@ final class CollisionSchedule {
             return;   // not filed now (held since before the last filing): nothing is known of it
         }
         int slot = ball.slot();
+        taken[slot] |= ball.isCaptured();
         // A ball just captured or sunk is forgotten too: what was to meet it where it was must not meet it in the
         // absorber (a ball fired from an absorber, knocked back into it by the next ball, bounced that one off where
         // it had been).
@@ -347,6 +383,7 @@ final class CollisionSchedule {
         Arrays.fill(sceneKnown, false);
         Arrays.fill(ballsKnown, false);
         Arrays.fill(pointedAtCount, 0);
+        Arrays.fill(taken, false);
         Arrays.fill(isUnknown, true);
         for (int slot = 0; slot < filed; slot++) {
             unknown[slot] = slot;

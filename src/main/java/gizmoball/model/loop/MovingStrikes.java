@@ -177,6 +177,6 @@ final class MovingStrikes {
         moving.stall();
         step.contacts.touchAll(ball);
         ball.setVelocity(Vect.ZERO);
-        step.sceneChanged();
+        step.movingShapeChanged(moving);
     }
 }

@@ -158,19 +158,43 @@ final class StepContext {
     }
 
     /**
-     * A moving shape changed how it moves (turned round, started, stopped): only the balls that can reach its box in
-     * what is left of the tick can meet it otherwise than they were going to, so only their collisions with the scene
-     * are asked again; where it woke balls (its sweep wakes what lies in its box), everything is filed afresh.
+     * A moving shape changed how it moves (turned round, started, stopped, stalled on a ball): only the balls that can
+     * reach its box in what is left of the tick can meet it otherwise than they were going to, so only their
+     * collisions with the scene are asked again. The balls its sweep woke ask when the schedule next looks: they lie
+     * still, as every known collision took them, so nothing else is asked again (filing every ball afresh at each
+     * flipper a hit turned cost slow-200-balls.txt a third of its questions).
      */
     void movingShapeChanged(MovingShape moving) {
-        int wasAwake = awake.size();
         findAwake();
-        if (awake.size() != wasAwake) {
-            schedule.file(freeBalls(), elapsed);
-            return;
-        }
         schedule.forgetReaching(moving.x(), moving.y(), moving.x() + moving.width(), moving.y() + moving.height(),
                 dt - elapsed);
+    }
+
+    /**
+     * A trigger freed balls (an absorber fired) or took them, and woke what lay near: a freed ball is filed where it
+     * is now and asks when the schedule next looks, as do the balls woken; a taken one is forgotten, as
+     * {@link #ballLeft} has it. Every other known collision stands (the balls woken lie still, as they were taken). A
+     * ball freed after it was taken in this filing (fired by the absorber that just caught it) lies far from the cell
+     * it was filed in: then everything is filed afresh.
+     */
+    void ballsChanged() {
+        List<Ball> balls = view.balls();
+        for (int b = 0; b < balls.size(); b++) {
+            Ball ball = balls.get(b);
+            if (!ball.isCaptured() && schedule.wasTaken(ball)) {
+                sceneChanged();
+                return;
+            }
+        }
+        findAwake();
+        for (int b = 0; b < balls.size(); b++) {
+            Ball ball = balls.get(b);
+            if (ball.isCaptured()) {
+                schedule.forget(ball);
+            } else if (!schedule.isFiled(ball)) {
+                schedule.add(ball, elapsed);
+            }
+        }
     }
 
     /** The awake balls, found again only when a ball's state may have changed since they were last found. */

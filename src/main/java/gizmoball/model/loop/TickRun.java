@@ -298,7 +298,7 @@ public final class TickRun {
                 if (target instanceof MovingShape moving) {
                     step.movingShapeChanged(moving);   // it turned round, or started, or flashed
                 } else if (!step.ballCounts().equals(balls)) {
-                    step.sceneChanged();   // an absorber fired a ball, and woke what lay by its mouth
+                    step.ballsChanged();   // an absorber fired a ball, and woke what lay by its mouth
                 }
                 // else it flashed, or its order waits for the tick's end (a gate or a drop target, a spawner)
             }
