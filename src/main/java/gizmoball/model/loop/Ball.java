@@ -194,6 +194,8 @@ public final class Ball implements BallView {
         /** The shadow energy after stage 1, when {@link #startedIn} is this tick. */
         double atStart;
         long lostIn;
+        /** A tick in which something may have given it energy: a moving shape, a booster, a portal, another ball. */
+        long mayGainIn;
         long bouncedIn;
         /** The normal of the last elastic bounce, when {@link #bouncedIn} is this tick. */
         Vect normal;

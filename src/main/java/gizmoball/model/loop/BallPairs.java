@@ -28,6 +28,8 @@ final class BallPairs {
      * settle. Otherwise the two bounce elastically, and a sleeping one wakes.
      */
     Struck resolve(Ball ball, Ball other) {
+        step.energy.mayGain(ball);   // energy moves between them
+        step.energy.mayGain(other);
         Vect normal = ball.position().minus(other.position()).unitSize();
         double approach = -ball.velocity().minus(step.detector.motion(other)).dot(normal);
         boolean slow = approach <= step.pressingSpeed();

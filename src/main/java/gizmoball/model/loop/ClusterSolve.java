@@ -118,6 +118,7 @@ final class ClusterSolve {
         boolean woke = false;
         for (int k = 0; k < balls.size(); k++) {
             Ball ball = balls.get(k);
+            step.energy.mayGain(ball);   // energy moves between its balls, and moving shapes may give some
             Vect before = step.detector.motion(ball);
             double afterX = result.vx()[k] + 0.0;   // as a Vect holds it
             double afterY = result.vy()[k] + 0.0;

@@ -102,6 +102,7 @@ final class MovingStrikes {
         MovingShape moving = part.shape();
         moving.markTriggered(step.now());
         step.energy.lost(ball);
+        step.energy.mayGain(ball);
         step.finished.remove(ball);   // SEED too: a moving shape carries the ball on, it cannot stand in its way
         carried.add(ball);
         Vect before = ball.velocity();

@@ -80,6 +80,7 @@ final class StillSurfaces {
         step.view.sleepers().wakeWithin(out.centre().x() - margin, out.centre().y() - margin,
                 out.centre().x() + margin, out.centre().y() + margin);
         step.energy.lost(ball);   // its height changed: the shadow energy leaves it alone
+        step.energy.mayGain(ball);
         step.sceneChanged();
     }
 
@@ -106,6 +107,7 @@ final class StillSurfaces {
         if (gizmo != null && gizmo.boosts()) {
             ball.setVelocity(gizmo.boost(bounced, Arena.MAX_SPEED));
             step.energy.lost(ball);   // it gained energy: the shadow energy leaves it alone
+            step.energy.mayGain(ball);
             return true;
         }
         ball.setVelocity(bounced);
