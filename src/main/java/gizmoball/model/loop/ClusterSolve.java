@@ -22,16 +22,23 @@ final class ClusterSolve {
     private final StepContext step;
     /** The balls filed near a ball, where they are now: what a cluster asks for the balls touching its own. */
     private final ContactCluster.Near near;
+    /** The cluster to solve, gathered anew for each collision that needs one into the same lists. */
+    private final ContactCluster cluster = new ContactCluster();
     /** The solver, its rows and arrays kept from one cluster to the next (grown to the largest seen). */
     private final NormalImpulses impulses;
     // Kept too, and grown likewise: per ball, the velocities a solve starts from and the elastic bounces' strongest
-    // contact; per row, the impact speeds; one row's other normals on its ball.
+    // contact (its impulse, its normal); per row, the impact speeds; one row's other normals on its ball.
     private double[] startX = new double[0];
     private double[] startY = new double[0];
     private double[] most = new double[0];
     private Vect[] strongest = new Vect[0];
+    /** Per ball, whether its strongest contact's normal points away from it (it is the row's other ball). */
+    private boolean[] against = new boolean[0];
     private double[] impact = new double[0];
     private final List<Vect> otherNormals = new ArrayList<>();
+    /** The moving shapes a solve stalled, and the surfaces its impacts were heard from: kept, emptied per solve. */
+    private final Set<MovingShape> stalled = new LinkedHashSet<>();
+    private final Set<Struck> heard = new LinkedHashSet<>();
 
     ClusterSolve(StepContext step) {
         this.step = step;
@@ -68,7 +75,7 @@ final class ClusterSolve {
         } else {
             return null;
         }
-        return ContactCluster.around(step.view, collision.balls(), near,
+        return cluster.gather(step.view, collision.balls(), near,
                 step.detector::motion, candidate -> !step.finished.contains(candidate), reach,
                 step.settings);
     }
@@ -94,7 +101,7 @@ final class ClusterSolve {
         List<Ball> balls = cluster.balls();
         boolean carried = carried(collision);
         Solved solved = solveTakingGrazes(cluster, Set.of(), carried);
-        Set<MovingShape> stalled = new LinkedHashSet<>();
+        stalled.clear();
         if (!solved.result().feasible()) {
             for (ContactCluster.Row row : cluster.rows()) {
                 if (row.other() instanceof ContactCluster.Other.Moving moving && stalled.add(moving.shape())) {
@@ -113,20 +120,21 @@ final class ClusterSolve {
             Ball ball = balls.get(k);
             step.energy.mayGain(ball);   // energy moves between its balls, and moving shapes may give some
             Vect before = step.detector.motion(ball);
-            if (Double.compare(result.vx()[k], before.x()) == 0 && Double.compare(result.vy()[k], before.y()) == 0) {
+            double afterX = result.vx()[k] + 0.0;   // as a Vect holds it
+            double afterY = result.vy()[k] + 0.0;
+            if (Double.compare(afterX, before.x()) == 0 && Double.compare(afterY, before.y()) == 0) {
                 continue;
             }
-            Vect after = new Vect(result.vx()[k], result.vy()[k]);
             if (ball.isAsleep()) {
                 step.view.sleepers().wake(ball);
                 woke = true;
             }
-            ball.setVelocity(after);
+            ball.setVelocity(afterX, afterY);
             ball.setStillTime(0);
             if (!elastic) {
                 step.energy.lost(ball);
             }
-            if (movedOnlyByRounding(before, after)) {
+            if (movedOnlyByRounding(before, afterX, afterY)) {
                 step.schedule.sped(ball);   // its known collisions stand: they move by less than rounding
             } else {
                 step.changed(ball);
@@ -148,8 +156,10 @@ final class ClusterSolve {
      * asked again: over what is left of the tick its path is off by less than 2e-11 L, its known collisions by as
      * little, and what it was to meet stays met; the next tick asks about every ball afresh.
      */
-    private static boolean movedOnlyByRounding(Vect before, Vect after) {
-        return CollisionDetector.speedBound(after.minus(before)) <= Tolerances.ROUNDING_SPEED;
+    private static boolean movedOnlyByRounding(Vect before, double afterX, double afterY) {
+        double dx = afterX - before.x();   // CollisionDetector.speedBound(after.minus(before)), on the components
+        double dy = afterY - before.y();
+        return Math.sqrt(dx * dx + dy * dy) <= Tolerances.ROUNDING_SPEED;
     }
 
     /**
@@ -188,6 +198,7 @@ final class ClusterSolve {
         if (most.length < balls.size()) {
             most = new double[balls.size()];
             strongest = new Vect[balls.size()];
+            against = new boolean[balls.size()];
         }
         Arrays.fill(most, 0, balls.size(), 0);
         Arrays.fill(strongest, 0, balls.size(), null);
@@ -200,18 +211,20 @@ final class ClusterSolve {
             if (change > most[row.ball()]) {
                 most[row.ball()] = change;
                 strongest[row.ball()] = row.normal();
+                against[row.ball()] = false;
             }
             if (row.other() instanceof ContactCluster.Other.InCluster in) {
                 if (change > most[in.index()]) {
                     most[in.index()] = change;
-                    strongest[in.index()] = row.normal().neg();
+                    strongest[in.index()] = row.normal();
+                    against[in.index()] = true;
                 }
                 step.energy.met(balls.get(row.ball()), balls.get(in.index()));
             }
         }
         for (int k = 0; k < balls.size(); k++) {
             if (strongest[k] != null) {
-                step.energy.bounced(balls.get(k), strongest[k], true);
+                step.energy.bounced(balls.get(k), against[k] ? strongest[k].neg() : strongest[k], true);
             }
         }
     }
@@ -305,7 +318,7 @@ final class ClusterSolve {
     private Struck noteImpacts(Collision collision, ContactCluster cluster, double[] impact,
                                NormalImpulses.Result result) {
         Struck own = collision.contact().struck();
-        Set<Struck> heard = new LinkedHashSet<>();
+        heard.clear();
         List<Ball> balls = cluster.balls();
         for (int i = 0; i < cluster.rows().size(); i++) {
             ContactCluster.Row row = cluster.rows().get(i);

@@ -113,39 +113,42 @@ final class ContactCluster {
     private final Foot foot = new Foot();
     /** {@link LoopSettings#leadTime()}. */
     private double leadTime;
-
-    private ContactCluster() {
-    }
+    // Kept from one gathering to the next: the balls a ball may touch, and each ball's index in the cluster.
+    private final List<Ball> nearby = new ArrayList<>();
+    private final Map<Ball, Integer> indexOf = new IdentityHashMap<>();
 
     /**
-     * The cluster of {@code seeds} as they are now; {@code motion} gives the velocity each ball moves with this tick
+     * Gathers the cluster of {@code seeds} as they are now, in place of the one this held (its lists are kept, so
+     * that a solve makes only the rows); {@code motion} gives the velocity each ball moves with this tick
      * (none while asleep); a ball that {@code movable} refuses (one that moves no more in this tick) is taken as a
      * surface. Surfaces and balls within {@code reach} of a ball count as touching it: at least
      * {@link Tolerances#PLACEMENT}. The cluster holds at most {@link LoopSettings#clusterBalls()} balls. {@code near}
-     * gives the balls that may touch one.
+     * gives the balls that may touch one. Returns this cluster.
      */
-    static ContactCluster around(LoopView view, List<Ball> seeds, Near near, Function<Ball, Vect> motion,
-                                 Predicate<Ball> movable, double reach, LoopSettings settings) {
-        ContactCluster cluster = new ContactCluster();
-        List<Ball> nearby = new ArrayList<>();
-        cluster.leadTime = settings.leadTime();
-        cluster.touching = Math.max(Tolerances.PLACEMENT, reach);
-        Map<Ball, Integer> indexOf = new IdentityHashMap<>();
+    ContactCluster gather(LoopView view, List<Ball> seeds, Near near, Function<Ball, Vect> motion,
+                          Predicate<Ball> movable, double reach, LoopSettings settings) {
+        balls.clear();
+        rows.clear();
+        grazing.clear();
+        indexOf.clear();
+        nearby.clear();
+        this.leadTime = settings.leadTime();
+        this.touching = Math.max(Tolerances.PLACEMENT, reach);
         for (Ball seed : seeds) {
             if (!indexOf.containsKey(seed)) {
-                indexOf.put(seed, cluster.balls.size());
-                cluster.balls.add(seed);
+                indexOf.put(seed, balls.size());
+                balls.add(seed);
             }
         }
-        for (int i = 0; i < cluster.balls.size(); i++) {
-            Ball ball = cluster.balls.get(i);
-            cluster.surfaces(view, i, ball, motion);
-            double within = 2 * Arena.BALL_RADIUS + cluster.touching;
+        for (int i = 0; i < balls.size(); i++) {
+            Ball ball = balls.get(i);
+            surfaces(view, i, ball, motion);
+            double within = 2 * Arena.BALL_RADIUS + touching;
             near.balls(ball, within, nearby);
             for (int n = 0; n < nearby.size(); n++) {
                 Ball other = nearby.get(n);
                 if (other == ball || other.isCaptured() || view.passingThrough(ball, other)
-                        || gap(ball.position(), other.position(), 2 * Arena.BALL_RADIUS) > cluster.touching) {
+                        || gap(ball.position(), other.position(), 2 * Arena.BALL_RADIUS) > touching) {
                     continue;
                 }
                 int j = indexOf.getOrDefault(other, -1);
@@ -155,22 +158,22 @@ final class ContactCluster {
                 Vect normal = ball.position().minus(other.position()).unitSize();
                 boolean grazes = Kinematics.grazes(ball.position().minus(other.position()),
                         motion.apply(ball).minus(motion.apply(other)), 2 * Arena.BALL_RADIUS);
-                if (j < 0 && cluster.balls.size() < settings.clusterBalls() && movable.test(other)) {
-                    j = cluster.balls.size();
-                    cluster.balls.add(other);
+                if (j < 0 && balls.size() < settings.clusterBalls() && movable.test(other)) {
+                    j = balls.size();
+                    balls.add(other);
                     indexOf.put(other, j);
                 }
                 Row row = j >= 0 ? new Row(i, new Other.InCluster(j), normal, 0, 1.0)
                         : new Row(i, new Other.Beyond(other), normal, beyondSpeed(motion.apply(other), normal), 1.0);
                 if (grazes) {
-                    cluster.grazing.add(new Graze(row, ball.position().minus(other.position()), 2 * Arena.BALL_RADIUS,
+                    grazing.add(new Graze(row, ball.position().minus(other.position()), 2 * Arena.BALL_RADIUS,
                             j >= 0 ? Vect.ZERO : motion.apply(other)));
                 } else {
-                    cluster.rows.add(row);
+                    rows.add(row);
                 }
             }
         }
-        return cluster;
+        return this;
     }
 
     /**

@@ -32,7 +32,7 @@ class ClusterLimitTest {
             board.addBall("B" + k, 10, Board.SIZE - R - 2 * R * k, 0, k == below ? vy : 0);
         }
         LoopView view = LoopViews.of(board);
-        ContactCluster cluster = ContactCluster.around(view, List.of(view.ball("B0")),
+        ContactCluster cluster = new ContactCluster().gather(view, List.of(view.ball("B0")),
                 (ball, within, into) -> into.addAll(view.balls()), Ball::velocity, ball -> true,
                 Tolerances.PLACEMENT, settings);
         assertThat(cluster.balls()).hasSize(below).extracting(Ball::name).doesNotContain("B" + below);
