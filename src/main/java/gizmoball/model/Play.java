@@ -81,8 +81,10 @@ final class Play implements Surroundings {
 
     /** The key went up: every plunger it pulls fires, at the speed its pull has reached. */
     private void releasePlungers(int keyCode, double now) {
-        for (GizmoBase gizmo : registry.gizmos()) {
-            if (gizmo instanceof BallHolder holder && holder.pullingKey().equals(OptionalInt.of(keyCode))) {
+        List<BallHolder> holders = registry.ballHolders();
+        for (int i = 0; i < holders.size(); i++) {
+            BallHolder holder = holders.get(i);
+            if (holder.pullingKey().equals(OptionalInt.of(keyCode))) {
                 double speed = holder.releaseSpeed();
                 holder.letGoOfPull();
                 holder.markTriggered(now);
@@ -93,9 +95,10 @@ final class Play implements Surroundings {
 
     /** A tick of {@code dt} seconds ran: every plunger being pulled was held that much longer. */
     void holdPulls(double dt) {
-        for (GizmoBase gizmo : registry.gizmos()) {
-            if (gizmo instanceof BallHolder holder && holder.pullingKey().isPresent()) {
-                holder.heldFor(dt);
+        List<BallHolder> holders = registry.ballHolders();   // by index: this runs every tick
+        for (int i = 0; i < holders.size(); i++) {
+            if (holders.get(i).pullingKey().isPresent()) {
+                holders.get(i).heldFor(dt);
             }
         }
     }

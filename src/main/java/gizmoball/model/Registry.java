@@ -1,5 +1,6 @@
 package gizmoball.model;
 
+import gizmoball.model.gizmo.BallHolder;
 import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.SwitchedCell;
 import gizmoball.model.gizmo.GizmoBase;
@@ -35,6 +36,8 @@ final class Registry {
      */
     private List<MovingShape> movingShapes;
     private List<SwitchedCell> switchedCells;
+    /** The gizmos that hold balls, found again likewise: every tick holds their pulls. */
+    private List<BallHolder> ballHolders;
     /** The balls in board order, made again after a ball comes or goes (null till then): the loop walks it by index. */
     private List<Ball> ballList;
 
@@ -151,6 +154,7 @@ final class Registry {
     private void kindsChanged() {
         movingShapes = null;
         switchedCells = null;
+        ballHolders = null;
     }
 
     List<MovingShape> movingShapes() {
@@ -158,6 +162,14 @@ final class Registry {
             movingShapes = gizmosOf(MovingShape.class);
         }
         return movingShapes;
+    }
+
+    /** The gizmos that hold balls (absorbers), in board order. */
+    List<BallHolder> ballHolders() {
+        if (ballHolders == null) {
+            ballHolders = gizmosOf(BallHolder.class);
+        }
+        return ballHolders;
     }
 
     /** The gates and drop targets, in board order. */
