@@ -17,12 +17,13 @@ public final class Ball implements BallView {
     /**
      * The centre's coordinates (as {@link Vect} keeps them, -0 as +0), and the centre as a {@link Vect}, made when
      * asked for: stage 2 moves every awake ball to each collision of a tick, and a new vector for each of those moves
-     * was most of what a tick allocated on a board of 200 balls.
+     * was most of what a tick allocated on a board of 200 balls. The vector is the centre while its coordinates are
+     * (x, y), and is made again when read after a move: a move only writes the two doubles.
      */
     private double x;
     private double y;
     private Vect position;
-    /** Its circle at {@link #position}, made when first asked for there. */
+    /** Its circle at {@link #position}, made when first asked for there (while its centre is that vector). */
     private Circle circle;
     private Contact.OtherBall asContact;
     private ContactRef.OnBall asSupported;
@@ -70,7 +71,7 @@ public final class Ball implements BallView {
     }
 
     public Vect position() {
-        if (position == null) {
+        if (position == null || position.x() != x || position.y() != y) {
             position = new Vect(x, y);
         }
         return position;
@@ -162,8 +163,9 @@ public final class Ball implements BallView {
 
     /** Its circle where it is, made once per place (detection asks for it against every shape in reach). */
     Circle circle() {
-        if (circle == null) {
-            circle = new Circle(position(), Arena.BALL_RADIUS);
+        Vect centre = position();
+        if (circle == null || circle.getCenter() != centre) {
+            circle = new Circle(centre, Arena.BALL_RADIUS);
         }
         return circle;
     }
@@ -245,7 +247,6 @@ public final class Ball implements BallView {
 
     /** The centre moves there, the velocity kept. For the board and its loop, not for views. */
     public void moveTo(Vect newPosition) {
-        circle = null;
         position = newPosition;
         x = newPosition.x();
         y = newPosition.y();
@@ -301,14 +302,8 @@ public final class Ball implements BallView {
      * stays where it is (at rest, as a ball lying on its contacts mostly is) keeps its vector and circle.
      */
     void advance(double dt) {
-        double newX = x + vx * dt + 0.0;
-        double newY = y + vy * dt + 0.0;
-        if (newX != x || newY != y) {
-            x = newX;
-            y = newY;
-            position = null;
-            circle = null;
-        }
+        x = x + vx * dt + 0.0;
+        y = y + vy * dt + 0.0;
     }
 
     /** An absorber holds it there, at rest, its contacts forgotten. For the board, not for views. */

@@ -123,8 +123,15 @@ final class CollisionDetector {
         double dx = ball.x() - other.x();   // as Vect.distanceSquared, without making the centres' vectors
         double dy = ball.y() - other.y();
         double gap = Math.sqrt(dx * dx + dy * dy) - 2 * Arena.BALL_RADIUS;
-        if (gap > Math.sqrt(rx * rx + ry * ry) * window + Tolerances.REACH_MARGIN) {
+        double speed = Math.sqrt(rx * rx + ry * ry);
+        if (gap > speed * window + Tolerances.REACH_MARGIN) {
             return;   // cannot close the gap within the window (speedBound of the relative velocity)
+        }
+        if (!(dx * rx + dy * ry < 0)) {
+            return;   // not closing: the distance cannot fall (the API's own first answer is then "never")
+        }
+        if (Math.abs(dx * ry - dy * rx) > (2 * Arena.BALL_RADIUS + Tolerances.REACH_MARGIN) * speed) {
+            return;   // |d x u| / |u|: the line of relative motion passes the other centre farther than they touch
         }
         if (view.passingThrough(ball, other)) {
             return;   // placed on each other (a loaded file may do that): they pass through until they are apart

@@ -212,6 +212,9 @@ final class CollisionSchedule {
             }
             for (int k = first; k < end; k++) {
                 int slot = awakeSlots[k];
+                if (best.refusesAll(Math.min(sceneAt[slot], ballsAt[slot]))) {
+                    continue;   // as a block is passed over: neither of its offers would be taken
+                }
                 best.offer(slot, true, sceneAt[slot], sceneCircle[slot]);
                 best.offer(slot, false, ballsAt[slot], ballsCircle[slot]);
             }
