@@ -143,12 +143,14 @@ public final class BallGrid {
                     continue;
                 }
                 for (; slot != NONE; slot = next[slot]) {
+                    // The pair test's bound for this ball, no faster than its fastest since filing, if tighter.
+                    double ballNear = Math.min(near, alone + slotFastest[slot] * window);
                     double moved = slotFastest[slot] * stale + Tolerances.REACH_MARGIN;
-                    if (Math.abs(filedX[slot] - x) > near + moved || Math.abs(filedY[slot] - y) > near + moved) {
-                        continue;   // it cannot have come within near since it was filed
+                    if (Math.abs(filedX[slot] - x) > ballNear + moved || Math.abs(filedY[slot] - y) > ballNear + moved) {
+                        continue;   // it cannot have come within reach since it was filed
                     }
                     Ball ball = bySlot[slot];
-                    if (Math.abs(ball.x() - x) <= near && Math.abs(ball.y() - y) <= near) {
+                    if (Math.abs(ball.x() - x) <= ballNear && Math.abs(ball.y() - y) <= ballNear) {
                         found[count++] = ball;
                     }
                 }

@@ -30,9 +30,14 @@ final class BallPairs {
     Struck resolve(Ball ball, Ball other) {
         step.energy.mayGain(ball);   // energy moves between them
         step.energy.mayGain(other);
-        Vect normal = ball.position().minus(other.position()).unitSize();
-        double approach = -ball.velocity().minus(step.detector.motion(other)).dot(normal);
+        // ball.position().minus(other.position()).unitSize(), and the approach along it, on the components
+        Vect normal = Components.unit(ball.x() - other.x() + 0.0, ball.y() - other.y() + 0.0);
+        Vect theirs = step.detector.motion(other);
+        double rx = ball.vx() - theirs.x() + 0.0;
+        double ry = ball.vy() - theirs.y() + 0.0;
+        double approach = -(rx * normal.x() + ry * normal.y());
         boolean slow = approach <= step.pressingSpeed();
+        Struck.OtherBall struck = new Struck.OtherBall(other.name());
         if (slow && (Contacts.supports(other, ball) || Contacts.supports(ball, other))) {
             restAgainst(ball, other);
             restAgainst(other, ball);
@@ -40,10 +45,9 @@ final class BallPairs {
                 pressTogether(ball, other, normal);
             }
             step.restingContact = true;
-            return new Struck.OtherBall(other.name());
+            return struck;
         }
-        step.actions.recordEvent(new PlayEvent.Hit(new Struck.OtherBall(other.name()), null, approach, ball.name(),
-                ball.position()));
+        step.actions.recordEvent(new PlayEvent.Hit(struck, null, approach, ball.name(), ball.position()));
         other.setStillTime(0);
         if (other.isAsleep()) {
             // What it wakes is at rest still, as every ball's known collisions took it: only the ball this bounce
@@ -59,7 +63,7 @@ final class BallPairs {
         step.energy.bounced(ball, normal, true);
         step.energy.bounced(other, normal.neg(), true);
         step.energy.met(ball, other);
-        return new Struck.OtherBall(other.name());
+        return struck;
     }
 
     /**
