@@ -265,9 +265,18 @@ public final class Flipper extends TurningBar implements FlipperView {
         double up = kind() == GizmoKind.LEFT_FLIPPER ? -1 : 1;
         Angle turn = new Angle(up * Math.toRadians(degrees));
         Vect pivot = restShape.circles().get(PIVOT_CIRCLE).getCenter();
-        return new Shape(
-                restShape.segments().stream().map(s -> Geometry.rotateAround(s, pivot, turn)).toList(),
-                restShape.circles().stream().map(c -> Geometry.rotateAround(c, pivot, turn)).toList());
+        // By index into arrays, not streams: a swinging flipper turns its shape at every tick.
+        List<LineSegment> segments = restShape.segments();
+        LineSegment[] turnedSegments = new LineSegment[segments.size()];
+        for (int i = 0; i < turnedSegments.length; i++) {
+            turnedSegments[i] = Geometry.rotateAround(segments.get(i), pivot, turn);
+        }
+        List<Circle> circles = restShape.circles();
+        Circle[] turnedCircles = new Circle[circles.size()];
+        for (int i = 0; i < turnedCircles.length; i++) {
+            turnedCircles[i] = Geometry.rotateAround(circles.get(i), pivot, turn);
+        }
+        return new Shape(List.of(turnedSegments), List.of(turnedCircles));
     }
 
     @Override
