@@ -109,17 +109,23 @@ public class GeometryImpl implements GeometryInterface {
      */
     @Override
     public Vect perpendicularPoint(LineSegment line, Vect point) {
-        Vect dir = line.p2().minus(line.p1());
-        if (dir.x() == 0 && dir.y() == 0) {
-            return line.p1();
+        // On the components, each step the doubles of the Vect arithmetic it stands for (a made vector's + 0.0 too):
+        // only the foot is made. dir = p2 - p1.
+        Vect p1 = line.p1();
+        Vect p2 = line.p2();
+        double dirX = p2.x() - p1.x() + 0.0;
+        double dirY = p2.y() - p1.y() + 0.0;
+        if (dirX == 0 && dirY == 0) {
+            return p1;
         }
         // Measured from each end, so that swapping the ends gives exactly the same decision.
-        double fromP1 = point.minus(line.p1()).dot(dir);
-        double fromP2 = line.p2().minus(point).dot(dir);
+        double fromP1 = (point.x() - p1.x() + 0.0) * dirX + (point.y() - p1.y() + 0.0) * dirY;
+        double fromP2 = (p2.x() - point.x() + 0.0) * dirX + (p2.y() - point.y() + 0.0) * dirY;
         if (fromP1 < 0 || fromP2 < 0) {
             return null;
         }
-        return line.p1().plus(dir.times(fromP1 / dir.dot(dir)));
+        double along = fromP1 / (dirX * dirX + dirY * dirY);
+        return new Vect(p1.x() + (dirX * along + 0.0), p1.y() + (dirY * along + 0.0));
     }
 
     /**
@@ -254,7 +260,14 @@ public class GeometryImpl implements GeometryInterface {
     /** The point turned by the angle about the centre of rotation (+x toward +y). */
     @Override
     public Vect rotateAround(Vect point, Vect centerOfRotation, Angle angle) {
-        return centerOfRotation.plus(point.minus(centerOfRotation).rotateBy(angle));
+        // centre + (point - centre) turned, on the components as Vect's minus, rotateBy and plus reckon them
+        double dx = point.x() - centerOfRotation.x() + 0.0;
+        double dy = point.y() - centerOfRotation.y() + 0.0;
+        double c = angle.cos();
+        double s = angle.sin();
+        double turnedX = dx * c - dy * s + 0.0;
+        double turnedY = dx * s + dy * c + 0.0;
+        return new Vect(centerOfRotation.x() + turnedX, centerOfRotation.y() + turnedY);
     }
 
     @Override

@@ -58,19 +58,27 @@ final class RotatingContactSearch {
         THROUGH_END
     }
 
-    private final boolean wall;
-    private final double ax;
-    private final double ay;
+    /**
+     * Each thread's search, set afresh by {@link #start} for every question: a flipper's swing asks one for each part in
+     * reach of each ball, every tick, and a new search each time was much of what a tick allocated.
+     */
+    private static final ThreadLocal<RotatingContactSearch> SEARCH = ThreadLocal.withInitial(RotatingContactSearch::new);
+
+    private boolean wall;
+    private double ax;
+    private double ay;
     /** Wall: unit vector from a to b, and the segment's length. */
-    private final double alongX;
-    private final double alongY;
-    private final double length;
+    private double alongX;
+    private double alongY;
+    private double length;
     /** Wall: the ball's radius; circle: the sum of the radii. */
-    private final double contactDistance;
-    private final Vect pivot;
-    private final double w;
-    private final Vect c0MinusPivot;
-    private final Vect v;
+    private double contactDistance;
+    private Vect pivot;
+    private double w;
+    /** c0 - pivot, as {@code Vect.minus} would hold it. */
+    private double c0MinusPivotX;
+    private double c0MinusPivotY;
+    private Vect v;
 
     /** Distance from q to the forbidden set (0 inside it) and its rate. */
     private double gap;
@@ -87,8 +95,17 @@ final class RotatingContactSearch {
     private double offsetRate;
     private double beyond;
 
-    private RotatingContactSearch(boolean wall, Vect a, Vect b, double contactDistance, Vect pivot,
-                                  double angularVelocity, Circle ball, Vect velocity) {
+    private RotatingContactSearch() {
+    }
+
+    /** This thread's search, set for the obstacle and the ball. */
+    private static RotatingContactSearch start(boolean wall, Vect a, Vect b, double contactDistance, Vect pivot,
+                                               double angularVelocity, Circle ball, Vect velocity) {
+        return SEARCH.get().set(wall, a, b, contactDistance, pivot, angularVelocity, ball, velocity);
+    }
+
+    private RotatingContactSearch set(boolean wall, Vect a, Vect b, double contactDistance, Vect pivot,
+                                      double angularVelocity, Circle ball, Vect velocity) {
         this.wall = wall;
         this.ax = a.x();
         this.ay = a.y();
@@ -98,8 +115,10 @@ final class RotatingContactSearch {
         this.contactDistance = contactDistance;
         this.pivot = pivot;
         this.w = angularVelocity;
-        this.c0MinusPivot = ball.getCenter().minus(pivot);
+        this.c0MinusPivotX = ball.getCenter().x() - pivot.x() + 0.0;
+        this.c0MinusPivotY = ball.getCenter().y() - pivot.y() + 0.0;
         this.v = velocity;
+        return this;
     }
 
     /**
@@ -108,24 +127,45 @@ final class RotatingContactSearch {
      */
     static double firstFaceContact(LineSegment segment, Vect pivot, double angularVelocity, Circle ball,
                                    Vect velocity, double foresight, int slices) {
-        return new RotatingContactSearch(true, segment.p1(), segment.p2(), ball.getRadius(), pivot, angularVelocity,
-                ball, velocity).search(foresight, slices,
-                Math.max(pivot.distanceSquared(segment.p1()), pivot.distanceSquared(segment.p2())));
+        double farthestCoreSquared = Math.max(pivot.distanceSquared(segment.p1()),
+                pivot.distanceSquared(segment.p2()));
+        if (!entersSweptDisc(ball, velocity, pivot, foresight, Math.sqrt(farthestCoreSquared) + ball.getRadius())) {
+            return Double.POSITIVE_INFINITY;
+        }
+        return start(true, segment.p1(), segment.p2(), ball.getRadius(), pivot, angularVelocity,
+                ball, velocity).search(foresight, slices);
     }
 
     /** The earliest time in [0, foresight] at which the ball touches the circle while closing, or infinity. */
     static double firstCircleContact(Circle circle, Vect pivot, double angularVelocity, Circle ball, Vect velocity,
                                      double foresight, int slices) {
         Vect centre = circle.getCenter();
-        return new RotatingContactSearch(false, centre, centre, circle.getRadius() + ball.getRadius(), pivot,
-                angularVelocity, ball, velocity).search(foresight, slices, pivot.distanceSquared(centre));
+        double contactDistance = circle.getRadius() + ball.getRadius();
+        if (!entersSweptDisc(ball, velocity, pivot, foresight,
+                Math.sqrt(pivot.distanceSquared(centre)) + contactDistance)) {
+            return Double.POSITIVE_INFINITY;
+        }
+        return start(false, centre, centre, contactDistance, pivot, angularVelocity, ball,
+                velocity).search(foresight, slices);
     }
 
-    private double search(double foresight, int slices, double farthestCoreSquared) {
-        double reach = Math.sqrt(farthestCoreSquared) + contactDistance;
-        if (closestApproachToPivot(foresight) > reach + CONTACT_TOLERANCE) {
-            return Double.POSITIVE_INFINITY; // the obstacle sweeps a disc the ball never enters
-        }
+    /**
+     * Whether the ball's centre comes within {@code reach} (and the tolerance) of the pivot in [0, foresight]: where it
+     * does not, the obstacle sweeps a disc the ball never enters, and no search is made. Min over [0, foresight] of
+     * |c0 + v t - pivot| (frame-free), on the components as the search's own vectors would hold them.
+     */
+    private static boolean entersSweptDisc(Circle ball, Vect velocity, Vect pivot, double foresight, double reach) {
+        double ux = ball.getCenter().x() - pivot.x() + 0.0;
+        double uy = ball.getCenter().y() - pivot.y() + 0.0;
+        double vx = velocity.x();
+        double vy = velocity.y();
+        double speedSquared = vx * vx + vy * vy;
+        double tClosest = speedSquared == 0 ? 0 : -(ux * vx + uy * vy) / speedSquared;
+        double t = Math.max(0, Math.min(foresight, tClosest));
+        return !(ClosedForms.length(ux + vx * t, uy + vy * t) > reach + CONTACT_TOLERANCE);
+    }
+
+    private double search(double foresight, int slices) {
         double speed = v.length();
         double spin = Math.abs(w);
         double t = 0;
@@ -229,24 +269,17 @@ final class RotatingContactSearch {
         return curvature == 0 ? Double.POSITIVE_INFINITY : (rate + root) / curvature;
     }
 
-    /** min over [0, foresight] of |c0 + v t - pivot|, the ball centre's distance from the pivot (frame-free). */
-    private double closestApproachToPivot(double foresight) {
-        double speedSquared = v.dot(v);
-        double tClosest = speedSquared == 0 ? 0 : -c0MinusPivot.dot(v) / speedSquared;
-        return fromPivot(Math.max(0, Math.min(foresight, tClosest)));
-    }
-
     /** |u(t)| = |c0 + v t - pivot|, made of no vector (the search asks for it at every slice). */
     private double fromPivot(double t) {
-        return ClosedForms.length(c0MinusPivot.x() + v.x() * t, c0MinusPivot.y() + v.y() * t);
+        return ClosedForms.length(c0MinusPivotX + v.x() * t, c0MinusPivotY + v.y() * t);
     }
 
     /** Sets the gaps and rates at time t in the obstacle's frame (plain arithmetic: this is the hot loop). */
     private void evaluate(double t) {
         double cos = StrictMath.cos(w * t);
         double sin = -StrictMath.sin(w * t); // R(-w t), the same on every JVM and processor
-        double ux = c0MinusPivot.x() + v.x() * t;
-        double uy = c0MinusPivot.y() + v.y() * t;
+        double ux = c0MinusPivotX + v.x() * t;
+        double uy = c0MinusPivotY + v.y() * t;
         double turnedX = ux * cos - uy * sin;
         double turnedY = ux * sin + uy * cos;
         double relX = pivot.x() + turnedX - ax;
