@@ -116,6 +116,8 @@ final class ContactCluster {
     // Kept from one gathering to the next: the balls a ball may touch, and each ball's index in the cluster.
     private final List<Ball> nearby = new ArrayList<>();
     private final Map<Ball, Integer> indexOf = new IdentityHashMap<>();
+    /** The gizmos in reach of the member whose surfaces are being gathered: a list kept from member to member. */
+    private final List<GizmoBase> inReach = new ArrayList<>();
 
     /**
      * Gathers the cluster of {@code seeds} as they are now, in place of the one this held (its lists are kept, so
@@ -155,7 +157,8 @@ final class ContactCluster {
                 if (j >= 0 && j < i) {
                     continue;   // its row was made from the other side
                 }
-                Vect normal = ball.position().minus(other.position()).unitSize();
+                // ball.position().minus(other.position()).unitSize(), on the components
+                Vect normal = Components.unit(ball.x() - other.x() + 0.0, ball.y() - other.y() + 0.0);
                 boolean grazes = Kinematics.grazes(ball.position().minus(other.position()),
                         motion.apply(ball).minus(motion.apply(other)), 2 * Arena.BALL_RADIUS);
                 if (j < 0 && balls.size() < settings.clusterBalls() && movable.test(other)) {
@@ -229,7 +232,9 @@ final class ContactCluster {
             still(index, p, Arena.OUTER_WALLS.get(side), side, null);
         }
         double reach = Arena.BALL_RADIUS + touching;
-        for (GizmoBase gizmo : view.index().within(p.x() - reach, p.y() - reach, p.x() + reach, p.y() + reach)) {
+        view.index().within(p.x() - reach, p.y() - reach, p.x() + reach, p.y() + reach, inReach);
+        for (int g = 0; g < inReach.size(); g++) {
+            GizmoBase gizmo = inReach.get(g);
             if (gizmo.takesBalls()) {
                 continue;   // what touches an absorber or a sink is taken by it, not held
             }
