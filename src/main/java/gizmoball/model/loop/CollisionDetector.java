@@ -116,10 +116,11 @@ final class CollisionDetector {
 
     /** The two balls' collision, if it comes within the window, offered to {@code earliest} as {@code ball}'s. */
     void againstBall(Ball ball, Ball other, double window, Earliest earliest) {
-        Vect mine = motion(ball);
-        Vect theirs = motion(other);
-        double rx = mine.x() - theirs.x();   // mine.minus(theirs), made only for a pair that meets
-        double ry = mine.y() - theirs.y();
+        boolean mineStill = resting(ball);
+        boolean theirsStill = resting(other);
+        // motion(ball).minus(motion(other)), its vectors made only for a pair that may meet
+        double rx = (mineStill ? 0 : ball.vx()) - (theirsStill ? 0 : other.vx());
+        double ry = (mineStill ? 0 : ball.vy()) - (theirsStill ? 0 : other.vy());
         double dx = ball.x() - other.x();   // as Vect.distanceSquared, without making the centres' vectors
         double dy = ball.y() - other.y();
         double gap = Math.sqrt(dx * dx + dy * dy) - 2 * Arena.BALL_RADIUS;
@@ -136,6 +137,8 @@ final class CollisionDetector {
         if (view.passingThrough(ball, other)) {
             return;   // placed on each other (a loaded file may do that): they pass through until they are apart
         }
+        Vect mine = motion(ball);
+        Vect theirs = motion(other);
         double time = Geometry.timeUntilBallBallCollision(ball.circle(), mine, other.circle(), theirs);
         if (time <= window) {
             Vect normal = ball.position().plus(mine.times(time)).minus(other.position().plus(theirs.times(time)));
