@@ -62,7 +62,8 @@ final class RotatingContactSearch {
      * Each thread's search, set afresh by {@link #start} for every question: a flipper's swing asks one for each part in
      * reach of each ball, every tick, and a new search each time was much of what a tick allocated.
      */
-    private static final ThreadLocal<RotatingContactSearch> SEARCH = ThreadLocal.withInitial(RotatingContactSearch::new);
+    private static final ThreadLocal<RotatingContactSearch> SEARCH =
+            ThreadLocal.withInitial(RotatingContactSearch::new);
 
     private boolean wall;
     private double ax;
@@ -127,45 +128,24 @@ final class RotatingContactSearch {
      */
     static double firstFaceContact(LineSegment segment, Vect pivot, double angularVelocity, Circle ball,
                                    Vect velocity, double foresight, int slices) {
-        double farthestCoreSquared = Math.max(pivot.distanceSquared(segment.p1()),
-                pivot.distanceSquared(segment.p2()));
-        if (!entersSweptDisc(ball, velocity, pivot, foresight, Math.sqrt(farthestCoreSquared) + ball.getRadius())) {
-            return Double.POSITIVE_INFINITY;
-        }
-        return start(true, segment.p1(), segment.p2(), ball.getRadius(), pivot, angularVelocity,
-                ball, velocity).search(foresight, slices);
+        return start(true, segment.p1(), segment.p2(), ball.getRadius(), pivot, angularVelocity, ball, velocity)
+                .search(foresight, slices,
+                        Math.max(pivot.distanceSquared(segment.p1()), pivot.distanceSquared(segment.p2())));
     }
 
     /** The earliest time in [0, foresight] at which the ball touches the circle while closing, or infinity. */
     static double firstCircleContact(Circle circle, Vect pivot, double angularVelocity, Circle ball, Vect velocity,
                                      double foresight, int slices) {
         Vect centre = circle.getCenter();
-        double contactDistance = circle.getRadius() + ball.getRadius();
-        if (!entersSweptDisc(ball, velocity, pivot, foresight,
-                Math.sqrt(pivot.distanceSquared(centre)) + contactDistance)) {
-            return Double.POSITIVE_INFINITY;
+        return start(false, centre, centre, circle.getRadius() + ball.getRadius(), pivot, angularVelocity, ball,
+                velocity).search(foresight, slices, pivot.distanceSquared(centre));
+    }
+
+    private double search(double foresight, int slices, double farthestCoreSquared) {
+        double reach = Math.sqrt(farthestCoreSquared) + contactDistance;
+        if (closestApproachToPivot(foresight) > reach + CONTACT_TOLERANCE) {
+            return Double.POSITIVE_INFINITY; // the obstacle sweeps a disc the ball never enters
         }
-        return start(false, centre, centre, contactDistance, pivot, angularVelocity, ball,
-                velocity).search(foresight, slices);
-    }
-
-    /**
-     * Whether the ball's centre comes within {@code reach} (and the tolerance) of the pivot in [0, foresight]: where it
-     * does not, the obstacle sweeps a disc the ball never enters, and no search is made. Min over [0, foresight] of
-     * |c0 + v t - pivot| (frame-free), on the components as the search's own vectors would hold them.
-     */
-    private static boolean entersSweptDisc(Circle ball, Vect velocity, Vect pivot, double foresight, double reach) {
-        double ux = ball.getCenter().x() - pivot.x() + 0.0;
-        double uy = ball.getCenter().y() - pivot.y() + 0.0;
-        double vx = velocity.x();
-        double vy = velocity.y();
-        double speedSquared = vx * vx + vy * vy;
-        double tClosest = speedSquared == 0 ? 0 : -(ux * vx + uy * vy) / speedSquared;
-        double t = Math.max(0, Math.min(foresight, tClosest));
-        return !(ClosedForms.length(ux + vx * t, uy + vy * t) > reach + CONTACT_TOLERANCE);
-    }
-
-    private double search(double foresight, int slices) {
         double speed = v.length();
         double spin = Math.abs(w);
         double t = 0;
@@ -267,6 +247,13 @@ final class RotatingContactSearch {
             return 2 * value / (root - rate);
         }
         return curvature == 0 ? Double.POSITIVE_INFINITY : (rate + root) / curvature;
+    }
+
+    /** min over [0, foresight] of |c0 + v t - pivot|, the ball centre's distance from the pivot (frame-free). */
+    private double closestApproachToPivot(double foresight) {
+        double speedSquared = v.dot(v);
+        double tClosest = speedSquared == 0 ? 0 : -(c0MinusPivotX * v.x() + c0MinusPivotY * v.y()) / speedSquared;
+        return fromPivot(Math.max(0, Math.min(foresight, tClosest)));
     }
 
     /** |u(t)| = |c0 + v t - pivot|, made of no vector (the search asks for it at every slice). */

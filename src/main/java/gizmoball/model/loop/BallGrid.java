@@ -104,7 +104,8 @@ public final class BallGrid {
     }
 
     /**
-     * Finds every filed ball whose centre lies now within the square of half-side {@code near} around (x, y), looked
+     * Finds every filed ball whose centre lies now within the square of half-side {@code near} around (x, y) (or of
+     * {@code alone} + f {@code window}, f the ball's own fastest since filing, where that is less), looked
      * for among the balls filed within {@code reach} of it ({@code reach} covers how far any ball moved since it was
      * filed), in the order of their cells, row by row, and of their filing in a cell; returns how many
      * ({@link #found(int)} reads them). The test on where a ball is now keeps out the balls that filed cells bring in
