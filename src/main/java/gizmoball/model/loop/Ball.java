@@ -27,6 +27,7 @@ public final class Ball implements BallView {
     private Circle circle;
     private Contact.OtherBall asContact;
     private ContactRef.OnBall asSupported;
+    private Struck.OtherBall asStruck;
     /**
      * The velocity's components (as {@link Vect} keeps them), and the velocity as a {@link Vect}, made when asked for:
      * stage 1 changes the velocity of every awake ball in every tick.
@@ -176,6 +177,14 @@ public final class Ball implements BallView {
             asSupported = new ContactRef.OnBall(name);
         }
         return asSupported;
+    }
+
+    /** This ball as what another ball struck, made once (what was struck is a value). */
+    Struck.OtherBall asStruck() {
+        if (asStruck == null) {
+            asStruck = new Struck.OtherBall(name);
+        }
+        return asStruck;
     }
 
     /** This ball as what another ball is about to meet, made once (a contact is a value). */

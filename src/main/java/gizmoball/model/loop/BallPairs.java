@@ -37,7 +37,7 @@ final class BallPairs {
         double ry = ball.vy() - theirs.y() + 0.0;
         double approach = -(rx * normal.x() + ry * normal.y());
         boolean slow = approach <= step.pressingSpeed();
-        Struck.OtherBall struck = new Struck.OtherBall(other.name());
+        Struck.OtherBall struck = other.asStruck();
         if (slow && (Contacts.supports(other, ball) || Contacts.supports(ball, other))) {
             restAgainst(ball, other);
             restAgainst(other, ball);

@@ -9,6 +9,8 @@ import java.util.Arrays;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
+import java.util.function.Function;
+import java.util.function.Predicate;
 
 import physics.Vect;
 
@@ -22,6 +24,11 @@ final class ClusterSolve {
     private final StepContext step;
     /** The balls filed near a ball, where they are now: what a cluster asks for the balls touching its own. */
     private final ContactCluster.Near near;
+    /** What the cluster asks of its balls, made once: each ball's motion, and whether a ball may join (unfinished). */
+    private final Function<Ball, Vect> motion;
+    private final Predicate<Ball> movable;
+    /** The collision's ball or two, from which a cluster is gathered: kept, refilled per solve. */
+    private final List<Ball> seeds = new ArrayList<>(2);
     /** The cluster to solve, gathered anew for each collision that needs one into the same lists. */
     private final ContactCluster cluster = new ContactCluster();
     /** The solver, its rows and arrays kept from one cluster to the next (grown to the largest seen). */
@@ -38,11 +45,13 @@ final class ClusterSolve {
     private final List<Vect> otherNormals = new ArrayList<>();
     /** The moving shapes a solve stalled, and the surfaces its impacts were heard from: kept, emptied per solve. */
     private final Set<MovingShape> stalled = new LinkedHashSet<>();
-    private final Set<Struck> heard = new LinkedHashSet<>();
+    private final List<Struck> heard = new ArrayList<>();
 
     ClusterSolve(StepContext step) {
         this.step = step;
         this.near = (ball, within, into) -> step.schedule.filedNear(ball, within, step.elapsed, into);
+        this.motion = ball -> step.detector.motion(ball);
+        this.movable = candidate -> !step.finished.contains(candidate);
         this.impulses = new NormalImpulses(step.settings);
     }
 
@@ -75,9 +84,12 @@ final class ClusterSolve {
         } else {
             return null;
         }
-        return cluster.gather(step.view, collision.balls(), near,
-                step.detector::motion, candidate -> !step.finished.contains(candidate), reach,
-                step.settings);
+        seeds.clear();
+        seeds.add(ball);
+        if (other != null) {
+            seeds.add(other);
+        }
+        return cluster.gather(step.view, seeds, near, motion, movable, reach, step.settings);
     }
 
     private boolean rattling(Ball ball) {
@@ -264,7 +276,8 @@ final class ClusterSolve {
         List<ContactCluster.Row> rows = cluster.rows();
         List<Ball> balls = cluster.balls();
         impulses.clear(balls.size());
-        for (ContactCluster.Row row : rows) {
+        for (int i = 0; i < rows.size(); i++) {
+            ContactCluster.Row row = rows.get(i);
             boolean still = row.other() instanceof ContactCluster.Other.Moving moving
                     && stalled.contains(moving.shape());
             impulses.row(row.ball(), row.other() instanceof ContactCluster.Other.InCluster in ? in.index() : -1,
@@ -336,7 +349,8 @@ final class ClusterSolve {
             if (target != null) {
                 target.markTriggered(step.now());
             }
-            if (heard.add(struck)) {
+            if (!heard.contains(struck)) {
+                heard.add(struck);
                 GizmoKind kind = target == null ? null : target.kind();
                 step.actions.recordEvent(new PlayEvent.Hit(struck, kind, change, ball.name(), ball.position()));
                 if (struck instanceof TriggerSource source && !struck.equals(own)) {

@@ -141,8 +141,11 @@ final class CollisionDetector {
         Vect theirs = motion(other);
         double time = Geometry.timeUntilBallBallCollision(ball.circle(), mine, other.circle(), theirs);
         if (time <= window) {
-            Vect normal = ball.position().plus(mine.times(time)).minus(other.position().plus(theirs.times(time)));
-            if (closingOnCircle(normal, mine.minus(theirs))) {
+            // ball.position().plus(mine.times(time)).minus(other.position().plus(theirs.times(time))) and
+            // mine.minus(theirs), on the components with Vect's + 0.0 at each made vector (the same doubles)
+            double awayX = at(ball.x(), mine.x(), time) - at(other.x(), theirs.x(), time) + 0.0;
+            double awayY = at(ball.y(), mine.y(), time) - at(other.y(), theirs.y(), time) + 0.0;
+            if (closingOnCircle(awayX, awayY, mine.x() - theirs.x() + 0.0, mine.y() - theirs.y() + 0.0)) {
                 earliest.offer(time, ball, other.asContact(), true);
             }
         }
@@ -190,8 +193,7 @@ final class CollisionDetector {
                 circle = circleAfter(ball, velocity, delay);
             }
             double time = delay + Geometry.timeUntilCircleCollision(circles.get(i), circle, velocity);
-            if (time <= earliest.limit() && closingOnCircle(
-                    ball.position().plus(velocity.times(time)).minus(circles.get(i).getCenter()), velocity)) {
+            if (time <= earliest.limit() && closingOnCircle(ball, velocity, time, circles.get(i).getCenter())) {
                 earliest.offer(time, ball, new Contact.Round(gizmo, i, circles.get(i)), true);
             }
         }
@@ -228,8 +230,7 @@ final class CollisionDetector {
             if (moving.turnsInPlace(i)) {
                 // Its centre is the pivot: it turns in place, a still circle to the ball.
                 double time = Geometry.timeUntilCircleCollision(end, circle, velocity);
-                if (time <= earliest.limit() && closingOnCircle(
-                        ball.position().plus(velocity.times(time)).minus(end.getCenter()), velocity)) {
+                if (time <= earliest.limit() && closingOnCircle(ball, velocity, time, end.getCenter())) {
                     earliest.offer(time, ball, new Contact.Round(gizmo, i, end), true);
                 }
                 continue;
@@ -300,12 +301,31 @@ final class CollisionDetector {
      * {@link Tolerances#GRAZE_ANGLE} of tangent is a graze, and so is one that {@link Kinematics#grazes}.
      */
     static boolean closingOnCircle(Vect away, Vect relative) {
-        double approach = -relative.dot(away);
+        return closingOnCircle(away.x(), away.y(), relative.x(), relative.y());
+    }
+
+    /**
+     * {@link #closingOnCircle} of the ball, moved on at {@code velocity} for {@code time}, at a circle centred on
+     * {@code centre}: {@code ball.position().plus(velocity.times(time)).minus(centre)} on the components.
+     */
+    private static boolean closingOnCircle(Ball ball, Vect velocity, double time, Vect centre) {
+        return closingOnCircle(at(ball.x(), velocity.x(), time) - centre.x() + 0.0,
+                at(ball.y(), velocity.y(), time) - centre.y() + 0.0, velocity.x(), velocity.y());
+    }
+
+    /** One component of {@code position.plus(velocity.times(time))}, with Vect's + 0.0 at each made vector. */
+    private static double at(double position, double velocity, double time) {
+        return position + 0.0 + (velocity * time + 0.0) + 0.0;
+    }
+
+    /** {@link #closingOnCircle(Vect, Vect)} on the components, so that asking it makes no vector. */
+    private static boolean closingOnCircle(double awayX, double awayY, double relativeX, double relativeY) {
+        double approach = -(relativeX * awayX + relativeY * awayY);
         if (!(approach > 0)) {
             return false;   // the closing speed, approach / |away|, is not positive: no length changes that
         }
-        double awaySquared = away.x() * away.x() + away.y() * away.y();
-        double speedSquared = relative.x() * relative.x() + relative.y() * relative.y();
+        double awaySquared = awayX * awayX + awayY * awayY;
+        double speedSquared = relativeX * relativeX + relativeY * relativeY;
         if (awaySquared > TINY_SQUARE && speedSquared > TINY_SQUARE) {
             double length = Math.sqrt(awaySquared);
             double speed = Math.sqrt(speedSquared);
@@ -314,13 +334,13 @@ final class CollisionDetector {
             if (closes < 0) {
                 return false;
             }
-            int grazing = clearly(Math.abs(away.x() * relative.y() - away.y() * relative.x()) / speed,
+            int grazing = clearly(Math.abs(awayX * relativeY - awayY * relativeX) / speed,
                     length - Tolerances.PLACEMENT);
             if (closes > 0 && grazing != 0) {
                 return grazing < 0;
             }
         }
-        return closingOnCircleExactly(away, relative);
+        return closingOnCircleExactly(new Vect(awayX, awayY), new Vect(relativeX, relativeY));
     }
 
     /**

@@ -150,7 +150,7 @@ sealed interface Contact {
     record OtherBall(Ball other) implements Contact {
         @Override
         public Struck struck() {
-            return new Struck.OtherBall(other.name());
+            return other.asStruck();
         }
 
         @Override

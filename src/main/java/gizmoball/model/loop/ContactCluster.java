@@ -73,7 +73,7 @@ final class ContactCluster {
         record InCluster(int index) implements Other {
             @Override
             public Struck struck(List<Ball> balls) {
-                return new Struck.OtherBall(balls.get(index).name());
+                return balls.get(index).asStruck();
             }
         }
 
@@ -84,7 +84,7 @@ final class ContactCluster {
         record Beyond(Ball ball) implements Other {
             @Override
             public Struck struck(List<Ball> balls) {
-                return new Struck.OtherBall(ball.name());
+                return ball.asStruck();
             }
         }
     }
@@ -136,7 +136,8 @@ final class ContactCluster {
         nearby.clear();
         this.leadTime = settings.leadTime();
         this.touching = Math.max(Tolerances.PLACEMENT, reach);
-        for (Ball seed : seeds) {
+        for (int s = 0; s < seeds.size(); s++) {
+            Ball seed = seeds.get(s);
             if (!indexOf.containsKey(seed)) {
                 indexOf.put(seed, balls.size());
                 balls.add(seed);
@@ -159,8 +160,12 @@ final class ContactCluster {
                 }
                 // ball.position().minus(other.position()).unitSize(), on the components
                 Vect normal = Components.unit(ball.x() - other.x() + 0.0, ball.y() - other.y() + 0.0);
-                boolean grazes = Kinematics.grazes(ball.position().minus(other.position()),
-                        motion.apply(ball).minus(motion.apply(other)), 2 * Arena.BALL_RADIUS);
+                Vect mine = motion.apply(ball);
+                Vect theirs = motion.apply(other);
+                // Kinematics.grazes(ball.position().minus(other.position()), mine.minus(theirs), 2r), on the
+                // components with Vect's + 0.0 at each made vector
+                boolean grazes = Kinematics.grazes(ball.x() - other.x() + 0.0, ball.y() - other.y() + 0.0,
+                        mine.x() - theirs.x() + 0.0, mine.y() - theirs.y() + 0.0, 2 * Arena.BALL_RADIUS);
                 if (j < 0 && balls.size() < settings.clusterBalls() && movable.test(other)) {
                     j = balls.size();
                     balls.add(other);

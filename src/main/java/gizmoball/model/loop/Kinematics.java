@@ -26,12 +26,17 @@ final class Kinematics {
      * meets again at once what the other let pass.
      */
     static boolean grazes(Vect offset, Vect relative, double touch) {
-        double closing = -relative.dot(offset);
-        double speed = relative.length();
+        return grazes(offset.x(), offset.y(), relative.x(), relative.y(), touch);
+    }
+
+    /** {@link #grazes(Vect, Vect, double)} on the components, so that the cluster asks it of each pair making none. */
+    static boolean grazes(double offsetX, double offsetY, double relativeX, double relativeY, double touch) {
+        double closing = -(relativeX * offsetX + relativeY * offsetY);
+        double speed = Components.length(relativeX, relativeY);
         if (closing <= 0 || speed == 0) {
             return false;
         }
-        double nearest = Math.abs(offset.x() * relative.y() - offset.y() * relative.x()) / speed;
+        double nearest = Math.abs(offsetX * relativeY - offsetY * relativeX) / speed;
         return nearest >= touch - Tolerances.PLACEMENT;
     }
 }
