@@ -47,9 +47,14 @@ public final class Flipper extends TurningBar implements FlipperView {
         this.activeShape = other.activeShape;
     }
 
-    /** Centre of the round end at the pivot. */
+    /** Centre of the round end at the pivot: the rest shape's, made once per placement (the loop asks it often). */
     @Override
     public Vect pivot() {
+        return restShape.circles().get(PIVOT_CIRCLE).getCenter();
+    }
+
+    /** Where its placement puts the pivot. */
+    private Vect placedPivot() {
         double local = kind() == GizmoKind.LEFT_FLIPPER ? x() + RADIUS : x() + 2 - RADIUS;
         return rotated(local, y() + RADIUS);
     }
@@ -241,7 +246,7 @@ public final class Flipper extends TurningBar implements FlipperView {
 
     @Override
     Shape buildShape() {
-        Vect pivot = pivot();
+        Vect pivot = placedPivot();
         Vect restTip = pivot.plus(rotated(0, 1).minus(rotated(0, 0)).times(2 - 2 * RADIUS));
         Vect across = rotated(1, 0).minus(rotated(0, 0)).times(RADIUS);
         restShape = new Shape(
@@ -277,11 +282,6 @@ public final class Flipper extends TurningBar implements FlipperView {
             turnedCircles[i] = Geometry.rotateAround(circles.get(i), pivot, turn);
         }
         return new Shape(List.of(turnedSegments), List.of(turnedCircles));
-    }
-
-    @Override
-    public double signedDistance(Vect p) {
-        return Solids.toCapsule(pivot(), tip(), RADIUS, p);
     }
 
     @Override

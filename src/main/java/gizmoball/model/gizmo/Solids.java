@@ -46,8 +46,8 @@ final class Solids {
     }
 
     /** Signed distance from p to a capsule: all points within radius of the segment from a to b. */
-    static double toCapsule(Vect a, Vect b, double radius, Vect p) {
-        return distanceToSegment(new LineSegment(a, b), p) - radius;
+    static double toCapsule(LineSegment core, double radius, Vect p) {
+        return distanceToSegment(core, p) - radius;
     }
 
     static double toDisc(Vect centre, double radius, Vect p) {

@@ -206,12 +206,6 @@ public final class Spinner extends TurningBar implements SpinnerView {
     }
 
     @Override
-    public double signedDistance(Vect p) {
-        List<Vect> ends = ends();
-        return Solids.toCapsule(ends.get(0), ends.get(1), RADIUS, p);
-    }
-
-    @Override
     public Spinner copy() {
         return new Spinner(this);
     }

@@ -1,5 +1,8 @@
 package gizmoball.model.gizmo;
 
+import physics.LineSegment;
+import physics.Vect;
+
 /**
  * A bar with round ends that play turns about a pivot (a flipper, a spinner): what the two share. The ends' radius and
  * the bar's bounce; the stall a jammed ball holds it in; the turning, a step of {@code dt} seconds each kind takes in
@@ -19,6 +22,12 @@ abstract sealed class TurningBar extends GizmoBase implements MovingShape permit
      * bar at each collision of a tick, and asks the shape only of those a ball can reach.
      */
     private Shape currentShape;
+    /**
+     * The segment between its round ends' centres (circles 0 and 1 of every bar's shape) in {@code coreOf}, the shape
+     * it was made for: a bar stalled by a sleeping ball is measured against the balls by it at every tick.
+     */
+    private LineSegment core;
+    private Shape coreOf;
 
     TurningBar(String name, GizmoKind kind, int x, int y) {
         super(name, kind, x, y);
@@ -96,4 +105,15 @@ abstract sealed class TurningBar extends GizmoBase implements MovingShape permit
 
     /** The shape at its angle now. */
     abstract Shape shapeNow();
+
+    /** Signed distance from p to the bar: a capsule about the segment between its round ends' centres. */
+    @Override
+    public double signedDistance(Vect p) {
+        Shape now = shape();
+        if (coreOf != now) {
+            core = new LineSegment(now.circles().get(0).getCenter(), now.circles().get(1).getCenter());
+            coreOf = now;
+        }
+        return Solids.toCapsule(core, RADIUS, p);
+    }
 }
