@@ -92,7 +92,7 @@ final class CollisionDetector {
         if (!still) {
             for (int side = 0; side < Arena.OUTER_WALLS.size(); side++) {
                 LineSegment wall = Arena.OUTER_WALLS.get(side);
-                if (swept.misses(wall)) {
+                if (swept.misses(wall) || !Approach.mayMeetLine(wall, ball.x(), ball.y(), vx, vy, earliest.limit())) {
                     continue;
                 }
                 Vect velocity = motion(ball);
@@ -169,9 +169,16 @@ final class CollisionDetector {
     private void againstStillShape(Ball ball, double delay, GizmoBase gizmo, Shape shape, Earliest earliest) {
         Vect velocity = null;
         Circle circle = null;
+        // Where the ball is after the delay, and how it moves, for the tests that pass over what it cannot meet
+        boolean resting = resting(ball);
+        double vx = resting ? 0 : ball.vx();
+        double vy = resting ? 0 : ball.vy();
+        double cx = ball.x() + vx * delay;
+        double cy = ball.y() + vy * delay;
         List<LineSegment> segments = shape.segments();
         for (int i = 0; i < segments.size(); i++) {
-            if (swept.misses(segments.get(i))) {
+            if (swept.misses(segments.get(i))
+                    || !Approach.mayMeetLine(segments.get(i), cx, cy, vx, vy, earliest.limit() - delay)) {
                 continue;
             }
             if (circle == null) {
@@ -185,7 +192,8 @@ final class CollisionDetector {
         }
         List<Circle> circles = shape.circles();
         for (int i = 0; i < circles.size(); i++) {
-            if (swept.misses(circles.get(i))) {
+            if (swept.misses(circles.get(i))
+                    || !Approach.mayMeetCircle(circles.get(i), cx, cy, vx, vy, earliest.limit() - delay)) {
                 continue;
             }
             if (circle == null) {
