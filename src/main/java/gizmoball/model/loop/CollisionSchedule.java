@@ -34,10 +34,11 @@ final class CollisionSchedule {
     private boolean[] ballsCircle = new boolean[0];
     /** The filed balls by slot. */
     private Ball[] bySlot = new Ball[0];
-    /** The slots with a collision not known, in no order, each once: only they are asked again. */
-    private int[] unknown = new int[0];
-    private int unknownCount;
-    private boolean[] isUnknown = new boolean[0];
+    /**
+     * The slots with a collision not known, a bit each (slot s is bit s % 64 of word s / 64): only they are asked
+     * again, in slot order, which reading the bits gives without sorting.
+     */
+    private long[] unknown = new long[0];
     /** The awake balls' slots in board order (which is slot order), found again after the awake balls change. */
     private int[] awakeSlots = new int[0];
     private int awakeCount;
@@ -123,8 +124,7 @@ final class CollisionSchedule {
         ballsAt = Arrays.copyOf(ballsAt, n);
         ballsCircle = Arrays.copyOf(ballsCircle, n);
         bySlot = Arrays.copyOf(bySlot, n);
-        unknown = Arrays.copyOf(unknown, n);
-        isUnknown = Arrays.copyOf(isUnknown, n);
+        unknown = Arrays.copyOf(unknown, (n + 63) >>> 6);
         awakeSlots = Arrays.copyOf(awakeSlots, n);
         isAwake = Arrays.copyOf(isAwake, n);
         awakeIndex = Arrays.copyOf(awakeIndex, n);
@@ -151,7 +151,6 @@ final class CollisionSchedule {
         ballsKnown[slot] = false;
         pointedAtCount[slot] = 0;
         taken[slot] = false;
-        isUnknown[slot] = false;
         markUnknown(slot);
         double speed = CollisionDetector.speedBound(detector.motion(ball));
         fastest = Math.max(fastest, speed);
@@ -302,34 +301,26 @@ final class CollisionSchedule {
 
     /** Asks about every awake ball whose collisions are not known, in slot order; a sleeping one waits to wake. */
     private void askTheUnknown(double elapsed, double window) {
-        if (unknownCount == 0) {
-            return;
+        for (int w = 0; w << 6 < filed; w++) {
+            for (long bits = unknown[w]; bits != 0; bits &= bits - 1) {
+                int slot = (w << 6) + Long.numberOfTrailingZeros(bits);
+                if (!isAwake[slot]) {
+                    continue;
+                }
+                Ball ball = bySlot[slot];
+                if (!sceneKnown[slot]) {
+                    knowWithScene(slot, elapsed, detector.againstScene(ball, window));
+                }
+                if (!ballsKnown[slot]) {
+                    askAgainstBalls(ball, elapsed, window);
+                }
+                unknown[w] &= ~(1L << slot);
+            }
         }
-        Arrays.sort(unknown, 0, unknownCount);
-        int kept = 0;
-        for (int k = 0; k < unknownCount; k++) {
-            int slot = unknown[k];
-            if (!isAwake[slot]) {
-                unknown[kept++] = slot;
-                continue;
-            }
-            Ball ball = bySlot[slot];
-            if (!sceneKnown[slot]) {
-                knowWithScene(slot, elapsed, detector.againstScene(ball, window));
-            }
-            if (!ballsKnown[slot]) {
-                askAgainstBalls(ball, elapsed, window);
-            }
-            isUnknown[slot] = false;
-        }
-        unknownCount = kept;
     }
 
     private void markUnknown(int slot) {
-        if (!isUnknown[slot]) {
-            isUnknown[slot] = true;
-            unknown[unknownCount++] = slot;
-        }
+        unknown[slot >>> 6] |= 1L << slot;
     }
 
     /** Files the ball's earliest collision with the scene, found {@code elapsed} seconds into the tick. */
@@ -387,11 +378,10 @@ final class CollisionSchedule {
         Arrays.fill(ballsKnown, false);
         Arrays.fill(pointedAtCount, 0);
         Arrays.fill(taken, false);
-        Arrays.fill(isUnknown, true);
+        Arrays.fill(unknown, 0);
         for (int slot = 0; slot < filed; slot++) {
-            unknown[slot] = slot;
+            markUnknown(slot);
         }
-        unknownCount = filed;
     }
 
     private static Ball partner(Contact contact) {
