@@ -54,7 +54,7 @@ public final class Bumper extends GizmoBase implements BumperView {
     public double signedDistance(Vect p) {
         return kind() == GizmoKind.CIRCLE
                 ? Solids.toDisc(circle().getCenter(), CIRCLE_RADIUS, p)
-                : Solids.toConvexPolygon(outline(), p);
+                : Solids.toConvexPolygon(shape().segments(), p);
     }
 
     @Override

@@ -27,6 +27,6 @@ abstract sealed class PolygonGizmo extends GizmoBase permits Absorber, Portal, S
 
     @Override
     public final double signedDistance(Vect p) {
-        return Solids.toConvexPolygon(outline(), p);
+        return Solids.toConvexPolygon(shape().segments(), p);
     }
 }

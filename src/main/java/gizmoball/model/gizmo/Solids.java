@@ -24,15 +24,18 @@ final class Solids {
         return Math.sqrt(Math.min(Geometry.distanceSquared(segment.p1(), p), Geometry.distanceSquared(segment.p2(), p)));
     }
 
-    /** Signed distance from p to a convex polygon whose corners are given in order (either orientation). */
-    static double toConvexPolygon(List<Vect> corners, Vect p) {
+    /**
+     * Signed distance from p to a convex polygon whose sides are given in order round it (either orientation), each
+     * from one corner to the next: a polygon gizmo's shape has them so, made once per placement.
+     */
+    static double toConvexPolygon(List<LineSegment> sides, Vect p) {
         double boundary = Double.POSITIVE_INFINITY;
         boolean inside = true;
         double orientation = 0;
-        for (int i = 0; i < corners.size(); i++) {
-            Vect a = corners.get(i);
-            Vect b = corners.get((i + 1) % corners.size());
-            boundary = Math.min(boundary, distanceToSegment(new LineSegment(a, b), p));
+        for (int i = 0; i < sides.size(); i++) {
+            Vect a = sides.get(i).p1();
+            Vect b = sides.get(i).p2();
+            boundary = Math.min(boundary, distanceToSegment(sides.get(i), p));
             double cross = (b.x() - a.x()) * (p.y() - a.y()) - (b.y() - a.y()) * (p.x() - a.x());
             if (cross != 0) {
                 if (orientation == 0) {

@@ -15,6 +15,8 @@ public abstract sealed class SwitchedCell extends GizmoBase permits Gate, DropTa
     private boolean solid = true;
     /** Told to become solid while a ball was in the way: it does as soon as the cell is clear. */
     private boolean waiting;
+    /** The square it fills when solid, made once per placement: the board and the loop measure against it. */
+    private Shape solidShape;
 
     SwitchedCell(String name, GizmoKind kind, int x, int y) {
         super(name, kind, x, y);
@@ -25,6 +27,7 @@ public abstract sealed class SwitchedCell extends GizmoBase permits Gate, DropTa
         super(other);
         this.solid = other.solid;
         this.waiting = other.waiting;
+        this.solidShape = other.solidShape;
     }
 
     @Override
@@ -56,7 +59,8 @@ public abstract sealed class SwitchedCell extends GizmoBase permits Gate, DropTa
 
     @Override
     final Shape buildShape() {
-        return solid ? Shape.polygon(cellOutline()) : NOTHING;
+        solidShape = Shape.polygon(cellOutline());
+        return solid ? solidShape : NOTHING;
     }
 
     /** Signed distance to its solid body: its cell while solid, none (infinitely far) while nothing. */
@@ -70,7 +74,7 @@ public abstract sealed class SwitchedCell extends GizmoBase permits Gate, DropTa
      * cell solid. For the board and its loop, not for views.
      */
     public final double solidOver(Vect p) {
-        return Solids.toConvexPolygon(cellOutline(), p);
+        return Solids.toConvexPolygon(solidShape.segments(), p);
     }
 
     /**
