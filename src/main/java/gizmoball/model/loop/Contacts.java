@@ -36,6 +36,8 @@ final class Contacts {
     private final List<Vect> queried = new ArrayList<>();
     /** The gizmos near a ball whose contacts are looked for: kept from use to use. */
     private final List<GizmoBase> nearby = new ArrayList<>();
+    /** The gizmos near where a drifting ball would be put back (Room.at): kept, refilled per ask. */
+    private final List<GizmoBase> inTheWay = new ArrayList<>();
 
     /**
      * A ball lying on something and nudged off it by a rounding of a wedge's projections, or rolling over a curve
@@ -415,7 +417,7 @@ final class Contacts {
             }
             ball.setVelocity(ball.velocity().minus(normal.times(Math.max(0, leaving))));
             Vect onSurface = new Vect(fromX, fromY).plus(normal.times(touch));
-            if (Room.at(view, ball, onSurface)) {
+            if (Room.at(view, ball, onSurface, inTheWay)) {
                 ball.moveTo(onSurface);
             }
         } else if (touch - distance > Tolerances.SNAP_DEPTH) {
