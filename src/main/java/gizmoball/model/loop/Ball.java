@@ -277,12 +277,15 @@ public final class Ball implements BallView {
     }
 
     /** As {@link #setVelocity(Vect)} with {@code new Vect(newX, newY)}, without making it. */
+    /** Speeds squared below this are within {@link Arena#MAX_SPEED} beyond doubt: far more than rounding under it. */
+    private static final double CLEARLY_WITHIN_LIMIT = Arena.MAX_SPEED * Arena.MAX_SPEED * (1 - 1e-9);
+
     void setVelocity(double newX, double newY) {
         double x0 = newX + 0.0;
         double y0 = newY + 0.0;
-        double speed = Components.length(x0, y0);
-        if (speed > Arena.MAX_SPEED * (1 + 1e-12)) {
-            double factor = Arena.MAX_SPEED / speed;   // Vect.times
+        // The length (a hypot) only where the squares leave the limit in doubt: they lie within a few ulps of it.
+        if (x0 * x0 + y0 * y0 > CLEARLY_WITHIN_LIMIT && Components.length(x0, y0) > Arena.MAX_SPEED * (1 + 1e-12)) {
+            double factor = Arena.MAX_SPEED / Components.length(x0, y0);   // Vect.times
             x0 = x0 * factor + 0.0;
             y0 = y0 * factor + 0.0;
         }

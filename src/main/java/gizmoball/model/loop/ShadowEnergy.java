@@ -207,19 +207,24 @@ final class ShadowEnergy {
         if (normal == null || contacts.isEmpty()) {
             return normal;
         }
-        Vect along = normal;
+        // along = along.minus(c.times(along.dot(c))) for each contact c, on the components with Vect's + 0.0
+        double alongX = normal.x();
+        double alongY = normal.y();
         for (int i = 0; i < contacts.size(); i++) {
             Vect c = contacts.get(i);
-            along = along.minus(c.times(along.dot(c)));
+            double part = alongX * c.x() + alongY * c.y();
+            alongX = alongX - (c.x() * part + 0.0) + 0.0;
+            alongY = alongY - (c.y() * part + 0.0) + 0.0;
         }
         for (int i = 0; i < contacts.size(); i++) {
             Vect c = contacts.get(i);
-            if (Math.abs(along.dot(c)) > Tolerances.TANGENT_ROUNDING) {
+            if (Math.abs(alongX * c.x() + alongY * c.y()) > Tolerances.TANGENT_ROUNDING) {
                 return null;   // not along all of them at once
             }
         }
-        double length = along.length();
-        return length < slidingPart ? null : along.times(1 / length);
+        double length = Components.length(alongX, alongY);
+        double inverse = 1 / length;
+        return length < slidingPart ? null : new Vect(alongX * inverse, alongY * inverse);
     }
 
     /**

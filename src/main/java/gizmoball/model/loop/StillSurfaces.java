@@ -35,14 +35,18 @@ final class StillSurfaces {
             gizmo.markTriggered(step.now());
         }
         Passage passage = Passages.of(step.view, ball, surface);
+        TriggerSource struck = surface.struck();
         if (gizmo != null && gizmo.takesBalls()) {
             take(ball, gizmo);
         } else if (passage != null) {
             enter(ball, passage);
-        } else if (bounceOff(ball, surface, surface.normal(ball.position()))) {
-            bounceAmongContacts(ball, surface.ref());
+        } else {
+            ContactRef ref = surface.ref();
+            if (bounceOff(ball, surface, ref, struck, surface.normal(ball.position()))) {
+                bounceAmongContacts(ball, ref);
+            }
         }
-        return surface.struck();
+        return struck;
     }
 
     /**
@@ -84,9 +88,12 @@ final class StillSurfaces {
         step.sceneChanged();
     }
 
-    /** Resting contact or a bounce off a still surface; true if the ball bounced. */
-    private boolean bounceOff(Ball ball, Contact.StillSurface surface, Vect normal) {
-        ContactRef ref = surface.ref();
+    /**
+     * Resting contact or a bounce off a still surface, whose reference and trigger source the caller made once;
+     * true if the ball bounced.
+     */
+    private boolean bounceOff(Ball ball, Contact.StillSurface surface, ContactRef ref, TriggerSource struck,
+                              Vect normal) {
         double approach = -ball.velocity().dot(normal);
         if (approach <= step.restingSpeed(normal, step.contacts.normalsBesides(ball, ref, besides))) {
             step.comeToRest(ball, ref);
@@ -101,7 +108,7 @@ final class StillSurfaces {
         GizmoBase gizmo = surface.gizmo();
         if (!step.reported.contains(ref)) {   // a bounce, not a rest: one hit per surface and collision
             step.reported.add(ref);
-            step.actions.recordEvent(new PlayEvent.Hit(surface.struck(), gizmo == null ? null : gizmo.kind(),
+            step.actions.recordEvent(new PlayEvent.Hit(struck, gizmo == null ? null : gizmo.kind(),
                     approach, ball.name(), ball.position()));
         }
         if (gizmo != null && gizmo.boosts()) {
@@ -124,7 +131,10 @@ final class StillSurfaces {
     private void bounceAmongContacts(Ball ball, ContactRef from) {
         List<ContactRef> among = this.among;
         among.clear();
-        among.addAll(ball.contacts());
+        List<ContactRef> contacts = ball.contacts();
+        for (int i = 0; i < contacts.size(); i++) {   // by index: addAll would copy them into an array first
+            among.add(contacts.get(i));
+        }
         if (!among.contains(from)) {
             among.add(from);   // met just now, not lain on: the ball may come straight back to it
         }
@@ -140,11 +150,13 @@ final class StillSurfaces {
             if (gizmo != null) {
                 gizmo.markTriggered(step.now());
             }
-            step.alsoHit.add(next.surface().struck());
-            if (!bounceOff(ball, next.surface(), next.normal())) {
+            TriggerSource struck = next.surface().struck();
+            step.alsoHit.add(struck);
+            ContactRef ref = next.surface().ref();
+            if (!bounceOff(ball, next.surface(), ref, struck, next.normal())) {
                 return;
             }
-            last = next.surface().ref();
+            last = ref;
         }
         // Still bouncing: a wedge nearly flat (a flipper's face and a circle whose normals are 0.6 degrees from
         // opposite turned a ball only after thousands of bounces). Its limit is rest against what it bounces between.
