@@ -24,6 +24,10 @@ final class DelayedActions {
          * and 30 ticks of 1/60 s add up to a hair less than 0.5 s.
          */
         static final double ROUNDING = 1e-9;
+
+        boolean isDue(double now) {
+            return due <= now + ROUNDING;
+        }
     }
 
     DelayedActions(Registry registry) {
@@ -42,15 +46,27 @@ final class DelayedActions {
         if (delayed.isEmpty()) {
             return;   // most ticks: a stream over nothing still cost a tick a twentieth of its time
         }
-        List<Delayed> due = delayed.stream().filter(d -> d.due() <= now + Delayed.ROUNDING)
+        if (!anyDue(now)) {
+            return;   // most ticks of a board with actions waiting
+        }
+        List<Delayed> due = delayed.stream().filter(d -> d.isDue(now))
                 .sorted(Comparator.comparingDouble(Delayed::due)).toList();
-        delayed.removeAll(due);
+        delayed.removeIf(d -> d.isDue(now));
         for (Delayed d : due) {
             GizmoBase gizmo = registry.gizmo(d.gizmo());
             if (gizmo != null) {
                 play.perform(gizmo, d.action(), now);
             }
         }
+    }
+
+    private boolean anyDue(double now) {
+        for (int i = 0; i < delayed.size(); i++) {
+            if (delayed.get(i).isDue(now)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** The delayed actions of {@code source} become these (a copy of a board in play). */
