@@ -40,6 +40,8 @@ public final class Ball implements BallView {
     /** Seconds the ball has lain still on its contacts. */
     private double stillTime;
     private boolean asleep;
+    /** Moves no more in this tick: {@link FinishedBalls} marks it and clears it (a mark kept on the ball). */
+    boolean finished;
     /** Index of the ball among the free balls of the tick running now (the collision schedule's bookkeeping). */
     private int slot;
     /**

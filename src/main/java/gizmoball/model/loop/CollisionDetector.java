@@ -6,7 +6,6 @@ import gizmoball.model.gizmo.Shape;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Set;
 
 import physics.Angle;
 import physics.Circle;
@@ -34,7 +33,7 @@ final class CollisionDetector {
             new Contact.OuterWall(2, Arena.OUTER_WALLS.get(2)), new Contact.OuterWall(3, Arena.OUTER_WALLS.get(3)));
 
     private final LoopView view;
-    private final Set<Ball> finishedBalls;
+    private final FinishedBalls finishedBalls;
     /** The search of {@link #againstScene}, kept from ask to ask. */
     private final Earliest scene = new Earliest(0);
     /** The gizmos a ball can reach, found again for every ask. */
@@ -46,7 +45,7 @@ final class CollisionDetector {
     private final int rotatingSearchSlices;
 
     /** @param finishedBalls balls that move no more this tick (SEED), treated as at rest */
-    CollisionDetector(LoopView view, Set<Ball> finishedBalls, LoopSettings settings) {
+    CollisionDetector(LoopView view, FinishedBalls finishedBalls, LoopSettings settings) {
         this.view = view;
         this.finishedBalls = finishedBalls;
         this.rotatingSearchSlices = settings.rotatingSearchSlices();
@@ -64,7 +63,7 @@ final class CollisionDetector {
 
     /** Whether the ball moves no more in this tick: asleep, or finished. */
     private boolean resting(Ball ball) {
-        return ball.isAsleep() || !finishedBalls.isEmpty() && finishedBalls.contains(ball);
+        return ball.isAsleep() || finishedBalls.contains(ball);
     }
 
     /**

@@ -3,10 +3,8 @@ package gizmoball.model.loop;
 import gizmoball.model.gizmo.MovingShape;
 
 import java.util.ArrayList;
-import java.util.HashSet;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicLong;
-import java.util.Set;
 
 import physics.Vect;
 
@@ -31,7 +29,7 @@ final class StepContext {
     Contacts contacts;
     final ShadowEnergy energy;
     /** SEED: balls that have had their collision this tick and move no more; CONTINUOUS: balls over their cap. */
-    final Set<Ball> finished = new HashSet<>();
+    final FinishedBalls finished = new FinishedBalls();
     final CollisionDetector detector;
     final CollisionSchedule schedule;
     /** The balls that move in this tick: neither captured nor asleep. */

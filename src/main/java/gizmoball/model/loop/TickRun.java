@@ -395,6 +395,6 @@ public final class TickRun {
 
     /** SEED: the ball (and a ball it hit) stays put for the rest of the tick. */
     private void finish(Collision collision) {
-        step.finished.addAll(collision.balls());
+        step.finished.addBallsOf(collision);
     }
 }

@@ -11,7 +11,6 @@ import gizmoball.model.gizmo.GizmoKind;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
-import java.util.Set;
 
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -44,7 +43,7 @@ class CollisionScheduleTest {
             }
         }
         List<Ball> free = new ArrayList<>(LoopViews.of(board).balls());
-        CollisionDetector detector = new CollisionDetector(LoopViews.of(board), Set.of(), LoopSettings.STANDARD);
+        CollisionDetector detector = new CollisionDetector(LoopViews.of(board), new FinishedBalls(), LoopSettings.STANDARD);
         CollisionSchedule schedule = new CollisionSchedule(detector, new BallGrid(), LoopSettings.STANDARD);
         schedule.file(free, 0);
         double tick = 0.25;
