@@ -61,7 +61,7 @@ final class BallPairs {
         ball.setVelocity(after.v1);
         other.setVelocity(after.v2);
         step.energy.bounced(ball, normal, true);
-        step.energy.bounced(other, normal.neg(), true);
+        step.energy.bouncedOpposite(other, normal);
         step.energy.met(ball, other);
         return struck;
     }

@@ -236,7 +236,11 @@ final class ClusterSolve {
         }
         for (int k = 0; k < balls.size(); k++) {
             if (strongest[k] != null) {
-                step.energy.bounced(balls.get(k), against[k] ? strongest[k].neg() : strongest[k], true);
+                if (against[k]) {
+                    step.energy.bouncedOpposite(balls.get(k), strongest[k]);
+                } else {
+                    step.energy.bounced(balls.get(k), strongest[k], true);
+                }
             }
         }
     }

@@ -115,6 +115,8 @@ final class ContactCluster {
     private double leadTime;
     // Kept from one gathering to the next: the balls a ball may touch, and each ball's index in the cluster.
     private final List<Ball> nearby = new ArrayList<>();
+    /** Each index's {@link Other.InCluster}, made once (see {@link #inCluster}). */
+    private final List<Other.InCluster> inCluster = new ArrayList<>();
     private final Map<Ball, Integer> indexOf = new IdentityHashMap<>();
     /** The gizmos in reach of the member whose surfaces are being gathered: a list kept from member to member. */
     private final List<GizmoBase> inReach = new ArrayList<>();
@@ -171,7 +173,7 @@ final class ContactCluster {
                     balls.add(other);
                     indexOf.put(other, j);
                 }
-                Row row = j >= 0 ? new Row(i, new Other.InCluster(j), normal, 0, 1.0)
+                Row row = j >= 0 ? new Row(i, inCluster(j), normal, 0, 1.0)
                         : new Row(i, new Other.Beyond(other), normal, beyondSpeed(motion.apply(other), normal), 1.0);
                 if (grazes) {
                     grazing.add(new Graze(row, ball.position().minus(other.position()), 2 * Arena.BALL_RADIUS,
@@ -195,6 +197,14 @@ final class ContactCluster {
      */
     private static double beyondSpeed(Vect motion, Vect normal) {
         return Math.min(0, motion.dot(normal));
+    }
+
+    /** The cluster's ball {@code index} as a row's other: made once per index and kept (a value). */
+    private Other.InCluster inCluster(int index) {
+        while (inCluster.size() <= index) {
+            inCluster.add(new Other.InCluster(inCluster.size()));
+        }
+        return inCluster.get(index);
     }
 
     List<Ball> balls() {

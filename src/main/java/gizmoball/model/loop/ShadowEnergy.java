@@ -90,16 +90,29 @@ final class ShadowEnergy {
 
     /** A bounce with the given normal (from the surface to the ball). */
     void bounced(Ball ball, Vect normal, boolean elastic) {
-        Ball.EnergyMarks marks = ball.energyMarks();
         if (!elastic) {
             lost(ball);
             return;
         }
+        noteBounce(ball, normal, false);
+    }
+
+    /**
+     * An elastic bounce off the ball whose normal is {@code normal} (the other of a pair): the opposite normal, made
+     * only if the correction reads it, not at every bounce of a pile.
+     */
+    void bouncedOpposite(Ball ball, Vect normal) {
+        noteBounce(ball, normal, true);
+    }
+
+    private void noteBounce(Ball ball, Vect normal, boolean opposite) {
+        Ball.EnergyMarks marks = ball.energyMarks();
         if (marks.bouncedIn != tick) {
             marks.bouncedIn = tick;
             bouncers.add(ball);
         }
         marks.normal = normal;
+        marks.opposite = opposite;
     }
 
     /** Two balls bounced off each other: their energy is kept together, not each one's. */
@@ -111,7 +124,10 @@ final class ShadowEnergy {
     /** The normal of the ball's last elastic bounce this tick, or null. */
     private Vect elasticNormal(Ball ball) {
         Ball.EnergyMarks marks = ball.energyMarks();
-        return marks.bouncedIn == tick ? marks.normal : null;
+        if (marks.bouncedIn != tick) {
+            return null;
+        }
+        return marks.opposite ? marks.normal.neg() : marks.normal;
     }
 
     /**
