@@ -40,34 +40,19 @@ public final class Angle implements Serializable, Comparable<Angle> {
     private final double cos;
     private final double sin;
 
-    /** A cosine and a sine, as the constructors work them out. */
+    /** A cosine and a sine exactly, for the named angles. */
     private record Direction(double cos, double sin) {
     }
 
-    /** The angle of so many radians, any value (NaN gives an angle whose cosine and sine are NaN, as in the package). */
-    public Angle(double radians) {
-        this(ofRadians(radians));
-    }
-
     /**
-     * The direction of the vector (x, y) from +x.
-     *
-     * @throws IllegalArgumentException for (0, 0), which has no direction (as in the package)
+     * The angle of so many radians, any value (NaN gives an angle whose cosine and sine are NaN, as in the package).
+     * Within rounding of a multiple of pi/2 one of the cosine and sine is a rounding error of an exact 0, at most an
+     * ulp of the argument: the caller meant that quarter turn, whose cosine and sine are 0 and +-1 exactly. Worked out
+     * in the constructor, making nothing else: a swinging flipper makes an angle at every tick.
      */
-    public Angle(double x, double y) {
-        this(ofVector(x, y));
-    }
-
-    private Angle(Direction direction) {
-        this.cos = direction.cos;
-        this.sin = direction.sin;
-    }
-
-    private static Direction ofRadians(double radians) {
+    public Angle(double radians) {
         double c = StrictMath.cos(radians);
         double s = StrictMath.sin(radians);
-        // Within rounding of a multiple of pi/2 one of them is a rounding error of an exact 0, at most an ulp of
-        // the argument: the caller meant that quarter turn, whose cosine and sine are 0 and +-1 exactly.
         double rounding = Math.ulp(radians);
         if (Math.abs(c) <= rounding) {
             c = 0.0;
@@ -76,15 +61,27 @@ public final class Angle implements Serializable, Comparable<Angle> {
             s = 0.0;
             c = Math.signum(c);
         }
-        return new Direction(c, s);
+        this.cos = c;
+        this.sin = s;
     }
 
-    private static Direction ofVector(double x, double y) {
+    /**
+     * The direction of the vector (x, y) from +x.
+     *
+     * @throws IllegalArgumentException for (0, 0), which has no direction (as in the package)
+     */
+    public Angle(double x, double y) {
         if (x == 0 && y == 0) {
             throw new IllegalArgumentException("the vector (0, 0) has no direction");
         }
         double length = StrictMath.hypot(x, y);
-        return new Direction(x / length, y / length);
+        this.cos = x / length;
+        this.sin = y / length;
+    }
+
+    private Angle(Direction direction) {
+        this.cos = direction.cos;
+        this.sin = direction.sin;
     }
 
     public double cos() {
