@@ -270,18 +270,15 @@ public final class Flipper extends TurningBar implements FlipperView {
         double up = kind() == GizmoKind.LEFT_FLIPPER ? -1 : 1;
         Angle turn = new Angle(up * Math.toRadians(degrees));
         Vect pivot = restShape.circles().get(PIVOT_CIRCLE).getCenter();
-        // By index into arrays, not streams: a swinging flipper turns its shape at every tick.
-        List<LineSegment> segments = restShape.segments();
-        LineSegment[] turnedSegments = new LineSegment[segments.size()];
-        for (int i = 0; i < turnedSegments.length; i++) {
-            turnedSegments[i] = Geometry.rotateAround(segments.get(i), pivot, turn);
-        }
-        List<Circle> circles = restShape.circles();
-        Circle[] turnedCircles = new Circle[circles.size()];
-        for (int i = 0; i < turnedCircles.length; i++) {
-            turnedCircles[i] = Geometry.rotateAround(circles.get(i), pivot, turn);
-        }
-        return new Shape(List.of(turnedSegments), List.of(turnedCircles));
+        // Its two sides and two round ends (buildShape), each turned, straight into the shape's lists: a swinging
+        // flipper turns its shape at every tick.
+        List<LineSegment> sides = restShape.segments();
+        List<Circle> ends = restShape.circles();
+        return new Shape(
+                List.of(Geometry.rotateAround(sides.get(0), pivot, turn),
+                        Geometry.rotateAround(sides.get(1), pivot, turn)),
+                List.of(Geometry.rotateAround(ends.get(0), pivot, turn),
+                        Geometry.rotateAround(ends.get(1), pivot, turn)));
     }
 
     @Override
