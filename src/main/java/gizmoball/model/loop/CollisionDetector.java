@@ -43,6 +43,12 @@ final class CollisionDetector {
 
     /** {@link LoopSettings#rotatingSearchSlices()}. */
     private final int rotatingSearchSlices;
+    /**
+     * The last rotating search's physics-lib and the foresight it was made with: the balls asked in one search share
+     * the time left, so one is made per foresight, not per ball and moving shape.
+     */
+    private GeometryInterface rotating;
+    private double rotatingForesight = Double.NaN;
 
     /** @param finishedBalls balls that move no more this tick (SEED), treated as at rest */
     CollisionDetector(LoopView view, FinishedBalls finishedBalls, LoopSettings settings) {
@@ -219,7 +225,7 @@ final class CollisionDetector {
         Vect pivot = moving.pivot();
         Shape now = moving.shape();
         // The rotating search looks only as far as it must: to the end of the swing or of the window.
-        GeometryInterface rotating = new GeometryImpl(Math.min(swingLeft, window), rotatingSearchSlices);
+        GeometryInterface rotating = rotatingSearch(Math.min(swingLeft, window));
         for (int i = 0; i < now.segments().size(); i++) {
             LineSegment side = now.segments().get(i);
             double time = rotating.timeUntilRotatingWallCollision(side, pivot, omega, circle, velocity);
@@ -256,6 +262,15 @@ final class CollisionDetector {
         if (swingLeft < window && !still) {
             againstStillShape(ball, swingLeft, gizmo, moving.shapeAtStop(), earliest);
         }
+    }
+
+    /** physics-lib with the rotating search looking {@code foresight} seconds ahead. */
+    private GeometryInterface rotatingSearch(double foresight) {
+        if (foresight != rotatingForesight) {
+            rotating = new GeometryImpl(foresight, rotatingSearchSlices);
+            rotatingForesight = foresight;
+        }
+        return rotating;
     }
 
     /** The ball's circle where it will be after {@code delay} seconds at {@code velocity}: its own for none. */

@@ -57,6 +57,8 @@ final class CollisionSchedule {
     /** {@link LoopSettings#scheduleBlock()}. */
     private final int blockSize;
     private final Best best = new Best();
+    /** What {@link #next} found, set afresh by each search (read before the next). */
+    private final Collision found = new Collision();
     /**
      * By slot, the slots whose known ball collision has been with that ball (some since replaced): forgetting a ball
      * looks only at those, not at every ball.
@@ -222,7 +224,7 @@ final class CollisionSchedule {
             return null;
         }
         Contact contact = best.withScene ? withScene[best.slot] : withBalls[best.slot];
-        return new Collision(best.time, bySlot[best.slot], contact);
+        return found.set(best.time, bySlot[best.slot], contact);
     }
 
     /** The earliest {@code at} of the known collisions of the awake balls in places [first, end). */

@@ -404,7 +404,12 @@ final class Contacts {
         Vect normal = known.find(ball.x(), ball.y(), fromX, fromY);
         if (normal == null) {
             double inverse = 1 / distance;
-            normal = new Vect(offsetX * inverse, offsetY * inverse);
+            double nx = offsetX * inverse + 0.0;   // as new Vect(offsetX * inverse, offsetY * inverse) holds them
+            double ny = offsetY * inverse + 0.0;
+            normal = known.same(nx, ny);
+            if (normal == null) {
+                normal = new Vect(nx, ny);
+            }
             known.keep(ball.x(), ball.y(), fromX, fromY, normal);
         }
         if (look == Look.QUERY) {

@@ -3,12 +3,11 @@ package gizmoball.model.loop;
 /** Keeps the earliest collision offered within a time limit; near-ties go to circles (segment ends, corners). */
 final class Earliest {
     private double limit;
-    /** The earliest offer so far (ball null: none); its {@link Collision} is made only when asked for. */
+    /** The earliest offer so far (ball null: none). */
     private double time;
     private Ball ball;
     private Contact contact;
     private boolean circle;
-    private Collision collision;
 
     Earliest(double limit) {
         this.limit = limit;
@@ -19,7 +18,6 @@ final class Earliest {
         limit = newLimit;
         ball = null;
         contact = null;
-        collision = null;
     }
 
     void offer(double time, Ball ball, Contact contact, boolean isCircle) {
@@ -31,7 +29,6 @@ final class Earliest {
             this.ball = ball;
             this.contact = contact;
             this.circle = isCircle;
-            this.collision = null;
         }
     }
 
@@ -50,7 +47,7 @@ final class Earliest {
         return ball == null ? limit : Math.min(limit, time + Tolerances.TIME_TIE);
     }
 
-    /** What the earliest offer meets, or null: none (read with {@link #time()}, its {@link Collision} is not made). */
+    /** What the earliest offer meets, or null: none (read with {@link #time()}). */
     Contact contact() {
         return ball == null ? null : contact;
     }
@@ -58,14 +55,6 @@ final class Earliest {
     /** Seconds until the earliest offer, when there is one ({@link #contact()} not null). */
     double time() {
         return time;
-    }
-
-    /** The earliest offer, or null. */
-    Collision collision() {
-        if (collision == null && ball != null) {
-            collision = new Collision(time, ball, contact);
-        }
-        return collision;
     }
 
     boolean isCircle() {

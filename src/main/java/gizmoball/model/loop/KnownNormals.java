@@ -29,6 +29,19 @@ final class KnownNormals {
         return null;
     }
 
+    /**
+     * A kept normal whose components are (nx, ny) exactly, or null: a ball sliding along a flat surface moves every
+     * tick, but its normal there is most often the same to the last bit, and the same vector serves.
+     */
+    Vect same(double nx, double ny) {
+        for (int i = 0; i < KEPT; i++) {
+            if (normals[i] != null && normals[i].x() == nx && normals[i].y() == ny) {
+                return normals[i];
+            }
+        }
+        return null;
+    }
+
     /** Keeps the normal given for a centre at (x, y) and a surface point at (px, py). */
     void keep(double x, double y, double px, double py, Vect normal) {
         ballX[next] = x;

@@ -343,8 +343,8 @@ public final class TickRun {
                     step.detector.againstBall(ball, other, lookAhead, earliest);
                 }
             }
-            if (earliest.collision() != null) {
-                in = earliest.collision().time();
+            if (earliest.contact() != null) {
+                in = earliest.time();
                 at = ball.position().plus(ball.velocity().times(in));
             }
         }
