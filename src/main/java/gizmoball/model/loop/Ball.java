@@ -210,9 +210,9 @@ public final class Ball implements BallView {
         /** A tick in which something may have given it energy: a moving shape, a booster, a portal, another ball. */
         long mayGainIn;
         long bouncedIn;
-        /** The normal of the last elastic bounce, when {@link #bouncedIn} is this tick, or its opposite. */
-        Vect normal;
-        boolean opposite;
+        /** The normal of the last elastic bounce, when {@link #bouncedIn} is this tick (as a {@code Vect} holds it). */
+        double normalX;
+        double normalY;
         /** Its group's index while the tick's groups are formed. */
         int group;
     }

@@ -30,17 +30,23 @@ final class BallPairs {
     Struck resolve(Ball ball, Ball other) {
         step.energy.mayGain(ball);   // energy moves between them
         step.energy.mayGain(other);
-        // ball.position().minus(other.position()).unitSize(), and the approach along it, on the components
-        Vect normal = Components.unit(ball.x() - other.x() + 0.0, ball.y() - other.y() + 0.0);
+        // ball.position().minus(other.position()).unitSize() (Components.unit), and the approach along it, on the
+        // components: a bounce makes no normal vector
+        double dx = ball.x() - other.x() + 0.0;
+        double dy = ball.y() - other.y() + 0.0;
+        double length = Components.length(dx, dy);
+        double normalX = length == 0 ? 0 : dx / length + 0.0;
+        double normalY = length == 0 ? 0 : dy / length + 0.0;
         Vect theirs = step.detector.motion(other);
         double rx = ball.vx() - theirs.x() + 0.0;
         double ry = ball.vy() - theirs.y() + 0.0;
-        double approach = -(rx * normal.x() + ry * normal.y());
+        double approach = -(rx * normalX + ry * normalY);
         boolean slow = approach <= step.pressingSpeed();
         Struck.OtherBall struck = other.asStruck();
         if (slow && (Contacts.supports(other, ball) || Contacts.supports(ball, other))) {
             restAgainst(ball, other);
             restAgainst(other, ball);
+            Vect normal = new Vect(normalX, normalY);
             if (-ball.velocity().minus(other.velocity()).dot(normal) > Tolerances.ROUNDING_SPEED) {
                 pressTogether(ball, other, normal);
             }
@@ -60,8 +66,8 @@ final class BallPairs {
                 other.velocity());
         ball.setVelocity(after.v1);
         other.setVelocity(after.v2);
-        step.energy.bounced(ball, normal, true);
-        step.energy.bouncedOpposite(other, normal);
+        step.energy.bounced(ball, normalX, normalY);
+        step.energy.bounced(other, -normalX + 0.0, -normalY + 0.0);   // normal.neg()
         step.energy.met(ball, other);
         return struck;
     }

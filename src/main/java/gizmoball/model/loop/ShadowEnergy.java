@@ -1,6 +1,7 @@
 package gizmoball.model.loop;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.function.Function;
 
@@ -32,9 +33,13 @@ final class ShadowEnergy {
     private final List<Ball> pairs = new ArrayList<>();
     /** The groups of {@link #restore()}, by index: lists kept from tick to tick. */
     private final List<List<Ball>> groups = new ArrayList<>();
-    /** The balls of a group that take a correction, and the direction each takes, side by side. */
+    /** The balls of a group that take a correction, and the direction each takes, side by side (kept, grown). */
     private final List<Ball> correctable = new ArrayList<>();
-    private final List<Vect> directions = new ArrayList<>();
+    private double[] directionsX = new double[0];
+    private double[] directionsY = new double[0];
+    /** What {@link #direction} found. */
+    private double directionX;
+    private double directionY;
     /** {@link LoopSettings#slidingPart()}. */
     private final double slidingPart;
 
@@ -94,25 +99,26 @@ final class ShadowEnergy {
             lost(ball);
             return;
         }
-        noteBounce(ball, normal, false);
+        bounced(ball, normal.x(), normal.y());
+    }
+
+    /** An elastic bounce off the ball whose normal is {@code normal} (the other of a pair): {@code normal.neg()}. */
+    void bouncedOpposite(Ball ball, Vect normal) {
+        bounced(ball, -normal.x() + 0.0, -normal.y() + 0.0);
     }
 
     /**
-     * An elastic bounce off the ball whose normal is {@code normal} (the other of a pair): the opposite normal, made
-     * only if the correction reads it, not at every bounce of a pile.
+     * An elastic bounce with the normal (normalX, normalY), as a {@code Vect} holds it: the books keep the components,
+     * so a pair's bounce, reckoned on them, makes no vector.
      */
-    void bouncedOpposite(Ball ball, Vect normal) {
-        noteBounce(ball, normal, true);
-    }
-
-    private void noteBounce(Ball ball, Vect normal, boolean opposite) {
+    void bounced(Ball ball, double normalX, double normalY) {
         Ball.EnergyMarks marks = ball.energyMarks();
         if (marks.bouncedIn != tick) {
             marks.bouncedIn = tick;
             bouncers.add(ball);
         }
-        marks.normal = normal;
-        marks.opposite = opposite;
+        marks.normalX = normalX;
+        marks.normalY = normalY;
     }
 
     /** Two balls bounced off each other: their energy is kept together, not each one's. */
@@ -121,14 +127,6 @@ final class ShadowEnergy {
         pairs.add(other);
     }
 
-    /** The normal of the ball's last elastic bounce this tick, or null. */
-    private Vect elasticNormal(Ball ball) {
-        Ball.EnergyMarks marks = ball.energyMarks();
-        if (marks.bouncedIn != tick) {
-            return null;
-        }
-        return marks.opposite ? marks.normal.neg() : marks.normal;
-    }
 
     /**
      * Adjusts each group of balls that met each other (or a ball alone). Ball-ball collisions conserve a group's
@@ -215,17 +213,23 @@ final class ShadowEnergy {
      * The direction a ball's correction takes: the normal of its last bounce, or for a ball that slides on contacts
      * that normal's part along them, so that the correction never presses it into them nor lifts it off (a ball
      * sliding down a slope into a wall goes back up the slope). Null where no such part is left: two contacts that
-     * hold it in the plane (a ball lying in a notch, met by another), and it takes no correction.
+     * hold it in the plane (a ball lying in a notch, met by another), and it takes no correction. Returns whether it
+     * has one, found in ({@link #directionX}, {@link #directionY}) as a {@code Vect} would hold it.
      */
-    private Vect direction(Ball ball, Function<Ball, List<Vect>> contactNormals) {
-        Vect normal = elasticNormal(ball);
+    private boolean direction(Ball ball, Function<Ball, List<Vect>> contactNormals) {
+        Ball.EnergyMarks marks = ball.energyMarks();
+        if (marks.bouncedIn != tick) {
+            return false;   // no elastic bounce this tick
+        }
         List<Vect> contacts = contactNormals.apply(ball);
-        if (normal == null || contacts.isEmpty()) {
-            return normal;
+        if (contacts.isEmpty()) {
+            directionX = marks.normalX;
+            directionY = marks.normalY;
+            return true;
         }
         // along = along.minus(c.times(along.dot(c))) for each contact c, on the components with Vect's + 0.0
-        double alongX = normal.x();
-        double alongY = normal.y();
+        double alongX = marks.normalX;
+        double alongY = marks.normalY;
         for (int i = 0; i < contacts.size(); i++) {
             Vect c = contacts.get(i);
             double part = alongX * c.x() + alongY * c.y();
@@ -235,12 +239,17 @@ final class ShadowEnergy {
         for (int i = 0; i < contacts.size(); i++) {
             Vect c = contacts.get(i);
             if (Math.abs(alongX * c.x() + alongY * c.y()) > Tolerances.TANGENT_ROUNDING) {
-                return null;   // not along all of them at once
+                return false;   // not along all of them at once
             }
         }
         double length = Components.length(alongX, alongY);
+        if (length < slidingPart) {
+            return false;
+        }
         double inverse = 1 / length;
-        return length < slidingPart ? null : new Vect(alongX * inverse, alongY * inverse);
+        directionX = alongX * inverse + 0.0;
+        directionY = alongY * inverse + 0.0;
+        return true;
     }
 
     /**
@@ -275,7 +284,6 @@ final class ShadowEnergy {
         double along = 0;
         double target = 0;
         correctable.clear();
-        directions.clear();
         for (int i = 0; i < group.size(); i++) {
             Ball ball = group.get(i);
             Ball.EnergyMarks marks = ball.energyMarks();
@@ -286,21 +294,26 @@ final class ShadowEnergy {
             double wy = ball.vy() + hy + 0.0;
             squares += wx * wx + wy * wy;
             target += 2 * (marks.atStart + (gravity.x() * ball.x() + gravity.y() * ball.y()));
-            Vect direction = direction(ball, contactNormals);
-            if (direction != null) {
+            if (direction(ball, contactNormals)) {
+                int k = correctable.size();
+                if (directionsX.length == k) {
+                    directionsX = Arrays.copyOf(directionsX, 2 * k + 1);
+                    directionsY = Arrays.copyOf(directionsY, 2 * k + 1);
+                }
                 correctable.add(ball);
-                directions.add(direction);
-                along += wx * direction.x() + wy * direction.y();
+                directionsX[k] = directionX;
+                directionsY[k] = directionY;
+                along += wx * directionX + wy * directionY;
             }
         }
-        if (directions.isEmpty()) {
+        if (correctable.isEmpty()) {
             return;
         }
         // A bounce at a fraction s of the tick changing v by dv moves S by (s - 1/2) dt g . dv, at most dt |g| |v_n|
         // for an elastic one: a correction of about |g| dt along the bounce's normal. Twice that allows for a few
         // bounces in one tick and a sliding ball's correction along its surface.
         double timingSpeed = 2 * gravity.length() * dt;
-        int n = directions.size();
+        int n = correctable.size();
         double discriminant = along * along - n * (squares - target);
         if (discriminant < 0) {
             scaleAlone(group, contactNormals, squares, target, timingSpeed);
@@ -310,16 +323,14 @@ final class ShadowEnergy {
         double lambda = Math.abs(-along + root) <= Math.abs(-along - root) ? (-along + root) / n : (-along - root) / n;
         for (int i = 0; i < n; i++) {
             Ball ball = correctable.get(i);
-            Vect direction = directions.get(i);
-            double normalSpeed = ball.vx() * direction.x() + ball.vy() * direction.y();
+            double normalSpeed = ball.vx() * directionsX[i] + ball.vy() * directionsY[i];
             if (normalSpeed + lambda < 0 || Math.abs(lambda) > Math.max(normalSpeed / 2, timingSpeed)) {
                 return;   // not a rounding of the bounce timing: leave the group alone
             }
         }
         for (int i = 0; i < n; i++) {
             Ball ball = correctable.get(i);
-            Vect direction = directions.get(i);
-            ball.setVelocity(ball.vx() + (direction.x() * lambda + 0.0), ball.vy() + (direction.y() * lambda + 0.0));
+            ball.setVelocity(ball.vx() + (directionsX[i] * lambda + 0.0), ball.vy() + (directionsY[i] * lambda + 0.0));
         }
     }
 }
