@@ -15,12 +15,16 @@ import java.awt.Color;
 import java.awt.Dimension;
 import java.awt.FlowLayout;
 import java.awt.GridBagLayout;
+import java.awt.Window;
+import java.awt.event.WindowAdapter;
+import java.awt.event.WindowEvent;
 import java.util.Map;
 import java.util.Optional;
 import javax.swing.BorderFactory;
 import javax.swing.JButton;
 import javax.swing.JColorChooser;
 import javax.swing.JComponent;
+import javax.swing.JDialog;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JTextField;
@@ -62,8 +66,7 @@ final class ColourRows {
         JButton choose = new JButton("Choose...");
         choose.setName("gizmo.colour.choose");
         choose.addActionListener(e -> {
-            // Over the window, centred on it (over the panel it opened beside the window).
-            Color chosen = JColorChooser.showDialog(SwingUtilities.getWindowAncestor(rows),
+            Color chosen = chooseColour(SwingUtilities.getWindowAncestor(rows),
                     "Colour of " + controller.selected().orElse(""), swatch.getBackground());
             if (chosen != null) {
                 apply(PropertyEdits.hex(Rgb.of(chosen.getRGB())));
@@ -84,5 +87,25 @@ final class ColourRows {
     private void apply(String text) {
         controller.selectedGizmo().ifPresent(g -> fields.applied(controller.properties().setColour(g.name(), text),
                 Map.of(colour, text)));
+    }
+
+    /**
+     * The colour chosen in a modal chooser over the window, centred on it (over the panel it opened beside the window),
+     * or null if cancelled: {@code JColorChooser.showDialog}, centred again once it is open, as an X server without a
+     * window manager has been seen to leave it at the screen's corner (a CI run of WindowLayoutGuiTest).
+     */
+    private static Color chooseColour(Window window, String title, Color initial) {
+        JColorChooser pane = new JColorChooser(initial);
+        Color[] chosen = new Color[1];
+        JDialog dialog = JColorChooser.createDialog(window, title, true, pane, ok -> chosen[0] = pane.getColor(), null);
+        dialog.addWindowListener(new WindowAdapter() {
+            @Override
+            public void windowOpened(WindowEvent opened) {
+                dialog.setLocationRelativeTo(window);
+            }
+        });
+        dialog.setVisible(true);   // modal: returns once closed
+        dialog.dispose();
+        return chosen[0];
     }
 }
