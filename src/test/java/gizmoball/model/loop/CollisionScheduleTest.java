@@ -43,7 +43,8 @@ class CollisionScheduleTest {
             }
         }
         List<Ball> free = new ArrayList<>(LoopViews.of(board).balls());
-        CollisionDetector detector = new CollisionDetector(LoopViews.of(board), new FinishedBalls(), LoopSettings.STANDARD);
+        CollisionDetector detector = new CollisionDetector(LoopViews.of(board), new FinishedBalls(),
+                LoopSettings.STANDARD);
         CollisionSchedule schedule = new CollisionSchedule(detector, new BallGrid(), LoopSettings.STANDARD);
         schedule.file(free, 0);
         double tick = 0.25;
