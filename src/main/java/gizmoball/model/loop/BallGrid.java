@@ -94,6 +94,16 @@ public final class BallGrid {
         sped(ball, speed);
     }
 
+    /**
+     * The ball in {@code slot} is filed there no more (it went elsewhere than it could move to, and is filed again in
+     * another slot): its place in its cell's chain stays, filed at no place, so the test on where a ball was filed
+     * passes it over in every query.
+     */
+    void remove(int slot) {
+        filedX[slot] = Double.POSITIVE_INFINITY;
+        filedY[slot] = Double.POSITIVE_INFINITY;
+    }
+
     /** The filed ball moves at {@code speed} (L/s) now: its cell's balls may go farther. */
     void sped(Ball ball, double speed) {
         int slot = ball.slot();

@@ -39,7 +39,10 @@ final class CollisionSchedule {
      * again, in slot order, which reading the bits gives without sorting.
      */
     private long[] unknown = new long[0];
-    /** The awake balls' slots in board order (which is slot order), found again after the awake balls change. */
+    /**
+     * The awake balls' slots in board order, found again after the awake balls change (slot order too, but for balls
+     * filed since the tick's filing, which take the next slots).
+     */
     private int[] awakeSlots = new int[0];
     private int awakeCount;
     private boolean[] isAwake = new boolean[0];
@@ -158,6 +161,17 @@ final class CollisionSchedule {
         fastest = Math.max(fastest, speed);
         grid.add(ball, speed);
         awakeStale = true;
+    }
+
+    /**
+     * The filed ball is somewhere its motion did not take it (an absorber took it and fired it, a portal moved it),
+     * {@code elapsed} seconds into the tick: it is filed afresh in the next slot, as {@link #add} files a freed ball,
+     * and its old slot is filed nowhere. What was to meet it must have been forgotten ({@link #forget}) when it left;
+     * every other known collision stands.
+     */
+    void refile(Ball ball, double elapsed) {
+        grid.remove(ball.slot());
+        add(ball, elapsed);
     }
 
     /** Which balls are awake changed (a wake-up, a capture, a new filing): found again before the next search. */
@@ -414,9 +428,10 @@ final class CollisionSchedule {
     }
 
     /**
-     * Into {@code into}, in slot order (the board's order), every filed ball whose centre lies now, {@code elapsed}
-     * seconds into the tick, within {@code within} of the ball's along x and along y, the ball itself too: a question
-     * of the cells around it, where asking every ball on the board cost a cluster of 32 balls 6,400 tests at 200 balls.
+     * Into {@code into}, in slot order (the board's, but for balls filed since the filing), every filed ball whose
+     * centre lies now, {@code elapsed} seconds into the tick, within {@code within} of the ball's along x and along y,
+     * the ball itself too: a question of the cells around it, where asking every ball on the board cost a cluster of
+     * 32 balls 6,400 tests at 200 balls.
      */
     void filedNear(Ball ball, double within, double elapsed, List<Ball> into) {
         into.clear();

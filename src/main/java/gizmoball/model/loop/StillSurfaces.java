@@ -85,7 +85,7 @@ final class StillSurfaces {
                 out.centre().x() + margin, out.centre().y() + margin);
         step.energy.lost(ball);   // its height changed: the shadow energy leaves it alone
         step.energy.mayGain(ball);
-        step.sceneChanged();
+        step.ballMoved(ball);
     }
 
     /**

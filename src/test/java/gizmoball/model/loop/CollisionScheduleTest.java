@@ -12,17 +12,19 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 
+import physics.Vect;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
 /**
  * The schedule's bookkeeping against asking everything afresh: after any sequence of collisions, each followed by
- * new velocities for the balls involved (what stage 4 does), it names the same next collision at the same time.
+ * new velocities for the balls involved (what stage 4 does), and balls carried away now and then and filed afresh,
+ * it names the same next collision at the same time.
  */
 class CollisionScheduleTest {
 
     @ParameterizedTest(name = "seed {0}")
-    @ValueSource(longs = {31, 32, 33, 34})
+    @ValueSource(longs = {31, 32, 33, 34, 35, 36, 37, 38})
     void knowsTheSameNextCollisionAsAFreshSchedule(long seed) {
         Random random = new Random(seed);
         Board board = new Board();
@@ -52,9 +54,13 @@ class CollisionScheduleTest {
         int step = 0;
         for (; step < 200 && elapsed < tick; step++) {
             Collision kept = schedule.next(free, elapsed, tick - elapsed);
+            int[] keptSlots = free.stream().mapToInt(Ball::slot).toArray();
             CollisionSchedule afresh = new CollisionSchedule(detector, new BallGrid(), LoopSettings.STANDARD);
             afresh.file(free, elapsed);
             Collision fresh = afresh.next(free, elapsed, tick - elapsed);
+            for (int i = 0; i < free.size(); i++) {
+                free.get(i).setSlot(keptSlots[i]);   // a ball carries its slot in one schedule: the kept one's
+            }
             String where = "seed " + seed + " step " + step;
             if (fresh == null) {
                 assertThat(kept).as(where).isNull();
@@ -70,8 +76,46 @@ class CollisionScheduleTest {
             if (kept.contact() instanceof Contact.OtherBall other) {
                 changeVelocity(other.other(), random, schedule);
             }
+            if (step % 3 == 1) {
+                carryAway(free.get(random.nextInt(free.size())), free, random, schedule, elapsed);
+            }
+            findsEachNearBallOnce(free.get(random.nextInt(free.size())), free, schedule, elapsed);
         }
         assertThat(step).as("collisions compared").isGreaterThan(50);
+    }
+
+    /**
+     * The ball goes where its motion could not take it (as an absorber firing the ball it just caught, or a portal,
+     * moves it): to a free place, drawn at random, near another ball, so that the pair meets soon if it is found.
+     */
+    private static void carryAway(Ball ball, List<Ball> free, Random random, CollisionSchedule schedule,
+                                  double elapsed) {
+        for (int attempt = 0; attempt < 100; attempt++) {
+            Ball near = free.get(random.nextInt(free.size()));
+            double angle = 2 * Math.PI * random.nextDouble();
+            double x = near.x() + 3 * Arena.BALL_RADIUS * Math.cos(angle);
+            double y = near.y() + 3 * Arena.BALL_RADIUS * Math.sin(angle);
+            if (near != ball && x > 1 && x < Arena.SIZE - 1 && y > 1 && y < Arena.SIZE - 1
+                    && free.stream().allMatch(other -> other == ball
+                            || Math.hypot(other.x() - x, other.y() - y) > 2.5 * Arena.BALL_RADIUS)) {
+                schedule.forget(ball);
+                ball.moveTo(new Vect(x, y));
+                schedule.refile(ball, elapsed);
+                return;
+            }
+        }
+    }
+
+    /** The balls filed near a ball are those within the distance along x and y, each once (a cluster's balls). */
+    private static void findsEachNearBallOnce(Ball ball, List<Ball> free, CollisionSchedule schedule,
+                                              double elapsed) {
+        double within = 1.5;
+        List<Ball> found = new ArrayList<>();
+        schedule.filedNear(ball, within, elapsed, found);
+        List<Ball> expected = free.stream()
+                .filter(other -> Math.abs(other.x() - ball.x()) <= within && Math.abs(other.y() - ball.y()) <= within)
+                .toList();
+        assertThat(found).as("near " + ball).doesNotHaveDuplicates().containsAll(expected);
     }
 
     /** Reversed (and rescaled), the velocity leads away from what the ball touches, as a bounce's would. */
