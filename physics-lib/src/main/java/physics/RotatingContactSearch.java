@@ -151,9 +151,13 @@ final class RotatingContactSearch {
         double t = 0;
         evaluate(t);
         Region region = classify(null, 0);
+        // |u| at the slice's start: a slice the loop leaves without returning ends with t = sliceEnd exactly, so the
+        // next one starts where this one's end was measured (one hypot a slice, not two)
+        double fromPivotAtT = fromPivot(t);
         for (int slice = 0, steps = 0; slice < slices; slice++) {
             double sliceEnd = slice == slices - 1 ? foresight : foresight * (slice + 1) / slices;
-            double farthest = Math.max(fromPivot(t), fromPivot(sliceEnd));
+            double fromPivotAtEnd = fromPivot(sliceEnd);
+            double farthest = Math.max(fromPivotAtT, fromPivotAtEnd);
             double lipschitz = speed + spin * farthest;
             double curvature = 2 * spin * speed + w * w * farthest;
             while (true) {
@@ -174,6 +178,7 @@ final class RotatingContactSearch {
                 evaluate(t);
                 region = classify(region, beyondBefore);
             }
+            fromPivotAtT = fromPivotAtEnd;
         }
         return Double.POSITIVE_INFINITY;
     }
