@@ -156,8 +156,13 @@ final class ClusterSolve {
             noteElasticBounces(cluster, result);
         }
         Struck hit = noteImpacts(collision, cluster, impact, result);
-        if (woke || !stalled.isEmpty()) {
-            step.sceneChanged();
+        if (woke) {
+            // What it woke lies still, as every known collision took it; what the solve set moving was asked again
+            // above, and the balls woken under it, never asked while asleep, ask when the schedule next looks.
+            step.findAwake();
+        }
+        for (MovingShape shape : stalled) {
+            step.movingShapeChanged(shape);
         }
         return hit;
     }

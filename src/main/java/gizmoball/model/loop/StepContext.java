@@ -111,12 +111,6 @@ final class StepContext {
         return startTime + elapsed;
     }
 
-    /** A trigger, a capture, a stall or a wake changed the scene: which balls move, and what they can hit. */
-    void sceneChanged() {
-        findAwake();
-        schedule.file(freeBalls(), elapsed);   // filing forgets every known collision
-    }
-
     /**
      * The ball left play (an absorber holds it, a sink took it): only what was going to meet it asks again; the
      * scene and every other ball's collisions stand.
