@@ -161,8 +161,10 @@ final class ClusterSolve {
             // above, and the balls woken under it, never asked while asleep, ask when the schedule next looks.
             step.findAwake();
         }
-        for (MovingShape shape : stalled) {
-            step.movingShapeChanged(shape);
+        if (!stalled.isEmpty()) {   // (an iterator over none would still be made)
+            for (MovingShape shape : stalled) {
+                step.movingShapeChanged(shape);
+            }
         }
         return hit;
     }
