@@ -171,13 +171,15 @@ final class CollisionSchedule {
     }
 
     /**
-     * The filed ball is somewhere its motion did not take it (an absorber took it and fired it, a portal moved it),
+     * The ball is somewhere its motion did not take it (an absorber took it and fired it, a portal moved it),
      * {@code elapsed} seconds into the tick: it is filed afresh in the next slot, as {@link #add} files a freed ball,
-     * and its old slot is filed nowhere. What was to meet it must have been forgotten ({@link #forget}) when it left;
-     * every other known collision stands.
+     * and its old slot, if it had one in this filing, is filed nowhere. What was to meet it must have been forgotten
+     * ({@link #forget}) when it left; every other known collision stands.
      */
     void refile(Ball ball, double elapsed) {
-        grid.remove(ball.slot());
+        if (isFiled(ball)) {
+            grid.remove(ball.slot());
+        }
         add(ball, elapsed);
     }
 

@@ -192,11 +192,7 @@ final class StepContext {
     void ballMoved(Ball ball) {
         findAwake();
         schedule.forget(ball);
-        if (schedule.isFiled(ball)) {
-            schedule.refile(ball, elapsed);
-        } else {
-            schedule.add(ball, elapsed);
-        }
+        schedule.refile(ball, elapsed);
     }
 
     /** The awake balls, found again only when a ball's state may have changed since they were last found. */
