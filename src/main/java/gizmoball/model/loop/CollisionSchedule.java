@@ -65,7 +65,7 @@ final class CollisionSchedule {
     private boolean[] blockStale = new boolean[0];
     /** {@link LoopSettings#scheduleBlock()}. */
     private final int blockSize;
-    private final Best best = new Best();
+    private final NearTies best = new NearTies();
     /** What {@link #next} found, set afresh by each search (read before the next). */
     private final Collision found = new Collision();
     /**
@@ -214,40 +214,44 @@ final class CollisionSchedule {
     /**
      * The earliest collision of the awake balls within the window, {@code elapsed} seconds into the tick. The balls
      * whose collisions are not known are asked first, in slot order (asking about a ball may tell a later one of a
-     * sooner pair); then every awake ball's known collisions are offered in board order, near-ties going to circles as
-     * {@link Earliest} has it. A block of balls whose earliest known collision is later than the best so far by more
-     * than {@link Tolerances#TIME_TIE} is passed over: {@link Earliest#better} refuses every offer of it, so the search
-     * finds what offering them all would.
+     * sooner pair). Then the earliest known time is found from the blocks' earliest, and of the known collisions no
+     * later than it by {@link Tolerances#TIME_TIE} (near-ties) the first circle in board order is taken, else the first
+     * (each ball's with the scene before its with balls): a rule that does not depend on the order of the search, so
+     * it reads only the blocks that hold a near-tie.
      */
     Collision next(List<Ball> awake, double elapsed, double window) {
         if (awakeStale) {
             findAwake(awake);
         }
         askTheUnknown(elapsed, window);
-        best.reset(elapsed, window);
-        for (int block = 0, first = 0; first < awakeCount; block++, first += blockSize) {
-            int end = Math.min(first + blockSize, awakeCount);
+        int blocks = (awakeCount + blockSize - 1) / blockSize;
+        double earliest = Double.POSITIVE_INFINITY;
+        for (int block = 0; block < blocks; block++) {
             if (blockStale[block]) {
-                blockEarliest[block] = earliestOf(first, end);
+                int first = block * blockSize;
+                blockEarliest[block] = earliestOf(first, Math.min(first + blockSize, awakeCount));
                 blockStale[block] = false;
             }
-            if (best.refusesAll(blockEarliest[block])) {
-                continue;
-            }
-            for (int k = first; k < end; k++) {
-                if (best.refusesAll(placeEarliest[k])) {
-                    continue;   // as a block is passed over: neither of its offers would be taken
-                }
-                int slot = awakeSlots[k];
-                best.offer(slot, true, sceneAt[slot], sceneCircle[slot]);
-                best.offer(slot, false, ballsAt[slot], ballsCircle[slot]);
-            }
+            earliest = Math.min(earliest, blockEarliest[block]);
         }
-        if (best.slot < 0) {
+        if (earliest == Double.POSITIVE_INFINITY) {
             return null;
         }
-        Contact contact = best.withScene ? withScene[best.slot] : withBalls[best.slot];
-        return found.set(best.time, bySlot[best.slot], contact);
+        best.reset(elapsed, window, earliest);
+        for (int block = 0; block < blocks && !best.foundCircle(); block++) {
+            if (!best.isNearTie(blockEarliest[block])) {
+                continue;
+            }
+            for (int k = block * blockSize, end = Math.min(k + blockSize, awakeCount); k < end; k++) {
+                if (best.isNearTie(placeEarliest[k])) {
+                    int slot = awakeSlots[k];
+                    best.offer(slot, true, sceneAt[slot], sceneCircle[slot]);
+                    best.offer(slot, false, ballsAt[slot], ballsCircle[slot]);
+                }
+            }
+        }
+        Contact contact = best.withScene() ? withScene[best.slot()] : withBalls[best.slot()];
+        return found.set(best.time(), bySlot[best.slot()], contact);
     }
 
     /** The earliest {@code at} of the known collisions of the awake balls in places [first, end). */
@@ -265,50 +269,6 @@ final class CollisionSchedule {
             int place = awakeIndex[slot];
             placeEarliest[place] = Math.min(sceneAt[slot], ballsAt[slot]);
             blockStale[place / blockSize] = true;
-        }
-    }
-
-    /** The earliest known collision offered so far, by slot: with the scene or with a ball. */
-    private static final class Best {
-        private double elapsed;
-        private double window;
-        private int slot;
-        private boolean withScene;
-        private double time;
-        private boolean circle;
-
-        /** Nothing offered yet, {@code elapsed} seconds into the tick, for the window. */
-        void reset(double elapsedNow, double windowNow) {
-            elapsed = elapsedNow;
-            window = windowNow;
-            slot = -1;
-        }
-
-        /** From now, the rounding kept in the window: the time a known collision at {@code at} is offered with. */
-        private double fromNow(double at) {
-            return Math.min(Math.max(0, at - elapsed), window);
-        }
-
-        /**
-         * Whether every offer at {@code earliest} or later is refused: one is offered already, and it is sooner by
-         * more than {@link Tolerances#TIME_TIE} ({@link #fromNow} keeps the order of the times it is given).
-         */
-        boolean refusesAll(double earliest) {
-            return earliest == Double.POSITIVE_INFINITY || slot >= 0 && fromNow(earliest) > time + Tolerances.TIME_TIE;
-        }
-
-        /** A known collision at {@code at} seconds since the tick began; positive infinity: none. */
-        void offer(int offered, boolean scene, double at, boolean isCircle) {
-            if (at == Double.POSITIVE_INFINITY) {
-                return;
-            }
-            double from = fromNow(at);
-            if (Earliest.better(from, isCircle, slot < 0, time, circle)) {
-                slot = offered;
-                withScene = scene;
-                time = from;
-                circle = isCircle;
-            }
         }
     }
 

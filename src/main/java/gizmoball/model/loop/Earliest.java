@@ -34,10 +34,9 @@ final class Earliest {
 
     /**
      * Whether an offer at {@code time} beats the best so far ({@code none}: there is none yet): sooner by more than
-     * {@link Tolerances#TIME_TIE}, or a circle tied with a segment. Also the rule of {@link CollisionSchedule}'s
-     * search.
+     * {@link Tolerances#TIME_TIE}, or a circle tied with a segment.
      */
-    static boolean better(double time, boolean isCircle, boolean none, double bestTime, boolean bestCircle) {
+    private static boolean better(double time, boolean isCircle, boolean none, double bestTime, boolean bestCircle) {
         return none || time < bestTime - Tolerances.TIME_TIE
                 || (time <= bestTime + Tolerances.TIME_TIE && isCircle && !bestCircle);
     }

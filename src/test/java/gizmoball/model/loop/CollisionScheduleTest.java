@@ -85,6 +85,36 @@ class CollisionScheduleTest {
     }
 
     /**
+     * Collisions within {@link Tolerances#TIME_TIE} of the earliest are near-ties: of them the first circle in board
+     * order is taken, else the first, whatever comes later. Ball A meets the left wall 0.5 tie after the earliest, ball
+     * C at the earliest; ball B meets a circle bumper {@code circleAfter} ties after it. A search that let each offer
+     * in board order displace the best by a tie's width took C when B was 1.4 ties late (A, displaced by B, displaced
+     * by C).
+     */
+    @ParameterizedTest(name = "circle {0} ties after the earliest")
+    @ValueSource(doubles = {0.6, 1.4, 3})
+    void takesTheFirstCircleAmongTheNearTiesOfTheEarliest(double circleAfter) throws BoardEditException {
+        double tie = Tolerances.TIME_TIE;
+        double earliest = 1;   // s, at 1 L/s: each ball starts this far, plus its ties, from what it meets
+        Board board = new Board();
+        board.addGizmo(GizmoKind.CIRCLE, "Bumper", 10, 10);
+        board.addBall("A", Arena.BALL_RADIUS + earliest + 0.5 * tie, 3, -1, 0);
+        board.addBall("B", 10.5, 10 - Arena.BALL_RADIUS - earliest - circleAfter * tie, 0, 1);
+        board.addBall("C", Arena.BALL_RADIUS + earliest, 16, -1, 0);
+        List<Ball> free = new ArrayList<>(LoopViews.of(board).balls());
+        CollisionDetector detector = new CollisionDetector(LoopViews.of(board), new FinishedBalls(),
+                LoopSettings.STANDARD);
+        CollisionSchedule schedule = new CollisionSchedule(detector, new BallGrid(), LoopSettings.STANDARD);
+        schedule.file(free, 0);
+
+        Collision next = schedule.next(free, 0, 2);
+
+        String expected = circleAfter <= 1 ? "B" : "A";
+        assertThat(next.ball().name()).isEqualTo(expected);
+        assertThat(next.time()).isCloseTo(earliest + (circleAfter <= 1 ? circleAfter : 0.5) * tie, within(tie / 10));
+    }
+
+    /**
      * The ball goes where its motion could not take it (as an absorber firing the ball it just caught, or a portal,
      * moves it): to a free place, drawn at random, near another ball, so that the pair meets soon if it is found.
      */
