@@ -3,57 +3,57 @@ package gizmoball.model.loop;
 import java.util.Arrays;
 
 /**
- * The broad phase for ball pairs: free balls filed by the cell their centre was in when filed, each cell with the
- * highest speed of its balls since. Positions go stale as balls move on within a tick, so a query widens its radius
- * by how far any ball can have moved since, and passes over a cell whose balls are too slow to come within reach:
- * balls far apart are never asked about each other, and a fast ball does not make every query read the cells of
- * slow ones (docs/design.md, "Detection asks only about what can be reached").
+ * The broad phase for ball pairs: each free ball is filed in every cell that meets its swept box, the box its centre
+ * sweeps from now to the tick's end, widened by its radius and {@link Tolerances#SWEPT_SLACK}. Two balls that touch at
+ * some moment of the tick both lie within a radius of the point midway between their centres, so the cell of that
+ * point holds both: a question about a ball reads only the cells its own box meets, however fast other balls fly
+ * (a grid that filed each ball in one cell had to read every cell a fast ball could come from: 56 cells a question on
+ * {@code slow-200-balls.txt}). See docs/design.md, "Detection asks only about what can be reached".
  *
- * <p>Its books are flat arrays kept from filing to filing and grown when the balls outgrow them: each cell's balls are
- * a chain of slots (first, next), so a query reads ints for the empty cells of its box and touches only the balls it
- * may find, and a filing costs one link per ball, never a list per cell.
+ * <p>A ball whose velocity changes is filed again from where it is: it leaves the cells its new box does not meet and
+ * enters those it did not (mostly none: a slow ball's box stays in the same cells). The balls a question finds come
+ * in the order of the cell each was first filed in (its home: the cell of its centre then), row by row, and then of
+ * their slots: the order of offers, which settles near-ties, does not depend on how the boxes fall.
+ *
+ * <p>Its books are flat arrays kept from tick to tick and grown when the balls or a cell's entries outgrow them, so a
+ * tick in the steady state allocates nothing here.
  */
 public final class BallGrid {
     private static final int CELLS = Arena.SIZE * Arena.SIZE;
     private static final int NONE = -1;
-    /** By cell: the slot of the first and of the last ball filed there ({@link #NONE}: empty). */
-    private final int[] first = new int[CELLS];
-    private final int[] last = new int[CELLS];
-    /** By cell: the highest speed (L/s) of a ball filed there, since it was filed. */
-    private final double[] cellFastest = new double[CELLS];
-    /** By row: the highest speed (L/s) of a ball filed in the row since it was filed, the most of its cells'. */
-    private final double[] rowFastest = new double[Arena.SIZE];
-    /** The cells holding a ball, so that clearing costs the balls filed, not the 400 cells. */
-    private final int[] filled = new int[CELLS];
-    private int filledCount;
-    /** By slot ({@link Ball#slot()}): the ball, the next slot filed in its cell ({@link #NONE}: none), its cell. */
-    private Ball[] bySlot = new Ball[0];
-    private int[] next = new int[0];
-    private int[] cellOfSlot = new int[0];
+    /** L: half the side of a still ball's box beyond its centre. */
+    private static final double HALF = Arena.BALL_RADIUS + Tolerances.SWEPT_SLACK;
+    /** By cell: the slots filed there, and how many. */
+    private final int[][] entrySlots = new int[CELLS][];
+    private final int[] entryCount = new int[CELLS];
     /**
-     * By slot: the centre where the ball was filed, and its highest speed since: a ball farther from a query than
-     * that speed can have closed since is passed over without reading the ball (a read of each ball the cells give
-     * was most of a query's time at 200 balls).
+     * By slot ({@link Ball#slot()}): the ball, its home cell, and the columns and rows of the cells it is filed in, from
+     * first to last ({@link #NONE}: filed nowhere).
      */
-    private double[] filedX = new double[0];
-    private double[] filedY = new double[0];
-    private double[] slotFastest = new double[0];
-    /** What the last {@link #near} found, in its order: {@link #found(int)} for i below its count. */
-    private Ball[] found = new Ball[0];
+    private Ball[] bySlot = new Ball[0];
+    private int[] homeOfSlot = new int[0];
+    private int[] fromColumn = new int[0];
+    private int[] toColumn = new int[0];
+    private int[] fromRow = new int[0];
+    private int[] toRow = new int[0];
+    /** By slot: its speed (L/s) as last filed, for the pair test's bound. */
+    private double[] speedOfSlot = new double[0];
+    /** By slot: the question that last found it, so that a ball in several of a question's cells is found once. */
+    private long[] seenBy = new long[0];
+    private long questions;
+    /** The slots the last {@link #near} found, in its order: {@link #found(int)} for i below its count. */
+    private int[] found = new int[0];
 
     /** Empty; the loop files the balls at each tick. The board keeps one for its loop, not for views. */
     public BallGrid() {
-        Arrays.fill(first, NONE);
+        for (int cell = 0; cell < CELLS; cell++) {
+            entrySlots[cell] = new int[4];
+        }
     }
 
     /** Empty, ready for {@code balls} balls in slots 0 to balls - 1. */
     void clear(int balls) {
-        for (int k = 0; k < filledCount; k++) {
-            first[filled[k]] = NONE;
-            cellFastest[filled[k]] = 0;
-        }
-        filledCount = 0;
-        Arrays.fill(rowFastest, 0);
+        Arrays.fill(entryCount, 0);
         room(balls);
     }
 
@@ -62,107 +62,135 @@ public final class BallGrid {
         if (bySlot.length < balls) {
             int size = Math.max(balls, 2 * bySlot.length);
             bySlot = Arrays.copyOf(bySlot, size);
-            next = Arrays.copyOf(next, size);
-            cellOfSlot = Arrays.copyOf(cellOfSlot, size);
-            filedX = Arrays.copyOf(filedX, size);
-            filedY = Arrays.copyOf(filedY, size);
-            slotFastest = Arrays.copyOf(slotFastest, size);
-            found = new Ball[size];
+            homeOfSlot = Arrays.copyOf(homeOfSlot, size);
+            fromColumn = Arrays.copyOf(fromColumn, size);
+            toColumn = Arrays.copyOf(toColumn, size);
+            fromRow = Arrays.copyOf(fromRow, size);
+            toRow = Arrays.copyOf(toRow, size);
+            speedOfSlot = Arrays.copyOf(speedOfSlot, size);
+            seenBy = Arrays.copyOf(seenBy, size);
+            found = new int[size];
         }
     }
 
-    /** Files the ball, in its slot, where it is now, moving at {@code speed} (L/s): after the balls filed before it. */
-    void add(Ball ball, double speed) {
-        double x = ball.x();
-        double y = ball.y();
-        int index = index(cell(x), cell(y));
+    /**
+     * Files the ball, in its slot, where it is now, its home the cell of its centre, moving at (vx, vy) (L/s), its
+     * speed {@code speed}, for the {@code seconds} left in the tick.
+     */
+    void add(Ball ball, double vx, double vy, double speed, double seconds) {
         int slot = ball.slot();
         room(slot + 1);
-        filedX[slot] = x;
-        filedY[slot] = y;
-        slotFastest[slot] = 0;
-        if (first[index] == NONE) {
-            filled[filledCount++] = index;
-            first[index] = slot;
-        } else {
-            next[last[index]] = slot;
-        }
-        last[index] = slot;
-        next[slot] = NONE;
         bySlot[slot] = ball;
-        cellOfSlot[slot] = index;
-        sped(ball, speed);
+        homeOfSlot[slot] = index(cell(ball.x()), cell(ball.y()));
+        seenBy[slot] = 0;
+        fromColumn[slot] = NONE;
+        moves(ball, vx, vy, speed, seconds);
+    }
+
+    /**
+     * The filed ball moves from where it is now at (vx, vy) (L/s), its speed {@code speed}, for the {@code seconds}
+     * left in the tick: it is filed in the cells of that sweep, and in no other. Its home stays.
+     */
+    void moves(Ball ball, double vx, double vy, double speed, double seconds) {
+        int slot = ball.slot();
+        speedOfSlot[slot] = speed;
+        double x = ball.x();
+        double y = ball.y();
+        double toX = x + vx * seconds;
+        double toY = y + vy * seconds;
+        int x0 = cell(Math.min(x, toX) - HALF);
+        int x1 = cell(Math.max(x, toX) + HALF);
+        int y0 = cell(Math.min(y, toY) - HALF);
+        int y1 = cell(Math.max(y, toY) + HALF);
+        int oldX0 = fromColumn[slot];
+        int oldX1 = toColumn[slot];
+        int oldY0 = fromRow[slot];
+        int oldY1 = toRow[slot];
+        if (oldX0 == x0 && oldX1 == x1 && oldY0 == y0 && oldY1 == y1) {
+            return;
+        }
+        for (int cy = oldY0; oldX0 != NONE && cy <= oldY1; cy++) {
+            for (int cx = oldX0; cx <= oldX1; cx++) {
+                if (cx < x0 || cx > x1 || cy < y0 || cy > y1) {
+                    leave(index(cx, cy), slot);
+                }
+            }
+        }
+        for (int cy = y0; cy <= y1; cy++) {
+            for (int cx = x0; cx <= x1; cx++) {
+                if (oldX0 == NONE || cx < oldX0 || cx > oldX1 || cy < oldY0 || cy > oldY1) {
+                    enter(index(cx, cy), slot);
+                }
+            }
+        }
+        fromColumn[slot] = x0;
+        toColumn[slot] = x1;
+        fromRow[slot] = y0;
+        toRow[slot] = y1;
+    }
+
+    private void enter(int index, int slot) {
+        int count = entryCount[index];
+        if (count == entrySlots[index].length) {
+            entrySlots[index] = Arrays.copyOf(entrySlots[index], 2 * count);
+        }
+        entrySlots[index][count] = slot;
+        entryCount[index] = count + 1;
+    }
+
+    /** Takes the slot out of the cell, the cell's last entry taking its place (the order in a cell is no one's). */
+    private void leave(int index, int slot) {
+        int[] slots = entrySlots[index];
+        int last = entryCount[index] - 1;
+        for (int k = 0; k <= last; k++) {
+            if (slots[k] == slot) {
+                slots[k] = slots[last];
+                entryCount[index] = last;
+                return;
+            }
+        }
     }
 
     /**
      * The ball in {@code slot} is filed there no more (it went elsewhere than it could move to, and is filed again in
-     * another slot): its place in its cell's chain stays, filed at no place, so the test on where a ball was filed
-     * passes it over in every query.
+     * another slot): it leaves its cells.
      */
     void remove(int slot) {
-        filedX[slot] = Double.POSITIVE_INFINITY;
-        filedY[slot] = Double.POSITIVE_INFINITY;
-    }
-
-    /** The filed ball moves at {@code speed} (L/s) now: its cell's balls may go farther. */
-    void sped(Ball ball, double speed) {
-        int slot = ball.slot();
-        slotFastest[slot] = Math.max(slotFastest[slot], speed);
-        int index = cellOfSlot[slot];
-        cellFastest[index] = Math.max(cellFastest[index], speed);
-        rowFastest[index / Arena.SIZE] = Math.max(rowFastest[index / Arena.SIZE], speed);
+        for (int cy = fromRow[slot]; fromColumn[slot] != NONE && cy <= toRow[slot]; cy++) {
+            for (int cx = fromColumn[slot]; cx <= toColumn[slot]; cx++) {
+                leave(index(cx, cy), slot);
+            }
+        }
+        fromColumn[slot] = NONE;
     }
 
     /**
-     * Finds every filed ball whose centre lies now within the square of half-side {@code near} around (x, y) (or of
-     * {@code alone} + f {@code window}, f the ball's own fastest since filing, where that is less), looked
-     * for among the balls filed within {@code reach} of it ({@code reach} covers how far any ball moved since it was
-     * filed), in the order of their cells, row by row, and of their filing in a cell; returns how many
-     * ({@link #found(int)} reads them). The test on where a ball is now keeps out the balls that filed cells bring in
-     * but that lie too far for any pair test to accept: in a pile of 100 balls, three in four of those the cells give.
-     *
-     * <p>A cell is passed over when none of its balls can be within reach of a ball at (x, y) moving at s: they are
-     * no faster than the cell's fastest f, so they are now within f {@code stale} of the cell, and a pair farther
-     * apart than {@code alone} + f {@code window} (alone: 2 r + s window and a margin) cannot meet in the window.
-     * That is the pair test's own bound (the two balls' relative speed is at most s + f), so no pair that could meet
-     * is passed over, and the balls found come in the same order. A row's fastest bounds its cells' the same way: a
-     * row out of that reach is passed over whole, and of the others only the columns within it (and one more each
-     * side, past any rounding) are read, so one fast ball widens only its own row's search, not every row's.
+     * Finds every filed ball whose centre now lies within {@code within} of (x, y) along x and along y, and within
+     * {@code alone} + s {@code window} too, s its speed as filed, looked for in the cells that meet the box from
+     * (x0, y0) to (x1, y1), which must hold any such ball's cell (or, for a question about a moving ball, the cells
+     * its swept box meets: any ball it can touch before the tick ends is filed in one of them). Returns how many
+     * ({@link #found(int)} reads them), in the order of their homes, row by row, and of their slots.
      */
-    int near(double x, double y, double reach, double near, double alone, double window, double stale) {
+    int near(double x0, double y0, double x1, double y1, double x, double y, double within, double alone,
+             double window) {
+        long question = ++questions;
         int count = 0;
-        int x0 = cell(x - reach);
-        int x1 = cell(x + reach);
-        int y0 = cell(y - reach);
-        int y1 = cell(y + reach);
-        for (int cy = y0; cy <= y1; cy++) {
-            double dy = Math.max(0, Math.max(cy - y, y - (cy + 1)));
-            double rowWithin = alone + rowFastest[cy] * window + rowFastest[cy] * stale;
-            if (dy > rowWithin) {
-                continue;
-            }
-            int from = Math.max(x0, cell(x - rowWithin) - 1);
-            int to = Math.min(x1, cell(x + rowWithin) + 1);
-            for (int cx = from, index = index(from, cy); cx <= to; cx++, index++) {
-                int slot = first[index];
-                if (slot == NONE) {
-                    continue;
-                }
-                double fastest = cellFastest[index];
-                double within = alone + fastest * window + fastest * stale;
-                if (dy > within || Math.max(0, Math.max(cx - x, x - (cx + 1))) > within) {
-                    continue;
-                }
-                for (; slot != NONE; slot = next[slot]) {
-                    // The pair test's bound for this ball, no faster than its fastest since filing, if tighter.
-                    double ballNear = Math.min(near, alone + slotFastest[slot] * window);
-                    double moved = slotFastest[slot] * stale + Tolerances.REACH_MARGIN;
-                    if (Math.abs(filedX[slot] - x) > ballNear + moved || Math.abs(filedY[slot] - y) > ballNear + moved) {
-                        continue;   // it cannot have come within reach since it was filed
+        int cx0 = cell(x0);
+        int cx1 = cell(x1);
+        for (int cy = cell(y0), cy1 = cell(y1); cy <= cy1; cy++) {
+            for (int cx = cx0, index = index(cx0, cy); cx <= cx1; cx++, index++) {
+                int[] slots = entrySlots[index];
+                for (int k = 0, n = entryCount[index]; k < n; k++) {
+                    int slot = slots[k];
+                    if (seenBy[slot] == question) {
+                        continue;   // found in another cell
                     }
+                    seenBy[slot] = question;
+                    // The pair test's bound for this ball, if tighter (its own speed, not the fastest ball's).
+                    double ballNear = Math.min(within, alone + speedOfSlot[slot] * window);
                     Ball ball = bySlot[slot];
                     if (Math.abs(ball.x() - x) <= ballNear && Math.abs(ball.y() - y) <= ballNear) {
-                        found[count++] = ball;
+                        count = insert(slot, count);
                     }
                 }
             }
@@ -170,15 +198,36 @@ public final class BallGrid {
         return count;
     }
 
+    /** Puts the slot among the {@code count} found so far, in order of home and slot; returns the new count. */
+    private int insert(int slot, int count) {
+        long key = order(slot);
+        int k = count;
+        for (; k > 0 && order(found[k - 1]) > key; k--) {
+            found[k] = found[k - 1];
+        }
+        found[k] = slot;
+        return count + 1;
+    }
+
+    private long order(int slot) {
+        return (long) homeOfSlot[slot] << 32 | slot;
+    }
+
     /** The {@code i}th ball the last {@link #near} found. */
     Ball found(int i) {
-        return found[i];
+        return bySlot[found[i]];
+    }
+
+    /** L: how far beyond a ball's centre its box reaches when it does not move. */
+    static double halfSide() {
+        return HALF;
     }
 
     private static int index(int cx, int cy) {
         return cy * Arena.SIZE + cx;
     }
 
+    /** The column or row of the coordinate, the outermost one beyond the arena (a NaN in the first). */
     private static int cell(double coordinate) {
         return (int) Math.max(0, Math.min(Arena.SIZE - 1, Math.floor(coordinate)));
     }

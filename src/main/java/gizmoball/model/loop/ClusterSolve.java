@@ -147,7 +147,7 @@ final class ClusterSolve {
                 step.energy.lost(ball);
             }
             if (movedOnlyByRounding(before, afterX, afterY)) {
-                step.schedule.sped(ball);   // its known collisions stand: they move by less than rounding
+                step.schedule.sped(ball, step.elapsed);   // its known collisions stand: they move by less than rounding
             } else {
                 step.changed(ball);
             }
@@ -176,7 +176,7 @@ final class ClusterSolve {
      * little, and what it was to meet stays met; the next tick asks about every ball afresh.
      */
     private static boolean movedOnlyByRounding(Vect before, double afterX, double afterY) {
-        double dx = afterX - before.x();   // CollisionDetector.speedBound(after.minus(before)), on the components
+        double dx = afterX - before.x();   // |after - before|, a plain square root as in CollisionDetector.speedOf
         double dy = afterY - before.y();
         return Math.sqrt(dx * dx + dy * dy) <= Tolerances.ROUNDING_SPEED;
     }

@@ -62,7 +62,15 @@ final class CollisionDetector {
         return resting(ball) ? Vect.ZERO : ball.velocity();
     }
 
-    /** {@link #speedBound} of the ball's {@link #motion}, on its components: the schedule asks it of every ball. */
+    /** Whether the ball moves with its velocity for the rest of the tick (not asleep, nor finished). */
+    boolean moves(Ball ball) {
+        return !resting(ball);
+    }
+
+    /**
+     * The speed of the ball's {@link #motion}, for a reach, which carries {@link Tolerances#REACH_MARGIN}, far above the
+     * rounding: a plain square root, several times cheaper than the overflow-safe hypot behind {@link Vect#length()}.
+     */
     double speedOf(Ball ball) {
         return resting(ball) ? 0 : Math.sqrt(ball.vx() * ball.vx() + ball.vy() * ball.vy());
     }
@@ -70,14 +78,6 @@ final class CollisionDetector {
     /** Whether the ball moves no more in this tick: asleep, or finished. */
     private boolean resting(Ball ball) {
         return ball.isAsleep() || finishedBalls.contains(ball);
-    }
-
-    /**
-     * A speed for a reach, which carries {@link Tolerances#REACH_MARGIN}, far above the rounding: a plain square root,
-     * several times cheaper than the overflow-safe hypot behind {@link Vect#length()}.
-     */
-    static double speedBound(Vect velocity) {
-        return Math.sqrt(velocity.x() * velocity.x() + velocity.y() * velocity.y());
     }
 
     /**
@@ -131,7 +131,7 @@ final class CollisionDetector {
         double gap = Math.sqrt(dx * dx + dy * dy) - 2 * Arena.BALL_RADIUS;
         double speed = Math.sqrt(rx * rx + ry * ry);
         if (gap > speed * window + Tolerances.REACH_MARGIN) {
-            return;   // cannot close the gap within the window (speedBound of the relative velocity)
+            return;   // cannot close the gap within the window (its speed a plain square root, as speedOf's)
         }
         if (!(dx * rx + dy * ry < 0)) {
             return;   // not closing: the distance cannot fall (the API's own first answer is then "never")

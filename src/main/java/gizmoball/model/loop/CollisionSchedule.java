@@ -82,8 +82,9 @@ final class CollisionSchedule {
     private final Earliest pair = new Earliest(0);
     /** The search of one asking ball against the balls near it. */
     private final Earliest againstBalls = new Earliest(0);
-    /** When the grid was filled, and the highest speed of any ball since: how stale its positions can be. */
-    private double filedAt;
+    /** Seconds since the tick began at which it ends: each filing sweeps a ball's box until then. */
+    private double until;
+    /** The highest speed of any ball since the balls were filed (the pair test's bound, with the asking ball's). */
     private double fastest;
 
     CollisionSchedule(CollisionDetector detector, BallGrid grid, LoopSettings settings) {
@@ -92,21 +93,24 @@ final class CollisionSchedule {
         this.blockSize = settings.scheduleBlock();
     }
 
-    /** A tick starts: no ball is filed (a ball forgotten before the first filing is not filed). */
-    void begin() {
+    /**
+     * A tick of {@code seconds} starts: no ball is filed (a ball forgotten before the first filing is not filed).
+     */
+    void begin(double seconds) {
+        until = seconds;
         filed = 0;
         awakeStale = true;
     }
 
     /**
-     * Files every free ball (awake or asleep) where it is now, {@code elapsed} seconds into the tick; every known
-     * collision is forgotten. The books are kept from filing to filing, and from tick to tick, grown when the balls
-     * outgrow them.
+     * Files every free ball (awake or asleep) where it is now, {@code elapsed} seconds into a tick that ends
+     * {@code tickEnd} seconds after it began; every known collision is forgotten. The books are kept from filing to
+     * filing, and from tick to tick, grown when the balls outgrow them.
      */
-    void file(List<Ball> free, double elapsed) {
+    void file(List<Ball> free, double elapsed, double tickEnd) {
         int n = free.size();
         grid.clear(n);
-        filedAt = elapsed;
+        until = tickEnd;
         fastest = 0;
         filed = 0;
         if (bySlot.length < n) {
@@ -116,9 +120,7 @@ final class CollisionSchedule {
             Ball ball = free.get(i);
             bySlot[filed] = ball;
             ball.setSlot(filed++);
-            double speed = detector.speedOf(ball);
-            fastest = Math.max(fastest, speed);
-            grid.add(ball, speed);
+            fileSweep(ball, elapsed, true);
         }
         forgetAll();
         awakeStale = true;
@@ -164,9 +166,7 @@ final class CollisionSchedule {
         pointedAtCount[slot] = 0;
         taken[slot] = false;
         markUnknown(slot);
-        double speed = CollisionDetector.speedBound(detector.motion(ball));
-        fastest = Math.max(fastest, speed);
-        grid.add(ball, speed);
+        fileSweep(ball, elapsed, true);
         awakeStale = true;
     }
 
@@ -188,12 +188,30 @@ final class CollisionSchedule {
         awakeStale = true;
     }
 
-    /** A ball's velocity changed: positions may go stale faster. */
-    void sped(Ball ball) {
+    /** A ball's velocity changed, {@code elapsed} seconds into the tick: its sweep is filed afresh from where it is. */
+    void sped(Ball ball, double elapsed) {
+        if (isFiled(ball)) {
+            fileSweep(ball, elapsed, false);
+        } else {
+            fastest = Math.max(fastest, detector.speedOf(ball));
+        }
+    }
+
+    /**
+     * Files the filed ball's sweep from where it is, {@code elapsed} seconds into the tick, to the tick's end, with the
+     * velocity it moves with ({@code first}: it takes its home cell there).
+     */
+    private void fileSweep(Ball ball, double elapsed, boolean first) {
+        boolean moves = detector.moves(ball);
+        double vx = moves ? ball.vx() : 0;
+        double vy = moves ? ball.vy() : 0;
         double speed = detector.speedOf(ball);
         fastest = Math.max(fastest, speed);
-        if (isFiled(ball)) {
-            grid.sped(ball, speed);
+        double seconds = Math.max(0, until - elapsed);
+        if (first) {
+            grid.add(ball, vx, vy, speed, seconds);
+        } else {
+            grid.moves(ball, vx, vy, speed, seconds);
         }
     }
 
@@ -406,9 +424,10 @@ final class CollisionSchedule {
      */
     void filedNear(Ball ball, double within, double elapsed, List<Ball> into) {
         into.clear();
-        double stale = elapsed - filedAt;
+        double x = ball.x();
+        double y = ball.y();
         double near = within + Tolerances.REACH_MARGIN;
-        int found = grid.near(ball.x(), ball.y(), near + fastest * stale, within, near, 0, stale);
+        int found = grid.near(x - near, y - near, x + near, y + near, x, y, within, within, 0);
         for (int i = 0; i < found; i++) {
             into.add(grid.found(i));
         }
@@ -432,10 +451,17 @@ final class CollisionSchedule {
         double speed = detector.speedOf(ball);
         // No ball farther now than this can meet this one within the window (the pair test's own bound, wider).
         double near = 2 * Arena.BALL_RADIUS + (speed + fastest) * window + Tolerances.REACH_MARGIN;
-        double reach = near + fastest * (elapsed - filedAt);
-        // The same bound for one cell's balls, with twice the margin: rounding can never pass over a pair.
+        // Any ball this one can touch within the window is filed in a cell its swept box meets (BallGrid).
+        boolean moves = detector.moves(ball);
+        double x = ball.x();
+        double y = ball.y();
+        double toX = moves ? x + ball.vx() * window : x;
+        double toY = moves ? y + ball.vy() * window : y;
+        double half = BallGrid.halfSide();
+        // The same bound for each ball found, with its own speed and twice the margin: rounding never passes a pair.
         double alone = 2 * Arena.BALL_RADIUS + speed * window + 2 * Tolerances.REACH_MARGIN;
-        int nearby = grid.near(ball.x(), ball.y(), reach, near, alone, window, elapsed - filedAt);
+        int nearby = grid.near(Math.min(x, toX) - half, Math.min(y, toY) - half, Math.max(x, toX) + half,
+                Math.max(y, toY) + half, x, y, near, alone, window);
         for (int i = 0; i < nearby; i++) {
             Ball other = grid.found(i);
             if (other == ball || other.isCaptured()) {

@@ -89,7 +89,7 @@ final class StepContext {
         gravity = boardGravity;
         tick = TICKS.incrementAndGet();
         energy.begin(gravity, dt, tick);
-        schedule.begin();
+        schedule.begin(seconds);
         finished.clear();
         awake.clear();
         awakeFound = false;
@@ -232,7 +232,7 @@ final class StepContext {
     /** The ball moves differently now: stage 3 asks about it again. */
     void changed(Ball ball) {
         schedule.forget(ball);
-        schedule.sped(ball);
+        schedule.sped(ball, elapsed);
     }
 
     /** The ball keeps the surface as a contact and loses every part of its velocity that presses into its contacts. */

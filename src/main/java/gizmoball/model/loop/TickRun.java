@@ -93,7 +93,7 @@ public final class TickRun {
     /** Stages 3, 2, 4 and 5 from collision to collision, to the end of the tick or the collision cap. */
     private void collide(long since) {
         long mark = since;
-        step.schedule.file(step.freeBalls(), 0);
+        step.schedule.file(step.freeBalls(), 0, step.dt);
         double remaining = step.dt;
         LoopSettings settings = step.settings;
         int maxCollisions = settings.maxCollisionsBase() + settings.maxCollisionsPerBall() * step.awake.size();

@@ -34,6 +34,11 @@ public final class Tolerances {
     static final double SNAP_DEPTH = CONTACT / 10;
     /** L: the margin around a ball's swept box when asking for what it can reach (touching shapes must be found). */
     static final double REACH_MARGIN = 1e-6;
+    /**
+     * L: how far beyond its radius a ball's swept box in the ball grid reaches: far above the rounding of a centre moved
+     * step by step along its velocity, and above a snap onto a surface (at most {@link #CONTACT}).
+     */
+    static final double SWEPT_SLACK = 1e-3;
     /** s: collisions this close in time are simultaneous (the earliest search then prefers a circle). */
     static final double TIME_TIE = 1e-12;
     /**

@@ -48,15 +48,15 @@ class CollisionScheduleTest {
         CollisionDetector detector = new CollisionDetector(LoopViews.of(board), new FinishedBalls(),
                 LoopSettings.STANDARD);
         CollisionSchedule schedule = new CollisionSchedule(detector, new BallGrid(), LoopSettings.STANDARD);
-        schedule.file(free, 0);
         double tick = 0.25;
+        schedule.file(free, 0, tick);
         double elapsed = 0;
         int step = 0;
         for (; step < 200 && elapsed < tick; step++) {
             Collision kept = schedule.next(free, elapsed, tick - elapsed);
             int[] keptSlots = free.stream().mapToInt(Ball::slot).toArray();
             CollisionSchedule afresh = new CollisionSchedule(detector, new BallGrid(), LoopSettings.STANDARD);
-            afresh.file(free, elapsed);
+            afresh.file(free, elapsed, tick);
             Collision fresh = afresh.next(free, elapsed, tick - elapsed);
             for (int i = 0; i < free.size(); i++) {
                 free.get(i).setSlot(keptSlots[i]);   // a ball carries its slot in one schedule: the kept one's
@@ -72,9 +72,9 @@ class CollisionScheduleTest {
                 ball.advance(kept.time());
             }
             elapsed += kept.time();
-            changeVelocity(kept.ball(), random, schedule);
+            changeVelocity(kept.ball(), random, schedule, elapsed);
             if (kept.contact() instanceof Contact.OtherBall other) {
-                changeVelocity(other.other(), random, schedule);
+                changeVelocity(other.other(), random, schedule, elapsed);
             }
             if (step % 3 == 1) {
                 carryAway(free.get(random.nextInt(free.size())), free, random, schedule, elapsed);
@@ -105,7 +105,7 @@ class CollisionScheduleTest {
         CollisionDetector detector = new CollisionDetector(LoopViews.of(board), new FinishedBalls(),
                 LoopSettings.STANDARD);
         CollisionSchedule schedule = new CollisionSchedule(detector, new BallGrid(), LoopSettings.STANDARD);
-        schedule.file(free, 0);
+        schedule.file(free, 0, 2);
 
         Collision next = schedule.next(free, 0, 2);
 
@@ -149,9 +149,9 @@ class CollisionScheduleTest {
     }
 
     /** Reversed (and rescaled), the velocity leads away from what the ball touches, as a bounce's would. */
-    private static void changeVelocity(Ball ball, Random random, CollisionSchedule schedule) {
+    private static void changeVelocity(Ball ball, Random random, CollisionSchedule schedule, double elapsed) {
         ball.setVelocity(ball.velocity().times(-(0.5 + random.nextDouble())));
         schedule.forget(ball);
-        schedule.sped(ball);
+        schedule.sped(ball, elapsed);
     }
 }
