@@ -41,8 +41,13 @@ public final class BallGrid {
     /** By slot: the question that last found it, so that a ball in several of a question's cells is found once. */
     private long[] seenBy = new long[0];
     private long questions;
-    /** The slots the last {@link #near} found, in its order: {@link #found(int)} for i below its count. */
+    /** The slots the last question found, in its order: {@link #found(int)} for i below its count. */
     private int[] found = new int[0];
+    /** The columns and rows of the cells the last {@link #sweep} met, from first to last. */
+    private int sweptFromColumn;
+    private int sweptToColumn;
+    private int sweptFromRow;
+    private int sweptToRow;
 
     /** Empty; the loop files the balls at each tick. The board keeps one for its loop, not for views. */
     public BallGrid() {
@@ -94,14 +99,11 @@ public final class BallGrid {
     void moves(Ball ball, double vx, double vy, double speed, double seconds) {
         int slot = ball.slot();
         speedOfSlot[slot] = speed;
-        double x = ball.x();
-        double y = ball.y();
-        double toX = x + vx * seconds;
-        double toY = y + vy * seconds;
-        int x0 = cell(Math.min(x, toX) - HALF);
-        int x1 = cell(Math.max(x, toX) + HALF);
-        int y0 = cell(Math.min(y, toY) - HALF);
-        int y1 = cell(Math.max(y, toY) + HALF);
+        sweep(ball, vx, vy, seconds);
+        int x0 = sweptFromColumn;
+        int x1 = sweptToColumn;
+        int y0 = sweptFromRow;
+        int y1 = sweptToRow;
         int oldX0 = fromColumn[slot];
         int oldX1 = toColumn[slot];
         int oldY0 = fromRow[slot];
@@ -165,19 +167,47 @@ public final class BallGrid {
     }
 
     /**
-     * Finds every filed ball whose centre now lies within {@code within} of (x, y) along x and along y, and within
-     * {@code alone} + s {@code window} too, s its speed as filed, looked for in the cells that meet the box from
-     * (x0, y0) to (x1, y1), which must hold any such ball's cell (or, for a question about a moving ball, the cells
-     * its swept box meets: any ball it can touch before the tick ends is filed in one of them). Returns how many
-     * ({@link #found(int)} reads them), in the order of their homes, row by row, and of their slots.
+     * The balls that the ball, at (vx, vy) (L/s) for {@code seconds}, can touch within them are filed in the cells of
+     * its own swept box: finds those filed there whose centre now lies within {@code within} of its along x and along
+     * y, and within {@code alone} + s {@code seconds} too, s each one's speed as filed (the ball itself among them).
+     * Returns how many ({@link #found(int)} reads them), in the order of their homes, row by row, and of their slots.
      */
-    int near(double x0, double y0, double x1, double y1, double x, double y, double within, double alone,
-             double window) {
+    int nearSweep(Ball ball, double vx, double vy, double seconds, double within, double alone) {
+        sweep(ball, vx, vy, seconds);
+        return find(sweptFromColumn, sweptToColumn, sweptFromRow, sweptToRow, ball.x(), ball.y(), within, alone,
+                seconds);
+    }
+
+    /**
+     * Finds every filed ball whose centre now lies within {@code within} of (x, y) along x and along y, looked for in
+     * the cells within {@code reach} (at least {@code within}) of it; returns how many, in the order of
+     * {@link #nearSweep}.
+     */
+    int near(double x, double y, double reach, double within) {
+        return find(cell(x - reach), cell(x + reach), cell(y - reach), cell(y + reach), x, y, within, within, 0);
+    }
+
+    /** The columns and rows of the cells that meet the ball's swept box, into the swept fields. */
+    private void sweep(Ball ball, double vx, double vy, double seconds) {
+        double x = ball.x();
+        double y = ball.y();
+        double toX = x + vx * seconds;
+        double toY = y + vy * seconds;
+        sweptFromColumn = cell(Math.min(x, toX) - HALF);
+        sweptToColumn = cell(Math.max(x, toX) + HALF);
+        sweptFromRow = cell(Math.min(y, toY) - HALF);
+        sweptToRow = cell(Math.max(y, toY) + HALF);
+    }
+
+    /**
+     * The balls filed in columns cx0 to cx1 of rows cy0 to cy1 whose centre lies within the smaller of {@code within}
+     * and {@code alone} + s {@code window} of (x, y) along x and along y, s each one's speed as filed; each once.
+     */
+    private int find(int cx0, int cx1, int cy0, int cy1, double x, double y, double within, double alone,
+                     double window) {
         long question = ++questions;
         int count = 0;
-        int cx0 = cell(x0);
-        int cx1 = cell(x1);
-        for (int cy = cell(y0), cy1 = cell(y1); cy <= cy1; cy++) {
+        for (int cy = cy0; cy <= cy1; cy++) {
             for (int cx = cx0, index = index(cx0, cy); cx <= cx1; cx++, index++) {
                 int[] slots = entrySlots[index];
                 for (int k = 0, n = entryCount[index]; k < n; k++) {
@@ -213,14 +243,9 @@ public final class BallGrid {
         return (long) homeOfSlot[slot] << 32 | slot;
     }
 
-    /** The {@code i}th ball the last {@link #near} found. */
+    /** The {@code i}th ball the last question found. */
     Ball found(int i) {
         return bySlot[found[i]];
-    }
-
-    /** L: how far beyond a ball's centre its box reaches when it does not move. */
-    static double halfSide() {
-        return HALF;
     }
 
     private static int index(int cx, int cy) {

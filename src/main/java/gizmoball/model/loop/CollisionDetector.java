@@ -62,9 +62,14 @@ final class CollisionDetector {
         return resting(ball) ? Vect.ZERO : ball.velocity();
     }
 
-    /** Whether the ball moves with its velocity for the rest of the tick (not asleep, nor finished). */
-    boolean moves(Ball ball) {
-        return !resting(ball);
+    /** The x of the ball's {@link #motion}, without making a vector. */
+    double motionX(Ball ball) {
+        return resting(ball) ? 0 : ball.vx();
+    }
+
+    /** The y of the ball's {@link #motion}, without making a vector. */
+    double motionY(Ball ball) {
+        return resting(ball) ? 0 : ball.vy();
     }
 
     /**
@@ -89,9 +94,8 @@ final class CollisionDetector {
         earliest.reset(window);
         // The ball's circle and velocity as vectors, which the physics API takes, are made (by the ball, once per place
         // and velocity) only when a shape lies in reach: most asks in a tick find none.
-        boolean resting = resting(ball);
-        double vx = resting ? 0 : ball.vx();
-        double vy = resting ? 0 : ball.vy();
+        double vx = motionX(ball);
+        double vy = motionY(ball);
         boolean still = vx == 0 && vy == 0;
         swept.set(ball.x(), ball.y(), vx, vy, window);
         if (!still) {
@@ -175,9 +179,8 @@ final class CollisionDetector {
         Vect velocity = null;
         Circle circle = null;
         // Where the ball is after the delay, and how it moves, for the tests that pass over what it cannot meet
-        boolean resting = resting(ball);
-        double vx = resting ? 0 : ball.vx();
-        double vy = resting ? 0 : ball.vy();
+        double vx = motionX(ball);
+        double vy = motionY(ball);
         double cx = ball.x() + vx * delay;
         double cy = ball.y() + vy * delay;
         List<LineSegment> segments = shape.segments();

@@ -202,9 +202,8 @@ final class CollisionSchedule {
      * velocity it moves with ({@code first}: it takes its home cell there).
      */
     private void fileSweep(Ball ball, double elapsed, boolean first) {
-        boolean moves = detector.moves(ball);
-        double vx = moves ? ball.vx() : 0;
-        double vy = moves ? ball.vy() : 0;
+        double vx = detector.motionX(ball);
+        double vy = detector.motionY(ball);
         double speed = detector.speedOf(ball);
         fastest = Math.max(fastest, speed);
         double seconds = Math.max(0, until - elapsed);
@@ -424,10 +423,8 @@ final class CollisionSchedule {
      */
     void filedNear(Ball ball, double within, double elapsed, List<Ball> into) {
         into.clear();
-        double x = ball.x();
-        double y = ball.y();
         double near = within + Tolerances.REACH_MARGIN;
-        int found = grid.near(x - near, y - near, x + near, y + near, x, y, within, within, 0);
+        int found = grid.near(ball.x(), ball.y(), near, within);
         for (int i = 0; i < found; i++) {
             into.add(grid.found(i));
         }
@@ -451,17 +448,9 @@ final class CollisionSchedule {
         double speed = detector.speedOf(ball);
         // No ball farther now than this can meet this one within the window (the pair test's own bound, wider).
         double near = 2 * Arena.BALL_RADIUS + (speed + fastest) * window + Tolerances.REACH_MARGIN;
-        // Any ball this one can touch within the window is filed in a cell its swept box meets (BallGrid).
-        boolean moves = detector.moves(ball);
-        double x = ball.x();
-        double y = ball.y();
-        double toX = moves ? x + ball.vx() * window : x;
-        double toY = moves ? y + ball.vy() * window : y;
-        double half = BallGrid.halfSide();
         // The same bound for each ball found, with its own speed and twice the margin: rounding never passes a pair.
         double alone = 2 * Arena.BALL_RADIUS + speed * window + 2 * Tolerances.REACH_MARGIN;
-        int nearby = grid.near(Math.min(x, toX) - half, Math.min(y, toY) - half, Math.max(x, toX) + half,
-                Math.max(y, toY) + half, x, y, near, alone, window);
+        int nearby = grid.nearSweep(ball, detector.motionX(ball), detector.motionY(ball), window, near, alone);
         for (int i = 0; i < nearby; i++) {
             Ball other = grid.found(i);
             if (other == ball || other.isCaptured()) {
