@@ -37,8 +37,16 @@ final class ActiveRowsFactor {
      * zero (5% off the pockets of fuzz seeds 1000117 and 1000596, every collision the same).
      */
     private int[] start;
-    /** A forward substitution's values, reused. */
+    /** A forward substitution's values, reused; a back substitution works in it too. */
     private double[] work;
+    /**
+     * The right-hand side of {@link #solveKeeping}, and its forward substitution for factor rows 0 to
+     * {@code forwardDone} - 1: those values depend only on the factor's rows up to theirs, which a joining row leaves
+     * as they are.
+     */
+    private double[] keptBase;
+    private double[] forward;
+    private int forwardDone;
     private int size;
 
     /**
@@ -52,11 +60,13 @@ final class ActiveRowsFactor {
         this.scaleTo = new double[rows];
         this.start = new int[rows];
         this.work = new double[rows];
+        this.forward = new double[rows];
     }
 
     /** Empties the set. */
     void clear() {
         size = 0;
+        forwardDone = 0;
     }
 
     /** Adds {@code row} to the set; false, leaving the set as it was, if the row depends on the rows already in it. */
@@ -102,6 +112,7 @@ final class ActiveRowsFactor {
             scaleTo = Arrays.copyOf(scaleTo, capacity);
             start = Arrays.copyOf(start, capacity);
             work = Arrays.copyOf(work, capacity);
+            forward = Arrays.copyOf(forward, capacity);
         }
     }
 
@@ -117,6 +128,7 @@ final class ActiveRowsFactor {
         }
         int count = size;
         size = first;
+        forwardDone = Math.min(forwardDone, first);
         for (int k = first + 1; k < count; k++) {
             int row = order[k];
             if (keep[row] && !add(row)) {
@@ -131,16 +143,44 @@ final class ActiveRowsFactor {
      * any impulse), in {@code out}; every other row gets 0.
      */
     void solve(double[] base, double[] out) {
-        Arrays.fill(out, 0);
         for (int k = 0; k < size; k++) {
-            int lk = k * (k + 1) / 2;
-            double sum = base[order[k]];
-            for (int p = start[k]; p < k; p++) {
-                sum -= lower[lk + p] * work[p];
-            }
-            work[k] = sum / lower[lk + k];
+            work[k] = forwardRow(k, base, work);
         }
-        // L^T x = work, by rows of L: each unknown, once found, is taken out of the equations above it.
+        backSubstitute(out);
+    }
+
+    /**
+     * {@link #solve} for a right-hand side that stays the same, array and values, until the next {@link #clear}: the
+     * active set asks it once per joining row, and the forward substitution of the rows before is kept, so a join
+     * costs the joining row's forward step and the back substitution, not a whole solve. The same doubles as
+     * {@link #solve}.
+     */
+    void solveKeeping(double[] base, double[] out) {
+        if (base != keptBase) {
+            keptBase = base;
+            forwardDone = 0;
+        }
+        for (int k = forwardDone; k < size; k++) {
+            forward[k] = forwardRow(k, base, forward);
+        }
+        forwardDone = size;
+        System.arraycopy(forward, 0, work, 0, size);
+        backSubstitute(out);
+    }
+
+    /** Factor row k's step of the forward substitution L y = base, from y's values for the rows before it. */
+    private double forwardRow(int k, double[] base, double[] y) {
+        int lk = k * (k + 1) / 2;
+        double sum = base[order[k]];
+        for (int p = start[k]; p < k; p++) {
+            sum -= lower[lk + p] * y[p];
+        }
+        return sum / lower[lk + k];
+    }
+
+    /** L^T x = work, by rows of L: each unknown, once found, is taken out of the equations above it; x into out. */
+    private void backSubstitute(double[] out) {
+        Arrays.fill(out, 0);
         for (int k = size - 1; k >= 0; k--) {
             int lk = k * (k + 1) / 2;
             double x = work[k] / lower[lk + k];

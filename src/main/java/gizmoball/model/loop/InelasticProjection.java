@@ -182,7 +182,7 @@ final class InelasticProjection {
             }
             active[joining] = true;
             for (int inner = 0; inner <= rows; inner++) {
-                factor.solve(base, trial);
+                factor.solveKeeping(base, trial);
                 double step = 1;
                 for (int i = 0; i < rows; i++) {
                     if (active[i] && trial[i] <= 0) {

@@ -89,6 +89,38 @@ class ActiveRowsFactorTest {
         assertSolves(rows, set, base, impulses);
     }
 
+    @RepeatedTest(200)
+    void keepingTheForwardSubstitutionGivesTheSameDoublesAsSolvingAfresh(RepetitionInfo repetition) {
+        SplittableRandom random = new SplittableRandom(repetition.getCurrentRepetition());
+        int balls = 2 + random.nextInt(12);
+        int count = 1 + random.nextInt(2 * balls);
+        Rows rows = Rows.random(random, balls, count);
+        ActiveRowsFactor factor = new ActiveRowsFactor(1, rows::coupling);   // grown as rows join
+        double[] base = new double[count];
+        for (int i = 0; i < count; i++) {
+            base[i] = random.nextDouble(-50, 50);
+        }
+        boolean[] set = new boolean[count];
+        double[] kept = new double[count];
+        double[] afresh = new double[count];
+        for (int step = 0; step < 3 * count; step++) {
+            int row = random.nextInt(count);
+            if (set[row]) {
+                set[row] = false;   // a row leaves: the rows after it join again
+                assertThat(factor.keepOnly(set)).isTrue();
+            } else if (factor.add(row)) {
+                set[row] = true;
+            }
+            if (random.nextInt(4) == 0) {
+                double[] other = random.doubles(count, -50, 50).toArray();
+                factor.solve(other, afresh);   // another right-hand side between (as a swap's)
+            }
+            factor.solveKeeping(base, kept);
+            factor.solve(base, afresh);
+            assertThat(kept).as("step %d", step).containsExactly(afresh);
+        }
+    }
+
     @Test
     void aRowAlongTheSameNormalAsOneInTheSetIsRefused() {
         // A face and the corner flush with it, both touched by ball 0 along one normal.
