@@ -18,10 +18,15 @@ public final class Ball implements BallView {
      * The centre's coordinates (as {@link Vect} keeps them, -0 as +0), and the centre as a {@link Vect}, made when
      * asked for: stage 2 moves every awake ball to each collision of a tick, and a new vector for each of those moves
      * was most of what a tick allocated on a board of 200 balls. The vector is the centre while its coordinates are
-     * (x, y), and is made again when read after a move: a move only writes the two doubles.
+     * the centre's, and is made again when read after a move: a move only writes the two doubles. While the loop has
+     * the ball filed in a tick ({@link #file}), the coordinates are in its slot of {@code motions}, else in (x, y).
+     * The last books it was filed in are kept after the tick (a flag says whether it is filed in them now): storing a
+     * reference costs the collector's write barrier, and the loop files the same books tick after tick.
      */
     private double x;
     private double y;
+    private Motions motions;
+    private boolean filed;
     private Vect position;
     /** Its circle at {@link #position}, made when first asked for there (while its centre is that vector). */
     private Circle circle;
@@ -74,20 +79,22 @@ public final class Ball implements BallView {
     }
 
     public Vect position() {
-        if (position == null || position.x() != x || position.y() != y) {
-            position = new Vect(x, y);
+        double cx = x();
+        double cy = y();
+        if (position == null || position.x() != cx || position.y() != cy) {
+            position = new Vect(cx, cy);
         }
         return position;
     }
 
     /** The centre's x in L, as {@link #position()} has it, without making a vector. */
     double x() {
-        return x;
+        return filed ? motions.x[slot] : x;
     }
 
     /** The centre's y in L, as {@link #position()} has it, without making a vector. */
     double y() {
-        return y;
+        return filed ? motions.y[slot] : y;
     }
 
     public Vect velocity() {
@@ -136,8 +143,40 @@ public final class Ball implements BallView {
         return slot;
     }
 
-    void setSlot(int index) {
+    /**
+     * Filed in {@code slot} of a tick's books: its centre and the velocity it moves with are kept in {@code filed}
+     * until {@link #unfile}, where stage 2 moves them with every other filed ball's.
+     */
+    void file(Motions books, int index) {
+        double cx = x();
+        double cy = y();
         slot = index;
+        if (motions != books) {
+            motions = books;
+        }
+        filed = true;
+        books.use(index);
+        books.x[index] = cx;
+        books.y[index] = cy;
+        motionChanged();
+    }
+
+    /** Its centre back in the ball, where it lies: the tick that filed it is over. */
+    void unfile() {
+        if (filed) {
+            x = x();
+            y = y();
+            filed = false;
+        }
+    }
+
+    /** A filed ball's slot moves with its velocity while it is free and awake, and not at all otherwise. */
+    private void motionChanged() {
+        if (filed) {
+            boolean moves = !captured && !asleep;
+            motions.vx[slot] = moves ? vx : 0;
+            motions.vy[slot] = moves ? vy : 0;
+        }
     }
 
     /** {@link #STATE_CHANGES} now. */
@@ -156,6 +195,7 @@ public final class Ball implements BallView {
         asleep = false;
         stillTime = 0;
         STATE_CHANGES.incrementAndGet();
+        motionChanged();
     }
 
     /** Forgets every contact and wakes: the board changed under the ball. */
@@ -260,8 +300,13 @@ public final class Ball implements BallView {
     /** The centre moves there, the velocity kept. For the board and its loop, not for views. */
     public void moveTo(Vect newPosition) {
         position = newPosition;
-        x = newPosition.x();
-        y = newPosition.y();
+        if (filed) {
+            motions.x[slot] = newPosition.x();
+            motions.y[slot] = newPosition.y();
+        } else {
+            x = newPosition.x();
+            y = newPosition.y();
+        }
     }
 
     /**
@@ -279,10 +324,10 @@ public final class Ball implements BallView {
         }
     }
 
-    /** As {@link #setVelocity(Vect)} with {@code new Vect(newX, newY)}, without making it. */
     /** Speeds squared below this are within {@link Arena#MAX_SPEED} beyond doubt: far more than rounding under it. */
     private static final double CLEARLY_WITHIN_LIMIT = Arena.MAX_SPEED * Arena.MAX_SPEED * (1 - 1e-9);
 
+    /** As {@link #setVelocity(Vect)} with {@code new Vect(newX, newY)}, without making it. */
     void setVelocity(double newX, double newY) {
         double x0 = newX + 0.0;
         double y0 = newY + 0.0;
@@ -297,6 +342,7 @@ public final class Ball implements BallView {
         if (newVx != vx || newVy != vy) {
             vx = newVx;
             vy = newVy;
+            motionChanged();
             // its vector is made when asked for, but for a ball stopped (one at rest on its contacts) or unchanged
             velocity = newVx == 0 && newVy == 0 ? Vect.ZERO : null;
         }
@@ -306,6 +352,7 @@ public final class Ball implements BallView {
         vx = v.x();
         vy = v.y();
         velocity = v;
+        motionChanged();
     }
 
     private static double negligibleToZero(double component) {
@@ -317,8 +364,13 @@ public final class Ball implements BallView {
      * stays where it is (at rest, as a ball lying on its contacts mostly is) keeps its vector and circle.
      */
     void advance(double dt) {
-        x = x + vx * dt + 0.0;
-        y = y + vy * dt + 0.0;
+        if (filed) {
+            motions.x[slot] = motions.x[slot] + vx * dt + 0.0;
+            motions.y[slot] = motions.y[slot] + vy * dt + 0.0;
+        } else {
+            x = x + vx * dt + 0.0;
+            y = y + vy * dt + 0.0;
+        }
     }
 
     /** An absorber holds it there, at rest, its contacts forgotten. For the board, not for views. */
@@ -335,6 +387,7 @@ public final class Ball implements BallView {
         captured = false;
         moveTo(launchPosition);
         setVelocity(launchVelocity);
+        motionChanged();   // free again: its slot moves, whether or not the velocity changed
     }
 
     @Override

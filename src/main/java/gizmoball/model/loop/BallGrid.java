@@ -36,6 +36,8 @@ public final class BallGrid {
     private int[] toColumn = new int[0];
     private int[] fromRow = new int[0];
     private int[] toRow = new int[0];
+    /** The filed balls' centres, by slot (read there, not through each ball: a question reads no ball's object). */
+    private Motions centres = new Motions();
     /** By slot: its speed (L/s) as last filed, for the pair test's bound. */
     private double[] speedOfSlot = new double[0];
     /** By slot: the question that last found it, so that a ball in several of a question's cells is found once. */
@@ -56,9 +58,10 @@ public final class BallGrid {
         }
     }
 
-    /** Empty, ready for {@code balls} balls in slots 0 to balls - 1. */
-    void clear(int balls) {
+    /** Empty, ready for {@code balls} balls in slots 0 to balls - 1, whose centres {@code filed} keeps. */
+    void clear(int balls, Motions filed) {
         Arrays.fill(entryCount, 0);
+        centres = filed;
         room(balls);
     }
 
@@ -207,6 +210,8 @@ public final class BallGrid {
                      double window) {
         long question = ++questions;
         int count = 0;
+        double[] xs = centres.x;
+        double[] ys = centres.y;
         for (int cy = cy0; cy <= cy1; cy++) {
             for (int cx = cx0, index = index(cx0, cy); cx <= cx1; cx++, index++) {
                 int[] slots = entrySlots[index];
@@ -218,8 +223,7 @@ public final class BallGrid {
                     seenBy[slot] = question;
                     // The pair test's bound for this ball, if tighter (its own speed, not the fastest ball's).
                     double ballNear = Math.min(within, alone + speedOfSlot[slot] * window);
-                    Ball ball = bySlot[slot];
-                    if (Math.abs(ball.x() - x) <= ballNear && Math.abs(ball.y() - y) <= ballNear) {
+                    if (Math.abs(xs[slot] - x) <= ballNear && Math.abs(ys[slot] - y) <= ballNear) {
                         count = insert(slot, count);
                     }
                 }

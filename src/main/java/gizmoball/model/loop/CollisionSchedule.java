@@ -78,6 +78,8 @@ final class CollisionSchedule {
     private boolean[] taken = new boolean[0];
     private int filed;
     private final BallGrid grid;
+    /** The filed balls' centres and motions, by slot: where a filed ball keeps its centre until the tick ends. */
+    private final Motions motions;
     /** One pair's search, asked again for every ball near the one asking (its collision is made only when found). */
     private final Earliest pair = new Earliest(0);
     /** The search of one asking ball against the balls near it. */
@@ -87,9 +89,10 @@ final class CollisionSchedule {
     /** The highest speed of any ball since the balls were filed (the pair test's bound, with the asking ball's). */
     private double fastest;
 
-    CollisionSchedule(CollisionDetector detector, BallGrid grid, LoopSettings settings) {
+    CollisionSchedule(CollisionDetector detector, BallGrid grid, Motions motions, LoopSettings settings) {
         this.detector = detector;
         this.grid = grid;
+        this.motions = motions;
         this.blockSize = settings.scheduleBlock();
     }
 
@@ -97,9 +100,21 @@ final class CollisionSchedule {
      * A tick of {@code seconds} starts: no ball is filed (a ball forgotten before the first filing is not filed).
      */
     void begin(double seconds) {
+        unfile();
         until = seconds;
-        filed = 0;
         awakeStale = true;
+    }
+
+    /**
+     * The filing is over (its tick ended, or a new filing begins): each filed ball keeps its centre itself again, and no
+     * ball is filed.
+     */
+    void unfile() {
+        for (int slot = 0; slot < filed; slot++) {
+            bySlot[slot].unfile();
+        }
+        filed = 0;
+        motions.clear();
     }
 
     /**
@@ -109,17 +124,17 @@ final class CollisionSchedule {
      */
     void file(List<Ball> free, double elapsed, double tickEnd) {
         int n = free.size();
-        grid.clear(n);
+        unfile();
+        grid.clear(n, motions);
         until = tickEnd;
         fastest = 0;
-        filed = 0;
         if (bySlot.length < n) {
             grow(Math.max(n, 2 * bySlot.length));
         }
         for (int i = 0; i < n; i++) {   // by index: an iterator would be made at every filing
             Ball ball = free.get(i);
             bySlot[filed] = ball;
-            ball.setSlot(filed++);
+            ball.file(motions, filed++);
             fileSweep(ball, elapsed, true);
         }
         forgetAll();
@@ -160,7 +175,7 @@ final class CollisionSchedule {
         }
         int slot = filed++;
         bySlot[slot] = ball;
-        ball.setSlot(slot);
+        ball.file(motions, slot);
         sceneKnown[slot] = false;
         ballsKnown[slot] = false;
         pointedAtCount[slot] = 0;

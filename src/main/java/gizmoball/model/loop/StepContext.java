@@ -32,6 +32,8 @@ final class StepContext {
     final FinishedBalls finished = new FinishedBalls();
     final CollisionDetector detector;
     final CollisionSchedule schedule;
+    /** The centres and motions of the balls the schedule filed: stage 2 moves them in one pass. */
+    final Motions motions = new Motions();
     /** The balls that move in this tick: neither captured nor asleep. */
     final List<Ball> awake = new ArrayList<>();
     /** Tick numbers, unique across every loop of the process, so that no ball's marks are taken for another tick's. */
@@ -75,7 +77,7 @@ final class StepContext {
         this.settings = settings;
         this.energy = new ShadowEnergy(settings);
         this.detector = new CollisionDetector(view, finished, settings);
-        this.schedule = new CollisionSchedule(detector, view.ballGrid(), settings);
+        this.schedule = new CollisionSchedule(detector, view.ballGrid(), motions, settings);
     }
 
     /** A tick of {@code seconds} starts: the constants are the board's now, every book is empty, every count 0. */
@@ -193,6 +195,24 @@ final class StepContext {
         findAwake();
         schedule.forget(ball);
         schedule.refile(ball, elapsed);
+    }
+
+    /**
+     * Every awake ball straight on for {@code t} seconds, but for the finished ones: in one pass over the filed balls'
+     * {@link Motions} (the sleeping ones still there), or one by one where some have finished (SEED) or none is filed.
+     */
+    void moveBalls(double t) {
+        boolean anyFinished = !finished.isEmpty();
+        if (motions.isUsed() && !anyFinished) {
+            motions.advance(t);
+            return;
+        }
+        for (int i = 0, n = awake.size(); i < n; i++) {
+            Ball ball = awake.get(i);
+            if (!anyFinished || !finished.contains(ball)) {
+                ball.advance(t);
+            }
+        }
     }
 
     /** The awake balls, found again only when a ball's state may have changed since they were last found. */

@@ -87,7 +87,9 @@ public final class TickRun {
         }
         step.actions.forgetSeparatedPairs();
         step.actions.advanceTime(step.dt);
-        return report();
+        TickReport report = report();
+        step.schedule.unfile();   // the balls keep their centres themselves between ticks
+        return report;
     }
 
     /** Stages 3, 2, 4 and 5 from collision to collision, to the end of the tick or the collision cap. */
@@ -217,14 +219,7 @@ public final class TickRun {
         if (t == 0) {
             return;   // a zero-time collision (a chain through touching balls): nothing moves, p + v*0 is p
         }
-        boolean anyFinished = !step.finished.isEmpty();
-        List<Ball> awake = step.awake;
-        for (int i = 0, n = awake.size(); i < n; i++) {
-            Ball ball = awake.get(i);
-            if (!anyFinished || !step.finished.contains(ball)) {
-                ball.advance(t);
-            }
-        }
+        step.moveBalls(t);
         List<MovingShape> shapes = step.view.movingShapes();
         for (int j = 0; j < shapes.size(); j++) {
             MovingShape moving = shapes.get(j);

@@ -47,7 +47,8 @@ class CollisionScheduleTest {
         List<Ball> free = new ArrayList<>(LoopViews.of(board).balls());
         CollisionDetector detector = new CollisionDetector(LoopViews.of(board), new FinishedBalls(),
                 LoopSettings.STANDARD);
-        CollisionSchedule schedule = new CollisionSchedule(detector, new BallGrid(), LoopSettings.STANDARD);
+        Motions motions = new Motions();
+        CollisionSchedule schedule = new CollisionSchedule(detector, new BallGrid(), motions, LoopSettings.STANDARD);
         double tick = 0.25;
         schedule.file(free, 0, tick);
         double elapsed = 0;
@@ -55,11 +56,13 @@ class CollisionScheduleTest {
         for (; step < 200 && elapsed < tick; step++) {
             Collision kept = schedule.next(free, elapsed, tick - elapsed);
             int[] keptSlots = free.stream().mapToInt(Ball::slot).toArray();
-            CollisionSchedule afresh = new CollisionSchedule(detector, new BallGrid(), LoopSettings.STANDARD);
+            CollisionSchedule afresh = new CollisionSchedule(detector, new BallGrid(), new Motions(),
+                    LoopSettings.STANDARD);
             afresh.file(free, elapsed, tick);
             Collision fresh = afresh.next(free, elapsed, tick - elapsed);
+            afresh.unfile();
             for (int i = 0; i < free.size(); i++) {
-                free.get(i).setSlot(keptSlots[i]);   // a ball carries its slot in one schedule: the kept one's
+                free.get(i).file(motions, keptSlots[i]);   // a ball is filed in one schedule: the kept one
             }
             String where = "seed " + seed + " step " + step;
             if (fresh == null) {
@@ -104,7 +107,8 @@ class CollisionScheduleTest {
         List<Ball> free = new ArrayList<>(LoopViews.of(board).balls());
         CollisionDetector detector = new CollisionDetector(LoopViews.of(board), new FinishedBalls(),
                 LoopSettings.STANDARD);
-        CollisionSchedule schedule = new CollisionSchedule(detector, new BallGrid(), LoopSettings.STANDARD);
+        CollisionSchedule schedule = new CollisionSchedule(detector, new BallGrid(), new Motions(),
+                LoopSettings.STANDARD);
         schedule.file(free, 0, 2);
 
         Collision next = schedule.next(free, 0, 2);
