@@ -177,17 +177,29 @@ public final class BallGrid {
      */
     int nearSweep(Ball ball, double vx, double vy, double seconds, double within, double alone) {
         sweep(ball, vx, vy, seconds);
-        return find(sweptFromColumn, sweptToColumn, sweptFromRow, sweptToRow, ball.x(), ball.y(), within, alone,
+        int count = find(sweptFromColumn, sweptToColumn, sweptFromRow, sweptToRow, ball.x(), ball.y(), within, alone,
                 seconds);
+        for (int i = 1; i < count; i++) {   // by insertion: a question finds a few
+            int slot = found[i];
+            long key = order(slot);
+            int k = i;
+            for (; k > 0 && order(found[k - 1]) > key; k--) {
+                found[k] = found[k - 1];
+            }
+            found[k] = slot;
+        }
+        return count;
     }
 
     /**
      * Finds every filed ball whose centre now lies within {@code within} of (x, y) along x and along y, looked for in
-     * the cells within {@code reach} (at least {@code within}) of it; returns how many, in the order of
-     * {@link #nearSweep}.
+     * the cells within {@code reach} (at least {@code within}) of it; returns how many, in slot order (the board's,
+     * but for balls filed since the filing).
      */
     int near(double x, double y, double reach, double within) {
-        return find(cell(x - reach), cell(x + reach), cell(y - reach), cell(y + reach), x, y, within, within, 0);
+        int count = find(cell(x - reach), cell(x + reach), cell(y - reach), cell(y + reach), x, y, within, within, 0);
+        Arrays.sort(found, 0, count);
+        return count;
     }
 
     /** The columns and rows of the cells that meet the ball's swept box, into the swept fields. */
@@ -204,7 +216,8 @@ public final class BallGrid {
 
     /**
      * The balls filed in columns cx0 to cx1 of rows cy0 to cy1 whose centre lies within the smaller of {@code within}
-     * and {@code alone} + s {@code window} of (x, y) along x and along y, s each one's speed as filed; each once.
+     * and {@code alone} + s {@code window} of (x, y) along x and along y, s each one's speed as filed; each once, in
+     * the order the cells give them.
      */
     private int find(int cx0, int cx1, int cy0, int cy1, double x, double y, double within, double alone,
                      double window) {
@@ -224,23 +237,12 @@ public final class BallGrid {
                     // The pair test's bound for this ball, if tighter (its own speed, not the fastest ball's).
                     double ballNear = Math.min(within, alone + speedOfSlot[slot] * window);
                     if (Math.abs(xs[slot] - x) <= ballNear && Math.abs(ys[slot] - y) <= ballNear) {
-                        count = insert(slot, count);
+                        found[count++] = slot;
                     }
                 }
             }
         }
         return count;
-    }
-
-    /** Puts the slot among the {@code count} found so far, in order of home and slot; returns the new count. */
-    private int insert(int slot, int count) {
-        long key = order(slot);
-        int k = count;
-        for (; k > 0 && order(found[k - 1]) > key; k--) {
-            found[k] = found[k - 1];
-        }
-        found[k] = slot;
-        return count + 1;
     }
 
     private long order(int slot) {

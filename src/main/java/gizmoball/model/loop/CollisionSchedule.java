@@ -441,15 +441,7 @@ final class CollisionSchedule {
         double near = within + Tolerances.REACH_MARGIN;
         int found = grid.near(ball.x(), ball.y(), near, within);
         for (int i = 0; i < found; i++) {
-            into.add(grid.found(i));
-        }
-        for (int i = 1; i < into.size(); i++) {
-            Ball next = into.get(i);
-            int k = i;
-            for (; k > 0 && into.get(k - 1).slot() > next.slot(); k--) {
-                into.set(k, into.get(k - 1));
-            }
-            into.set(k, next);
+            into.add(grid.found(i));   // in slot order
         }
     }
 

@@ -165,8 +165,11 @@ final class InelasticProjection {
             int joining = -1;
             double most = ContactRows.SLOP;
             for (int i = 0; i < rows; i++) {
+                if (active[i]) {
+                    continue;
+                }
                 double closing = contacts.closing(vx, vy, i);
-                if (!active[i] && closing > most) {
+                if (closing > most) {
                     most = closing;
                     joining = i;
                 }
@@ -208,7 +211,9 @@ final class InelasticProjection {
             System.arraycopy(startX, 0, vx, 0, balls);
             System.arraycopy(startY, 0, vy, 0, balls);
             for (int i = 0; i < rows; i++) {
-                contacts.addImpulse(vx, vy, i, impulse[i]);
+                if (impulse[i] != 0) {   // no impulse changes no velocity: a start never holds -0.0 for + 0.0 to turn
+                    contacts.addImpulse(vx, vy, i, impulse[i]);
+                }
             }
             if (!active[joining] || contacts.closing(vx, vy, joining) > ContactRows.SLOP) {
                 return SetOutcome.UNSETTLED;   // a row depending on others that they cannot satisfy
