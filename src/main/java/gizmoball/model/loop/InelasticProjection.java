@@ -159,7 +159,7 @@ final class InelasticProjection {
             base[i] = contacts.closing(vx, vy, i);   // what each row closes by, before any impulse
         }
         Arrays.fill(active, 0, rows, false);
-        factor.clear();
+        factor.clear(rows);
         Arrays.fill(impulse, 0, rows, 0);
         for (int round = 0; round < maxRounds; round++) {
             int joining = -1;
