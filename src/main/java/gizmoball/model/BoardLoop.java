@@ -40,6 +40,7 @@ final class BoardLoop implements LoopView, LoopActions {
     private boolean spatialIndexEnabled = true;
     private LoopMode loopMode = LoopMode.CONTINUOUS;
     private double nextCollisionLookAhead;
+    private boolean timesStages;
     private long lastRedrawNanos;
     /** The last {@link #gravity()}, kept while the board's gravity stays the same (a vector is a value). */
     private Vect gravity;
@@ -151,6 +152,15 @@ final class BoardLoop implements LoopView, LoopActions {
             throw new IllegalArgumentException("look-ahead must be finite and not negative, got " + seconds);
         }
         nextCollisionLookAhead = seconds;
+    }
+
+    @Override
+    public boolean timesStages() {
+        return timesStages;
+    }
+
+    void setStageTiming(boolean on) {
+        timesStages = on;
     }
 
     @Override

@@ -80,6 +80,7 @@ public final class PhysicsOverlay implements BoardOverlay {
     public void setEnabled(boolean on) {
         enabled = on;
         board.setNextCollisionLookAhead(on ? LOOK_AHEAD_SECONDS : 0);
+        board.setStageTiming(on);
     }
 
     /**

@@ -57,6 +57,9 @@ public interface LoopView {
     /** How far ahead each tick's report looks for every ball's next collision (0: not at all). */
     double nextCollisionLookAhead();
 
+    /** Whether each tick times its stages for its report (else every stage reads 0 and no clock is read). */
+    boolean timesStages();
+
     /** How long the observers took to redraw after the previous tick. */
     long lastRedrawNanos();
 

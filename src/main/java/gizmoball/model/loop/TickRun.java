@@ -38,8 +38,9 @@ public final class TickRun {
     private final BallPairs pairs;
     private final ClusterSolve clusters;
     private final MovingStrikes strikes;
-    /** Nanoseconds of each stage in this tick, by {@link Stage#ordinal()}. */
+    /** Nanoseconds of each stage in this tick, by {@link Stage#ordinal()}, if it times them ({@link #timing}). */
     private final long[] nanos = new long[Stage.values().length];
+    private boolean timing;
     /**
      * Stage 1's books, kept from tick to tick: the gizmos that took a ball touching them, the gizmos near a ball, a
      * ball's contact normals.
@@ -66,7 +67,8 @@ public final class TickRun {
 
     /** Runs one tick of {@code dt} seconds: the six stages, then the report for the board to keep. */
     public TickReport run(double dt) {
-        long start = System.nanoTime();
+        timing = step.view.timesStages();
+        long start = timing ? System.nanoTime() : 0;
         step.begin(dt);
         strikes.begin();
         Arrays.fill(nanos, 0);
@@ -318,7 +320,7 @@ public final class TickRun {
                 reports.add(ballReport(ball, lookAhead));
             }
         }
-        nanos[Stage.REDRAWING.ordinal()] = view.lastRedrawNanos();
+        nanos[Stage.REDRAWING.ordinal()] = timing ? view.lastRedrawNanos() : 0;
         return new TickReport(view.time(), StageTimes.of(nanos), step.collisions, step.zeroTimeCollisions,
                 step.simultaneousCollisions, step.awake.size(), asleep,
                 step.guards(), step.actions.drainEvents(), reports);
@@ -347,6 +349,9 @@ public final class TickRun {
     }
 
     private long lap(Stage stage, long since) {
+        if (!timing) {
+            return since;
+        }
         long now = System.nanoTime();
         nanos[stage.ordinal()] += now - since;
         return now;
