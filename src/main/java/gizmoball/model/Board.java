@@ -417,7 +417,7 @@ public final class Board {
 
     /**
      * Whether each tick times its stages for its report (off, the default: each reads 0, and no clock is read; read at
-     * every collision, they cost a tick of 200 balls a few percent). The physics overlay turns it on.
+     * every collision, they cost a tick of 200 balls 1-3%). The physics overlay turns it on.
      */
     public void setStageTiming(boolean on) {
         loop.setStageTiming(on);
