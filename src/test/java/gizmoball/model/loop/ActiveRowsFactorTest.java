@@ -61,18 +61,25 @@ class ActiveRowsFactorTest {
         }
     }
 
+    /** Random rows on 2 to 13 balls, up to two a ball, and what each is to close by. */
+    private record Problem(Rows rows, int count, double[] base) {
+        static Problem random(SplittableRandom random) {
+            int balls = 2 + random.nextInt(12);
+            int count = 1 + random.nextInt(2 * balls);
+            Rows rows = Rows.random(random, balls, count);
+            return new Problem(rows, count, random.doubles(count, -50, 50).toArray());
+        }
+    }
+
     @RepeatedTest(200)
     void theImpulsesCloseEveryRowOfTheSetByWhatItAsks(RepetitionInfo repetition) {
         SplittableRandom random = new SplittableRandom(repetition.getCurrentRepetition());
-        int balls = 2 + random.nextInt(12);
-        int count = 1 + random.nextInt(2 * balls);
-        Rows rows = Rows.random(random, balls, count);
+        Problem problem = Problem.random(random);
+        Rows rows = problem.rows();
+        int count = problem.count();
+        double[] base = problem.base();
         ActiveRowsFactor factor = new ActiveRowsFactor(count, rows::coupling);
         boolean[] set = new boolean[count];
-        double[] base = new double[count];
-        for (int i = 0; i < count; i++) {
-            base[i] = random.nextDouble(-50, 50);
-        }
         double[] impulses = new double[count];
         for (int i = 0; i < count; i++) {
             if (factor.add(i)) {
@@ -92,14 +99,10 @@ class ActiveRowsFactorTest {
     @RepeatedTest(200)
     void keepingTheForwardSubstitutionGivesTheSameDoublesAsSolvingAfresh(RepetitionInfo repetition) {
         SplittableRandom random = new SplittableRandom(repetition.getCurrentRepetition());
-        int balls = 2 + random.nextInt(12);
-        int count = 1 + random.nextInt(2 * balls);
-        Rows rows = Rows.random(random, balls, count);
-        ActiveRowsFactor factor = new ActiveRowsFactor(1, rows::coupling);   // grown as rows join
-        double[] base = new double[count];
-        for (int i = 0; i < count; i++) {
-            base[i] = random.nextDouble(-50, 50);
-        }
+        Problem problem = Problem.random(random);
+        int count = problem.count();
+        double[] base = problem.base();
+        ActiveRowsFactor factor = new ActiveRowsFactor(1, problem.rows()::coupling);   // grown as rows join
         boolean[] set = new boolean[count];
         double[] kept = new double[count];
         double[] afresh = new double[count];
