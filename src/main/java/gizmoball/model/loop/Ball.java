@@ -144,8 +144,8 @@ public final class Ball implements BallView {
     }
 
     /**
-     * Filed in {@code slot} of a tick's books: its centre and the velocity it moves with are kept in {@code filed}
-     * until {@link #unfile}, where stage 2 moves them with every other filed ball's.
+     * Filed in slot {@code index} of a tick's {@code books}: its centre and the velocity it moves with are kept there
+     * until {@link #unfile}, and stage 2 moves them with every other filed ball's.
      */
     void file(Motions books, int index) {
         double cx = x();
