@@ -27,10 +27,9 @@ public final class BallGrid {
     private final int[][] entrySlots = new int[CELLS][];
     private final int[] entryCount = new int[CELLS];
     /**
-     * By slot ({@link Ball#slot()}): the ball, its home cell, and the columns and rows of the cells it is filed in, from
-     * first to last ({@link #NONE}: filed nowhere).
+     * By slot ({@link Ball#slot()}; which ball holds a slot is the schedule's to know): its home cell, and the columns
+     * and rows of the cells it is filed in, from first to last ({@link #NONE}: filed nowhere).
      */
-    private Ball[] bySlot = new Ball[0];
     private int[] homeOfSlot = new int[0];
     private int[] fromColumn = new int[0];
     private int[] toColumn = new int[0];
@@ -67,9 +66,8 @@ public final class BallGrid {
 
     /** Books for slots 0 to {@code balls} - 1, what is filed kept. */
     private void room(int balls) {
-        if (bySlot.length < balls) {
-            int size = Math.max(balls, 2 * bySlot.length);
-            bySlot = Arrays.copyOf(bySlot, size);
+        if (homeOfSlot.length < balls) {
+            int size = Math.max(balls, 2 * homeOfSlot.length);
             homeOfSlot = Arrays.copyOf(homeOfSlot, size);
             fromColumn = Arrays.copyOf(fromColumn, size);
             toColumn = Arrays.copyOf(toColumn, size);
@@ -88,7 +86,6 @@ public final class BallGrid {
     void add(Ball ball, double vx, double vy, double speed, double seconds) {
         int slot = ball.slot();
         room(slot + 1);
-        bySlot[slot] = ball;
         homeOfSlot[slot] = index(cell(ball.x()), cell(ball.y()));
         seenBy[slot] = 0;
         fromColumn[slot] = NONE;
@@ -249,9 +246,9 @@ public final class BallGrid {
         return (long) homeOfSlot[slot] << 32 | slot;
     }
 
-    /** The {@code i}th ball the last question found. */
-    Ball found(int i) {
-        return bySlot[found[i]];
+    /** The slot of the {@code i}th ball the last question found. */
+    int found(int i) {
+        return found[i];
     }
 
     private static int index(int cx, int cy) {

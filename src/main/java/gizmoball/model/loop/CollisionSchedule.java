@@ -441,7 +441,7 @@ final class CollisionSchedule {
         double near = within + Tolerances.REACH_MARGIN;
         int found = grid.near(ball.x(), ball.y(), near, within);
         for (int i = 0; i < found; i++) {
-            into.add(grid.found(i));   // in slot order
+            into.add(bySlot[grid.found(i)]);   // in slot order
         }
     }
 
@@ -459,7 +459,7 @@ final class CollisionSchedule {
         double alone = 2 * Arena.BALL_RADIUS + speed * window + 2 * Tolerances.REACH_MARGIN;
         int nearby = grid.nearSweep(ball, detector.motionX(ball), detector.motionY(ball), window, near, alone);
         for (int i = 0; i < nearby; i++) {
-            Ball other = grid.found(i);
+            Ball other = bySlot[grid.found(i)];
             if (other == ball || other.isCaptured()) {
                 continue;
             }
