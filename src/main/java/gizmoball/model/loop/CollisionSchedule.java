@@ -290,7 +290,10 @@ final class CollisionSchedule {
     private double earliestOf(int first, int end) {
         double earliest = Double.POSITIVE_INFINITY;
         for (int k = first; k < end; k++) {
-            earliest = Math.min(earliest, placeEarliest[k]);
+            // a comparison, not Math.min: no time is NaN or -0.0 (Earliest drops NaN; elapsed + a time is +0.0 at least)
+            if (placeEarliest[k] < earliest) {
+                earliest = placeEarliest[k];
+            }
         }
         return earliest;
     }

@@ -32,7 +32,8 @@ final class NearTies {
 
     /** Whether a known collision at {@code at} (seconds since the tick began) is a near-tie of the earliest. */
     boolean isNearTie(double at) {
-        return at != Double.POSITIVE_INFINITY && fromNow(at) <= lastTie;
+        // fromNow(at) <= lastTie without its min and max: lastTie is positive, so max(0, d) <= lastTie is d <= lastTie
+        return at != Double.POSITIVE_INFINITY && (at - elapsed <= lastTie || window <= lastTie);
     }
 
     /** The slot of the offer taken (-1: none yet). */

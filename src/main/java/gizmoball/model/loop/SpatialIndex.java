@@ -1,5 +1,6 @@
 package gizmoball.model.loop;
 
+import gizmoball.model.gizmo.BallTaking;
 import gizmoball.model.gizmo.GizmoBase;
 
 import java.util.ArrayList;
@@ -18,6 +19,8 @@ public final class SpatialIndex {
     private final int[] coveredInColumn = new int[Arena.SIZE];
     /** How many cells are covered in all. */
     private int covered;
+    /** How many of its gizmos take balls out of play ({@link BallTaking#REMOVES}): a board without any asks none. */
+    private int removers;
 
     /** The gizmo covering cell (cx, cy), or null (also outside the board). For the board, not for views. */
     public GizmoBase at(int cx, int cy) {
@@ -32,11 +35,18 @@ public final class SpatialIndex {
     /** The gizmo covers its footprint's cells. For the board, not for views. */
     public void put(GizmoBase gizmo) {
         fill(gizmo, gizmo);
+        removers += gizmo.ballTaking() == BallTaking.REMOVES ? 1 : 0;
     }
 
     /** The gizmo's footprint's cells are free. For the board, not for views. */
     public void remove(GizmoBase gizmo) {
         fill(gizmo, null);
+        removers -= gizmo.ballTaking() == BallTaking.REMOVES ? 1 : 0;
+    }
+
+    /** Whether a gizmo in it takes balls out of play (a sink). For the loop. */
+    boolean holdsRemovers() {
+        return removers > 0;
     }
 
     private void fill(GizmoBase gizmo, GizmoBase value) {

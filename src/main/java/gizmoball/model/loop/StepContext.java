@@ -44,11 +44,17 @@ final class StepContext {
      */
     long tick;
     /**
-     * {@link Ball#stateChanges()} when {@link #awake} and {@link #ballCounts} were last found (a tick starts with
-     * neither found: between ticks balls are added and removed).
+     * {@link Ball#stateChanges()} when {@link #awake} was last found, the board's list of balls it was found in (a ball
+     * added or removed makes a new one) and how many of the free balls slept then: while neither changes, the awake
+     * balls and the sleeping ones are those found, from tick to tick, so a pile asleep is not looked through again.
      */
-    private boolean awakeFound;
     private long awakeFoundAt;
+    private List<Ball> awakeFoundIn;
+    private int asleepAtFind;
+    /**
+     * {@link Ball#stateChanges()} when {@link #ballCounts} were last found (a tick starts with none found: between
+     * ticks balls are added and removed).
+     */
     private BallCounts counts;
     private long countedAt;
     /** Surfaces hit besides the collision's own within the collision just resolved, for stage 5. */
@@ -93,8 +99,6 @@ final class StepContext {
         energy.begin(gravity, dt, tick);
         schedule.begin(seconds);
         finished.clear();
-        awake.clear();
-        awakeFound = false;
         counts = null;
         alsoHit.clear();
         reported.clear();
@@ -218,20 +222,41 @@ final class StepContext {
     /** The awake balls, found again only when a ball's state may have changed since they were last found. */
     void findAwake() {
         long changes = Ball.stateChanges();
-        if (awakeFound && changes == awakeFoundAt) {
+        List<Ball> balls = view.balls();
+        if (awakeFoundIn == balls && changes == awakeFoundAt) {
             return;
         }
-        awakeFound = true;
+        awakeFoundIn = balls;
         awakeFoundAt = changes;
         schedule.awakeChanged();
         awake.clear();
-        List<Ball> balls = view.balls();
+        int asleep = 0;
         for (int b = 0; b < balls.size(); b++) {
             Ball ball = balls.get(b);
-            if (!ball.isCaptured() && !ball.isAsleep()) {
+            if (ball.isCaptured()) {
+                continue;
+            }
+            if (ball.isAsleep()) {
+                asleep++;
+            } else {
                 awake.add(ball);
             }
         }
+        asleepAtFind = asleep;
+    }
+
+    /** How many of the free balls sleep now: as {@link #findAwake} last found, unless a ball's state changed since. */
+    int asleepNow() {
+        List<Ball> balls = view.balls();
+        if (awakeFoundIn == balls && Ball.stateChanges() == awakeFoundAt) {
+            return asleepAtFind;
+        }
+        int asleep = 0;
+        for (int b = 0; b < balls.size(); b++) {
+            Ball ball = balls.get(b);
+            asleep += !ball.isCaptured() && ball.isAsleep() ? 1 : 0;
+        }
+        return asleep;
     }
 
     /** The balls no absorber holds, in board order (a list kept for the tick's filings). */

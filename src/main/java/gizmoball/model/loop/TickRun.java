@@ -188,6 +188,9 @@ public final class TickRun {
      * collision would ever take it.
      */
     private boolean takenOnTouch(Ball ball, List<GizmoBase> took) {
+        if (!step.view.index().holdsRemovers()) {
+            return false;   // no sink on the board: no ball asks the index
+        }
         double x = ball.x();
         double y = ball.y();
         double reach = Arena.BALL_RADIUS + Tolerances.CONTACT;
@@ -305,21 +308,17 @@ public final class TickRun {
     /** Stage 6: the report of this tick; the board hands it to the observers. */
     private TickReport report() {
         LoopView view = step.view;
-        int asleep = 0;
         double lookAhead = view.nextCollisionLookAhead();
-        // Without the look-ahead no ball is reported: no list is made for none.
+        // Without the look-ahead no ball is reported: no list is made for none, and the balls are not looked through.
         List<BallReport> reports = lookAhead > 0 ? new ArrayList<>() : List.of();
         List<Ball> balls = view.balls();
-        for (int b = 0; b < balls.size(); b++) {
+        for (int b = 0; lookAhead > 0 && b < balls.size(); b++) {
             Ball ball = balls.get(b);
-            if (ball.isCaptured()) {
-                continue;
-            }
-            asleep += ball.isAsleep() ? 1 : 0;
-            if (lookAhead > 0) {
+            if (!ball.isCaptured()) {
                 reports.add(ballReport(ball, lookAhead));
             }
         }
+        int asleep = step.asleepNow();
         nanos[Stage.REDRAWING.ordinal()] = timing ? view.lastRedrawNanos() : 0;
         return new TickReport(view.time(), StageTimes.of(nanos), step.collisions, step.zeroTimeCollisions,
                 step.simultaneousCollisions, step.awake.size(), asleep,
