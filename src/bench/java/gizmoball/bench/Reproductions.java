@@ -18,14 +18,17 @@ import java.util.stream.Stream;
 
 /**
  * The boards other sessions found slow or wrong, {@code ../shared/repro/} (issue 39: "no tick over 2 ms on the boards
- * you do not see"): each reproduction played once untimed, so that the compiler has seen its paths, then again with its
- * key script, every tick timed by the thread's CPU clock.
+ * you do not see"): each reproduction played untimed until the compilers have caught up with its paths
+ * ({@link CompilerWarmUp}), then again with its key script, every tick timed by the thread's CPU clock.
  */
 final class Reproductions {
     private static final ThreadMXBean THREADS = ManagementFactory.getThreadMXBean();
 
-    /** One file's timed play: its balls at the end, the mean and slowest tick and the ticks over the fuzz's limit. */
-    record Row(String file, int ticks, int balls, double meanUs, double maxUs, int ticksOver) {
+    /**
+     * One file's timed play, after {@code warmPlays} untimed ones: its balls at the end, the mean and slowest tick and the
+     * ticks over the fuzz's limit.
+     */
+    record Row(String file, int ticks, int warmPlays, int balls, double meanUs, double maxUs, int ticksOver) {
     }
 
     private Reproductions() {
@@ -37,13 +40,14 @@ final class Reproductions {
             rows.add(play(file));
         }
         out.println();
-        out.printf(Locale.ROOT, "Reproductions (%s), each played once untimed, then timed by CPU with its key script%n",
+        out.printf(Locale.ROOT, "Reproductions (%s), each played untimed until the JIT compilers were quiet during a play (warm: "
+                        + "how many plays), then timed by CPU with its key script%n",
                 dir);
-        String format = "%-28s %6s %5s %9s %9s %12s%n";
-        out.printf(Locale.ROOT, format, "file", "ticks", "balls", "mean us", "max us", "ticks > " + Targets.ms(
+        String format = "%-28s %6s %4s %5s %9s %9s %12s%n";
+        out.printf(Locale.ROOT, format, "file", "ticks", "warm", "balls", "mean us", "max us", "ticks > " + Targets.ms(
                 Targets.FUZZ_TICK_NANOS) + " ms");
         for (Row r : rows) {
-            out.printf(Locale.ROOT, format, r.file(), r.ticks(), r.balls(), String.format(Locale.ROOT, "%.1f", r.meanUs()),
+            out.printf(Locale.ROOT, format, r.file(), r.ticks(), r.warmPlays(), r.balls(), String.format(Locale.ROOT, "%.1f", r.meanUs()),
                     String.format(Locale.ROOT, "%.1f", r.maxUs()), r.ticksOver());
         }
         return rows;
@@ -51,9 +55,9 @@ final class Reproductions {
 
     static void write(Path file, List<Row> rows) throws IOException {
         List<String> lines = new ArrayList<>();
-        lines.add("file,ticks,balls_end,cpu_mean_us,cpu_max_us,ticks_over_limit");
+        lines.add("file,ticks,warm_plays,balls_end,cpu_mean_us,cpu_max_us,ticks_over_limit");
         for (Row r : rows) {
-            lines.add(String.format(Locale.ROOT, "%s,%d,%d,%.3f,%.3f,%d", r.file(), r.ticks(), r.balls(), r.meanUs(),
+            lines.add(String.format(Locale.ROOT, "%s,%d,%d,%d,%.3f,%.3f,%d", r.file(), r.ticks(), r.warmPlays(), r.balls(), r.meanUs(),
                     r.maxUs(), r.ticksOver()));
         }
         Files.write(file, lines);
@@ -62,7 +66,8 @@ final class Reproductions {
     private static Row play(Path file) throws IOException {
         String source = file.toString();
         Reproduction reproduction = Reproduction.parse(source, Files.readString(file));
-        playOnce(load(reproduction, source), reproduction, null);
+        Board untimed = load(reproduction, source);
+        int warmPlays = CompilerWarmUp.play(() -> playOnce(untimed.copy(), reproduction, null));
         long[] nanos = new long[reproduction.ticks()];
         Board board = load(reproduction, source);
         playOnce(board, reproduction, nanos);
@@ -74,7 +79,7 @@ final class Reproductions {
             max = Math.max(max, n);
             over += n > Targets.FUZZ_TICK_NANOS ? 1 : 0;
         }
-        return new Row(String.valueOf(file.getFileName()), nanos.length, board.balls().size(),
+        return new Row(String.valueOf(file.getFileName()), nanos.length, warmPlays, board.balls().size(),
                 sum / 1e3 / nanos.length, max / 1e3, over);
     }
 

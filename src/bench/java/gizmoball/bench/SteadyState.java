@@ -65,12 +65,12 @@ final class SteadyState {
     }
 
     /**
-     * One board's window. Times in microseconds, by wall clock and by the thread's CPU clock (a second run of the
+     * One board's window, after {@code warmPlays} throw-away plays of a copy ({@link CompilerWarmUp}). Times in microseconds, by wall clock and by the thread's CPU clock (a second run of the
      * same board; play is deterministic, so it is the same ticks); bytes the ticking thread allocated per tick over
      * the window, in that second run; guards are those fired within the window; the slowest tick is the slowest by CPU
      * time.
      */
-    record Row(String board, int gizmos, int balls, int from, int to, double meanUs, double p99Us, double maxUs,
+    record Row(String board, int gizmos, int balls, int from, int to, int warmPlays, double meanUs, double p99Us, double maxUs,
                double cpuMeanUs, double cpuP99Us, double cpuMaxUs, double bytesPerTick,
                double meanCollisions, int maxCollisions, double meanZeroTime, int maxZeroTime, int awake, int asleep,
                GuardCounts guards, long gcPauses, long gcMillis, int slowestTick, int slowestCollisions,
@@ -296,21 +296,24 @@ final class SteadyState {
     }
 
     /**
-     * A throw-away run of a copy, so that a board does not pay for compiling the loop for what it asks of it: the
-     * 100-ball board measured in a fresh JVM cost 285 us a tick over ticks 3,000-15,000, then 140 and 113 in the
-     * next two runs of the same ticks, as the compiler caught up with its many-ball paths.
+     * Throw-away plays of copies, so that a board does not pay for compiling the loop for what it asks of it
+     * ({@link CompilerWarmUp}): the 100-ball board measured in a fresh JVM cost 285 us a tick over ticks 3,000-15,000,
+     * then 140 and 113 in the next two runs of the same ticks, as the compiler caught up with its many-ball paths.
+     * Returns how many plays it took.
      */
-    static void warmUp(Board board, int ticks) {
-        Board copy = board.copy();
-        for (int i = 0; i < ticks; i++) {
-            copy.tick(DT);
-        }
+    static int warmUp(Board board, int ticks) {
+        return CompilerWarmUp.play(() -> {
+            Board copy = board.copy();
+            for (int i = 0; i < ticks; i++) {
+                copy.tick(DT);
+            }
+        });
     }
 
     /** Ticks the board from 0 to the window's end, timing every tick; statistics over the window only. */
     static Run measure(NamedBoard named, Windows w) {
         Board board = named.board();
-        warmUp(board, w.to());
+        int warmPlays = warmUp(board, w.to());
         CpuWindow cpuRun = cpuPerTick(board.copy(), w);
         long[] cpuWindow = cpuRun.nanos();
         board.setStageTiming(true);   // the wall run gives the stages' split; the CPU run reads no stage clock, as play
@@ -346,7 +349,7 @@ final class SteadyState {
         Arrays.sort(window);
         int n = window.length;
         TickReport last = board.lastTick();
-        Row row = new Row(named.name(), board.gizmos().size(), board.balls().size(), w.from(), w.to(),
+        Row row = new Row(named.name(), board.gizmos().size(), board.balls().size(), w.from(), w.to(), warmPlays,
                 Arrays.stream(window).average().orElse(0) / 1e3, window[p99(n)] / 1e3, window[n - 1] / 1e3, Arrays.stream(cpuWindow).average().orElse(0) / 1e3,
                 cpuWindow[p99(n)] / 1e3, cpuWindow[n - 1] / 1e3, cpuRun.bytesPerTick(), mean(collisions, w.from()), max(collisions, w.from()), mean(zeroTime, w.from()),
                 max(zeroTime, w.from()), last.ballsAwake(), last.ballsAsleep(), guards, gcAtEnd[0] - gcAtStart[0],
@@ -530,20 +533,21 @@ final class SteadyState {
         out.printf(Locale.ROOT, "Steady state at 1/60 s: ticks %,d-%,d after a warm-up of ticks 0-%,d%s; each tick timed "
                         + "alone; guards: fired within the window%n", w.from(), w.to(), w.from(),
                 !w.equals(Windows.FULL) ? " (quick run: shorter windows than the full run's 3,000-15,000)" : "");
-        out.println("                                    ------- wall us ------- -------- CPU us -------");
-        String format = "%-28s %6s %5s %7s %7s %8s %7s %7s %7s %9s %9s %8s %9s %8s %6s %5s %6s %7s %5s %8s%n";
-        out.printf(Locale.ROOT, format, "board", "gizmos", "balls", "mean", "p99", "max", "mean", "p99", "max", "B/tick",
+        out.println("                                         ------- wall us ------- -------- CPU us -------");
+        String format = "%-28s %6s %5s %4s %7s %7s %8s %7s %7s %7s %9s %9s %8s %9s %8s %6s %5s %6s %7s %5s %8s%n";
+        out.printf(Locale.ROOT, format, "board", "gizmos", "balls", "warm", "mean", "p99", "max", "mean", "p99", "max", "B/tick",
                 "coll/tick",
                 "max coll", "zero/tick", "max zero", "asleep", "awake", "wedged", "pinched", "cap", "GCs (ms)");
         for (Row r : rows) {
-            out.printf(Locale.ROOT, format, shortName(r.board()), r.gizmos(), r.balls(), f1(r.meanUs()), f1(r.p99Us()),
+            out.printf(Locale.ROOT, format, shortName(r.board()), r.gizmos(), r.balls(), r.warmPlays(), f1(r.meanUs()), f1(r.p99Us()),
                     f1(r.maxUs()), f1(r.cpuMeanUs()), f1(r.cpuP99Us()), f1(r.cpuMaxUs()),
                     String.format(Locale.ROOT, "%,.0f", r.bytesPerTick()), f2(r.meanCollisions()),
                     r.maxCollisions(), f2(r.meanZeroTime()), r.maxZeroTime(),
                     r.asleep(), r.awake(), r.guards().wedged(), r.guards().pinched(), r.guards().collisionCap(),
                     r.gcPauses() + " (" + r.gcMillis() + ")");
         }
-        out.println("(wall: each tick by System.nanoTime, the model's stage clocks on; CPU: the ticking thread's CPU time "
+        out.println("(warm: throw-away plays of a copy before the window, until the JIT compilers were quiet during one; "
+                + "wall: each tick by System.nanoTime, the model's stage clocks on; CPU: the ticking thread's CPU time "
                 + "of each tick, in a second run, the stage clocks off as in play; "
                 + "B/tick: bytes the ticking thread allocated per tick of the window, in the second run; "
                 + MANY_IN_PLAY + ": ticks " + IN_PLAY.from() + "-" + IN_PLAY.to() + " of a full run, while its balls fly; "
@@ -628,12 +632,12 @@ final class SteadyState {
 
     static void writeRows(Path file, List<Row> rows) throws IOException {
         List<String> lines = new ArrayList<>();
-        lines.add("board,gizmos,balls,from_tick,to_tick,wall_mean_us,wall_p99_us,wall_max_us,cpu_mean_us,cpu_p99_us,cpu_max_us,bytes_per_tick,collisions_per_tick,max_collisions,"
+        lines.add("board,gizmos,balls,from_tick,to_tick,warm_plays,wall_mean_us,wall_p99_us,wall_max_us,cpu_mean_us,cpu_p99_us,cpu_max_us,bytes_per_tick,collisions_per_tick,max_collisions,"
                 + "zero_time_per_tick,max_zero_time,balls_asleep_end,balls_awake_end,guard_wedged,guard_pinched,guard_cap,"
                 + "gc_count,gc_ms");
         for (Row r : rows) {
-            lines.add(String.format(Locale.ROOT, "%s,%d,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.0f,%.4f,%d,%.4f,%d,%d,%d,%d,%d,%d,%d,%d",
-                    r.board(), r.gizmos(), r.balls(), r.from(), r.to(), r.meanUs(), r.p99Us(), r.maxUs(), r.cpuMeanUs(),
+            lines.add(String.format(Locale.ROOT, "%s,%d,%d,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.0f,%.4f,%d,%.4f,%d,%d,%d,%d,%d,%d,%d,%d",
+                    r.board(), r.gizmos(), r.balls(), r.from(), r.to(), r.warmPlays(), r.meanUs(), r.p99Us(), r.maxUs(), r.cpuMeanUs(),
                     r.cpuP99Us(), r.cpuMaxUs(), r.bytesPerTick(),
                     r.meanCollisions(), r.maxCollisions(), r.meanZeroTime(), r.maxZeroTime(), r.asleep(), r.awake(), r.guards().wedged(),
                     r.guards().pinched(), r.guards().collisionCap(), r.gcPauses(), r.gcMillis()));
