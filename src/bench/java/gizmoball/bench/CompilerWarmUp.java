@@ -6,8 +6,8 @@ import java.lang.management.ManagementFactory;
 /**
  * Throw-away plays of a board until the JIT compilers have caught up with its paths, so that what the benchmark times
  * afterwards is the code a long game runs, not the compilers at work. One play was not enough: on 2 cores, the board of
- * 200 balls in play cost 291-376 us a tick in its second play, 240-280 in its fourth and fifth and 200-210 from its
- * eighth on, while the compilers worked during 100% of the first plays' time and about 5% of the eighth's.
+ * 200 balls in play cost about 350 us a tick in its second play, 240-390 in its fourth and fifth and 200-210 in most
+ * plays from its ninth on; the compilers worked as long as each of its first plays lasted, and 5% of the ninth.
  */
 final class CompilerWarmUp {
     /** A play during which the compilers worked less than this part of its wall time ends the warm-up. */
