@@ -25,4 +25,16 @@ public final class Arena {
 
     private Arena() {
     }
+
+    /**
+     * The column or row of the cell that holds the coordinate (L), the outermost one for a coordinate beyond the
+     * square, the first for a NaN: floor clamped to [0, SIZE - 1], by comparisons (each coordinate of a box a ball
+     * sweeps asks, several times a ball and collision).
+     */
+    static int cellOf(double coordinate) {
+        if (coordinate < 1) {
+            return 0;
+        }
+        return coordinate >= SIZE - 1 ? SIZE - 1 : (int) coordinate;   // truncation is floor from 1 on; NaN gives 0
+    }
 }

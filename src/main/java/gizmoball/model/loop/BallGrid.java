@@ -86,7 +86,7 @@ public final class BallGrid {
     void add(Ball ball, double vx, double vy, double speed, double seconds) {
         int slot = ball.slot();
         room(slot + 1);
-        homeOfSlot[slot] = index(cell(ball.x()), cell(ball.y()));
+        homeOfSlot[slot] = index(Arena.cellOf(ball.x()), Arena.cellOf(ball.y()));
         seenBy[slot] = 0;
         fromColumn[slot] = NONE;
         moves(ball, vx, vy, speed, seconds);
@@ -194,7 +194,8 @@ public final class BallGrid {
      * but for balls filed since the filing).
      */
     int near(double x, double y, double reach, double within) {
-        int count = find(cell(x - reach), cell(x + reach), cell(y - reach), cell(y + reach), x, y, within, within, 0);
+        int count = find(Arena.cellOf(x - reach), Arena.cellOf(x + reach), Arena.cellOf(y - reach),
+                Arena.cellOf(y + reach), x, y, within, within, 0);
         Arrays.sort(found, 0, count);
         return count;
     }
@@ -205,10 +206,10 @@ public final class BallGrid {
         double y = ball.y();
         double toX = x + vx * seconds;
         double toY = y + vy * seconds;
-        sweptFromColumn = cell(Math.min(x, toX) - HALF);
-        sweptToColumn = cell(Math.max(x, toX) + HALF);
-        sweptFromRow = cell(Math.min(y, toY) - HALF);
-        sweptToRow = cell(Math.max(y, toY) + HALF);
+        sweptFromColumn = Arena.cellOf(Math.min(x, toX) - HALF);
+        sweptToColumn = Arena.cellOf(Math.max(x, toX) + HALF);
+        sweptFromRow = Arena.cellOf(Math.min(y, toY) - HALF);
+        sweptToRow = Arena.cellOf(Math.max(y, toY) + HALF);
     }
 
     /**
@@ -255,8 +256,4 @@ public final class BallGrid {
         return cy * Arena.SIZE + cx;
     }
 
-    /** The column or row of the coordinate, the outermost one beyond the arena (a NaN in the first). */
-    private static int cell(double coordinate) {
-        return (int) Math.max(0, Math.min(Arena.SIZE - 1, Math.floor(coordinate)));
-    }
 }

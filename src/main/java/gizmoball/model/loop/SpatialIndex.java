@@ -76,10 +76,10 @@ public final class SpatialIndex {
         if (covered == 0) {
             return;
         }
-        int x0 = clampCell(minX);
-        int x1 = clampCell(maxX);
-        int y0 = clampCell(minY);
-        int y1 = clampCell(maxY);
+        int x0 = Arena.cellOf(minX);
+        int x1 = Arena.cellOf(maxX);
+        int y0 = Arena.cellOf(minY);
+        int y1 = Arena.cellOf(maxY);
         for (int cx = x0; cx <= x1; cx++) {
             if (coveredInColumn[cx] == 0) {
                 continue;
@@ -93,7 +93,4 @@ public final class SpatialIndex {
         }
     }
 
-    private static int clampCell(double coordinate) {
-        return (int) Math.max(0, Math.min(Arena.SIZE - 1, Math.floor(coordinate)));
-    }
 }
