@@ -248,4 +248,51 @@ class SleepAndContactTest {
                     within(1e-9));
         }
     }
+
+    /**
+     * The loop keeps the awake balls, and how many sleep, from tick to tick while nothing changes them
+     * ({@code StepContext.findAwake}): after a ball is added, deleted or moved between ticks (the last one deleted
+     * too, which wakes nothing), and as balls fall asleep, each report counts what the balls themselves say, and a ball
+     * added moves in its first tick.
+     */
+    @Test
+    void theBallsAwakeAndAsleepAreCountedAfreshWhenTheyChangeBetweenTicks() {
+        Board board = new Board();
+        board.addBall("A", 5, Board.SIZE - R, 0, 0);
+        board.addBall("B", 10, Board.SIZE - R, 0, 0);
+        countsMatch(board, SETTLE);
+        assertThat(board.lastTick().ballsAsleep()).isEqualTo(2);
+
+        board.addBall("C", 15, 5, 0, 0);   // it falls, and bounces on the elastic floor
+        countsMatch(board, 1);
+        assertThat(ball(board, "C").position().y()).isGreaterThan(5);
+        countsMatch(board, 2 * SETTLE);
+
+        board.delete("C");
+        countsMatch(board, 2 * SETTLE);
+        assertThat(board.lastTick().ballsAsleep()).isEqualTo(2);
+
+        board.moveBall("B", 10, 10);   // off the floor: it wakes and falls
+        countsMatch(board, 1);
+        assertThat(ball(board, "B").position().y()).isGreaterThan(10);
+        assertThat(board.lastTick().ballsAwake()).isPositive();
+        countsMatch(board, 2 * SETTLE);
+
+        board.delete("A");
+        countsMatch(board, 1);
+        board.delete("B");   // the last: no ball is left to wake, so only the board's list of balls says it went
+        countsMatch(board, 1);
+        assertThat(board.lastTick().ballsAwake()).isZero();
+    }
+
+    /** Ticks the board, each report's balls awake and asleep those the balls' own states give. */
+    private static void countsMatch(Board board, int ticks) {
+        for (int i = 0; i < ticks; i++) {
+            board.tick(DT);
+            long asleep = board.balls().stream().filter(b -> !b.isCaptured() && b.isAsleep()).count();
+            long awake = board.balls().stream().filter(b -> !b.isCaptured() && !b.isAsleep()).count();
+            assertThat(board.lastTick().ballsAsleep()).as("asleep, tick %d", i).isEqualTo(asleep);
+            assertThat(board.lastTick().ballsAwake()).as("awake, tick %d", i).isEqualTo(awake);
+        }
+    }
 }
