@@ -25,8 +25,8 @@ final class Reproductions {
     private static final ThreadMXBean THREADS = ManagementFactory.getThreadMXBean();
 
     /**
-     * One file's timed play, after {@code warmPlays} untimed ones: its balls at the end, the mean and slowest tick and the
-     * ticks over the fuzz's limit.
+     * One file's timed play, after {@code warmPlays} untimed ones: its balls at the end, the mean and slowest tick and
+     * the ticks over the fuzz's limit.
      */
     record Row(String file, int ticks, int warmPlays, int balls, double meanUs, double maxUs, int ticksOver) {
     }
@@ -40,15 +40,15 @@ final class Reproductions {
             rows.add(play(file));
         }
         out.println();
-        out.printf(Locale.ROOT, "Reproductions (%s), each played untimed until the JIT compilers were quiet during a play (warm: "
-                        + "how many plays), then timed by CPU with its key script%n",
-                dir);
+        out.printf(Locale.ROOT, "Reproductions (%s), each played untimed until the JIT compilers were quiet during a "
+                + "play (warm: how many plays), then timed by CPU with its key script%n", dir);
         String format = "%-28s %6s %4s %5s %9s %9s %12s%n";
         out.printf(Locale.ROOT, format, "file", "ticks", "warm", "balls", "mean us", "max us", "ticks > " + Targets.ms(
                 Targets.FUZZ_TICK_NANOS) + " ms");
         for (Row r : rows) {
-            out.printf(Locale.ROOT, format, r.file(), r.ticks(), r.warmPlays(), r.balls(), String.format(Locale.ROOT, "%.1f", r.meanUs()),
-                    String.format(Locale.ROOT, "%.1f", r.maxUs()), r.ticksOver());
+            out.printf(Locale.ROOT, format, r.file(), r.ticks(), r.warmPlays(), r.balls(),
+                    String.format(Locale.ROOT, "%.1f", r.meanUs()), String.format(Locale.ROOT, "%.1f", r.maxUs()),
+                    r.ticksOver());
         }
         return rows;
     }
@@ -57,8 +57,8 @@ final class Reproductions {
         List<String> lines = new ArrayList<>();
         lines.add("file,ticks,warm_plays,balls_end,cpu_mean_us,cpu_max_us,ticks_over_limit");
         for (Row r : rows) {
-            lines.add(String.format(Locale.ROOT, "%s,%d,%d,%d,%.3f,%.3f,%d", r.file(), r.ticks(), r.warmPlays(), r.balls(), r.meanUs(),
-                    r.maxUs(), r.ticksOver()));
+            lines.add(String.format(Locale.ROOT, "%s,%d,%d,%d,%.3f,%.3f,%d", r.file(), r.ticks(), r.warmPlays(),
+                    r.balls(), r.meanUs(), r.maxUs(), r.ticksOver()));
         }
         Files.write(file, lines);
     }

@@ -62,13 +62,14 @@ final class ResultsPage {
     void steadyState(List<SteadyState.Row> rows, SteadyState.Windows w) {
         section(String.format(Locale.ROOT, "Steady state: ticks %,d-%,d at 1/60 s, each tick timed alone", w.from(),
                 w.to()));
-        page.append("| board | ticks | warm-up plays | gizmos, balls | wall mean / p99 / max (us) | CPU mean / p99 / max (us) | bytes per tick "
-                + "| collisions per tick: mean, max | zero-time per tick: mean, max | asleep / awake at the end "
+        page.append("| board | ticks | warm-up plays | gizmos, balls | wall mean / p99 / max (us) "
+                + "| CPU mean / p99 / max (us) | bytes per tick | collisions per tick: mean, max "
+                + "| zero-time per tick: mean, max | asleep / awake at the end "
                 + "| guards (wedged, pinched, cap) | GCs (ms) |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
         for (SteadyState.Row r : rows) {
-            page.append(String.format(Locale.ROOT, "| `%s` | %,d-%,d | %d | %d, %d | %s / %s / %s | %s / %s / %s | %,.0f "
-                            + "| %.2f, %d | %.2f, %d | %d / %d | %d, %d, %d | %d (%d) |%n", SteadyState.shortName(r.board()),
-                    r.from(), r.to(), r.warmPlays(), r.gizmos(), r.balls(),
+            page.append(String.format(Locale.ROOT, "| `%s` | %,d-%,d | %d | %d, %d | %s / %s / %s | %s / %s / %s "
+                            + "| %,.0f | %.2f, %d | %.2f, %d | %d / %d | %d, %d, %d | %d (%d) |%n",
+                    SteadyState.shortName(r.board()), r.from(), r.to(), r.warmPlays(), r.gizmos(), r.balls(),
                     us(r.meanUs()), us(r.p99Us()), us(r.maxUs()), us(r.cpuMeanUs()), us(r.cpuP99Us()), us(r.cpuMaxUs()),
                     r.bytesPerTick(),
                     r.meanCollisions(), r.maxCollisions(), r.meanZeroTime(), r.maxZeroTime(), r.asleep(), r.awake(),
@@ -78,8 +79,8 @@ final class ResultsPage {
 
     void reproductions(List<Reproductions.Row> rows) {
         section("Reproductions: each file of `../shared/repro` with its key script, played again, each tick by CPU");
-        page.append("| file | ticks | warm-up plays | balls at the end | CPU mean (us) | CPU max (us) | ticks over " + Targets.ms(
-                Targets.FUZZ_TICK_NANOS) + " ms |\n|---|---|---|---|---|---|---|\n");
+        page.append("| file | ticks | warm-up plays | balls at the end | CPU mean (us) | CPU max (us) | ticks over "
+                + Targets.ms(Targets.FUZZ_TICK_NANOS) + " ms |\n|---|---|---|---|---|---|---|\n");
         for (Reproductions.Row r : rows) {
             page.append(String.format(Locale.ROOT, "| `%s` | %,d | %d | %d | %s | %s | %,d |%n", r.file(), r.ticks(),
                     r.warmPlays(), r.balls(),

@@ -65,13 +65,14 @@ final class SteadyState {
     }
 
     /**
-     * One board's window, after {@code warmPlays} throw-away plays of a copy ({@link CompilerWarmUp}). Times in microseconds, by wall clock and by the thread's CPU clock (a second run of the
-     * same board; play is deterministic, so it is the same ticks); bytes the ticking thread allocated per tick over
+     * One board's window, after {@code warmPlays} throw-away plays of a copy ({@link CompilerWarmUp}). Times in
+     * microseconds, by wall clock and by the thread's CPU clock (a second run of the same board; play is
+     * deterministic, so it is the same ticks); bytes the ticking thread allocated per tick over
      * the window, in that second run; guards are those fired within the window; the slowest tick is the slowest by CPU
      * time.
      */
-    record Row(String board, int gizmos, int balls, int from, int to, int warmPlays, double meanUs, double p99Us, double maxUs,
-               double cpuMeanUs, double cpuP99Us, double cpuMaxUs, double bytesPerTick,
+    record Row(String board, int gizmos, int balls, int from, int to, int warmPlays, double meanUs, double p99Us,
+               double maxUs, double cpuMeanUs, double cpuP99Us, double cpuMaxUs, double bytesPerTick,
                double meanCollisions, int maxCollisions, double meanZeroTime, int maxZeroTime, int awake, int asleep,
                GuardCounts guards, long gcPauses, long gcMillis, int slowestTick, int slowestCollisions,
                Map<Stage, Long> stageNanos) {
@@ -535,8 +536,8 @@ final class SteadyState {
                 !w.equals(Windows.FULL) ? " (quick run: shorter windows than the full run's 3,000-15,000)" : "");
         out.println("                                         ------- wall us ------- -------- CPU us -------");
         String format = "%-28s %6s %5s %4s %7s %7s %8s %7s %7s %7s %9s %9s %8s %9s %8s %6s %5s %6s %7s %5s %8s%n";
-        out.printf(Locale.ROOT, format, "board", "gizmos", "balls", "warm", "mean", "p99", "max", "mean", "p99", "max", "B/tick",
-                "coll/tick",
+        out.printf(Locale.ROOT, format, "board", "gizmos", "balls", "warm", "mean", "p99", "max", "mean", "p99", "max",
+                "B/tick", "coll/tick",
                 "max coll", "zero/tick", "max zero", "asleep", "awake", "wedged", "pinched", "cap", "GCs (ms)");
         for (Row r : rows) {
             out.printf(Locale.ROOT, format, shortName(r.board()), r.gizmos(), r.balls(), r.warmPlays(), f1(r.meanUs()), f1(r.p99Us()),

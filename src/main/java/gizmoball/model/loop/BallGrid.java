@@ -255,5 +255,4 @@ public final class BallGrid {
     private static int index(int cx, int cy) {
         return cy * Arena.SIZE + cx;
     }
-
 }
