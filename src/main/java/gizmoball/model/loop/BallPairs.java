@@ -37,9 +37,8 @@ final class BallPairs {
         double length = Components.length(dx, dy);
         double normalX = length == 0 ? 0 : dx / length + 0.0;
         double normalY = length == 0 ? 0 : dy / length + 0.0;
-        Vect theirs = step.detector.motion(other);
-        double rx = ball.vx() - theirs.x() + 0.0;
-        double ry = ball.vy() - theirs.y() + 0.0;
+        double rx = ball.vx() - step.detector.motionX(other) + 0.0;   // ball.velocity().minus(motion(other))
+        double ry = ball.vy() - step.detector.motionY(other) + 0.0;
         double approach = -(rx * normalX + ry * normalY);
         boolean slow = approach <= step.pressingSpeed();
         Struck.OtherBall struck = other.asStruck();
@@ -62,10 +61,12 @@ final class BallPairs {
             step.view.sleepers().wake(other);
             step.findAwake();
         }
-        Geometry.VectPair after = Geometry.reflectBalls(ball.position(), 1, ball.velocity(), other.position(), 1,
-                other.velocity());
-        ball.setVelocity(after.v1);
-        other.setVelocity(after.v2);
+        // Centres and velocities made for this call alone, which the JIT does not allocate (escape analysis), where
+        // the balls' kept vectors were made anew each tick (docs/design.md, "What a tick allocates")
+        Geometry.VectPair after = Geometry.reflectBalls(new Vect(ball.x(), ball.y()), 1, new Vect(ball.vx(), ball.vy()),
+                new Vect(other.x(), other.y()), 1, new Vect(other.vx(), other.vy()));
+        ball.setVelocity(after.v1.x(), after.v1.y());
+        other.setVelocity(after.v2.x(), after.v2.y());
         step.energy.bounced(ball, normalX, normalY);
         step.energy.bounced(other, -normalX + 0.0, -normalY + 0.0);   // normal.neg()
         step.energy.met(ball, other);

@@ -131,10 +131,11 @@ final class ClusterSolve {
         for (int k = 0; k < balls.size(); k++) {
             Ball ball = balls.get(k);
             step.energy.mayGain(ball);   // energy moves between its balls, and moving shapes may give some
-            Vect before = step.detector.motion(ball);
+            double beforeX = step.detector.motionX(ball);
+            double beforeY = step.detector.motionY(ball);
             double afterX = result.vx()[k] + 0.0;   // as a Vect holds it
             double afterY = result.vy()[k] + 0.0;
-            if (Double.compare(afterX, before.x()) == 0 && Double.compare(afterY, before.y()) == 0) {
+            if (Double.compare(afterX, beforeX) == 0 && Double.compare(afterY, beforeY) == 0) {
                 continue;
             }
             if (ball.isAsleep()) {
@@ -146,7 +147,7 @@ final class ClusterSolve {
             if (!elastic) {
                 step.energy.lost(ball);
             }
-            if (movedOnlyByRounding(before, afterX, afterY)) {
+            if (movedOnlyByRounding(beforeX, beforeY, afterX, afterY)) {
                 step.schedule.sped(ball, step.elapsed);   // its known collisions stand: they move by less than rounding
             } else {
                 step.changed(ball);
@@ -175,9 +176,9 @@ final class ClusterSolve {
      * asked again: over what is left of the tick its path is off by less than 2e-11 L, its known collisions by as
      * little, and what it was to meet stays met; the next tick asks about every ball afresh.
      */
-    private static boolean movedOnlyByRounding(Vect before, double afterX, double afterY) {
-        double dx = afterX - before.x();   // |after - before|, a plain square root as in CollisionDetector.speedOf
-        double dy = afterY - before.y();
+    private static boolean movedOnlyByRounding(double beforeX, double beforeY, double afterX, double afterY) {
+        double dx = afterX - beforeX;   // |after - before|, a plain square root as in CollisionDetector.speedOf
+        double dy = afterY - beforeY;
         return Math.sqrt(dx * dx + dy * dy) <= Tolerances.ROUNDING_SPEED;
     }
 
@@ -200,8 +201,9 @@ final class ClusterSolve {
         double after = 0;
         List<Ball> balls = cluster.balls();
         for (int k = 0; k < balls.size(); k++) {
-            Vect v = step.detector.motion(balls.get(k));
-            before += v.dot(v);
+            double vx = step.detector.motionX(balls.get(k));   // motion(ball).dot(itself)
+            double vy = step.detector.motionY(balls.get(k));
+            before += vx * vx + vy * vy;
             after += result.vx()[k] * result.vx()[k] + result.vy()[k] * result.vy()[k];
         }
         return Math.abs(after - before) <= Tolerances.KEPT_ENERGY * before;
@@ -300,9 +302,8 @@ final class ClusterSolve {
             startY = new double[balls.size()];
         }
         for (int k = 0; k < balls.size(); k++) {
-            Vect v = step.detector.motion(balls.get(k));
-            startX[k] = v.x();
-            startY[k] = v.y();
+            startX[k] = step.detector.motionX(balls.get(k));
+            startY[k] = step.detector.motionY(balls.get(k));
         }
         return impulses.solve(startX, startY, impact, Arena.MAX_SPEED);
     }
