@@ -127,9 +127,8 @@ final class CollisionDetector {
     void againstBall(Ball ball, Ball other, double window, Earliest earliest) {
         boolean mineStill = resting(ball);
         boolean theirsStill = resting(other);
-        // motion(ball).minus(motion(other)), its vectors made only for a pair that may meet
         double rx = (mineStill ? 0 : ball.vx()) - (theirsStill ? 0 : other.vx());
-        double ry = (mineStill ? 0 : ball.vy()) - (theirsStill ? 0 : other.vy());
+        double ry = (mineStill ? 0 : ball.vy()) - (theirsStill ? 0 : other.vy());   // motion(ball).minus(motion(other))
         double dx = ball.x() - other.x();   // as Vect.distanceSquared, without making the centres' vectors
         double dy = ball.y() - other.y();
         double gap = Math.sqrt(dx * dx + dy * dy) - 2 * Arena.BALL_RADIUS;
@@ -146,10 +145,11 @@ final class CollisionDetector {
         if (view.passingThrough(ball, other)) {
             return;   // placed on each other (a loaded file may do that): they pass through until they are apart
         }
-        // motion(ball), motion(other) made here alone: the JIT allocates neither (design.md, "What a tick allocates")
+        // Made for this test alone, none of its vectors or circles is allocated (design.md, "What a tick allocates")
         Vect mine = new Vect(mineStill ? 0 : ball.vx(), mineStill ? 0 : ball.vy());
         Vect theirs = new Vect(theirsStill ? 0 : other.vx(), theirsStill ? 0 : other.vy());
-        double time = Geometry.timeUntilBallBallCollision(ball.circle(), mine, other.circle(), theirs);
+        double time = Geometry.timeUntilBallBallCollision(new Circle(ball.position(), Arena.BALL_RADIUS), mine,
+                new Circle(other.position(), Arena.BALL_RADIUS), theirs);
         if (time <= window) {
             // ball.position().plus(mine.times(time)).minus(other.position().plus(theirs.times(time))) and
             // mine.minus(theirs), on the components with Vect's + 0.0 at each made vector (the same doubles)
