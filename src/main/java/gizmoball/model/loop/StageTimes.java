@@ -14,6 +14,8 @@ import java.util.Set;
  */
 final class StageTimes extends AbstractMap<Stage, Long> {
     private static final Stage[] STAGES = Stage.values();
+    /** No time in any stage: every report of a tick whose stages were not timed (in play) shares it. */
+    private static final StageTimes NONE = new StageTimes(new long[STAGES.length]);
     private final long[] nanos;
 
     private StageTimes(long[] nanos) {
@@ -34,7 +36,12 @@ final class StageTimes extends AbstractMap<Stage, Long> {
 
     /** The times of the stages by their ordinals (copied). */
     static StageTimes of(long[] byOrdinal) {
-        return new StageTimes(byOrdinal.clone());
+        for (long time : byOrdinal) {
+            if (time != 0) {
+                return new StageTimes(byOrdinal.clone());
+            }
+        }
+        return NONE;
     }
 
     @Override

@@ -31,6 +31,20 @@ class StageTimesTest {
         assertThatThrownBy(() -> times.put(Stage.REDRAWING, 0L)).isInstanceOf(UnsupportedOperationException.class);
     }
 
+    /** In play no stage is timed: each tick's report then shares one map of zeros, and a tick makes none. */
+    @Test
+    void untimedTicksShareOneMapOfZeros() {
+        long[] untimed = new long[Stage.values().length];
+        Map<Stage, Long> first = StageTimes.of(untimed);
+        Map<Stage, Long> second = StageTimes.of(untimed.clone());
+
+        assertThat(second).isSameAs(first);
+        assertThat(first).hasSize(Stage.values().length).allSatisfy((stage, nanos) -> assertThat(nanos).isZero());
+        untimed[Stage.REDRAWING.ordinal()] = 1;
+        assertThat(StageTimes.of(untimed)).isNotSameAs(first).containsEntry(Stage.REDRAWING, 1L);
+        assertThat(first).containsEntry(Stage.REDRAWING, 0L);
+    }
+
     @Test
     void aReportFillsTheStagesItIsNotGivenWithZero() {
         TickReport report = new TickReport(0, Map.of(Stage.BALL_MOTION, 5L), 0, 0, 0, 0, 0, GuardCounts.NONE, List.of(),
