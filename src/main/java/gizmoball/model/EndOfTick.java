@@ -74,7 +74,7 @@ final class EndOfTick {
             cell.set(false, false);
         }
         if (cell.isSolid() != wasSolid) {
-            sleepers.disturbAll();
+            sleepers.disturbNear(cell.x(), cell.y(), cell.x() + cell.width(), cell.y() + cell.height());
         }
     }
 

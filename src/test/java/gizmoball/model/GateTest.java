@@ -43,6 +43,43 @@ class GateTest {
         assertThat(Invariants.violations(board)).isEmpty();
     }
 
+    /** A gate that switches changes the board at its cell only: a ball asleep elsewhere sleeps on (design.md). */
+    @Test
+    void aGateThatOpensAndClosesLeavesABallAsleepElsewhereAsleep() {
+        Board board = board();
+        board.addBall("B", 2.5, 19.75, 0, 0);   // on the floor, far from the gate
+        for (int i = 0; i < 60; i++) {
+            board.tick(DT);
+        }
+        assertThat(board.ball("B").orElseThrow().isAsleep()).as("settled on the floor").isTrue();
+        for (int i = 0; i < 10; i++) {
+            board.keyDown(i % 2 == 0 ? OPEN : CLOSE);
+            board.tick(DT);
+            assertThat(gate(board).isOpen()).isEqualTo(i % 2 == 0);
+            assertThat(board.ball("B").orElseThrow().isAsleep()).as("asleep after switch %d", i).isTrue();
+        }
+        assertThat(board.ball("B").orElseThrow().position().y()).isEqualTo(19.75);
+    }
+
+    /** What rests on a ball lying on the gate goes with it when the gate opens: waking spreads along contacts. */
+    @Test
+    void anOpeningGateDropsTheBallOnItAndTheBallRestingOnThatBall() {
+        Board board = board();
+        board.addBall("Low", 10.5, 9.75, 0, 0);   // lying on the closed gate
+        board.addBall("High", 10.5, 9.25, 0, 0);  // lying on Low
+        for (int i = 0; i < 60; i++) {
+            board.tick(DT);
+        }
+        assertThat(board.ball("High").orElseThrow().isAsleep()).as("the stack settled").isTrue();
+        board.keyDown(OPEN);
+        for (int i = 0; i < 30; i++) {
+            board.tick(DT);
+            assertThat(Invariants.violations(board)).isEmpty();
+        }
+        assertThat(board.ball("Low").orElseThrow().position().y()).as("fallen through the open gate").isGreaterThan(11);
+        assertThat(board.ball("High").orElseThrow().position().y()).as("fallen after it").isGreaterThan(10.5);
+    }
+
     @Test
     void aGateToldToCloseOverABallWaitsOpenUntilTheCellIsClearThenCloses() {
         Board board = new Board();
