@@ -148,10 +148,10 @@ public final class TickRun {
         double kickY = step.gravity.y() * dt + 0.0;
         List<GizmoBase> took = tookOnTouch;
         took.clear();
-        List<Ball> balls = view.balls();
-        for (int b = 0; b < balls.size(); b++) {
-            Ball ball = balls.get(b);
-            if (ball.isCaptured() || ball.isAsleep() || takenOnTouch(ball, took)) {
+        step.findAwake();   // the awake balls, in board order: a pile asleep costs nothing (design.md, "Sleeping")
+        for (int b = 0; b < step.awake.size(); b++) {
+            Ball ball = step.awake.get(b);
+            if (takenOnTouch(ball, took)) {
                 continue;
             }
             List<Vect> normals = contactNormals;
