@@ -36,6 +36,8 @@ final class StepContext {
     final Motions motions = new Motions();
     /** The balls that move in this tick: neither captured nor asleep. */
     final List<Ball> awake = new ArrayList<>();
+    /** {@link #awakeCopy}'s list, kept from tick to tick. */
+    private final List<Ball> awakeCopy = new ArrayList<>();
     /** Tick numbers, unique across every loop of the process, so that no ball's marks are taken for another tick's. */
     private static final AtomicLong TICKS = new AtomicLong();
     /**
@@ -243,6 +245,20 @@ final class StepContext {
             }
         }
         asleepAtFind = asleep;
+    }
+
+    /**
+     * The awake balls now, in board order, in a list of their own that stays as it is while they are gone through: a
+     * ball taken by a sink it touches finds the awake balls again ({@link #ballLeft}), and going on through that list
+     * would skip the next ball.
+     */
+    List<Ball> awakeCopy() {
+        findAwake();
+        awakeCopy.clear();
+        for (int i = 0; i < awake.size(); i++) {
+            awakeCopy.add(awake.get(i));
+        }
+        return awakeCopy;
     }
 
     /** How many of the free balls sleep now: as {@link #findAwake} last found, unless a ball's state changed since. */

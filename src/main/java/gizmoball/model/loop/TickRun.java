@@ -148,9 +148,9 @@ public final class TickRun {
         double kickY = step.gravity.y() * dt + 0.0;
         List<GizmoBase> took = tookOnTouch;
         took.clear();
-        step.findAwake();   // the awake balls, in board order: a pile asleep costs nothing (design.md, "Sleeping")
-        for (int b = 0; b < step.awake.size(); b++) {
-            Ball ball = step.awake.get(b);
+        List<Ball> awake = step.awakeCopy();   // a pile asleep costs nothing here (design.md, "Sleeping")
+        for (int b = 0; b < awake.size(); b++) {
+            Ball ball = awake.get(b);
             if (takenOnTouch(ball, took)) {
                 continue;
             }
