@@ -36,6 +36,19 @@ final class Approach {
     }
 
     /**
+     * Whether two balls may touch within {@code within} seconds while closing, the first's centre (dx, dy) from the
+     * second's and moving at (rx, ry) relative to it: near enough for their speed, closing, and on a line of relative
+     * motion that passes the other centre within touch. The pair test asks it first ({@link
+     * CollisionDetector#againstBall}); the schedule asks it of the filed balls' slots before it asks the detector.
+     */
+    static boolean mayMeetBall(double dx, double dy, double rx, double ry, double within) {
+        double gap = Math.sqrt(dx * dx + dy * dy) - 2 * Arena.BALL_RADIUS;
+        double speed = Math.sqrt(rx * rx + ry * ry);   // a plain square root, as speedOf's
+        return !(gap > speed * within + Tolerances.REACH_MARGIN) && dx * rx + dy * ry < 0
+                && !(Math.abs(dx * ry - dy * rx) > (2 * Arena.BALL_RADIUS + Tolerances.REACH_MARGIN) * speed);
+    }
+
+    /**
      * Whether a ball at (cx, cy) moving at (vx, vy) may touch the circle within {@code within} seconds while closing
      * on it, as for a pair of balls: closing, near enough for its speed, and on a line that passes the centre within
      * touch. Where it does not, the API's answer is beyond {@code within}, or {@link CollisionDetector#closingOnCircle}

@@ -80,6 +80,11 @@ final class CollisionDetector {
         return resting(ball) ? 0 : Math.sqrt(ball.vx() * ball.vx() + ball.vy() * ball.vy());
     }
 
+    /** Whether no ball has finished in this tick: then a filed ball's slot moves as the ball does ({@link Motions}). */
+    boolean noneFinished() {
+        return finishedBalls.isEmpty();
+    }
+
     /** Whether the ball moves no more in this tick: asleep, or finished. */
     private boolean resting(Ball ball) {
         return ball.isAsleep() || finishedBalls.contains(ball);
@@ -131,16 +136,8 @@ final class CollisionDetector {
         double ry = (mineStill ? 0 : ball.vy()) - (theirsStill ? 0 : other.vy());   // motion(ball).minus(motion(other))
         double dx = ball.x() - other.x();   // as Vect.distanceSquared, without making the centres' vectors
         double dy = ball.y() - other.y();
-        double gap = Math.sqrt(dx * dx + dy * dy) - 2 * Arena.BALL_RADIUS;
-        double speed = Math.sqrt(rx * rx + ry * ry);
-        if (gap > speed * window + Tolerances.REACH_MARGIN) {
-            return;   // cannot close the gap within the window (its speed a plain square root, as speedOf's)
-        }
-        if (!(dx * rx + dy * ry < 0)) {
-            return;   // not closing: the distance cannot fall (the API's own first answer is then "never")
-        }
-        if (Math.abs(dx * ry - dy * rx) > (2 * Arena.BALL_RADIUS + Tolerances.REACH_MARGIN) * speed) {
-            return;   // |d x u| / |u|: the line of relative motion passes the other centre farther than they touch
+        if (!Approach.mayMeetBall(dx, dy, rx, ry, window)) {
+            return;   // too far for their speed, not closing (the API's own first answer is then "never"), or passing
         }
         if (view.passingThrough(ball, other)) {
             return;   // placed on each other (a loaded file may do that): they pass through until they are apart

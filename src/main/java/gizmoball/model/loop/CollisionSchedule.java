@@ -461,9 +461,14 @@ final class CollisionSchedule {
         // The same bound for each ball found, with its own speed and twice the margin: rounding never passes a pair.
         double alone = 2 * Arena.BALL_RADIUS + speed * window + 2 * Tolerances.REACH_MARGIN;
         int nearby = grid.nearSweep(ball, detector.motionX(ball), detector.motionY(ball), window, near, alone);
+        // The pair test's first bounds, on the slots' centres and motions (the pair's as the detector takes them, where
+        // no ball has finished): most pairs found are refused there, without reading either ball.
+        boolean bySlots = detector.noneFinished();
+        int mine = ball.slot();
         for (int i = 0; i < nearby; i++) {
-            Ball other = bySlot[grid.found(i)];
-            if (other == ball || other.isCaptured()) {
+            int theirs = grid.found(i);
+            Ball other = bySlot[theirs];
+            if (other == ball || other.isCaptured() || bySlots && !mayMeet(theirs, mine, window)) {
                 continue;
             }
             pair.reset(window);
@@ -473,12 +478,18 @@ final class CollisionSchedule {
                 continue;
             }
             earliest.offer(pair.time(), ball, other.asContact(), true);
-            int theirs = other.slot();
             if (ballsKnown[theirs] && (withBalls[theirs] == null || elapsed + pair.time() < ballsAt[theirs])) {
                 knowWithBalls(theirs, elapsed, found, pair.time(), true);
             }
         }
-        knowWithBalls(ball.slot(), elapsed, earliest.contact(), earliest.time(), earliest.isCircle());
+        knowWithBalls(mine, elapsed, earliest.contact(), earliest.time(), earliest.isCircle());
+    }
+
+    /** {@link Approach#mayMeetBall} for the balls filed in two slots, the first's centre and motion less the second's. */
+    private boolean mayMeet(int first, int second, double window) {
+        Motions m = motions;
+        return Approach.mayMeetBall(m.x[first] - m.x[second], m.y[first] - m.y[second], m.vx[first] - m.vx[second],
+                m.vy[first] - m.vy[second], window);
     }
 
 }
