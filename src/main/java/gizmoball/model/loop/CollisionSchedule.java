@@ -467,10 +467,10 @@ final class CollisionSchedule {
         int mine = ball.slot();
         for (int i = 0; i < nearby; i++) {
             int theirs = grid.found(i);
-            Ball other = bySlot[theirs];
-            if (other == ball || other.isCaptured() || bySlots && !mayMeet(theirs, mine, window)) {
+            if (theirs == mine || bySlots && !mayMeet(theirs, mine, window) || bySlot[theirs].isCaptured()) {
                 continue;
             }
+            Ball other = bySlot[theirs];
             pair.reset(window);
             detector.againstBall(other, ball, window, pair);
             Contact found = pair.contact();
