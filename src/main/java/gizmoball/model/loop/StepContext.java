@@ -255,7 +255,7 @@ final class StepContext {
     List<Ball> awakeCopy() {
         findAwake();
         awakeCopy.clear();
-        for (int i = 0; i < awake.size(); i++) {
+        for (int i = 0; i < awake.size(); i++) {   // by index: addAll would make an array of them each tick
             awakeCopy.add(awake.get(i));
         }
         return awakeCopy;
