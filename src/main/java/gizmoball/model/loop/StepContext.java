@@ -27,6 +27,8 @@ final class StepContext {
     Vect gravity;
     /** The contact queries for this tick's gravity and length (made again only when either changes). */
     Contacts contacts;
+    /** {@link #pressingSpeed()}, set with the gravity and length it is made of. */
+    private double pressingSpeed;
     final ShadowEnergy energy;
     /** SEED: balls that have had their collision this tick and move no more; CONTINUOUS: balls over their cap. */
     final FinishedBalls finished = new FinishedBalls();
@@ -93,6 +95,9 @@ final class StepContext {
         Vect boardGravity = view.gravity();
         if (contacts == null || seconds != dt || !boardGravity.equals(gravity)) {
             contacts = new Contacts(view, boardGravity, seconds);
+            // gravity's length is a hypot, and two balls meeting asked for this at every bounce
+            pressingSpeed = Math.max(Tolerances.ROUNDING_SPEED,
+                    settings.restTicksOfGravity() * boardGravity.length() * seconds);
         }
         dt = seconds;
         startTime = view.time();
@@ -327,7 +332,7 @@ final class StepContext {
 
     /** L/s: two balls meeting more slowly than this, one of them held, press together (gravity's ticks' worth). */
     double pressingSpeed() {
-        return Math.max(Tolerances.ROUNDING_SPEED, settings.restTicksOfGravity() * gravity.length() * dt);
+        return pressingSpeed;
     }
 
     GuardCounts guards() {
