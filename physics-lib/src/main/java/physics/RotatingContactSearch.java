@@ -150,10 +150,17 @@ final class RotatingContactSearch {
         double spin = Math.abs(w);
         double t = 0;
         evaluate(t);
-        Region region = classify(null, 0);
         // |u| at the slice's start: a slice the loop leaves without returning ends with t = sliceEnd exactly, so the
         // next one starts where this one's end was measured (one hypot a slice, not two)
         double fromPivotAtT = fromPivot(t);
+        if (gap - (speed + spin * Math.max(fromPivotAtT, fromPivot(foresight))) * foresight > 2 * CONTACT_TOLERANCE) {
+            // The gap cannot close to the tolerance within the window (its rate is at most L over all of it, twice
+            // the tolerance leaving room for the rounding of the gaps the slices would measure): the search would
+            // step through every slice clear of the obstacle, as most searches about a ball near a swinging flipper
+            // do, each slice a rotation and a hypot.
+            return Double.POSITIVE_INFINITY;
+        }
+        Region region = classify(null, 0);
         for (int slice = 0, steps = 0; slice < slices; slice++) {
             double sliceEnd = slice == slices - 1 ? foresight : foresight * (slice + 1) / slices;
             double fromPivotAtEnd = fromPivot(sliceEnd);

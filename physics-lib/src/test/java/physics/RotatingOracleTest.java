@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
 import java.util.stream.LongStream;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 
@@ -178,6 +179,50 @@ class RotatingOracleTest {
         Vect back = Geometry.reflectRotatingCircle(end, pivot, w, touching, offCircle);
         assertThat(back.minus(v).length()).as("seed %d: circle twice", seed).isLessThan(1e-12 * (1 + v.length()
                 + endSurface.length()));
+    }
+
+    /**
+     * A game asks about what is left of a tick, a sixtieth of a second or less, and most balls near a swinging flipper
+     * cannot reach it in that time: the search refuses those at once, where the gap at the start exceeds what its rate
+     * bound, |v| + |w| |u|, closes over the window. The bound must never refuse a ball the swing does meet: over short
+     * windows, balls near the face and still balls among them (only the swing can bring those in), the face's
+     * contacts and the ends' are never later than the oracle's. Both kinds of scene occur (79 contacts and 327 balls
+     * the bound refuses, of 600).
+     */
+    @Test
+    void overWhatIsLeftOfATickNoContactIsRefused() {
+        int contacts = 0;
+        int refusable = 0;
+        for (long seed : RandomScene.seeds(600).toArray()) {
+            RandomScene r = new RandomScene(seed);
+            double foresight = r.between(1e-4, 1.0 / 60);
+            GeometryImpl geometry = new GeometryImpl(foresight, GeometryImpl.DEFAULT_SEARCH_SLICES);
+            Vect pivot = r.point(5);
+            LineSegment segment = new LineSegment(pivot, pivot.plus(r.vector(1, 2.5)));
+            double w = (r.coin() ? 1 : -1) * r.between(0.5, 20);   // turning: at rest the window does not apply
+            Vect velocity = ballVelocity(r);
+            double radius = r.between(0.1, 0.5);
+            Vect near = segment.p1().plus(segment.p2().minus(segment.p1()).times(r.between(-0.2, 1.2)));
+            Circle ball;
+            WorldGap gap;
+            do { // within 0.6 L of the face or its line beyond the ends, clear of it
+                ball = new Circle(near.plus(r.vector(radius, radius + 0.6)), radius);
+                gap = WorldGap.wall(segment, pivot, w, ball, velocity);
+            } while (gap.at(0) <= 0);
+            double face = geometry.timeUntilRotatingWallCollision(segment, pivot, w, ball, velocity);
+            double ends = Math.min(
+                    geometry.timeUntilRotatingCircleCollision(new Circle(segment.p1(), 0), pivot, w, ball, velocity),
+                    geometry.timeUntilRotatingCircleCollision(new Circle(segment.p2(), 0), pivot, w, ball, velocity));
+            assertAgreesWithOracle(seed, gap, Math.min(face, ends), foresight);
+            double fromPivot = ball.getCenter().minus(pivot).length() + velocity.length() * foresight;
+            if (gap.firstContact(foresight) < Double.POSITIVE_INFINITY) {
+                contacts++;
+            } else if (gap.at(0) > (velocity.length() + Math.abs(w) * fromPivot) * foresight) {
+                refusable++;
+            }
+        }
+        assertThat(contacts).as("scenes with a contact in the window").isGreaterThan(50);
+        assertThat(refusable).as("scenes whose ball the bound refuses").isGreaterThan(50);
     }
 
     static void assertAgreesWithOracle(long seed, WorldGap gap, double t) {
