@@ -33,6 +33,14 @@ package gizmoball.model.loop;
  *                                 inelastically: far more than a row of {@code clusterBalls} touching balls needs to
  *                                 pass an impact along and back; only balls ringing in a pocket they nearly fill go on
  *                                 longer, and their limit, with any loss at all, is rest
+ * @param ringMatch                of the fastest ball's speed: rounds of impacts that start within this of where the
+ *                                 round two before them started ring in place (a ball between two contacts that touch
+ *                                 it on both sides, not quite opposite, drifting at a steady rate), and end there at
+ *                                 the limit the cap gives a ring, the inelastic projection of where it is; the cap
+ *                                 would have let it drift up to {@code impactRounds} / 2 times this further (0.4-2.3%
+ *                                 of the speeds in the rings of fuzz seed 1000576 and {@code slow-200-balls.txt},
+ *                                 which drift 5e-5 and 1.8e-4 of their speed every two rounds, 200-480 us a solve to
+ *                                 the cap)
  * @param projectionSweeps         sweeps of projected Gauss-Seidel before the inelastic projection counts as not
  *                                 converging: it is the fallback for rows the active set cannot settle, and at 10,000
  *                                 sweeps a cluster of 30 balls cost half a second of one tick
@@ -54,7 +62,7 @@ public record LoopSettings(double zeroTime, double restTicksOfGravity, double sl
                            int zeroTimeHitsBeforeWedged, int strikesOfASqueeze, int strikesOfAPush,
                            int squeezesBeforePinched, int bouncesAmongContacts, int pressSteps, int maxCollisionsBase,
                            int maxCollisionsPerBall, int maxCollisionsOfABall, int rattleCollisions, double rattleTime,
-                           double rattleReach, int clusterBalls, int impactRounds, int projectionSweeps,
+                           double rattleReach, int clusterBalls, int impactRounds, double ringMatch, int projectionSweeps,
                            int activeSetChanges, double leadTime, double slidingPart, int rotatingSearchSlices,
                            int scheduleBlock) {
 
@@ -78,6 +86,7 @@ public record LoopSettings(double zeroTime, double restTicksOfGravity, double sl
             /* rattleReach */ 1e-3,
             /* clusterBalls */ 32,
             /* impactRounds */ 256,
+            /* ringMatch */ 1e-3,
             /* projectionSweeps */ 500,
             /* activeSetChanges */ 200,
             /* leadTime */ 1e-3,

@@ -33,8 +33,9 @@ import java.util.Arrays;
  * cluster is infeasible: the caller stalls those surfaces and solves again.
  */
 final class NormalImpulses {
-    /** {@link LoopSettings#impactRounds()}. */
+    /** {@link LoopSettings#impactRounds()}, {@link LoopSettings#ringMatch()}. */
     private final int maxImpactRounds;
+    private final double ringMatch;
     private final ContactRows contacts = new ContactRows();
     private final InelasticProjection projection;
     private int balls;
@@ -57,6 +58,7 @@ final class NormalImpulses {
     /** @param settings the loop's tuning: how many rounds of impacts, and when the projection gives up */
     NormalImpulses(LoopSettings settings) {
         this.maxImpactRounds = settings.impactRounds();
+        this.ringMatch = settings.ringMatch();
         this.projection = new InelasticProjection(contacts, settings);
     }
 
@@ -115,12 +117,14 @@ final class NormalImpulses {
      * bounces; below it the contact comes to rest (restitution 0).
      *
      * <p>Rounds that ring for ever end at the limit the cap gives them, the inelastic projection of where they are.
-     * Some ring in a cycle of two: a ball between two contacts that touch it on both sides is sent from one into the
+     * Most ring in a cycle of two: a ball between two contacts that touch it on both sides is sent from one into the
      * other and back (in a box packed with 31 elastic balls, rounds 5 to 256 alternated between two states to 2e-13
-     * L/s; in a pocket of 32 balls a flipper pressed on, to 7e-10 L/s, drifting by that much every two rounds). A round
-     * that starts where the round two before it started, to within {@link Tolerances#CYCLE_MATCH} of the fastest ball's
-     * speed, would ring so to the cap; on a round of the cap's parity it ends there, in the state the cap would have
-     * met (to that drift, some 1e-7 of the speeds).
+     * L/s; in a pocket of 32 balls a flipper pressed on, to 7e-10 L/s; where the two contacts are not quite opposite,
+     * each bounce turns a little of the speed, and two balls in a slot that fits them, their normal tilted by 3e-5,
+     * drift by some 3e-5 of the speed every two rounds). A round that starts where the round two before it started, to
+     * within {@link LoopSettings#ringMatch()} of the fastest ball's speed, would ring so to the cap; on a round of the
+     * cap's parity it ends there, at the limit the cap would have given it, moved by the drift the cap left it (about
+     * 0.4% of the speed for that slot).
      */
     Result solve(double[] vx0, double[] vy0, double[] impact, double speedLimit) {
         System.arraycopy(vx0, 0, vx, 0, balls);
@@ -132,7 +136,7 @@ final class NormalImpulses {
                 return new Result(vx, vy, largest, projection.withinLimit(vx, vy, speedLimit), round);
             }
             if ((maxImpactRounds - round) % 2 == 0 && round >= 2) {
-                double tolerance = Tolerances.CYCLE_MATCH * Math.max(1, fastest(vx, vy));
+                double tolerance = ringMatch * Math.max(1, fastest(vx, vy));
                 if (within(startX[(round - 2) % 3], vx, tolerance) && within(startY[(round - 2) % 3], vy, tolerance)) {
                     break;
                 }

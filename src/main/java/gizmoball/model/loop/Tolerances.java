@@ -52,11 +52,6 @@ public final class Tolerances {
     /** Of the cluster's summed |v|^2: a change this small is rounding, not a loss or a gain. */
     static final double KEPT_ENERGY = 1e-12;
     /**
-     * Of the fastest ball's speed: how near a round of impacts must start to the start two rounds before for the
-     * rounds to count as a cycle of two.
-     */
-    static final double CYCLE_MATCH = 1e-9;
-    /**
      * Of the set's scale: a pivot this small counts as zero, the row depending on the set (a face and the corner flush
      * with it, both touched along one normal).
      */
