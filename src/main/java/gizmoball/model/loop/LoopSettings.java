@@ -62,9 +62,9 @@ public record LoopSettings(double zeroTime, double restTicksOfGravity, double sl
                            int zeroTimeHitsBeforeWedged, int strikesOfASqueeze, int strikesOfAPush,
                            int squeezesBeforePinched, int bouncesAmongContacts, int pressSteps, int maxCollisionsBase,
                            int maxCollisionsPerBall, int maxCollisionsOfABall, int rattleCollisions, double rattleTime,
-                           double rattleReach, int clusterBalls, int impactRounds, double ringMatch, int projectionSweeps,
-                           int activeSetChanges, double leadTime, double slidingPart, int rotatingSearchSlices,
-                           int scheduleBlock) {
+                           double rattleReach, int clusterBalls, int impactRounds, double ringMatch,
+                           int projectionSweeps, int activeSetChanges, double leadTime, double slidingPart,
+                           int rotatingSearchSlices, int scheduleBlock) {
 
     /** The settings of every board, each default named by the component it sets. */
     public static final LoopSettings STANDARD = new LoopSettings(

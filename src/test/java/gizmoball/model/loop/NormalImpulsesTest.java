@@ -151,9 +151,9 @@ class NormalImpulsesTest {
      * Ball 0 moving up and left between a wall on its left and ball 1, which lies against a wall on its right, their
      * normal tilted by 3e-5 from the horizontal: each round sends ball 0 from one side into the other and back, and
      * each bounce off ball 1 turns a little of its speed, so the rounds never repeat exactly; two rounds apart they
-     * differ by some 3e-5 of the speed, and the cap's 256 rounds cost a pocket of fuzz seed 1000576, where such a pair
-     * rang, 200-480 us a solve (three in one tick). The ring ends within a few rounds at the inelastic projection of where
-     * it is: nothing closes, no energy is gained, and the motion along the walls is kept.
+     * differ by some 3e-5 of the speed, and the cap's 256 rounds cost a pocket of fuzz seed 1000576, where such a
+     * pair rang, 200-480 us a solve (three in one tick). The ring ends within a few rounds at the inelastic projection
+     * of where it is: nothing closes, no energy is gained, and the motion along the walls is kept.
      */
     @Test
     void aRingThatDriftsEndsWithinAFewRounds() {
@@ -394,7 +394,8 @@ class NormalImpulsesTest {
                 s.zeroTimeHitsBeforeWedged(), s.strikesOfASqueeze(), s.strikesOfAPush(), s.squeezesBeforePinched(),
                 s.bouncesAmongContacts(), s.pressSteps(), s.maxCollisionsBase(), s.maxCollisionsPerBall(),
                 s.maxCollisionsOfABall(), s.rattleCollisions(), s.rattleTime(), s.rattleReach(), s.clusterBalls(),
-                s.impactRounds(), s.ringMatch(), 1, 0, s.leadTime(), s.slidingPart(), s.rotatingSearchSlices(), s.scheduleBlock());
+                s.impactRounds(), s.ringMatch(), 1, 0, s.leadTime(), s.slidingPart(), s.rotatingSearchSlices(),
+                s.scheduleBlock());
     }
 
     private static void assertStillClusterSolved(RepetitionInfo repetition, LoopSettings settings,
