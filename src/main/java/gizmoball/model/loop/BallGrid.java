@@ -169,13 +169,16 @@ public final class BallGrid {
     /**
      * The balls that the ball, at (vx, vy) (L/s) for {@code seconds}, can touch within them are filed in the cells of
      * its own swept box: finds those filed there whose centre now lies within {@code within} of its along x and along
-     * y, and within {@code alone} + s {@code seconds} too, s each one's speed as filed (the ball itself among them).
-     * Returns how many ({@link #found(int)} reads them), in the order of their homes, row by row, and of their slots.
+     * y, and within {@code alone} + s {@code seconds} too, s each one's speed as filed. With {@code byMotions}, only
+     * those that may meet it within {@code seconds} by the slots' centres and motions ({@link Approach#mayMeetBall},
+     * the pair test's first bound), itself left out; else the ball itself among them. Returns how many
+     * ({@link #found(int)} reads them), in the order of their homes, row by row, and of their slots: the few a bound
+     * keeps are sorted, not the many it refuses.
      */
-    int nearSweep(Ball ball, double vx, double vy, double seconds, double within, double alone) {
+    int nearSweep(Ball ball, double vx, double vy, double seconds, double within, double alone, boolean byMotions) {
         sweep(ball, vx, vy, seconds);
         int count = find(sweptFromColumn, sweptToColumn, sweptFromRow, sweptToRow, ball.x(), ball.y(), within, alone,
-                seconds);
+                seconds, byMotions ? ball.slot() : NONE);
         for (int i = 1; i < count; i++) {   // by insertion: a question finds a few
             int slot = found[i];
             long key = order(slot);
@@ -195,7 +198,7 @@ public final class BallGrid {
      */
     int near(double x, double y, double reach, double within) {
         int count = find(Arena.cellOf(x - reach), Arena.cellOf(x + reach), Arena.cellOf(y - reach),
-                Arena.cellOf(y + reach), x, y, within, within, 0);
+                Arena.cellOf(y + reach), x, y, within, within, 0, NONE);
         Arrays.sort(found, 0, count);
         return count;
     }
@@ -214,11 +217,12 @@ public final class BallGrid {
 
     /**
      * The balls filed in columns cx0 to cx1 of rows cy0 to cy1 whose centre lies within the smaller of {@code within}
-     * and {@code alone} + s {@code window} of (x, y) along x and along y, s each one's speed as filed; each once, in
-     * the order the cells give them.
+     * and {@code alone} + s {@code window} of (x, y) along x and along y, s each one's speed as filed, and, unless
+     * {@code meeting} is {@link #NONE}, that may meet the ball in slot {@code meeting} within {@code window} by their
+     * slots' motions, that ball left out; each once, in the order the cells give them.
      */
     private int find(int cx0, int cx1, int cy0, int cy1, double x, double y, double within, double alone,
-                     double window) {
+                     double window, int meeting) {
         long question = ++questions;
         int count = 0;
         double[] xs = centres.x;
@@ -234,13 +238,21 @@ public final class BallGrid {
                     seenBy[slot] = question;
                     // The pair test's bound for this ball, if tighter (its own speed, not the fastest ball's).
                     double ballNear = Math.min(within, alone + speedOfSlot[slot] * window);
-                    if (Math.abs(xs[slot] - x) <= ballNear && Math.abs(ys[slot] - y) <= ballNear) {
+                    if (Math.abs(xs[slot] - x) <= ballNear && Math.abs(ys[slot] - y) <= ballNear
+                            && (meeting == NONE || slot != meeting && mayMeet(slot, meeting, window))) {
                         found[count++] = slot;
                     }
                 }
             }
         }
         return count;
+    }
+
+    /** {@link Approach#mayMeetBall} for the balls filed in two slots, the first's centre and motion less the second's. */
+    private boolean mayMeet(int first, int second, double window) {
+        Motions m = centres;
+        return Approach.mayMeetBall(m.x[first] - m.x[second], m.y[first] - m.y[second], m.vx[first] - m.vx[second],
+                m.vy[first] - m.vy[second], window);
     }
 
     private long order(int slot) {

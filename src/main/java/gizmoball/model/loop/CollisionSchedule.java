@@ -460,14 +460,14 @@ final class CollisionSchedule {
         double near = 2 * Arena.BALL_RADIUS + (speed + fastest) * window + Tolerances.REACH_MARGIN;
         // The same bound for each ball found, with its own speed and twice the margin: rounding never passes a pair.
         double alone = 2 * Arena.BALL_RADIUS + speed * window + 2 * Tolerances.REACH_MARGIN;
-        int nearby = grid.nearSweep(ball, detector.motionX(ball), detector.motionY(ball), window, near, alone);
         // The pair test's first bounds, on the slots' centres and motions (the pair's as the detector takes them, where
-        // no ball has finished): most pairs found are refused there, without reading either ball.
+        // no ball has finished): most pairs found are refused there, by the grid, without reading either ball.
         boolean bySlots = detector.noneFinished();
+        int nearby = grid.nearSweep(ball, detector.motionX(ball), detector.motionY(ball), window, near, alone, bySlots);
         int mine = ball.slot();
         for (int i = 0; i < nearby; i++) {
             int theirs = grid.found(i);
-            if (theirs == mine || bySlots && !mayMeet(theirs, mine, window) || bySlot[theirs].isCaptured()) {
+            if (theirs == mine || bySlot[theirs].isCaptured()) {
                 continue;
             }
             Ball other = bySlot[theirs];
@@ -483,13 +483,6 @@ final class CollisionSchedule {
             }
         }
         knowWithBalls(mine, elapsed, earliest.contact(), earliest.time(), earliest.isCircle());
-    }
-
-    /** {@link Approach#mayMeetBall} for the balls filed in two slots, the first's centre and motion less the second's. */
-    private boolean mayMeet(int first, int second, double window) {
-        Motions m = motions;
-        return Approach.mayMeetBall(m.x[first] - m.x[second], m.y[first] - m.y[second], m.vx[first] - m.vx[second],
-                m.vy[first] - m.vy[second], window);
     }
 
 }
