@@ -45,7 +45,7 @@ final class ClusterSolve {
     private final List<Vect> otherNormals = new ArrayList<>();
     /** The moving shapes a solve stalled, and the surfaces its impacts were heard from: kept, emptied per solve. */
     private final Set<MovingShape> stalled = new LinkedHashSet<>();
-    private final List<Struck> heard = new ArrayList<>();
+    private final HeardSurfaces heard = new HeardSurfaces();
 
     ClusterSolve(StepContext step) {
         this.step = step;
@@ -361,8 +361,7 @@ final class ClusterSolve {
             if (target != null) {
                 target.markTriggered(step.now());
             }
-            if (!heard.contains(struck)) {
-                heard.add(struck);
+            if (heard.firstFrom(struck)) {
                 GizmoKind kind = target == null ? null : target.kind();
                 step.actions.recordEvent(new PlayEvent.Hit(struck, kind, change, ball.name(), ball.position()));
                 if (struck instanceof TriggerSource source && !struck.equals(own)) {
