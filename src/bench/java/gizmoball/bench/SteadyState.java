@@ -154,7 +154,7 @@ final class SteadyState {
         boards.addAll(builtBoards(w));
         List<Row> rows = new ArrayList<>();
         for (NamedBoard board : boards) {
-            Run run = measure(board, board.windowsOr(w));
+            Run run = (Run) Isolated.call(SteadyState.class, "measureNamed", shipped, peers, w, board.name());
             rows.add(run.row());
             if (board.name().equals(CHARTED)) {
                 writeBins(dir.resolve("steady-state-ticks.csv"), run.tickNanos());
@@ -309,6 +309,18 @@ final class SteadyState {
                 copy.tick(DT);
             }
         });
+    }
+
+    /**
+     * {@link #measure} of the board of the table named {@code name}, made afresh: what {@link #run} asks of each board
+     * with a copy of the game's classes of its own ({@link Isolated}), as a JVM that plays only that board.
+     */
+    static Run measureNamed(Path shipped, Optional<Path> peers, Windows w, String name) throws IOException {
+        List<NamedBoard> boards = new ArrayList<>(boards(shipped, peers));
+        boards.addAll(builtBoards(w));
+        NamedBoard named = boards.stream().filter(b -> b.name().equals(name)).findFirst()
+                .orElseThrow(() -> new IllegalArgumentException("no board " + name + " in the steady-state table"));
+        return measure(named, named.windowsOr(w));
     }
 
     /** Ticks the board from 0 to the window's end, timing every tick; statistics over the window only. */
