@@ -3,7 +3,6 @@ package gizmoball.model.loop;
 import java.util.ArrayList;
 import java.util.List;
 
-import physics.Geometry;
 import physics.Vect;
 
 /**
@@ -16,6 +15,8 @@ final class BallPairs {
     /** The normals of what else holds each ball of a pair pressed together: lists kept from use to use. */
     private final List<Vect> holdingBall = new ArrayList<>();
     private final List<Vect> holdingOther = new ArrayList<>();
+    /** A bounce's velocities, reckoned afresh for each bounce. */
+    private final BallBounce bounce = new BallBounce();
 
     BallPairs(StepContext step) {
         this.step = step;
@@ -61,12 +62,9 @@ final class BallPairs {
             step.view.sleepers().wake(other);
             step.findAwake();
         }
-        // Centres and velocities made for this call alone, which the JIT does not allocate (escape analysis), where
-        // the balls' kept vectors were made anew each tick (docs/design.md, "What a tick allocates")
-        Geometry.VectPair after = Geometry.reflectBalls(new Vect(ball.x(), ball.y()), 1, new Vect(ball.vx(), ball.vy()),
-                new Vect(other.x(), other.y()), 1, new Vect(other.vx(), other.vy()));
-        ball.setVelocity(after.v1.x(), after.v1.y());
-        other.setVelocity(after.v2.x(), after.v2.y());
+        bounce.between(ball.x(), ball.y(), ball.vx(), ball.vy(), other.x(), other.y(), other.vx(), other.vy());
+        ball.setVelocity(bounce.firstX, bounce.firstY);
+        other.setVelocity(bounce.secondX, bounce.secondY);
         step.energy.bounced(ball, normalX, normalY);
         step.energy.bounced(other, -normalX + 0.0, -normalY + 0.0);   // normal.neg()
         step.energy.met(ball, other);

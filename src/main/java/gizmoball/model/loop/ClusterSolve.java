@@ -34,11 +34,12 @@ final class ClusterSolve {
     /** The solver, its rows and arrays kept from one cluster to the next (grown to the largest seen). */
     private final NormalImpulses impulses;
     // Kept too, and grown likewise: per ball, the velocities a solve starts from and the elastic bounces' strongest
-    // contact (its impulse, its normal); per row, the impact speeds; one row's other normals on its ball.
+    // contact (its impulse, its normal's components); per row, the impact speeds; one row's other normals on its ball.
     private double[] startX = new double[0];
     private double[] startY = new double[0];
     private double[] most = new double[0];
-    private Vect[] strongest = new Vect[0];
+    private double[] strongestX = new double[0];
+    private double[] strongestY = new double[0];
     /** Per ball, whether its strongest contact's normal points away from it (it is the row's other ball). */
     private boolean[] against = new boolean[0];
     private double[] impact = new double[0];
@@ -218,11 +219,11 @@ final class ClusterSolve {
         List<Ball> balls = cluster.balls();
         if (most.length < balls.size()) {
             most = new double[balls.size()];
-            strongest = new Vect[balls.size()];
+            strongestX = new double[balls.size()];
+            strongestY = new double[balls.size()];
             against = new boolean[balls.size()];
         }
-        Arrays.fill(most, 0, balls.size(), 0);
-        Arrays.fill(strongest, 0, balls.size(), null);
+        Arrays.fill(most, 0, balls.size(), 0);   // a ball with none above 0 had no contact pressed
         for (int i = 0; i < rows.size(); i++) {
             ContactCluster.Row row = rows.get(i);
             double change = result.compression()[i];
@@ -230,28 +231,32 @@ final class ClusterSolve {
                 continue;
             }
             if (change > most[row.ball()]) {
-                most[row.ball()] = change;
-                strongest[row.ball()] = row.normal();
-                against[row.ball()] = false;
+                strongest(row.ball(), change, row, false);
             }
             if (row.other() instanceof ContactCluster.Other.InCluster in) {
                 if (change > most[in.index()]) {
-                    most[in.index()] = change;
-                    strongest[in.index()] = row.normal();
-                    against[in.index()] = true;
+                    strongest(in.index(), change, row, true);
                 }
                 step.energy.met(balls.get(row.ball()), balls.get(in.index()));
             }
         }
         for (int k = 0; k < balls.size(); k++) {
-            if (strongest[k] != null) {
-                if (against[k]) {
-                    step.energy.bouncedOpposite(balls.get(k), strongest[k]);
+            if (most[k] > 0) {
+                if (against[k]) {   // normal.neg()
+                    step.energy.bounced(balls.get(k), -strongestX[k] + 0.0, -strongestY[k] + 0.0);
                 } else {
-                    step.energy.bounced(balls.get(k), strongest[k], true);
+                    step.energy.bounced(balls.get(k), strongestX[k], strongestY[k]);
                 }
             }
         }
+    }
+
+    /** The row pressed ball {@code k} with {@code change}, more than any before it; its normal points away if against. */
+    private void strongest(int k, double change, ContactCluster.Row row, boolean against) {
+        most[k] = change;
+        strongestX[k] = row.normalX();
+        strongestY[k] = row.normalY();
+        this.against[k] = against;
     }
 
     /**
@@ -294,7 +299,7 @@ final class ClusterSolve {
             boolean still = row.other() instanceof ContactCluster.Other.Moving moving
                     && stalled.contains(moving.shape());
             impulses.row(row.ball(), row.other() instanceof ContactCluster.Other.InCluster in ? in.index() : -1,
-                    row.normal().x(), row.normal().y(), still ? 0 : row.surfaceSpeed(),
+                    row.normalX(), row.normalY(), still ? 0 : row.surfaceSpeed(),
                     carried ? 0 : row.restitution());
         }
         if (startX.length < balls.size()) {

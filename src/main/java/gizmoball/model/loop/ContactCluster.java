@@ -89,12 +89,72 @@ final class ContactCluster {
         }
     }
 
-    /** One contact: ball {@code ball} (an index) touches {@code other}, with normal {@code normal} toward the ball. */
-    record Row(int ball, Other other, Vect normal, double surfaceSpeed, double restitution) {
+    /**
+     * One contact: ball {@code ball} (an index) touches {@code other}, with the unit normal (normalX, normalY) toward
+     * the ball, as a {@code Vect} holds it. The cluster keeps its rows from one gathering to the next and sets them
+     * afresh, as Box2D's step takes its contacts from an arena: a row and its normal, made for each contact of each
+     * solve, were a fifth of what a tick of the 100-ball peer board allocated (docs/design.md, "What a tick
+     * allocates"). A row is the cluster's until it gathers again.
+     */
+    static final class Row {
+        private int ball;
+        private Other other;
+        private double normalX;
+        private double normalY;
+        /** The normal as a vector, made when first asked for (most rows are only ever read by component). */
+        private Vect normal;
+        private double surfaceSpeed;
+        private double restitution;
+
+        private Row set(int ball, Other other, double normalX, double normalY, Vect normal, double surfaceSpeed,
+                        double restitution) {
+            this.ball = ball;
+            this.other = other;
+            this.normalX = normalX;
+            this.normalY = normalY;
+            this.normal = normal;
+            this.surfaceSpeed = surfaceSpeed;
+            this.restitution = restitution;
+            return this;
+        }
+
+        int ball() {
+            return ball;
+        }
+
+        Other other() {
+            return other;
+        }
+
+        double normalX() {
+            return normalX;
+        }
+
+        double normalY() {
+            return normalY;
+        }
+
+        Vect normal() {
+            if (normal == null) {
+                normal = new Vect(normalX, normalY);
+            }
+            return normal;
+        }
+
+        double surfaceSpeed() {
+            return surfaceSpeed;
+        }
+
+        double restitution() {
+            return restitution;
+        }
     }
 
     private final List<Ball> balls = new ArrayList<>();
     private final List<Row> rows = new ArrayList<>();
+    /** Every row made so far, the first {@link #rowsUsed} of them set in this gathering. */
+    private final List<Row> rowPool = new ArrayList<>();
+    private int rowsUsed;
     /**
      * Round contacts (a ball, a circle) that the balls graze as they move now: no rows unless the solve turns a ball
      * into one ({@link #takeClosingGrazes}).
@@ -133,6 +193,7 @@ final class ContactCluster {
                           Predicate<Ball> movable, double reach, LoopSettings settings) {
         balls.clear();
         rows.clear();
+        rowsUsed = 0;
         grazing.clear();
         indexOf.clear();
         nearby.clear();
@@ -160,8 +221,12 @@ final class ContactCluster {
                 if (j >= 0 && j < i) {
                     continue;   // its row was made from the other side
                 }
-                // ball.position().minus(other.position()).unitSize(), on the components
-                Vect normal = Components.unit(ball.x() - other.x() + 0.0, ball.y() - other.y() + 0.0);
+                // ball.position().minus(other.position()).unitSize() (Components.unit), on the components
+                double offsetX = ball.x() - other.x() + 0.0;
+                double offsetY = ball.y() - other.y() + 0.0;
+                double length = Components.length(offsetX, offsetY);
+                double normalX = length == 0 ? 0 : offsetX / length + 0.0;
+                double normalY = length == 0 ? 0 : offsetY / length + 0.0;
                 Vect mine = motion.apply(ball);
                 Vect theirs = motion.apply(other);
                 // Kinematics.grazes(ball.position().minus(other.position()), mine.minus(theirs), 2r), on the
@@ -173,8 +238,9 @@ final class ContactCluster {
                     balls.add(other);
                     indexOf.put(other, j);
                 }
-                Row row = j >= 0 ? new Row(i, inCluster(j), normal, 0, 1.0)
-                        : new Row(i, new Other.Beyond(other), normal, beyondSpeed(motion.apply(other), normal), 1.0);
+                Row row = j >= 0 ? row(i, inCluster(j), normalX, normalY, null, 0, 1.0)
+                        : row(i, new Other.Beyond(other), normalX, normalY, null,
+                        beyondSpeed(motion.apply(other), normalX, normalY), 1.0);
                 if (grazes) {
                     grazing.add(new Graze(row, ball.position().minus(other.position()), 2 * Arena.BALL_RADIUS,
                             j >= 0 ? Vect.ZERO : motion.apply(other)));
@@ -187,7 +253,7 @@ final class ContactCluster {
     }
 
     /**
-     * The speed along {@code normal} (toward the cluster's ball) of a row on a ball beyond the cluster that moves at
+     * The speed along the normal (toward the cluster's ball) of a row on a ball beyond the cluster that moves at
      * {@code motion}: its own where it moves away, which the cluster's ball may follow, but none where it presses in.
      * The solve moves only the cluster's balls: a ball it does not move, pressing in as a surface does, would push
      * them at its speed and keep it, and with still walls beyond them leave no answer at all (a pocket of more than
@@ -195,8 +261,22 @@ final class ContactCluster {
      * itself again at no time apart to the collision cap, fuzz seeds 1000117, 1000384 and 1000596). Held still, it
      * meets the cluster at once and is solved with its own.
      */
-    private static double beyondSpeed(Vect motion, Vect normal) {
-        return Math.min(0, motion.dot(normal));
+    private static double beyondSpeed(Vect motion, double normalX, double normalY) {
+        return Math.min(0, motion.x() * normalX + motion.y() * normalY);   // motion.dot(normal)
+    }
+
+    /** The next row of the pool, set. */
+    private Row row(int ball, Other other, double normalX, double normalY, Vect normal, double surfaceSpeed,
+                    double restitution) {
+        if (rowsUsed == rowPool.size()) {
+            rowPool.add(new Row());
+        }
+        return rowPool.get(rowsUsed++).set(ball, other, normalX, normalY, normal, surfaceSpeed, restitution);
+    }
+
+    /** {@link #row} with the normal a vector already made. */
+    private Row row(int ball, Other other, Vect normal, double surfaceSpeed, double restitution) {
+        return row(ball, other, normal.x(), normal.y(), normal, surfaceSpeed, restitution);
     }
 
     /** The cluster's ball {@code index} as a row's other: made once per index and kept (a value). */
@@ -270,7 +350,7 @@ final class ContactCluster {
                 // A circle the ball lies on is a row however the ball slides along it: the solve may turn it in.
                 if (gap(p, circle.getCenter(), touch) <= touching) {
                     Vect normal = p.minus(circle.getCenter()).unitSize();
-                    Row row = new Row(index, new Other.Still(ref, gizmo), normal, 0, gizmo.reflectionCoefficient());
+                    Row row = row(index, new Other.Still(ref, gizmo), normal, 0, gizmo.reflectionCoefficient());
                     if (!ball.contacts().contains(ref)
                             && Kinematics.grazes(p.minus(circle.getCenter()), motion.apply(ball), touch)) {
                         grazing.add(new Graze(row, p.minus(circle.getCenter()), touch, Vect.ZERO));
@@ -296,8 +376,9 @@ final class ContactCluster {
         double dy = p.y() - foot.y;
         if (Math.sqrt(dx * dx + dy * dy) - Arena.BALL_RADIUS <= touching) {
             ContactRef ref = gizmo == null ? ContactRef.Wall.of(part) : new ContactRef.Part(gizmo.name(), false, part);
-            rows.add(new Row(index, new Other.Still(ref, gizmo), Components.unit(awayX, awayY), 0,
-                    gizmo == null ? 1.0 : gizmo.reflectionCoefficient()));
+            double length = Components.length(awayX, awayY);   // Components.unit(awayX, awayY), on the components
+            rows.add(row(index, new Other.Still(ref, gizmo), length == 0 ? 0 : awayX / length + 0.0,
+                    length == 0 ? 0 : awayY / length + 0.0, null, 0, gizmo == null ? 1.0 : gizmo.reflectionCoefficient()));
         }
     }
 
@@ -340,7 +421,7 @@ final class ContactCluster {
             Vect foot = Geometry.perpendicularPoint(side, p);
             if (foot != null && gap(p, foot, Arena.BALL_RADIUS) <= touching) {
                 Vect normal = p.minus(foot).unitSize();
-                rows.add(new Row(index, new Other.Moving(moving), normal,
+                rows.add(row(index, new Other.Moving(moving), normal,
                         leavingFace(pivot, omega, p, normal, foot, velocity),
                         moving.reflectionCoefficient()));
             }
@@ -349,7 +430,7 @@ final class ContactCluster {
             if (gap(p, end.getCenter(), end.getRadius() + Arena.BALL_RADIUS) <= touching) {
                 Vect normal = p.minus(end.getCenter()).unitSize();
                 Vect point = end.getCenter().plus(normal.times(end.getRadius()));
-                rows.add(new Row(index, new Other.Moving(moving), normal, leavingEnd(pivot, omega, p, normal, point),
+                rows.add(row(index, new Other.Moving(moving), normal, leavingEnd(pivot, omega, p, normal, point),
                         moving.reflectionCoefficient()));
             }
         }

@@ -102,11 +102,6 @@ final class ShadowEnergy {
         bounced(ball, normal.x(), normal.y());
     }
 
-    /** An elastic bounce off the ball whose normal is {@code normal} (the other of a pair): {@code normal.neg()}. */
-    void bouncedOpposite(Ball ball, Vect normal) {
-        bounced(ball, -normal.x() + 0.0, -normal.y() + 0.0);
-    }
-
     /**
      * An elastic bounce with the normal (normalX, normalY), as a {@code Vect} holds it: the books keep the components,
      * so a pair's bounce, reckoned on them, makes no vector.
