@@ -5,7 +5,6 @@ import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.MovingShape;
 
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
@@ -33,17 +32,13 @@ final class ClusterSolve {
     private final ContactCluster cluster = new ContactCluster();
     /** The solver, its rows and arrays kept from one cluster to the next (grown to the largest seen). */
     private final NormalImpulses impulses;
-    // Kept too, and grown likewise: per ball, the velocities a solve starts from and the elastic bounces' strongest
-    // contact (its impulse, its normal's components); per row, the impact speeds; one row's other normals on its ball.
+    // Kept too, and grown likewise: per ball, the velocities a solve starts from; per row, the impact speeds; one
+    // row's other normals on its ball; the elastic bounces' books.
     private double[] startX = new double[0];
     private double[] startY = new double[0];
-    private double[] most = new double[0];
-    private double[] strongestX = new double[0];
-    private double[] strongestY = new double[0];
-    /** Per ball, whether its strongest contact's normal points away from it (it is the row's other ball). */
-    private boolean[] against = new boolean[0];
     private double[] impact = new double[0];
     private final List<Vect> otherNormals = new ArrayList<>();
+    private final ElasticBounces elasticBounces;
     /** The moving shapes a solve stalled, and the surfaces its impacts were heard from: kept, emptied per solve. */
     private final Set<MovingShape> stalled = new LinkedHashSet<>();
     private final HeardSurfaces heard = new HeardSurfaces();
@@ -54,6 +49,7 @@ final class ClusterSolve {
         this.motion = ball -> step.detector.motion(ball);
         this.movable = candidate -> !step.finished.contains(candidate);
         this.impulses = new NormalImpulses(step.settings);
+        this.elasticBounces = new ElasticBounces(step.energy);
     }
 
     /**
@@ -116,8 +112,8 @@ final class ClusterSolve {
         Solved solved = solveTakingGrazes(cluster, Set.of(), carried);
         stalled.clear();
         if (!solved.result().feasible()) {
-            for (ContactCluster.Row row : cluster.rows()) {
-                if (row.other() instanceof ContactCluster.Other.Moving moving && stalled.add(moving.shape())) {
+            for (ClusterRow row : cluster.rows()) {
+                if (row.other() instanceof ClusterRow.Other.Moving moving && stalled.add(moving.shape())) {
                     moving.shape().stall();
                     step.actions.recordEvent(new PlayEvent.Jammed(moving.shape().name(),
                             balls.get(row.ball()).name()));
@@ -155,7 +151,7 @@ final class ClusterSolve {
             }
         }
         if (elastic) {
-            noteElasticBounces(cluster, result);
+            elasticBounces.note(cluster, result.compression());
         }
         Struck hit = noteImpacts(collision, cluster, impact, result);
         if (woke) {
@@ -190,11 +186,11 @@ final class ClusterSolve {
      * shadow energy as single elastic bounces do, and their timing is corrected like theirs (ShadowEnergy).
      */
     private boolean keepsEnergy(ContactCluster cluster, double[] impact, NormalImpulses.Result result) {
-        List<ContactCluster.Row> rows = cluster.rows();
+        List<ClusterRow> rows = cluster.rows();
         for (int i = 0; i < rows.size(); i++) {
-            ContactCluster.Row row = rows.get(i);
+            ClusterRow row = rows.get(i);
             if (result.compression()[i] > 0 && (result.compression()[i] <= impact[i] || row.restitution() != 1.0
-                    || row.other() instanceof ContactCluster.Other.Moving)) {
+                    || row.other() instanceof ClusterRow.Other.Moving)) {
                 return false;
             }
         }
@@ -208,55 +204,6 @@ final class ClusterSolve {
             after += result.vx()[k] * result.vx()[k] + result.vy()[k] * result.vy()[k];
         }
         return Math.abs(after - before) <= Tolerances.KEPT_ENERGY * before;
-    }
-
-    /**
-     * The elastic bounces of a solve that kept the energy, for the shadow energy: each ball's bounce is along the
-     * normal of the contact that pressed it most, and balls that pressed each other keep their energy together.
-     */
-    private void noteElasticBounces(ContactCluster cluster, NormalImpulses.Result result) {
-        List<ContactCluster.Row> rows = cluster.rows();
-        List<Ball> balls = cluster.balls();
-        if (most.length < balls.size()) {
-            most = new double[balls.size()];
-            strongestX = new double[balls.size()];
-            strongestY = new double[balls.size()];
-            against = new boolean[balls.size()];
-        }
-        Arrays.fill(most, 0, balls.size(), 0);   // a ball with none above 0 had no contact pressed
-        for (int i = 0; i < rows.size(); i++) {
-            ContactCluster.Row row = rows.get(i);
-            double change = result.compression()[i];
-            if (change <= 0) {
-                continue;
-            }
-            if (change > most[row.ball()]) {
-                strongest(row.ball(), change, row, false);
-            }
-            if (row.other() instanceof ContactCluster.Other.InCluster in) {
-                if (change > most[in.index()]) {
-                    strongest(in.index(), change, row, true);
-                }
-                step.energy.met(balls.get(row.ball()), balls.get(in.index()));
-            }
-        }
-        for (int k = 0; k < balls.size(); k++) {
-            if (most[k] > 0) {
-                if (against[k]) {   // normal.neg()
-                    step.energy.bounced(balls.get(k), -strongestX[k] + 0.0, -strongestY[k] + 0.0);
-                } else {
-                    step.energy.bounced(balls.get(k), strongestX[k], strongestY[k]);
-                }
-            }
-        }
-    }
-
-    /** The row pressed ball {@code k} with {@code change}, more than any before it; its normal points away if against. */
-    private void strongest(int k, double change, ContactCluster.Row row, boolean against) {
-        most[k] = change;
-        strongestX[k] = row.normalX();
-        strongestY[k] = row.normalY();
-        this.against[k] = against;
     }
 
     /**
@@ -291,14 +238,14 @@ final class ClusterSolve {
 
     private NormalImpulses.Result solve(ContactCluster cluster, double[] impact, Set<MovingShape> stalled,
                                         boolean carried) {
-        List<ContactCluster.Row> rows = cluster.rows();
+        List<ClusterRow> rows = cluster.rows();
         List<Ball> balls = cluster.balls();
         impulses.clear(balls.size());
         for (int i = 0; i < rows.size(); i++) {
-            ContactCluster.Row row = rows.get(i);
-            boolean still = row.other() instanceof ContactCluster.Other.Moving moving
+            ClusterRow row = rows.get(i);
+            boolean still = row.other() instanceof ClusterRow.Other.Moving moving
                     && stalled.contains(moving.shape());
-            impulses.row(row.ball(), row.other() instanceof ContactCluster.Other.InCluster in ? in.index() : -1,
+            impulses.row(row.ball(), row.other() instanceof ClusterRow.Other.InCluster in ? in.index() : -1,
                     row.normalX(), row.normalY(), still ? 0 : row.surfaceSpeed(),
                     carried ? 0 : row.restitution());
         }
@@ -320,12 +267,12 @@ final class ClusterSolve {
      * gravity bounces; between balls, as for two balls alone ({@link StepContext#pressingSpeed}).
      */
     private double[] impactSpeeds(ContactCluster cluster) {
-        List<ContactCluster.Row> rows = cluster.rows();
+        List<ClusterRow> rows = cluster.rows();
         if (impact.length < rows.size()) {
             impact = new double[Math.max(rows.size(), 2 * impact.length)];
         }
         for (int i = 0; i < rows.size(); i++) {
-            ContactCluster.Row row = rows.get(i);
+            ClusterRow row = rows.get(i);
             if (row.other().surface()) {
                 otherNormals.clear();
                 for (int j = 0; j < rows.size(); j++) {
@@ -351,7 +298,7 @@ final class ClusterSolve {
         heard.clear();
         List<Ball> balls = cluster.balls();
         for (int i = 0; i < cluster.rows().size(); i++) {
-            ContactCluster.Row row = cluster.rows().get(i);
+            ClusterRow row = cluster.rows().get(i);
             Ball ball = balls.get(row.ball());
             double change = result.compression()[i];
             if (change <= 0) {
@@ -383,10 +330,10 @@ final class ClusterSolve {
      * set moving would be sent back into what it was pressed against, and the cluster met again at no time apart (a
      * row of balls between a wall and a square, pushed along: 400 collisions a tick to the cap).
      */
-    private static void rest(Ball ball, ContactCluster.Row row, List<Ball> balls) {
-        if (row.other() instanceof ContactCluster.Other.Still still) {
+    private static void rest(Ball ball, ClusterRow row, List<Ball> balls) {
+        if (row.other() instanceof ClusterRow.Other.Still still) {
             Contacts.attach(ball, still.ref());
-        } else if (row.other() instanceof ContactCluster.Other.InCluster in) {
+        } else if (row.other() instanceof ClusterRow.Other.InCluster in) {
             Ball other = balls.get(in.index());
             holdOn(ball, other);
             holdOn(other, ball);

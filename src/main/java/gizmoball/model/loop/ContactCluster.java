@@ -3,6 +3,7 @@ package gizmoball.model.loop;
 import gizmoball.model.gizmo.GizmoBase;
 import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Shape;
+import gizmoball.model.loop.ClusterRow.Other;
 
 import java.util.ArrayList;
 import java.util.IdentityHashMap;
@@ -33,127 +34,13 @@ final class ContactCluster {
         void balls(Ball ball, double within, List<Ball> into);
     }
 
-    /** What a row of the cluster is a contact with. */
-    sealed interface Other {
-        /** What a ball of the cluster ({@code balls}, by index) struck when this row takes an impact. */
-        Struck struck(List<Ball> balls);
-
-        /** Whether it is a surface (still or moving) rather than a ball. */
-        default boolean surface() {
-            return false;
-        }
-
-        /** A still surface; {@code gizmo} null for an outer wall. */
-        record Still(ContactRef ref, GizmoBase gizmo) implements Other {
-            @Override
-            public Struck struck(List<Ball> balls) {
-                return gizmo == null ? TriggerSource.OUTER_WALLS : TriggerSource.gizmo(gizmo.name());
-            }
-
-            @Override
-            public boolean surface() {
-                return true;
-            }
-        }
-
-        /** A part of a moving shape. */
-        record Moving(MovingShape shape) implements Other {
-            @Override
-            public Struck struck(List<Ball> balls) {
-                return TriggerSource.gizmo(shape.name());
-            }
-
-            @Override
-            public boolean surface() {
-                return true;
-            }
-        }
-
-        /** A ball of the cluster, by its index. */
-        record InCluster(int index) implements Other {
-            @Override
-            public Struck struck(List<Ball> balls) {
-                return balls.get(index).asStruck();
-            }
-        }
-
-        /**
-         * A ball beyond the cluster's limit, taken as a surface moving as it moves now where it moves away, and as a
-         * still one where it presses in ({@link #beyondSpeed}).
-         */
-        record Beyond(Ball ball) implements Other {
-            @Override
-            public Struck struck(List<Ball> balls) {
-                return ball.asStruck();
-            }
-        }
-    }
-
-    /**
-     * One contact: ball {@code ball} (an index) touches {@code other}, with the unit normal (normalX, normalY) toward
-     * the ball, as a {@code Vect} holds it. The cluster keeps its rows from one gathering to the next and sets them
-     * afresh, as Box2D's step takes its contacts from an arena: a row and its normal, made for each contact of each
-     * solve, were a fifth of what a tick of the 100-ball peer board allocated (docs/design.md, "What a tick
-     * allocates"). A row is the cluster's until it gathers again.
-     */
-    static final class Row {
-        private int ball;
-        private Other other;
-        private double normalX;
-        private double normalY;
-        /** The normal as a vector, made when first asked for (most rows are only ever read by component). */
-        private Vect normal;
-        private double surfaceSpeed;
-        private double restitution;
-
-        private Row set(int ball, Other other, double normalX, double normalY, Vect normal, double surfaceSpeed,
-                        double restitution) {
-            this.ball = ball;
-            this.other = other;
-            this.normalX = normalX;
-            this.normalY = normalY;
-            this.normal = normal;
-            this.surfaceSpeed = surfaceSpeed;
-            this.restitution = restitution;
-            return this;
-        }
-
-        int ball() {
-            return ball;
-        }
-
-        Other other() {
-            return other;
-        }
-
-        double normalX() {
-            return normalX;
-        }
-
-        double normalY() {
-            return normalY;
-        }
-
-        Vect normal() {
-            if (normal == null) {
-                normal = new Vect(normalX, normalY);
-            }
-            return normal;
-        }
-
-        double surfaceSpeed() {
-            return surfaceSpeed;
-        }
-
-        double restitution() {
-            return restitution;
-        }
-    }
-
     private final List<Ball> balls = new ArrayList<>();
-    private final List<Row> rows = new ArrayList<>();
-    /** Every row made so far, the first {@link #rowsUsed} of them set in this gathering. */
-    private final List<Row> rowPool = new ArrayList<>();
+    private final List<ClusterRow> rows = new ArrayList<>();
+    /**
+     * Every row made so far, the first {@link #rowsUsed} of them set in this gathering: the rows are kept from one
+     * gathering to the next and set afresh ({@link ClusterRow}).
+     */
+    private final List<ClusterRow> rowPool = new ArrayList<>();
     private int rowsUsed;
     /**
      * Round contacts (a ball, a circle) that the balls graze as they move now: no rows unless the solve turns a ball
@@ -165,7 +52,7 @@ final class ContactCluster {
      * A graze's row; the offset of the ball's centre from the centre it grazes, how near the two touch, and how that
      * centre moves when it is not a ball of the cluster.
      */
-    private record Graze(Row row, Vect offset, double touch, Vect beyondMotion) {
+    private record Graze(ClusterRow row, Vect offset, double touch, Vect beyondMotion) {
     }
     /** L: how near counts as touching for this cluster. */
     private double touching;
@@ -238,7 +125,7 @@ final class ContactCluster {
                     balls.add(other);
                     indexOf.put(other, j);
                 }
-                Row row = j >= 0 ? row(i, inCluster(j), normalX, normalY, null, 0, 1.0)
+                ClusterRow row = j >= 0 ? row(i, inCluster(j), normalX, normalY, null, 0, 1.0)
                         : row(i, new Other.Beyond(other), normalX, normalY, null,
                         beyondSpeed(motion.apply(other), normalX, normalY), 1.0);
                 if (grazes) {
@@ -266,16 +153,16 @@ final class ContactCluster {
     }
 
     /** The next row of the pool, set. */
-    private Row row(int ball, Other other, double normalX, double normalY, Vect normal, double surfaceSpeed,
+    private ClusterRow row(int ball, Other other, double normalX, double normalY, Vect normal, double surfaceSpeed,
                     double restitution) {
         if (rowsUsed == rowPool.size()) {
-            rowPool.add(new Row());
+            rowPool.add(new ClusterRow());
         }
         return rowPool.get(rowsUsed++).set(ball, other, normalX, normalY, normal, surfaceSpeed, restitution);
     }
 
     /** {@link #row} with the normal a vector already made. */
-    private Row row(int ball, Other other, Vect normal, double surfaceSpeed, double restitution) {
+    private ClusterRow row(int ball, Other other, Vect normal, double surfaceSpeed, double restitution) {
         return row(ball, other, normal.x(), normal.y(), normal, surfaceSpeed, restitution);
     }
 
@@ -291,7 +178,7 @@ final class ContactCluster {
         return balls;
     }
 
-    List<Row> rows() {
+    List<ClusterRow> rows() {
         return rows;
     }
 
@@ -307,7 +194,7 @@ final class ContactCluster {
         boolean took = false;
         for (int i = grazing.size() - 1; i >= 0; i--) {
             Graze graze = grazing.get(i);
-            Row row = graze.row();
+            ClusterRow row = graze.row();
             Vect relative = new Vect(vx[row.ball()], vy[row.ball()]).minus(graze.beyondMotion());
             if (row.other() instanceof Other.InCluster in) {
                 relative = relative.minus(new Vect(vx[in.index()], vy[in.index()]));
@@ -350,7 +237,7 @@ final class ContactCluster {
                 // A circle the ball lies on is a row however the ball slides along it: the solve may turn it in.
                 if (gap(p, circle.getCenter(), touch) <= touching) {
                     Vect normal = p.minus(circle.getCenter()).unitSize();
-                    Row row = row(index, new Other.Still(ref, gizmo), normal, 0, gizmo.reflectionCoefficient());
+                    ClusterRow row = row(index, new Other.Still(ref, gizmo), normal, 0, gizmo.reflectionCoefficient());
                     if (!ball.contacts().contains(ref)
                             && Kinematics.grazes(p.minus(circle.getCenter()), motion.apply(ball), touch)) {
                         grazing.add(new Graze(row, p.minus(circle.getCenter()), touch, Vect.ZERO));
@@ -377,8 +264,9 @@ final class ContactCluster {
         if (Math.sqrt(dx * dx + dy * dy) - Arena.BALL_RADIUS <= touching) {
             ContactRef ref = gizmo == null ? ContactRef.Wall.of(part) : new ContactRef.Part(gizmo.name(), false, part);
             double length = Components.length(awayX, awayY);   // Components.unit(awayX, awayY), on the components
+            double restitution = gizmo == null ? 1.0 : gizmo.reflectionCoefficient();
             rows.add(row(index, new Other.Still(ref, gizmo), length == 0 ? 0 : awayX / length + 0.0,
-                    length == 0 ? 0 : awayY / length + 0.0, null, 0, gizmo == null ? 1.0 : gizmo.reflectionCoefficient()));
+                    length == 0 ? 0 : awayY / length + 0.0, null, 0, restitution));
         }
     }
 

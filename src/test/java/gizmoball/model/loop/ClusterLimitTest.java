@@ -39,8 +39,8 @@ class ClusterLimitTest {
         return cluster;
     }
 
-    private static ContactCluster.Row beyondRow(ContactCluster cluster) {
-        return cluster.rows().stream().filter(row -> row.other() instanceof ContactCluster.Other.Beyond).findFirst()
+    private static ClusterRow beyondRow(ContactCluster cluster) {
+        return cluster.rows().stream().filter(row -> row.other() instanceof ClusterRow.Other.Beyond).findFirst()
                 .orElseThrow();
     }
 
@@ -48,7 +48,7 @@ class ClusterLimitTest {
     void aBallBeyondThatPressesInIsStill() {
         ContactCluster cluster = columnWithTopBeyond(5);
 
-        ContactCluster.Row row = beyondRow(cluster);
+        ClusterRow row = beyondRow(cluster);
         assertThat(row.normal()).isEqualTo(new Vect(0, 1));
         assertThat(row.surfaceSpeed()).isZero();
         // The floor, the column on it and the ball beyond still on top: the balls at rest close on no row.
@@ -57,7 +57,7 @@ class ClusterLimitTest {
 
     @Test
     void aBallBeyondThatMovesAwayIsFollowedAtItsSpeed() {
-        ContactCluster.Row row = beyondRow(columnWithTopBeyond(-5));
+        ClusterRow row = beyondRow(columnWithTopBeyond(-5));
 
         assertThat(row.surfaceSpeed()).isEqualTo(-5);
     }
