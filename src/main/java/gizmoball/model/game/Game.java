@@ -29,6 +29,12 @@ import java.util.OptionalLong;
  */
 public final class Game implements GameProgress {
     public static final int MAX_PLAYERS = 4;
+    /**
+     * The scoring hits a game lists at most ({@link #scoringHits}); those after are counted. A board of 200 balls among
+     * bumpers scores some 40 hits a tick, and a list of every one grew by some 300 MB an hour; a game of a few balls,
+     * scoring ten hits a second, lists an hour of play.
+     */
+    public static final int LISTED_SCORING_HITS = 100_000;
 
     private final Playfield field;
     private int players = 1;
@@ -46,6 +52,7 @@ public final class Game implements GameProgress {
     /** The board times of the recent nudges, oldest first. */
     private final Deque<Double> nudges = new ArrayDeque<>();
     private final List<ScoringHit> scoringHits = new ArrayList<>();
+    private long unlistedScoringHits;
     private final List<Drain> drains = new ArrayList<>();
     private final List<KeyPress> keys = new ArrayList<>();
     private final List<Notice> notices = new ArrayList<>();
@@ -71,6 +78,7 @@ public final class Game implements GameProgress {
         nudges.addAll(source.nudges);
         scoringHits.clear();
         scoringHits.addAll(source.scoringHits);
+        unlistedScoringHits = source.unlistedScoringHits;
         drains.clear();
         drains.addAll(source.drains);
         keys.clear();
@@ -169,7 +177,11 @@ public final class Game implements GameProgress {
             return;
         }
         scores[current] += points;
-        scoringHits.add(new ScoringHit(tick, gizmo, points));
+        if (scoringHits.size() < LISTED_SCORING_HITS) {
+            scoringHits.add(new ScoringHit(tick, gizmo, points));
+        } else {
+            unlistedScoringHits++;
+        }
         if (rules.isGame() && !extraBallGiven[current] && rules.extraBallAt().isPresent()
                 && scores[current] >= rules.extraBallAt().getAsLong()) {
             extraBallGiven[current] = true;
@@ -270,6 +282,11 @@ public final class Game implements GameProgress {
     @Override
     public List<ScoringHit> scoringHits() {
         return Collections.unmodifiableList(scoringHits);
+    }
+
+    @Override
+    public long unlistedScoringHits() {
+        return unlistedScoringHits;
     }
 
     @Override

@@ -39,8 +39,11 @@ public interface GameProgress {
     /** The tick in which the first extra ball was awarded, if one was. */
     OptionalLong extraBallTick();
 
-    /** Every hit that scored, in order. */
+    /** Every hit that scored, in order, up to {@link Game#LISTED_SCORING_HITS}: the first ones. */
     List<ScoringHit> scoringHits();
+
+    /** The hits that scored after the first {@link Game#LISTED_SCORING_HITS}: counted, not listed. */
+    long unlistedScoringHits();
 
     /** Every ball lost, in order. */
     List<Drain> drains();

@@ -234,4 +234,34 @@ class GameTest {
         assertThat(board.ticks()).isZero();
         assertThat(board.gameRules()).isEqualTo(GameRules.DEFAULT);
     }
+
+    /**
+     * A game lists its first {@link Game#LISTED_SCORING_HITS} scoring hits and counts the rest, so that a board that
+     * scores all the time keeps no growing list: 18 balls, each between two squares 1 L apart at 100 L/s, score
+     * 3 1/3 hits a tick each, every hit at the score of a square.
+     */
+    @Test
+    void aGameListsItsFirstScoringHitsAndCountsTheRest() {
+        Board board = weightless();
+        for (int row = 1; row <= 18; row++) {
+            board.addGizmo(GizmoKind.SQUARE, "L" + row, 5, row);
+            board.addGizmo(GizmoKind.SQUARE, "R" + row, 7, row);
+            board.addBall("B" + row, 6.5, row + 0.5, 100, 0);
+        }
+        int points = Points.defaultFor(GizmoKind.SQUARE);
+
+        while (board.game().score() / points <= Game.LISTED_SCORING_HITS + 1_000) {
+            board.tick(DT);
+        }
+
+        long hits = board.game().score() / points;
+        assertThat(board.game().scoringHits()).hasSize(Game.LISTED_SCORING_HITS);
+        assertThat(board.game().unlistedScoringHits()).isEqualTo(hits - Game.LISTED_SCORING_HITS);
+        assertThat(board.game().scoringHits().get(Game.LISTED_SCORING_HITS - 1).tick())
+                .as("the last listed is one of the first hundred thousand, scored before the end")
+                .isLessThan(board.ticks());
+        Board copy = board.copy();
+        assertThat(copy.game().unlistedScoringHits()).as("a copy goes on with the count")
+                .isEqualTo(board.game().unlistedScoringHits());
+    }
 }
