@@ -315,7 +315,7 @@ final class ClusterSolve {
             }
             if (heard.firstFrom(struck)) {
                 GizmoKind kind = target == null ? null : target.kind();
-                step.actions.recordEvent(new PlayEvent.Hit(struck, kind, change, ball.name(), ball.position()));
+                step.actions.recordEvent(PlayEvent.Hit.of(ball, struck, kind, change));
                 if (struck instanceof TriggerSource source && !struck.equals(own)) {
                     step.alsoHit.add(source);
                 }

@@ -17,9 +17,10 @@ import physics.Vect;
 
 /**
  * Stage 3 of the loop, for one ball: the time until it hits the outer walls, each gizmo shape it can reach, or
- * another ball. All times come from physics.Geometry. A moving shape (a swinging flipper) is asked through the
- * rotating methods of a GeometryImpl whose foresight ends when it stops or the window does (the library's rotation
- * goes on for ever; docs/design.md, "Rotation that stops"); after a stop it is a fixed shape there.
+ * another ball. All times come from physics.Geometry, a pair of balls' as it gives it ({@link BallMeeting}). A moving
+ * shape (a swinging flipper) is asked through the rotating methods of a GeometryImpl whose foresight ends when it stops
+ * or the window does (the library's rotation goes on for ever; docs/design.md, "Rotation that stops"); after a stop it
+ * is a fixed shape there.
  *
  * <p>A touch that does not close faster than {@link Tolerances#ROUNDING_SPEED} is a graze, not a collision: a
  * ball rolling along a surface, across a seam or past a corner it only brushes is never stopped for it
@@ -130,11 +131,15 @@ final class CollisionDetector {
 
     /** The two balls' collision, if it comes within the window, offered to {@code earliest} as {@code ball}'s. */
     void againstBall(Ball ball, Ball other, double window, Earliest earliest) {
-        boolean mineStill = resting(ball);
-        boolean theirsStill = resting(other);
-        double rx = (mineStill ? 0 : ball.vx()) - (theirsStill ? 0 : other.vx());
-        double ry = (mineStill ? 0 : ball.vy()) - (theirsStill ? 0 : other.vy());   // motion(ball).minus(motion(other))
-        double dx = ball.x() - other.x();   // as Vect.distanceSquared, without making the centres' vectors
+        // motion(ball) and motion(other) as their Vects hold them (a ball's velocity is kept so), and the centres'
+        // offset and the relative motion on the components, without making a vector
+        double mineX = motionX(ball);
+        double mineY = motionY(ball);
+        double theirsX = motionX(other);
+        double theirsY = motionY(other);
+        double rx = mineX - theirsX;
+        double ry = mineY - theirsY;
+        double dx = ball.x() - other.x();
         double dy = ball.y() - other.y();
         if (!Approach.mayMeetBall(dx, dy, rx, ry, window)) {
             return;   // too far for their speed, not closing (the API's own first answer is then "never"), or passing
@@ -142,17 +147,13 @@ final class CollisionDetector {
         if (view.passingThrough(ball, other)) {
             return;   // placed on each other (a loaded file may do that): they pass through until they are apart
         }
-        // Made for this test alone, none of its vectors or circles is allocated (design.md, "What a tick allocates")
-        Vect mine = new Vect(mineStill ? 0 : ball.vx(), mineStill ? 0 : ball.vy());
-        Vect theirs = new Vect(theirsStill ? 0 : other.vx(), theirsStill ? 0 : other.vy());
-        double time = Geometry.timeUntilBallBallCollision(new Circle(ball.position(), Arena.BALL_RADIUS), mine,
-                new Circle(other.position(), Arena.BALL_RADIUS), theirs);
+        double time = BallMeeting.time(dx, dy, rx, ry);   // Geometry.timeUntilBallBallCollision's
         if (time <= window) {
             // ball.position().plus(mine.times(time)).minus(other.position().plus(theirs.times(time))) and
             // mine.minus(theirs), on the components with Vect's + 0.0 at each made vector (the same doubles)
-            double awayX = at(ball.x(), mine.x(), time) - at(other.x(), theirs.x(), time) + 0.0;
-            double awayY = at(ball.y(), mine.y(), time) - at(other.y(), theirs.y(), time) + 0.0;
-            if (closingOnCircle(awayX, awayY, mine.x() - theirs.x() + 0.0, mine.y() - theirs.y() + 0.0)) {
+            double awayX = at(ball.x(), mineX, time) - at(other.x(), theirsX, time) + 0.0;
+            double awayY = at(ball.y(), mineY, time) - at(other.y(), theirsY, time) + 0.0;
+            if (closingOnCircle(awayX, awayY, rx + 0.0, ry + 0.0)) {
                 earliest.offer(time, ball, other.asContact(), true);
             }
         }

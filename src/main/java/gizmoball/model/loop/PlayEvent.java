@@ -9,15 +9,26 @@ public sealed interface PlayEvent {
 
     /**
      * A ball hit {@code struck}: a gizmo (of {@code kind}), the outer walls or another ball ({@code kind} null for
-     * both), closing at {@code speed} L/s along the contact normal. {@code ball} is the ball that hit, {@code at} its
-     * centre at the moment of the hit (the aim preview marks it).
+     * both), closing at {@code speed} L/s along the contact normal. {@code ball} is the ball that hit, (atX, atY) its
+     * centre at the moment of the hit (the aim preview marks it): coordinates, not a vector, for a board of 100 balls
+     * reports some 20 hits a tick (docs/design.md, "What a tick allocates").
      */
-    record Hit(Struck struck, GizmoKind kind, double speed, String ball, Vect at) implements PlayEvent {
+    record Hit(Struck struck, GizmoKind kind, double speed, String ball, double atX, double atY) implements PlayEvent {
         /**
          * L/s: the slowest impact that is a real hit, the one threshold of everything that hears hits (a hit scores,
          * a hit clicks). Slower ones are a ball settling or rolling along a surface.
          */
         public static final double REAL_IMPACT_SPEED = 1;
+
+        /** {@code ball}'s hit, its centre where it is now. */
+        static Hit of(Ball ball, Struck struck, GizmoKind kind, double speed) {
+            return new Hit(struck, kind, speed, ball.name(), ball.x(), ball.y());
+        }
+
+        /** The ball's centre at the moment of the hit. */
+        public Vect at() {
+            return new Vect(atX, atY);
+        }
 
         /** A real impact, not a ball settling: it scores and it is heard. */
         public boolean isRealImpact() {
