@@ -12,7 +12,7 @@ import physics.Vect;
 /**
  * {@link BallBounce} gives the very doubles of {@code Geometry.reflectBalls} with masses 1 and 1, the oracle: on
  * random balls touching or apart at any scale, at rest or moving any way, centres coinciding or a tiny offset apart,
- * and infinite or NaN components.
+ * and infinite or NaN components ({@link OddVects}).
  */
 class BallBounceTest {
     @Test
@@ -21,11 +21,11 @@ class BallBounceTest {
         BallBounce bounce = new BallBounce();
         int changed = 0;
         for (int i = 0; i < 500_000; i++) {
-            Vect c1 = vect(random);
+            Vect c1 = OddVects.vect(random);
             Vect c2 = random.nextInt(8) == 0 ? c1 : random.nextInt(8) == 0
-                    ? new Vect(c1.x() + Math.ulp(c1.x()), c1.y()) : vect(random);
-            Vect v1 = vect(random);
-            Vect v2 = vect(random);
+                    ? new Vect(c1.x() + Math.ulp(c1.x()), c1.y()) : OddVects.vect(random);
+            Vect v1 = OddVects.vect(random);
+            Vect v2 = OddVects.vect(random);
 
             bounce.between(c1.x(), c1.y(), v1.x(), v1.y(), c2.x(), c2.y(), v2.x(), v2.y());
 
@@ -44,20 +44,5 @@ class BallBounceTest {
 
     private static long bits(double value) {
         return Double.doubleToRawLongBits(value);
-    }
-
-    /** A vector as a Vect holds it: mostly board-sized, some zero, tiny, huge, infinite or NaN components. */
-    private static Vect vect(SplittableRandom random) {
-        return new Vect(component(random), component(random));
-    }
-
-    private static double component(SplittableRandom random) {
-        return switch (random.nextInt(20)) {
-            case 0 -> 0;
-            case 1 -> random.nextDouble(-1, 1) * Double.MIN_NORMAL * 64;
-            case 2 -> random.nextDouble(-1, 1) * 1e300;
-            case 3 -> random.nextBoolean() ? Double.POSITIVE_INFINITY : Double.NaN;
-            default -> random.nextDouble(-25, 25);
-        };
     }
 }

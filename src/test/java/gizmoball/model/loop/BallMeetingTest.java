@@ -13,7 +13,7 @@ import physics.Vect;
 /**
  * {@link BallMeeting} gives the very double of {@code Geometry.timeUntilBallBallCollision} for two balls' circles, the
  * oracle: on random pairs touching, overlapping, grazing or apart at any scale, at rest or moving any way, and with
- * tiny, huge, infinite or NaN components.
+ * tiny, huge, infinite or NaN components ({@link OddVects}).
  */
 class BallMeetingTest {
     private static final double R = Arena.BALL_RADIUS;
@@ -24,10 +24,10 @@ class BallMeetingTest {
         int met = 0;
         int atOnce = 0;
         for (int i = 0; i < 500_000; i++) {
-            Vect c1 = vect(random);
-            Vect c2 = random.nextInt(4) == 0 ? near(c1, random) : vect(random);
-            Vect v1 = vect(random);
-            Vect v2 = random.nextInt(4) == 0 ? Vect.ZERO : vect(random);
+            Vect c1 = OddVects.vect(random);
+            Vect c2 = random.nextInt(4) == 0 ? near(c1, random) : OddVects.vect(random);
+            Vect v1 = OddVects.vect(random);
+            Vect v2 = random.nextInt(4) == 0 ? Vect.ZERO : OddVects.vect(random);
 
             double time = BallMeeting.time(c1.x() - c2.x(), c1.y() - c2.y(), v1.x() - v2.x(), v1.y() - v2.y());
 
@@ -49,20 +49,5 @@ class BallMeetingTest {
         double angle = random.nextDouble(0, 2 * Math.PI);
         double distance = random.nextInt(3) == 0 ? 2 * R + random.nextDouble(-1e-9, 1e-9) : random.nextDouble(0, 3);
         return new Vect(c.x() + distance * Math.cos(angle), c.y() + distance * Math.sin(angle));
-    }
-
-    /** A vector as a Vect holds it: mostly board-sized, some zero, tiny, huge, infinite or NaN components. */
-    private static Vect vect(SplittableRandom random) {
-        return new Vect(component(random), component(random));
-    }
-
-    private static double component(SplittableRandom random) {
-        return switch (random.nextInt(20)) {
-            case 0 -> 0;
-            case 1 -> random.nextDouble(-1, 1) * Double.MIN_NORMAL * 64;
-            case 2 -> random.nextDouble(-1, 1) * 1e300;
-            case 3 -> random.nextBoolean() ? Double.POSITIVE_INFINITY : Double.NaN;
-            default -> random.nextDouble(-25, 25);
-        };
     }
 }
