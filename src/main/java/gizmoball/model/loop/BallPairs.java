@@ -36,8 +36,8 @@ final class BallPairs {
         double dx = ball.x() - other.x() + 0.0;
         double dy = ball.y() - other.y() + 0.0;
         double length = Components.length(dx, dy);
-        double normalX = length == 0 ? 0 : dx / length + 0.0;
-        double normalY = length == 0 ? 0 : dy / length + 0.0;
+        double normalX = Components.unitPart(dx, length);
+        double normalY = Components.unitPart(dy, length);
         double rx = ball.vx() - step.detector.motionX(other) + 0.0;   // ball.velocity().minus(motion(other))
         double ry = ball.vy() - step.detector.motionY(other) + 0.0;
         double approach = -(rx * normalX + ry * normalY);

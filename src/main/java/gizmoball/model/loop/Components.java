@@ -21,6 +21,14 @@ final class Components {
         return StrictMath.hypot(x, y);
     }
 
+    /**
+     * One component of {@code new Vect(x, y).unitSize()}, without making it: {@code part} (x or y) over the
+     * {@link #length} of (x, y), 0 where that is 0.
+     */
+    static double unitPart(double part, double length) {
+        return length == 0 ? 0 : part / length + 0.0;
+    }
+
     /** {@code new Vect(x, y).unitSize()}: the unit vector along (x, y), and {@code Vect.ZERO} for (0, 0). */
     static Vect unit(double x, double y) {
         double length = length(x, y);

@@ -112,8 +112,8 @@ final class ContactCluster {
                 double offsetX = ball.x() - other.x() + 0.0;
                 double offsetY = ball.y() - other.y() + 0.0;
                 double length = Components.length(offsetX, offsetY);
-                double normalX = length == 0 ? 0 : offsetX / length + 0.0;
-                double normalY = length == 0 ? 0 : offsetY / length + 0.0;
+                double normalX = Components.unitPart(offsetX, length);
+                double normalY = Components.unitPart(offsetY, length);
                 Vect mine = motion.apply(ball);
                 Vect theirs = motion.apply(other);
                 // Kinematics.grazes(ball.position().minus(other.position()), mine.minus(theirs), 2r), on the
@@ -265,8 +265,8 @@ final class ContactCluster {
             ContactRef ref = gizmo == null ? ContactRef.Wall.of(part) : new ContactRef.Part(gizmo.name(), false, part);
             double length = Components.length(awayX, awayY);   // Components.unit(awayX, awayY), on the components
             double restitution = gizmo == null ? 1.0 : gizmo.reflectionCoefficient();
-            rows.add(row(index, new Other.Still(ref, gizmo), length == 0 ? 0 : awayX / length + 0.0,
-                    length == 0 ? 0 : awayY / length + 0.0, null, 0, restitution));
+            rows.add(row(index, new Other.Still(ref, gizmo), Components.unitPart(awayX, length),
+                    Components.unitPart(awayY, length), null, 0, restitution));
         }
     }
 
