@@ -60,6 +60,48 @@ final class ClosedForms {
         return excess / (-along + Math.sqrt(discriminant));
     }
 
+    /**
+     * {@link GeometryImpl#timeUntilWallCollision}, for a ball of {@code radius} centred at (centerX, centerY) moving at
+     * (velocityX, velocityY).
+     */
+    static double timeUntilFace(LineSegment line, double centerX, double centerY, double radius, double velocityX,
+                                double velocityY) {
+        // On the components, making no vector (an engine asks this for every face in reach of every ball): each
+        // step is the Vect arithmetic it stands for, in the same order, so the doubles are the same. A component
+        // of a vector made from a sum or product gets + 0.0, as Vect's constructor adds (no -0.0 in a Vect).
+        Vect p1 = line.p1();
+        Vect p2 = line.p2();
+        double dirX = p2.x() - p1.x() + 0.0;
+        double dirY = p2.y() - p1.y() + 0.0;
+        // normal = new Vect(-dir.y, dir.x).unitSize()
+        double perpX = -dirY + 0.0;
+        double perpY = dirX + 0.0;
+        double perpLength = length(perpX, perpY);
+        double normalX = perpLength == 0 ? 0 : perpX / perpLength + 0.0;
+        double normalY = perpLength == 0 ? 0 : perpY / perpLength + 0.0;
+        double offset = (centerX - p1.x() + 0.0) * normalX + (centerY - p1.y() + 0.0) * normalY;
+        double normalSpeed = velocityX * normalX + velocityY * normalY;
+        // Rate of change of |offset|; a centre exactly on the line moves away from it whichever way it goes.
+        double closingRate = offset == 0 ? Math.abs(normalSpeed) : Math.signum(offset) * normalSpeed;
+        double gap = Math.abs(offset) - radius;
+        if (gap <= 0) {
+            return closingRate < 0 && footOnFace(line, centerX, centerY) ? 0 : Double.POSITIVE_INFINITY;
+        }
+        if (closingRate >= 0) {
+            return Double.POSITIVE_INFINITY;
+        }
+        double time = gap / -closingRate;
+        if (time == Double.POSITIVE_INFINITY) {
+            // A subnormal closing speed: the contact lies beyond the range of doubles, and moving the centre
+            // by an infinite time would turn its zero components into NaN.
+            return time;
+        }
+        // the centre at contact: center.plus(velocity.times(time))
+        double atX = centerX + (velocityX * time + 0.0) + 0.0;
+        double atY = centerY + (velocityY * time + 0.0) + 0.0;
+        return footOnFace(line, atX, atY) ? time : Double.POSITIVE_INFINITY;
+    }
+
     /** |d|&sup2; - radius&sup2;, as a product of sum and difference. */
     static double excessSquared(double dx, double dy, double radius) {
         double length = norm(dx, dy);

@@ -7,6 +7,7 @@ import static physics.ClosedForms.quarterDiscriminant;
 import static physics.ClosedForms.reflectAlong;
 import static physics.ClosedForms.reflectOffMovingSurface;
 import static physics.ClosedForms.timeUntilCentresAt;
+import static physics.ClosedForms.timeUntilFace;
 
 import physics.Geometry.DoublePair;
 import physics.Geometry.VectPair;
@@ -159,41 +160,10 @@ public class GeometryImpl implements GeometryInterface {
      */
     @Override
     public double timeUntilWallCollision(LineSegment line, Circle ball, Vect velocity) {
-        // On the components, making no vector (an engine asks this for every face in reach of every ball): each
-        // step is the Vect arithmetic it stands for, in the same order, so the doubles are the same. A component
-        // of a vector made from a sum or product gets + 0.0, as Vect's constructor adds (no -0.0 in a Vect).
-        Vect p1 = line.p1();
-        Vect p2 = line.p2();
-        double dirX = p2.x() - p1.x() + 0.0;
-        double dirY = p2.y() - p1.y() + 0.0;
-        // normal = new Vect(-dir.y, dir.x).unitSize()
-        double perpX = -dirY + 0.0;
-        double perpY = dirX + 0.0;
-        double perpLength = length(perpX, perpY);
-        double normalX = perpLength == 0 ? 0 : perpX / perpLength + 0.0;
-        double normalY = perpLength == 0 ? 0 : perpY / perpLength + 0.0;
-        Vect center = ball.getCenter();
-        double offset = (center.x() - p1.x() + 0.0) * normalX + (center.y() - p1.y() + 0.0) * normalY;
-        double normalSpeed = velocity.x() * normalX + velocity.y() * normalY;
-        // Rate of change of |offset|; a centre exactly on the line moves away from it whichever way it goes.
-        double closingRate = offset == 0 ? Math.abs(normalSpeed) : Math.signum(offset) * normalSpeed;
-        double gap = Math.abs(offset) - ball.getRadius();
-        if (gap <= 0) {
-            return closingRate < 0 && footOnFace(line, center.x(), center.y()) ? 0 : Double.POSITIVE_INFINITY;
-        }
-        if (closingRate >= 0) {
-            return Double.POSITIVE_INFINITY;
-        }
-        double time = gap / -closingRate;
-        if (time == Double.POSITIVE_INFINITY) {
-            // A subnormal closing speed: the contact lies beyond the range of doubles, and moving the centre
-            // by an infinite time would turn its zero components into NaN.
-            return time;
-        }
-        // the centre at contact: center.plus(velocity.times(time))
-        double atX = center.x() + (velocity.x() * time + 0.0) + 0.0;
-        double atY = center.y() + (velocity.y() * time + 0.0) + 0.0;
-        return footOnFace(line, atX, atY) ? time : Double.POSITIVE_INFINITY;
+        // Reckoned on the components by a method of its own, so that this one is small enough for the JIT to inline
+        // into its caller, and a circle and a vector the caller makes for the question need not be made at all.
+        return timeUntilFace(line, ball.getCenter().x(), ball.getCenter().y(), ball.getRadius(), velocity.x(),
+                velocity.y());
     }
 
     /** The velocity reflected off the segment's line, its normal part multiplied by the coefficient. */

@@ -98,8 +98,6 @@ final class CollisionDetector {
     Earliest againstScene(Ball ball, double window) {
         Earliest earliest = scene;
         earliest.reset(window);
-        // The ball's circle and velocity as vectors, which the physics API takes, are made (by the ball, once per place
-        // and velocity) only when a shape lies in reach: most asks in a tick find none.
         double vx = motionX(ball);
         double vy = motionY(ball);
         boolean still = vx == 0 && vy == 0;
@@ -110,9 +108,8 @@ final class CollisionDetector {
                 if (swept.misses(wall) || !Approach.mayMeetLine(wall, ball.x(), ball.y(), vx, vy, earliest.limit())) {
                     continue;
                 }
-                Vect velocity = motion(ball);
-                double time = Geometry.timeUntilWallCollision(wall, ball.circle(), velocity);
-                if (time <= earliest.limit() && closesOnSegment(wall, ball, velocity, time)) {
+                double time = Geometry.timeUntilWallCollision(wall, circleAfter(ball, vx, vy, 0), new Vect(vx, vy));
+                if (time <= earliest.limit() && closesOnSegment(wall, ball, vx, vy, time)) {
                     earliest.offer(time, ball, WALL_CONTACTS.get(side), false);
                 }
             }
@@ -175,8 +172,6 @@ final class CollisionDetector {
      * within the box it sweeps in the window, so what lies outside the box is passed over.
      */
     private void againstStillShape(Ball ball, double delay, GizmoBase gizmo, Shape shape, Earliest earliest) {
-        Vect velocity = null;
-        Circle circle = null;
         // Where the ball is after the delay, and how it moves, for the tests that pass over what it cannot meet
         double vx = motionX(ball);
         double vy = motionY(ball);
@@ -188,12 +183,9 @@ final class CollisionDetector {
                     || !Approach.mayMeetLine(segments.get(i), cx, cy, vx, vy, earliest.limit() - delay)) {
                 continue;
             }
-            if (circle == null) {
-                velocity = motion(ball);
-                circle = circleAfter(ball, velocity, delay);
-            }
-            double time = delay + Geometry.timeUntilWallCollision(segments.get(i), circle, velocity);
-            if (time <= earliest.limit() && closesOnSegment(segments.get(i), ball, velocity, time)) {
+            double time = delay + Geometry.timeUntilWallCollision(segments.get(i), circleAfter(ball, vx, vy, delay),
+                    new Vect(vx, vy));
+            if (time <= earliest.limit() && closesOnSegment(segments.get(i), ball, vx, vy, time)) {
                 earliest.offer(time, ball, new Contact.Face(gizmo, i, segments.get(i)), false);
             }
         }
@@ -203,12 +195,9 @@ final class CollisionDetector {
                     || !Approach.mayMeetCircle(circles.get(i), cx, cy, vx, vy, earliest.limit() - delay)) {
                 continue;
             }
-            if (circle == null) {
-                velocity = motion(ball);
-                circle = circleAfter(ball, velocity, delay);
-            }
-            double time = delay + Geometry.timeUntilCircleCollision(circles.get(i), circle, velocity);
-            if (time <= earliest.limit() && closingOnCircle(ball, velocity, time, circles.get(i).getCenter())) {
+            double time = delay + Geometry.timeUntilCircleCollision(circles.get(i), circleAfter(ball, vx, vy, delay),
+                    new Vect(vx, vy));
+            if (time <= earliest.limit() && closingOnCircle(ball, vx, vy, time, circles.get(i).getCenter())) {
                 earliest.offer(time, ball, new Contact.Round(gizmo, i, circles.get(i)), true);
             }
         }
@@ -245,7 +234,8 @@ final class CollisionDetector {
             if (moving.turnsInPlace(i)) {
                 // Its centre is the pivot: it turns in place, a still circle to the ball.
                 double time = Geometry.timeUntilCircleCollision(end, circle, velocity);
-                if (time <= earliest.limit() && closingOnCircle(ball, velocity, time, end.getCenter())) {
+                if (time <= earliest.limit()
+                        && closingOnCircle(ball, velocity.x(), velocity.y(), time, end.getCenter())) {
                     earliest.offer(time, ball, new Contact.Round(gizmo, i, end), true);
                 }
                 continue;
@@ -275,10 +265,16 @@ final class CollisionDetector {
         return rotating;
     }
 
-    /** The ball's circle where it will be after {@code delay} seconds at {@code velocity}: its own for none. */
-    private static Circle circleAfter(Ball ball, Vect velocity, double delay) {
-        return delay == 0 ? ball.circle()
-                : new Circle(ball.position().plus(velocity.times(delay)), Arena.BALL_RADIUS);
+    /**
+     * The ball's circle where it will be after {@code delay} seconds at (vx, vy), for a question to physics-lib: made
+     * at the question, never kept, so that where the API's method is inlined (physics-lib keeps the hot ones small)
+     * the JIT need not make it, nor the velocity made beside it (200 balls in play made 1.6 KB of them a tick).
+     * {@code ball.position().plus(velocity.times(delay))} on the components: its own centre for no delay. One vector
+     * is made on either way, for the JIT does not take apart objects that two branches made.
+     */
+    private static Circle circleAfter(Ball ball, double vx, double vy, double delay) {
+        Vect centre = delay == 0 ? ball.position() : new Vect(at(ball.x(), vx, delay), at(ball.y(), vy, delay));
+        return new Circle(centre, Arena.BALL_RADIUS);
     }
 
     /**
@@ -288,12 +284,12 @@ final class CollisionDetector {
      * {@code Geometry.perpendicularPointWholeLine} and of {@code closing}, in the same order, each component of a made
      * vector with Vect's + 0.0 (the same doubles; {@code CollisionDetectorTest} holds the two to it).
      */
-    static boolean closesOnSegment(LineSegment segment, Ball ball, Vect velocity, double time) {
+    static boolean closesOnSegment(LineSegment segment, Ball ball, double vx, double vy, double time) {
         if (!(time < Double.POSITIVE_INFINITY)) {
             return false;
         }
-        double cx = ball.x() + (velocity.x() * time + 0.0) + 0.0;
-        double cy = ball.y() + (velocity.y() * time + 0.0) + 0.0;
+        double cx = ball.x() + (vx * time + 0.0) + 0.0;
+        double cy = ball.y() + (vy * time + 0.0) + 0.0;
         Vect p1 = segment.p1();
         Vect p2 = segment.p2();
         double dirX = p2.x() - p1.x() + 0.0;
@@ -308,7 +304,7 @@ final class CollisionDetector {
         double awayX = cx - footX + 0.0;
         double awayY = cy - footY + 0.0;
         double length = awayX == 0 ? Math.abs(awayY) : awayY == 0 ? Math.abs(awayX) : StrictMath.hypot(awayX, awayY);
-        return length > 0 && -(velocity.x() * awayX + velocity.y() * awayY) / length > Tolerances.ROUNDING_SPEED;
+        return length > 0 && -(vx * awayX + vy * awayY) / length > Tolerances.ROUNDING_SPEED;
     }
 
     /**
@@ -329,12 +325,12 @@ final class CollisionDetector {
     }
 
     /**
-     * {@link #closingOnCircle} of the ball, moved on at {@code velocity} for {@code time}, at a circle centred on
+     * {@link #closingOnCircle} of the ball, moved on at (vx, vy) for {@code time}, at a circle centred on
      * {@code centre}: {@code ball.position().plus(velocity.times(time)).minus(centre)} on the components.
      */
-    private static boolean closingOnCircle(Ball ball, Vect velocity, double time, Vect centre) {
-        return closingOnCircle(at(ball.x(), velocity.x(), time) - centre.x() + 0.0,
-                at(ball.y(), velocity.y(), time) - centre.y() + 0.0, velocity.x(), velocity.y());
+    private static boolean closingOnCircle(Ball ball, double vx, double vy, double time, Vect centre) {
+        return closingOnCircle(at(ball.x(), vx, time) - centre.x() + 0.0, at(ball.y(), vy, time) - centre.y() + 0.0,
+                vx + 0.0, vy + 0.0);
     }
 
     /** One component of {@code position.plus(velocity.times(time))}, with Vect's + 0.0 at each made vector. */

@@ -37,7 +37,7 @@ class ApproachTest {
             boolean may = Approach.mayMeetLine(face, centre.x(), centre.y(), velocity.x(), velocity.y(), within);
 
             double time = Geometry.timeUntilWallCollision(face, ball.circle(), velocity);
-            boolean met = time <= within && CollisionDetector.closesOnSegment(face, ball, velocity, time);
+            boolean met = time <= within && CollisionDetector.closesOnSegment(face, ball, velocity.x(), velocity.y(), time);
             if (!may) {
                 assertThat(met).as("case %d: %s, ball at %s moving %s, %s s", i, face, centre, velocity, within)
                         .isFalse();

@@ -40,7 +40,7 @@ class CollisionDetectorTest {
             boolean expected = CollisionDetector.closing(
                     centre.minus(Geometry.perpendicularPointWholeLine(face, centre)), velocity);
 
-            assertThat(CollisionDetector.closesOnSegment(face, ball, velocity, time)).as("case %d", i)
+            assertThat(CollisionDetector.closesOnSegment(face, ball, velocity.x(), velocity.y(), time)).as("case %d", i)
                     .isEqualTo(expected);
             closing += expected ? 1 : 0;
         }
