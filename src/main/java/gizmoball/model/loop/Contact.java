@@ -40,8 +40,13 @@ sealed interface Contact {
         /** The reference the ball keeps when it comes to rest on it. */
         ContactRef ref();
 
-        /** The velocity of a ball centred at {@code centre} after it bounces off with this coefficient. */
-        Vect reflect(Vect centre, Vect velocity, double coefficient);
+        /** {@link #normal} toward the ball where it is now. */
+        default Vect normalTo(Ball ball) {
+            return normal(ball.position());
+        }
+
+        /** The velocity of the ball, moving at {@code velocity}, after it bounces off with this coefficient. */
+        Vect reflect(Ball ball, Vect velocity, double coefficient);
 
         /** The surface's own coefficient: an outer wall's is 1. */
         default double reflectionCoefficient() {
@@ -60,11 +65,18 @@ sealed interface Contact {
 
         @Override
         default Vect normal(Vect centre) {
-            return fromLine(segment(), centre);
+            return fromLine(segment(), centre.x(), centre.y());
         }
 
+        /** Reckoned from the ball's centre as coordinates: a bounce off a face makes no vector of it. */
         @Override
-        default Vect reflect(Vect centre, Vect velocity, double coefficient) {
+        default Vect normalTo(Ball ball) {
+            return fromLine(segment(), ball.x() + 0.0, ball.y() + 0.0);   // ball.position()'s components
+        }
+
+        /** The wall reflection does not depend on where the ball is. */
+        @Override
+        default Vect reflect(Ball ball, Vect velocity, double coefficient) {
             return Geometry.reflectWall(segment(), velocity, coefficient);
         }
     }
@@ -106,8 +118,8 @@ sealed interface Contact {
         }
 
         @Override
-        public Vect reflect(Vect centre, Vect velocity, double coefficient) {
-            return Geometry.reflectCircle(circle.getCenter(), centre, velocity, coefficient);
+        public Vect reflect(Ball ball, Vect velocity, double coefficient) {
+            return Geometry.reflectCircle(circle.getCenter(), ball.position(), velocity, coefficient);
         }
     }
 
@@ -124,7 +136,7 @@ sealed interface Contact {
         @Override
         public Vect normal(Vect centre) {
             return circle ? centre.minus(shape.shape().circles().get(index).getCenter()).unitSize()
-                    : fromLine(shape.shape().segments().get(index), centre);
+                    : fromLine(shape.shape().segments().get(index), centre.x(), centre.y());
         }
 
         /** The speed is that of the surface where it touches the ball, turning about the pivot. */
@@ -166,11 +178,11 @@ sealed interface Contact {
     }
 
     /**
-     * The unit normal from the line through a segment toward a point: {@code centre.minus(foot).unitSize()}, the foot
-     * {@code Geometry.perpendicularPointWholeLine}'s, reckoned on the components (the same doubles, in the same order)
-     * so that only the normal is made.
+     * The unit normal from the line through a segment toward the point (x, y): {@code centre.minus(foot).unitSize()},
+     * the foot {@code Geometry.perpendicularPointWholeLine}'s, reckoned on the components (the same doubles, in the
+     * same order) so that only the normal is made.
      */
-    private static Vect fromLine(LineSegment segment, Vect centre) {
+    private static Vect fromLine(LineSegment segment, double x, double y) {
         Vect p1 = segment.p1();
         Vect p2 = segment.p2();
         double dirX = p2.x() - p1.x() + 0.0;
@@ -178,11 +190,10 @@ sealed interface Contact {
         double footX = p1.x();
         double footY = p1.y();
         if (dirX != 0 || dirY != 0) {
-            double along = ((centre.x() - p1.x() + 0.0) * dirX + (centre.y() - p1.y() + 0.0) * dirY)
-                    / (dirX * dirX + dirY * dirY);
+            double along = ((x - p1.x() + 0.0) * dirX + (y - p1.y() + 0.0) * dirY) / (dirX * dirX + dirY * dirY);
             footX = p1.x() + (dirX * along + 0.0) + 0.0;
             footY = p1.y() + (dirY * along + 0.0) + 0.0;
         }
-        return Components.unit(centre.x() - footX + 0.0, centre.y() - footY + 0.0);
+        return Components.unit(x - footX + 0.0, y - footY + 0.0);
     }
 }

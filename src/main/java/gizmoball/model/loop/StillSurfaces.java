@@ -42,7 +42,7 @@ final class StillSurfaces {
             enter(ball, passage);
         } else {
             ContactRef ref = surface.ref();
-            if (bounceOff(ball, surface, ref, struck, surface.normal(ball.position()))) {
+            if (bounceOff(ball, surface, ref, struck, surface.normalTo(ball))) {
                 bounceAmongContacts(ball, ref);
             }
         }
@@ -100,7 +100,7 @@ final class StillSurfaces {
             return false;
         }
         double coefficient = surface.reflectionCoefficient();
-        Vect bounced = surface.reflect(ball.position(), ball.velocity(), coefficient);
+        Vect bounced = surface.reflect(ball, ball.velocity(), coefficient);
         if (wedged(ball, ref, normal, bounced)) {
             step.comeToRest(ball, ref);
             return false;
