@@ -1,6 +1,7 @@
 package gizmoball.model;
 
 import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.MovingShape;
 import gizmoball.model.gizmo.Order;
 import gizmoball.model.loop.Ball;
@@ -12,6 +13,8 @@ import gizmoball.model.loop.LoopView;
 import gizmoball.model.loop.PlayEvent;
 import gizmoball.model.loop.Sleepers;
 import gizmoball.model.loop.SpatialIndex;
+import gizmoball.model.loop.Struck;
+import gizmoball.model.loop.TickEvents;
 import gizmoball.model.loop.TickRun;
 import gizmoball.model.loop.TriggerSource;
 
@@ -188,8 +191,13 @@ final class BoardLoop implements LoopView, LoopActions {
     }
 
     @Override
-    public List<PlayEvent> drainEvents() {
-        return events.drain();
+    public void recordHit(Ball ball, Struck struck, GizmoKind kind, double speed) {
+        events.recordHit(ball, struck, kind, speed);
+    }
+
+    @Override
+    public TickEvents closeTickEvents() {
+        return events.closeTick();
     }
 
     @Override

@@ -3,8 +3,8 @@ package gizmoball.model;
 import gizmoball.model.gizmo.SwitchedCell;
 import gizmoball.model.loop.Arena;
 import gizmoball.model.loop.Ball;
-import gizmoball.model.loop.PlayEvent;
 import gizmoball.model.loop.Sleepers;
+import gizmoball.model.loop.TickEvents;
 import gizmoball.model.loop.Tolerances;
 import gizmoball.model.loop.TriggerSource;
 
@@ -104,9 +104,9 @@ final class EndOfTick {
      * The tick that is ending reported these events: every drop target a ball hit in it goes down at its end (after
      * any order it was given in the tick: the hit is what the ball saw last).
      */
-    void dropHitTargets(List<PlayEvent> tickEvents) {
+    void dropHitTargets(TickEvents tickEvents) {
         for (int i = 0; i < tickEvents.size(); i++) {
-            if (tickEvents.get(i) instanceof PlayEvent.Hit hit && hit.struck() instanceof TriggerSource.OfGizmo struck
+            if (tickEvents.isHit(i) && tickEvents.struck(i) instanceof TriggerSource.OfGizmo struck
                     && registry.gizmo(struck.gizmo()) instanceof SwitchedCell cell && cell.fallsWhenHit()) {
                 cellOrders.put(cell.name(), false);
             }

@@ -3,13 +3,16 @@ package gizmoball.model;
 import gizmoball.model.game.Game;
 import gizmoball.model.loop.GuardCounts;
 import gizmoball.model.loop.LoopSettings;
+import gizmoball.model.loop.TickEvents;
 import gizmoball.model.loop.TickReport;
 import gizmoball.model.loop.TickRun;
 
 /**
  * One tick of play around the loop (docs/design.md, "The tick"): the delayed actions due first, then the loop,
  * then what waits for the tick's end (hit drop targets, gates, spawns, sunk balls, plunger pulls), the clock, the
- * game, and the redraw, whose cost the next tick's report states. It keeps the last report and the guards' counts.
+ * game, and the redraw, whose cost the next tick's report states. It keeps the guards' counts, and the last tick's
+ * report once asked for: play reads the tick's events in place and makes no report (docs/design.md, "What a tick
+ * allocates").
  */
 final class TickCycle {
     private final Play play;
@@ -20,6 +23,7 @@ final class TickCycle {
     private final BoardLoop loop;
     /** The loop, kept with its books from tick to tick. */
     private final TickRun tickRun;
+    /** The last tick's report, null until it is asked for. */
     private TickReport lastTick = TickReport.NONE;
     private GuardCounts guardsFired = GuardCounts.NONE;
 
@@ -38,14 +42,16 @@ final class TickCycle {
     void run(double dt, Runnable redraw) {
         delayed.performDue(clock.time(), play);
         endOfTick.ticking(true);
-        lastTick = tickRun.run(dt);
-        endOfTick.dropHitTargets(lastTick.events());
+        lastTick = null;
+        tickRun.run(dt);
+        TickEvents events = tickRun.events();
+        endOfTick.dropHitTargets(events);
         endOfTick.ticking(false);
         endOfTick.removeSunk();
         play.holdPulls(dt);
         clock.tickDone();
-        game.afterTick(clock.ticks(), lastTick.events());
-        guardsFired = guardsFired.plus(lastTick.guards());
+        game.afterTick(clock.ticks(), events);
+        guardsFired = guardsFired.plus(tickRun.guards());
         if (loop.timesStages()) {
             long start = System.nanoTime();
             redraw.run();
@@ -57,6 +63,9 @@ final class TickCycle {
     }
 
     TickReport lastTick() {
+        if (lastTick == null) {
+            lastTick = tickRun.report();
+        }
         return lastTick;
     }
 

@@ -2,6 +2,7 @@ package gizmoball.model.game;
 
 import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.loop.PlayEvent;
+import gizmoball.model.loop.TickEvents;
 import gizmoball.model.loop.TriggerSource;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
@@ -144,7 +145,7 @@ public final class Game implements GameProgress {
     }
 
     /** For the board: what the tick numbered {@code tick} did to the game. */
-    public void afterTick(long tick, List<PlayEvent> events) {
+    public void afterTick(long tick, TickEvents events) {
         GameRules rules = field.rules();
         if (!started) {
             started = true;
@@ -152,10 +153,14 @@ public final class Game implements GameProgress {
             Arrays.fill(toCome, 1, players, rules.ballsPerGame());
         }
         for (int i = 0; i < events.size(); i++) {
-            PlayEvent event = events.get(i);
-            if (event instanceof PlayEvent.Hit hit && hit.isRealImpact() && hit.struck() instanceof TriggerSource.OfGizmo gizmo) {
-                scored(tick, rules, gizmo.gizmo(), rules.pointsOf(gizmo.gizmo(), hit.kind()));
-            } else if (event instanceof PlayEvent.Fired fired && field.isLauncher(fired.absorber()) && !saveUsed) {
+            if (events.isHit(i)) {
+                if (PlayEvent.Hit.isRealImpact(events.speed(i)) && events.struck(i) instanceof TriggerSource.OfGizmo gizmo) {
+                    scored(tick, rules, gizmo.gizmo(), rules.pointsOf(gizmo.gizmo(), events.kind(i)));
+                }
+                continue;
+            }
+            PlayEvent event = events.event(i);
+            if (event instanceof PlayEvent.Fired fired && field.isLauncher(fired.absorber()) && !saveUsed) {
                 launchedAt = OptionalDouble.of(field.time());
             } else if (event instanceof PlayEvent.Captured captured && rules.isDrain(captured.absorber()) && !over) {
                 drains.add(new Drain(tick, captured.ball(), captured.absorber()));

@@ -88,12 +88,12 @@ public final class Ball implements BallView {
     }
 
     /** The centre's x in L, as {@link #position()} has it, without making a vector. */
-    double x() {
+    public double x() {
         return filed ? motions.x[slot] : x;
     }
 
     /** The centre's y in L, as {@link #position()} has it, without making a vector. */
-    double y() {
+    public double y() {
         return filed ? motions.y[slot] : y;
     }
 

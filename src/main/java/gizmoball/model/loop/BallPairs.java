@@ -53,7 +53,7 @@ final class BallPairs {
             step.restingContact = true;
             return struck;
         }
-        step.actions.recordEvent(PlayEvent.Hit.of(ball, struck, null, approach));
+        step.actions.recordHit(ball, struck, null, approach);
         other.setStillTime(0);
         if (other.isAsleep()) {
             // What it wakes is at rest still, as every ball's known collisions took it: only the ball this bounce

@@ -315,7 +315,7 @@ final class ClusterSolve {
             }
             if (heard.firstFrom(struck)) {
                 GizmoKind kind = target == null ? null : target.kind();
-                step.actions.recordEvent(PlayEvent.Hit.of(ball, struck, kind, change));
+                step.actions.recordHit(ball, struck, kind, change);
                 if (struck instanceof TriggerSource source && !struck.equals(own)) {
                     step.alsoHit.add(source);
                 }

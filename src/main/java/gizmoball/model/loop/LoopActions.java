@@ -1,8 +1,7 @@
 package gizmoball.model.loop;
 
-import java.util.List;
-
 import gizmoball.model.gizmo.GizmoBase;
+import gizmoball.model.gizmo.GizmoKind;
 import gizmoball.model.gizmo.Order;
 import gizmoball.model.gizmo.MovingShape;
 
@@ -14,8 +13,11 @@ import gizmoball.model.gizmo.MovingShape;
 public interface LoopActions {
     void recordEvent(PlayEvent event);
 
-    /** The events since the last tick's report, for this tick's. */
-    List<PlayEvent> drainEvents();
+    /** {@code ball} hit {@code struck}, as {@link PlayEvent.Hit} has it: its centre is where it is now. */
+    void recordHit(Ball ball, Struck struck, GizmoKind kind, double speed);
+
+    /** Stage 6: the events since the last tick's end are this tick's, read in place until the next tick ends. */
+    TickEvents closeTickEvents();
 
     /** The gizmo does what its connection orders (stage 5), {@code now} seconds into play. */
     void trigger(GizmoBase gizmo, Order order, double now);

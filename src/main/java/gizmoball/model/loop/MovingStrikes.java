@@ -143,8 +143,7 @@ final class MovingStrikes {
                 ? Squeeze.leaving(reflected, squeezeSides(ball, part, met, reflected))
                 : Optional.of(reflected);
         ball.setVelocity(endless ? Vect.ZERO : leaving.orElse(Vect.ZERO));
-        step.actions.recordEvent(PlayEvent.Hit.of(ball, part.struck(), moving.kind(),
-                ball.velocity().minus(before).length() / 2));
+        step.actions.recordHit(ball, part.struck(), moving.kind(), ball.velocity().minus(before).length() / 2);
         if (endless) {
             step.pinched++;   // guard (counted): squeezed out and back again without end
             stall(ball, moving);

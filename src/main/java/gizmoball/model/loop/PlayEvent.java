@@ -10,8 +10,8 @@ public sealed interface PlayEvent {
     /**
      * A ball hit {@code struck}: a gizmo (of {@code kind}), the outer walls or another ball ({@code kind} null for
      * both), closing at {@code speed} L/s along the contact normal. {@code ball} is the ball that hit, (atX, atY) its
-     * centre at the moment of the hit (the aim preview marks it): coordinates, not a vector, for a board of 100 balls
-     * reports some 20 hits a tick (docs/design.md, "What a tick allocates").
+     * centre at the moment of the hit (the aim preview marks it). Play keeps a hit's parts in columns
+     * ({@link TickEvents}): a record is made only for a report asked for (docs/design.md, "What a tick allocates").
      */
     record Hit(Struck struck, GizmoKind kind, double speed, String ball, double atX, double atY) implements PlayEvent {
         /**
@@ -20,11 +20,6 @@ public sealed interface PlayEvent {
          */
         public static final double REAL_IMPACT_SPEED = 1;
 
-        /** {@code ball}'s hit, its centre where it is now. */
-        static Hit of(Ball ball, Struck struck, GizmoKind kind, double speed) {
-            return new Hit(struck, kind, speed, ball.name(), ball.x(), ball.y());
-        }
-
         /** The ball's centre at the moment of the hit. */
         public Vect at() {
             return new Vect(atX, atY);
@@ -32,6 +27,11 @@ public sealed interface PlayEvent {
 
         /** A real impact, not a ball settling: it scores and it is heard. */
         public boolean isRealImpact() {
+            return isRealImpact(speed);
+        }
+
+        /** Whether a hit closing at {@code speed} L/s is a real impact. */
+        public static boolean isRealImpact(double speed) {
             return speed >= REAL_IMPACT_SPEED;
         }
     }

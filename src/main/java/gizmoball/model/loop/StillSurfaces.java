@@ -108,7 +108,7 @@ final class StillSurfaces {
         GizmoBase gizmo = surface.gizmo();
         if (!step.reported.contains(ref)) {   // a bounce, not a rest: one hit per surface and collision
             step.reported.add(ref);
-            step.actions.recordEvent(PlayEvent.Hit.of(ball, struck, gizmo == null ? null : gizmo.kind(), approach));
+            step.actions.recordHit(ball, struck, gizmo == null ? null : gizmo.kind(), approach);
         }
         if (gizmo != null && gizmo.boosts()) {
             ball.setVelocity(gizmo.boost(bounced, Arena.MAX_SPEED));

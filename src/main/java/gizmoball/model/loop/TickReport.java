@@ -5,7 +5,9 @@ import java.util.List;
 import java.util.Map;
 
 /**
- * What the last tick did, read-only, taken at stage 6 before the observers are told (docs/design.md, "The tick").
+ * What the last tick did, read-only, as stage 6 found it (docs/design.md, "The tick"). The board makes it when it is
+ * first asked for after a tick, for play itself reads the tick's events in place ({@link TickEvents}); it is the
+ * asker's to keep.
  *
  * @param stageNanos time spent in each stage; stages 2-5 repeat within a tick and are summed. The redrawing stage
  *                   is the observers' time, which is known only after they return: it is the previous tick's.

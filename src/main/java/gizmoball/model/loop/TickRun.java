@@ -50,6 +50,8 @@ public final class TickRun {
     private final List<Vect> contactNormals = new ArrayList<>();
     /** The normals of a ball's contacts as they are now, for the shadow energy: made once, not every tick. */
     private final Function<Ball, List<Vect>> normalsNow;
+    /** Stage 6: what the last tick did, kept until the next one ends. */
+    private final TickEnd end;
 
     /**
      * The loop of the board that {@code view} shows and {@code actions} act on, tuned by {@code settings}, which the
@@ -63,10 +65,14 @@ public final class TickRun {
         this.clusters = new ClusterSolve(step);
         this.strikes = new MovingStrikes(step);
         this.normalsNow = ball -> step.contacts.normals(ball);
+        this.end = new TickEnd(step, nanos);
     }
 
-    /** Runs one tick of {@code dt} seconds: the six stages, then the report for the board to keep. */
-    public TickReport run(double dt) {
+    /**
+     * Runs one tick of {@code dt} seconds: the six stages. What stage 6 reports is read in place ({@link #events()},
+     * {@link #guards()}) until the next tick, and {@link #report()} makes the report of it for whoever asks.
+     */
+    public void run(double dt) {
         timing = step.view.timesStages();
         long start = timing ? System.nanoTime() : 0;
         step.begin(dt);
@@ -89,9 +95,8 @@ public final class TickRun {
         }
         step.actions.forgetSeparatedPairs();
         step.actions.advanceTime(step.dt);
-        TickReport report = report();
+        end.take(timing);
         step.schedule.unfile();   // the balls keep their centres themselves between ticks
-        return report;
     }
 
     /** Stages 3, 2, 4 and 5 from collision to collision, to the end of the tick or the collision cap. */
@@ -305,46 +310,19 @@ public final class TickRun {
         }
     }
 
-    /** Stage 6: the report of this tick; the board hands it to the observers. */
-    private TickReport report() {
-        LoopView view = step.view;
-        double lookAhead = view.nextCollisionLookAhead();
-        // Without the look-ahead no ball is reported: no list is made for none, and the balls are not looked through.
-        List<BallReport> reports = lookAhead > 0 ? new ArrayList<>() : List.of();
-        List<Ball> balls = view.balls();
-        for (int b = 0; lookAhead > 0 && b < balls.size(); b++) {
-            Ball ball = balls.get(b);
-            if (!ball.isCaptured()) {
-                reports.add(ballReport(ball, lookAhead));
-            }
-        }
-        int asleep = step.asleepNow();
-        nanos[Stage.REDRAWING.ordinal()] = timing ? view.lastRedrawNanos() : 0;
-        return new TickReport(view.time(), StageTimes.of(nanos), step.collisions, step.zeroTimeCollisions,
-                step.simultaneousCollisions, step.awake.size(), asleep,
-                step.guards(), step.actions.drainEvents(), reports);
+    /** The report of the last tick, made anew; the events' records are the caller's to keep. */
+    public TickReport report() {
+        return end.report();
     }
 
-    private BallReport ballReport(Ball ball, double lookAhead) {
-        BallReport.BallState state = ball.isAsleep() ? BallReport.BallState.ASLEEP
-                : ball.contacts().isEmpty() ? BallReport.BallState.FLYING : BallReport.BallState.CONTACT;
-        double in = Double.POSITIVE_INFINITY;
-        Vect at = null;
-        if (!ball.isAsleep()) {
-            Earliest earliest = step.detector.againstScene(ball, lookAhead);
-            List<Ball> others = step.view.balls();
-            for (int b = 0; b < others.size(); b++) {
-                Ball other = others.get(b);
-                if (other != ball && !other.isCaptured()) {
-                    step.detector.againstBall(ball, other, lookAhead, earliest);
-                }
-            }
-            if (earliest.contact() != null) {
-                in = earliest.time();
-                at = ball.position().plus(ball.velocity().times(in));
-            }
-        }
-        return new BallReport(ball.name(), ball.position(), ball.velocity(), state, in, at);
+    /** The last tick's events, read in place until the next tick ends. */
+    public TickEvents events() {
+        return end.events();
+    }
+
+    /** The guards that fired in the last tick. */
+    public GuardCounts guards() {
+        return end.guards();
     }
 
     private long lap(Stage stage, long since) {
