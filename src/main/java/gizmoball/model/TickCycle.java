@@ -42,8 +42,8 @@ final class TickCycle {
     void run(double dt, Runnable redraw) {
         delayed.performDue(clock.time(), play);
         endOfTick.ticking(true);
-        lastTick = null;
         tickRun.run(dt);
+        lastTick = null;   // this tick's, made when asked for
         TickEvents events = tickRun.events();
         endOfTick.dropHitTargets(events);
         endOfTick.ticking(false);
