@@ -154,7 +154,8 @@ public final class Game implements GameProgress {
         }
         for (int i = 0; i < events.size(); i++) {
             if (events.isHit(i)) {
-                if (PlayEvent.Hit.isRealImpact(events.speed(i)) && events.struck(i) instanceof TriggerSource.OfGizmo gizmo) {
+                if (PlayEvent.Hit.isRealImpact(events.speed(i))
+                        && events.struck(i) instanceof TriggerSource.OfGizmo gizmo) {
                     scored(tick, rules, gizmo.gizmo(), rules.pointsOf(gizmo.gizmo(), events.kind(i)));
                 }
                 continue;
