@@ -22,34 +22,23 @@ final class ClusterRow {
         /** What a ball of the cluster ({@code balls}, by index) struck when this row takes an impact. */
         Struck struck(List<Ball> balls);
 
-        /** Whether it is a surface (still or moving) rather than a ball. */
-        default boolean surface() {
-            return false;
+        /** A surface, still or moving, rather than a ball: an impact on it is measured against the resting speed. */
+        sealed interface Surface extends Other {
         }
 
         /** A still surface; {@code gizmo} null for an outer wall. */
-        record Still(ContactRef ref, GizmoBase gizmo) implements Other {
+        record Still(ContactRef ref, GizmoBase gizmo) implements Surface {
             @Override
             public Struck struck(List<Ball> balls) {
                 return gizmo == null ? TriggerSource.OUTER_WALLS : TriggerSource.gizmo(gizmo.name());
             }
-
-            @Override
-            public boolean surface() {
-                return true;
-            }
         }
 
         /** A part of a moving shape. */
-        record Moving(MovingShape shape) implements Other {
+        record Moving(MovingShape shape) implements Surface {
             @Override
             public Struck struck(List<Ball> balls) {
                 return TriggerSource.gizmo(shape.name());
-            }
-
-            @Override
-            public boolean surface() {
-                return true;
             }
         }
 

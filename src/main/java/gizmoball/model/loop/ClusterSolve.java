@@ -273,7 +273,7 @@ final class ClusterSolve {
         }
         for (int i = 0; i < rows.size(); i++) {
             ClusterRow row = rows.get(i);
-            if (row.other().surface()) {
+            if (row.other() instanceof ClusterRow.Other.Surface) {
                 otherNormals.clear();
                 for (int j = 0; j < rows.size(); j++) {
                     if (j != i && rows.get(j).ball() == row.ball()) {
